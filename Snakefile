@@ -1,0 +1,31 @@
+# gearrep: every replication, its checks against the published numbers, and the scorecard.
+# Run `snakemake --cores 2`; see README.md for single targets.
+from pathlib import Path
+
+from snakemake.utils import min_version, validate
+
+min_version("8.0")
+
+configfile: "config/config.yaml"
+# Stop before any job runs (and before anything is written) on a bad config value.
+validate(config, "config/schema.yaml")
+
+# Each replication's rules file appends its check file here; the scorecard gathers them.
+CHECK_FILES = []
+# Each replication's rules file appends its final outputs here (tables, figures, notebooks).
+FINAL_OUTPUTS = []
+
+include: "workflow/rules/common.smk"
+
+for _smk in sorted(Path(workflow.basedir, "workflow", "rules").glob("rep_*.smk")):
+    include: str(_smk.relative_to(workflow.basedir))
+
+include: "workflow/rules/scorecard.smk"
+
+
+rule all:
+    default_target: True
+    input:
+        "results/scorecard.csv",
+        "results/scorecard.md",
+        FINAL_OUTPUTS,

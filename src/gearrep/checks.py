@@ -1,0 +1,196 @@
+"""Check records: computed against published, with a tolerance that has a stated basis.
+
+A numeric check passes (``reproduced``) when the computed value, read at the printed precision,
+gives the printed number:
+
+* ``rounding=round``, ``decimals=d``: ``|computed - printed| <= 0.5 * 10**-d``;
+* ``rounding=truncate``, ``decimals=d``: ``computed`` chopped toward zero to ``d`` decimals equals
+  the printed number, i.e. it lies in ``[p, p + 10**-d)`` for ``p >= 0`` (mirrored for ``p < 0``);
+* ``sig=s``: ``|computed - printed| <= 0.5 * 10**(floor(log10|p|) - s + 1)``.
+
+These tolerances are computed here from the printed string, never typed by hand. A replication
+may widen one only with ``extra_tol`` and a stated physical reason (``extra_basis``), e.g. the
+uncertainty a rounded table key (l_1 printed to 3 decimals) propagates into the value. A tiny
+floating-point slack (1e-12 relative) keeps exact ties from failing on representation error.
+
+Statuses: ``reproduced``, ``deviates``, ``qualitative-holds``, ``qualitative-fails``,
+``not-computed``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from .published import printed_precision
+
+STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
+
+CHECK_COLUMNS = [
+    "id", "seed", "source", "row", "quantity", "unit", "published", "computed", "abs_err",
+    "rel_err", "tolerance", "tolerance_basis", "status", "note",
+]
+
+_FP_SLACK = 1e-12
+
+
+def printed_interval(printed: str, rounding: str = "round") -> tuple[float, float, str]:
+    """Interval ``[lo, hi]`` of true values that print as ``printed``, and its basis.
+
+    For truncation the end away from zero is open.
+    """
+    p = float(printed)
+    kind, prec = printed_precision(printed)
+    if kind == "decimals":
+        unit = 10.0 ** (-prec)
+        what = f"{prec} decimals"
+    else:
+        exp = math.floor(math.log10(abs(p))) if p != 0 else 0
+        unit = 10.0 ** (exp - prec + 1)
+        what = f"{prec} significant digits"
+    if rounding == "round":
+        return p - 0.5 * unit, p + 0.5 * unit, f"printed to {what}, rounded: +-{0.5 * unit:.3g}"
+    if rounding == "truncate":
+        if kind != "decimals":
+            raise ValueError("truncation is only defined for decimals precision")
+        neg = printed.strip().startswith("-")
+        lo, hi = (p - unit, p) if neg else (p, p + unit)
+        return lo, hi, f"printed to {what}, truncated toward zero: in [{lo:.{prec}f}, {hi:.{prec}f})"
+    raise ValueError(f"rounding must be 'round' or 'truncate', got {rounding!r}")
+
+
+def compare_value(pub: pd.Series, computed: float, extra_tol: float = 0.0, extra_basis: str = "",
+                  note: str = "") -> dict:
+    """One check record for a published value row (a row of ``Published.values``)."""
+    lo, hi, basis = printed_interval(pub["printed"], pub["rounding"])
+    if extra_tol < 0:
+        raise ValueError(f"extra_tol must be >= 0, got {extra_tol}")
+    if extra_tol:
+        if not extra_basis:
+            raise ValueError("extra_tol needs a stated physical reason (extra_basis)")
+        lo, hi = lo - extra_tol, hi + extra_tol
+        basis = f"{basis}; plus {extra_tol:.3g} because {extra_basis}"
+    value = float(pub["value"])
+    rec = {k: pub.get(k, "") for k in ("id", "seed", "source", "row", "quantity", "unit")}
+    rec.update(published=value, tolerance=max(hi - value, value - lo), tolerance_basis=basis, note=note)
+    if computed is None or not np.isfinite(computed):
+        rec.update(computed=np.nan, abs_err=np.nan, rel_err=np.nan, status="deviates",
+                   note=(note + "; " if note else "") + "computation returned no finite value")
+        return rec
+    computed = float(computed)
+    slack = _FP_SLACK * max(abs(value), abs(computed), 1e-300)
+    if pub["rounding"] == "truncate":
+        # the end away from zero is open: -4.998 truncated covers (-4.999, -4.998]
+        if str(pub["printed"]).strip().startswith("-"):
+            ok = lo < computed <= hi + slack
+        else:
+            ok = lo - slack <= computed < hi
+    else:
+        ok = lo - slack <= computed <= hi + slack
+    abs_err = computed - value
+    rel_err = abs_err / abs(value) if value != 0 else np.nan
+    rec.update(computed=computed, abs_err=abs_err, rel_err=rel_err,
+               status="reproduced" if ok else "deviates")
+    return rec
+
+
+def check_values(published_values: pd.DataFrame, computed: pd.DataFrame) -> pd.DataFrame:
+    """Check records for every published value that ``computed`` gives a number for.
+
+    ``computed`` has columns ``id``, ``computed`` and optionally ``extra_tol``, ``extra_basis``,
+    ``note``. Ids not in ``published_values`` raise KeyError (a typo must not pass silently).
+    """
+    pub = published_values.set_index("id", drop=False)
+    unknown = sorted(set(computed["id"]) - set(pub.index))
+    if unknown:
+        raise KeyError(f"computed ids not in the published data: {unknown[:10]}")
+    recs = []
+    for _, c in computed.iterrows():
+        recs.append(compare_value(
+            pub.loc[c["id"]], c["computed"],
+            extra_tol=float(c.get("extra_tol", 0.0) or 0.0),
+            extra_basis=str(c.get("extra_basis", "") or ""),
+            note=str(c.get("note", "") or ""),
+        ))
+    return pd.DataFrame(recs, columns=CHECK_COLUMNS)
+
+
+def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
+    """Check record for a claim row, with the numbers behind the verdict in ``evidence``."""
+    if not evidence:
+        raise ValueError("a qualitative verdict needs its evidence (the numbers behind it)")
+    return {
+        "id": claim["id"], "seed": claim["seed"], "source": claim["source"],
+        "row": claim.get("parameters", ""), "quantity": claim["kind"], "unit": "",
+        "published": np.nan, "computed": np.nan, "abs_err": np.nan, "rel_err": np.nan,
+        "tolerance": np.nan, "tolerance_basis": claim.get("confirm_if", ""),
+        "status": "qualitative-holds" if holds else "qualitative-fails", "note": evidence,
+    }
+
+
+def not_computed(rows: pd.DataFrame, reason: str) -> pd.DataFrame:
+    """``not-computed`` records for published values or claims, with the reason."""
+    recs = []
+    for _, r in rows.iterrows():
+        is_claim = "kind" in r.index and "statement" in r.index
+        recs.append({
+            "id": r["id"], "seed": r["seed"], "source": r["source"],
+            "row": r.get("parameters", "") if is_claim else r["row"],
+            "quantity": r["kind"] if is_claim else r["quantity"],
+            "unit": "" if is_claim else r["unit"],
+            "published": np.nan if is_claim else float(r["value"]),
+            "computed": np.nan, "abs_err": np.nan, "rel_err": np.nan, "tolerance": np.nan,
+            "tolerance_basis": "", "status": "not-computed", "note": reason,
+        })
+    return pd.DataFrame(recs, columns=CHECK_COLUMNS)
+
+
+def validate_checks(checks: pd.DataFrame) -> pd.DataFrame:
+    """Raise ValueError unless ``checks`` has the check columns, known statuses, unique ids."""
+    missing = [c for c in CHECK_COLUMNS if c not in checks.columns]
+    if missing:
+        raise ValueError(f"check table lacks columns {missing}")
+    bad = sorted(set(checks["status"]) - set(STATUSES))
+    if bad:
+        raise ValueError(f"unknown statuses {bad}; allowed {STATUSES}")
+    if checks["id"].duplicated().any():
+        raise ValueError(f"duplicate check ids: {sorted(set(checks['id'][checks['id'].duplicated()]))[:10]}")
+    return checks
+
+
+def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claims: pd.DataFrame) -> pd.DataFrame:
+    """One row per published value and claim: the replication's check where there is one,
+    ``not-computed`` otherwise. ``check_tables`` maps replication name -> check table."""
+    frames = []
+    for name, tab in check_tables.items():
+        tab = validate_checks(tab).copy()
+        tab.insert(0, "replication", name)
+        frames.append(tab)
+    done = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["replication", *CHECK_COLUMNS])
+    if done["id"].duplicated().any():
+        raise ValueError(f"ids checked by two replications: {sorted(set(done['id'][done['id'].duplicated()]))[:10]}")
+    known = set(values["id"]) | set(claims["id"])
+    stray = sorted(set(done["id"]) - known)
+    if stray:
+        raise ValueError(f"check ids not in the published data: {stray[:10]}")
+    reason = "no replication has computed this yet"
+    rest_v = values[~values["id"].isin(done["id"])]
+    rest_c = claims[~claims["id"].isin(done["id"])]
+    pending = [not_computed(x, reason) for x in (rest_v, rest_c) if len(x)]
+    for p in pending:
+        p.insert(0, "replication", "")
+    card = pd.concat([done, *pending], ignore_index=True)
+    return card.sort_values(["seed", "source", "id"], kind="stable").reset_index(drop=True)
+
+
+def summary(card: pd.DataFrame, by=("seed",)) -> pd.DataFrame:
+    """Counts by status (columns) for each group in ``by``."""
+    counts = card.groupby(list(by))["status"].value_counts().unstack(fill_value=0)
+    for s in STATUSES:
+        if s not in counts.columns:
+            counts[s] = 0
+    counts = counts[list(STATUSES)]
+    counts["total"] = counts.sum(axis=1)
+    return counts.reset_index()

@@ -1,0 +1,80 @@
+"""Check records: tolerances from printed precision, truncation, statuses, scorecard."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from gearrep import checks
+
+
+def row(printed, rounding="round", **kw):
+    d = {"id": "x", "seed": "000", "source": "Table", "row": "k=1", "quantity": "q", "unit": "mm",
+         "printed": printed, "value": float(printed), "rounding": rounding}
+    d.update(kw)
+    return pd.Series(d)
+
+
+def test_rounded_decimals_half_unit():
+    lo, hi, basis = checks.printed_interval("0.0125")
+    assert lo == pytest.approx(0.01245) and hi == pytest.approx(0.01255)
+    assert checks.compare_value(row("0.0125"), 0.012549)["status"] == "reproduced"
+    assert checks.compare_value(row("0.0125"), 0.012551)["status"] == "deviates"
+
+
+def test_significant_digits():
+    lo, hi, _ = checks.printed_interval("1.881729E-4")
+    assert hi - lo == pytest.approx(1e-10)
+    assert checks.compare_value(row("1.881729E-4"), 1.8817294e-4)["status"] == "reproduced"
+    assert checks.compare_value(row("1.881729E-4"), 1.8817296e-4)["status"] == "deviates"
+
+
+def test_truncation_toward_zero():
+    # phi_2' = -4.99893 prints as -4.998 when truncated (seed 000 Table 5.3)
+    r = row("-4.998", rounding="truncate")
+    assert checks.compare_value(r, -4.99893)["status"] == "reproduced"
+    assert checks.compare_value(r, -4.9975)["status"] == "deviates"  # would print -4.997
+    assert checks.compare_value(r, -4.99901)["status"] == "deviates"  # would print -4.999
+    rp = row("4.998", rounding="truncate")
+    assert checks.compare_value(rp, 4.9989)["status"] == "reproduced"
+    assert checks.compare_value(rp, 4.9979)["status"] == "deviates"
+
+
+def test_extra_tolerance_needs_reason():
+    with pytest.raises(ValueError, match="reason"):
+        checks.compare_value(row("1.00"), 1.2, extra_tol=0.3)
+    rec = checks.compare_value(row("1.00"), 1.2, extra_tol=0.3, extra_basis="key rounded")
+    assert rec["status"] == "reproduced" and "key rounded" in rec["tolerance_basis"]
+
+
+def test_nonfinite_is_deviation_not_pass():
+    rec = checks.compare_value(row("1.00"), np.nan)
+    assert rec["status"] == "deviates" and "no finite" in rec["note"]
+
+
+def test_check_values_rejects_unknown_ids():
+    pub = pd.DataFrame([row("1.00")])
+    with pytest.raises(KeyError):
+        checks.check_values(pub, pd.DataFrame({"id": ["typo"], "computed": [1.0]}))
+    out = checks.check_values(pub, pd.DataFrame({"id": ["x"], "computed": [1.004]}))
+    assert list(out.columns) == checks.CHECK_COLUMNS and out["status"].iloc[0] == "reproduced"
+
+
+def test_scorecard_fills_not_computed_and_rejects_strays():
+    values = pd.DataFrame([row("1.00", id="a"), row("2.00", id="b")])
+    claims = pd.DataFrame([{"id": "c", "seed": "000", "source": "text", "kind": "trend",
+                            "statement": "s", "parameters": "", "confirm_if": "y", "refute_if": "n"}])
+    done = checks.check_values(values, pd.DataFrame({"id": ["a"], "computed": [1.0]}))
+    card = checks.scorecard({"rep": done}, values, claims)
+    assert dict(zip(card["id"], card["status"])) == {"a": "reproduced", "b": "not-computed", "c": "not-computed"}
+    with pytest.raises(ValueError):
+        checks.scorecard({"rep": done.assign(id="zzz")}, values, claims)
+    s = checks.summary(card)
+    assert s.loc[0, "total"] == 3 and s.loc[0, "not-computed"] == 2
+
+
+def test_qualitative_needs_evidence():
+    claim = pd.Series({"id": "c", "seed": "004", "source": "Fig 12", "kind": "trend", "parameters": "",
+                       "confirm_if": "S grows"})
+    with pytest.raises(ValueError):
+        checks.qualitative(claim, True, "")
+    assert checks.qualitative(claim, False, "S falls 3 %")["status"] == "qualitative-fails"

@@ -1,0 +1,101 @@
+"""The digitised published data: format, precision fields, and agreement with the seed texts."""
+
+import re
+
+import pandas as pd
+import pytest
+
+from gearrep import published as pub
+
+
+def test_loads_and_has_every_seed(published):
+    assert len(published.values) > 0
+    assert set(published.values["seed"]) | set(published.claims["seed"]) <= set(pub.SEEDS)
+
+
+def test_ids_unique(published):
+    ids = pd.concat([published.values["id"], published.claims["id"]])
+    assert not ids.duplicated().any()
+
+
+def test_precision_field_matches_printed_digits(published):
+    for _, r in published.values.iterrows():
+        assert pub.printed_precision(r["printed"]) == (r["precision_kind"], r["precision"]), r["id"]
+
+
+def test_units_known(published):
+    from gearrep.units import KNOWN_UNITS
+
+    assert set(published.values["unit"]) <= KNOWN_UNITS
+    assert set(published.params["unit"]) <= KNOWN_UNITS
+
+
+def _variants(printed: str):
+    """Ways a number can appear in OCR text: as printed, without leading zero or plus sign,
+    with E/e, with a LaTeX-style minus or a space after the sign."""
+    s = printed.strip()
+    yield s
+    yield s.lstrip("+")
+    if s.startswith("-"):
+        yield "−" + s[1:]
+        yield "- " + s[1:]
+    if s.startswith(("0.", "-0.")):
+        yield s.replace("0.", ".", 1)
+    if "E" in s or "e" in s:
+        yield s.replace("E", "e")
+        yield s.replace("e", "E")
+        m = re.match(r"^([+-]?[\d.]+)[eE]([+-]?)0*(\d+)$", s)
+        if m:
+            yield f"{m.group(1)}E{m.group(2)}{m.group(3)}"
+            yield f"{m.group(1)}e{m.group(2)}{m.group(3)}"
+
+
+@pytest.mark.parametrize("table", ["values", "params"])
+def test_printed_numbers_stand_on_their_line(published, seed_lines, table):
+    """Every printed number occurs on the seed line it cites (+-1 line for wrapped OCR lines),
+    unless its note records an OCR correction."""
+    df = getattr(published, table)
+    missing = []
+    for _, r in df.iterrows():
+        if not str(r["printed"]).strip():
+            continue
+        lines = seed_lines[r["seed"]]
+        ln = int(r["line"])
+        assert 1 <= ln <= len(lines), (r.get("id", r["parameter"]), ln)
+        window = " ".join(lines[max(ln - 2, 0): ln + 1])
+        window_nospace = window.replace(" ", "")
+        found = any(v in window or v.replace(" ", "") in window_nospace for v in _variants(r["printed"]))
+        if not found and "ocr" not in str(r["notes"]).lower():
+            missing.append((r["file"], r.get("id", r.get("parameter")), r["printed"], ln))
+    assert not missing, f"{len(missing)} printed numbers not found on their line: {missing[:15]}"
+
+
+def test_claims_cite_existing_lines(published, seed_lines):
+    for _, r in published.claims.iterrows():
+        assert 1 <= r["line"] <= len(seed_lines[r["seed"]]), r["id"]
+        assert r["confirm_if"].strip() and r["refute_if"].strip(), r["id"]
+
+
+def test_printed_precision_parsing():
+    assert pub.printed_precision("0.008067") == ("decimals", 6)
+    assert pub.printed_precision("-4.998") == ("decimals", 3)
+    assert pub.printed_precision("1.881729E-4") == ("sig", 7)
+    assert pub.printed_precision("27") == ("decimals", 0)
+    assert pub.printed_precision("1e-10") == ("sig", 1)
+    with pytest.raises(pub.PublishedDataError):
+        pub.printed_precision("12a")
+
+
+def test_bad_file_is_rejected_with_its_name(tmp_path):
+    cols = ",".join(pub.VALUE_COLUMNS)
+    (tmp_path / "values_bad.csv").write_text(
+        cols + "\n000-x-k=1-q,000,Table 1,1,k=1,q,0.0125,0.0125,per_mm,decimals,3,round,\n"
+    )
+    with pytest.raises(pub.PublishedDataError, match="values_bad.csv.*implies decimals=4"):
+        pub.load(tmp_path)
+
+
+def test_parse_row():
+    assert pub.parse_row("l1_mm=4.381;side=L") == {"l1_mm": "4.381", "side": "L"}
+    with pytest.raises(pub.PublishedDataError):
+        pub.parse_row("nonsense")

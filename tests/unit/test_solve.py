@@ -1,0 +1,84 @@
+"""gearrep.solve: statuses, damping, bounds, singular Jacobians, over-determined systems."""
+
+import numpy as np
+import pytest
+
+from gearrep.solve import Status, newton, numeric_jacobian, status_names
+
+
+def sqrt2(x):
+    return np.stack([x[:, 0] ** 2 - 2.0, x[:, 1] - x[:, 0]], axis=1)
+
+
+def test_converges_to_both_roots_with_status():
+    r = newton(sqrt2, np.array([[1.0, 0.0], [-3.0, 1.0]]))
+    assert np.all(r.converged)
+    # error <= residual / |df/dx| ~ 1e-14 / 2.8
+    np.testing.assert_allclose(r.x[:, 0], [np.sqrt(2), -np.sqrt(2)], rtol=1e-13)
+    assert np.all(r.residual < 1e-12) and np.all(r.iterations >= 1)
+
+
+def test_singular_start_is_flagged():
+    r = newton(sqrt2, np.array([[0.0, 0.0]]))
+    assert r.status[0] == Status.SINGULAR
+    assert status_names(r.status)[0] == "singular"
+
+
+def test_root_outside_bounds_is_off_flank():
+    r = newton(sqrt2, np.array([[-1.0, -1.0]]), lower=[0.0, 0.0], upper=[10.0, 10.0])
+    assert r.status[0] == Status.OFF_FLANK
+
+
+def test_keep_inside_projects_iterates():
+    r = newton(sqrt2, np.array([[-1.0, -1.0]]), lower=[0.1, 0.1], upper=[10.0, 10.0], keep_inside=True)
+    assert r.status[0] == Status.CONVERGED and r.x[0, 0] > 0
+
+
+def test_plain_newton_can_fail_where_damped_succeeds():
+    # arctan: plain Newton diverges from |x0| > 1.39, damped converges
+    f = lambda x: np.arctan(x)  # noqa: E731
+    x0 = np.array([[2.0]])
+    assert newton(f, x0, damped=False, maxiter=30).status[0] != Status.CONVERGED
+    assert newton(f, x0, damped=True).status[0] == Status.CONVERGED
+
+
+def test_iteration_limit_gives_not_converged():
+    f = lambda x: np.exp(x) - 1e-30  # noqa: E731  slow descent from far away
+    r = newton(f, np.array([[50.0]]), maxiter=3)
+    assert r.status[0] == Status.NOT_CONVERGED and r.iterations[0] == 3
+
+
+def test_nonfinite_is_diverged():
+    f = lambda x: np.where(x > 0.5, np.nan, x - 1.0)  # noqa: E731
+    r = newton(f, np.array([[0.0]]), damped=False)
+    assert r.status[0] in (Status.DIVERGED, Status.NOT_CONVERGED)
+    assert not r.converged[0]
+
+
+def test_overdetermined_consistent_system():
+    # three equations, two unknowns, consistent: least-squares Newton converges
+    f = lambda x: np.stack([x[:, 0] - 1, x[:, 1] - 2, x[:, 0] + x[:, 1] - 3], axis=1)  # noqa: E731
+    r = newton(f, np.zeros((4, 2)))
+    assert np.all(r.converged)
+    np.testing.assert_allclose(r.x, [[1, 2]] * 4, atol=1e-14)
+
+
+def test_numeric_jacobian_accuracy():
+    x = np.array([[0.3, 1.7]])
+    J = numeric_jacobian(sqrt2, x)
+    np.testing.assert_allclose(J[0], [[0.6, 0.0], [-1.0, 1.0]], atol=1e-8)
+
+
+def test_bad_arguments():
+    with pytest.raises(ValueError, match="tol"):
+        newton(sqrt2, np.zeros((1, 2)), tol=-1)
+    with pytest.raises(ValueError, match="maxiter"):
+        newton(sqrt2, np.zeros((1, 2)), maxiter=0)
+    with pytest.raises(ValueError, match="equations"):
+        newton(lambda x: x[:, :1], np.zeros((1, 2)))
+
+
+def test_with_status_marks_wrong_root():
+    r = newton(sqrt2, np.array([[1.0, 0.0], [-3.0, 1.0]]))
+    w = r.with_status(r.x[:, 0] < 0, Status.WRONG_ROOT)
+    assert list(w.status_name) == ["converged", "wrong_root"]

@@ -1,0 +1,18 @@
+# Gather every replication's check file into one scorecard; every published value and claim
+# without a check shows `not-computed`.
+
+
+rule scorecard:
+    input:
+        checks=CHECK_FILES,
+        published=published_files(),
+        code=lib("checks", "published", "units"),
+    output:
+        csv="results/scorecard.csv",
+        md="results/scorecard.md",
+    log:
+        "results/logs/scorecard.log",
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/scorecard.py"

@@ -1,0 +1,44 @@
+"""Write results/scorecard.{csv,md} from the replications' check files (Snakemake script)."""
+
+from pathlib import Path
+
+import pandas as pd
+
+from gearrep import checks, published
+
+smk = snakemake  # noqa: F821  (provided by Snakemake)
+
+pub = published.load(Path(smk.input.published[0]).parent)
+tables = {Path(f).stem: pd.read_csv(f, keep_default_na=False, na_values=[""]) for f in smk.input.checks}
+card = checks.scorecard(tables, pub.values, pub.claims)
+card["paper"] = card["seed"].map(published.PAPERS)
+
+
+def md_table(df: pd.DataFrame) -> str:
+    cols = list(df.columns)
+    lines = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for _, r in df.iterrows():
+        cells = ["" if pd.isna(r[c]) else (f"{r[c]:.6g}" if isinstance(r[c], float) else str(r[c])) for c in cols]
+        lines.append("| " + " | ".join(c.replace("|", "/").replace("\n", " ") for c in cells) + " |")
+    return "\n".join(lines)
+
+
+by_paper = checks.summary(card, by=("seed",))
+by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS))
+by_source = checks.summary(card, by=("seed", "source"))
+rows = card[["id", "seed", "source", "row", "quantity", "unit", "published", "computed",
+             "abs_err", "tolerance", "status", "tolerance_basis", "note"]]
+
+text = "\n\n".join([
+    "# gearrep replication scorecard",
+    f"{len(card)} published values and claims; statuses: " + ", ".join(
+        f"{k} {v}" for k, v in card["status"].value_counts().items()),
+    "## Counts by paper", md_table(by_paper),
+    "## Counts by table", md_table(by_source),
+    "## Every value", md_table(rows),
+]) + "\n"
+
+Path(smk.output.csv).parent.mkdir(parents=True, exist_ok=True)
+card.to_csv(smk.output.csv, index=False)
+Path(smk.output.md).write_text(text)
+Path(smk.log[0]).write_text(f"{len(card)} rows written\n")
