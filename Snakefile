@@ -12,8 +12,11 @@ validate(config, "config/schema.yaml")
 
 # Each replication's rules file appends its check file here; the scorecard gathers them.
 CHECK_FILES = []
-# Each replication's rules file appends its final outputs here (tables, figures, notebooks).
+# Each replication's rules file appends its final outputs here (tables, figures).
 FINAL_OUTPUTS = []
+# Notebook names (notebooks/<name>.py.ipynb) and the key figures the report embeds.
+NOTEBOOKS = []
+REPORT_FIGURES = []
 
 include: "workflow/rules/common.smk"
 
@@ -21,6 +24,7 @@ for _smk in sorted(Path(workflow.basedir, "workflow", "rules").glob("rep_*.smk")
     include: str(_smk.relative_to(workflow.basedir))
 
 include: "workflow/rules/scorecard.smk"
+include: "workflow/rules/report.smk"
 
 
 rule all:
@@ -28,4 +32,5 @@ rule all:
     input:
         "results/scorecard.csv",
         "results/scorecard.md",
+        "results/report.html",
         FINAL_OUTPUTS,

@@ -12,6 +12,8 @@ rule scorecard:
         md="results/scorecard.md",
     log:
         "results/logs/scorecard.log",
+    benchmark:
+        "results/benchmarks/scorecard.tsv"
     conda:
         "../envs/gearrep.yaml"
     script:

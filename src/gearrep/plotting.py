@@ -1,0 +1,76 @@
+"""One matplotlib style for every gearrep figure.
+
+Rules: axes are labelled with their unit, published values are markers (open symbols, named by
+their source table), computed values are lines. Functions take an ``Axes`` and return it; they
+never save files (workflow scripts do).
+"""
+
+from __future__ import annotations
+
+import re
+
+import matplotlib as mpl
+
+STYLE = {
+    "figure.figsize": (6.4, 4.2),
+    "figure.dpi": 110,
+    "savefig.dpi": 130,
+    "savefig.bbox": "tight",
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "axes.titlesize": 11,
+    "axes.labelsize": 10,
+    "legend.fontsize": 8,
+    "legend.frameon": False,
+    "lines.linewidth": 1.6,
+    "lines.markersize": 6,
+}
+
+_UNIT = re.compile(r"\[[^\]]+\]|\(([^)]*)\)\s*$")
+
+
+def use_style() -> None:
+    """Apply the gearrep style to matplotlib's global rcParams."""
+    mpl.rcParams.update(STYLE)
+
+
+def _require_unit(label: str, which: str) -> str:
+    if not _UNIT.search(label):
+        raise ValueError(f"{which} label {label!r} must end with its unit in brackets, e.g. 'KE [arcsec]' "
+                         "(use '[-]' for dimensionless)")
+    return label
+
+
+def label_axes(ax, xlabel: str, ylabel: str, title: str | None = None):
+    """Set axis labels, each required to carry a unit in brackets ('phi1 [deg]')."""
+    ax.set_xlabel(_require_unit(xlabel, "x"))
+    ax.set_ylabel(_require_unit(ylabel, "y"))
+    if title:
+        ax.set_title(title)
+    return ax
+
+
+def computed(ax, x, y, label: str, **kw):
+    """Computed values: a line (with small dots at the computed points)."""
+    kw.setdefault("marker", ".")
+    kw.setdefault("markersize", 3)
+    ax.plot(x, y, "-", label=label, **kw)
+    return ax
+
+
+def published(ax, x, y, source: str, label: str | None = None, **kw):
+    """Published values: open markers, labelled with their source (e.g. 'Table 5.3')."""
+    kw.setdefault("marker", "o")
+    kw.setdefault("mfc", "none")
+    kw.setdefault("linestyle", "none")
+    ax.plot(x, y, label=f"{label or 'published'} ({source})", **kw)
+    return ax
+
+
+def finish(ax, loc: str = "best"):
+    """Add the legend (if anything is labelled) and return the figure."""
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(loc=loc)
+    return ax.figure

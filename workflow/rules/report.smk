@@ -1,0 +1,37 @@
+# Notebooks (executed by Snakemake's notebook directive, via papermill) rendered to HTML, and the
+# one-page report. Each replication's rules add to NOTEBOOKS (names of notebooks/<name>.py.ipynb
+# whose executing rule writes results/notebooks/<name>.executed) and to REPORT_FIGURES.
+
+
+rule render_notebook:
+    input:
+        "results/notebooks/{name}.executed",
+    output:
+        "results/notebooks/{name}.html",
+    log:
+        "results/logs/render_{name}.log",
+    conda:
+        "../envs/gearrep.yaml"
+    shell:
+        "jupyter nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
+        "results/notebooks/{wildcards.name}.ipynb > {log} 2>&1"
+
+
+rule report:
+    input:
+        scorecard="results/scorecard.csv",
+        notebooks=expand("results/notebooks/{name}.html", name=NOTEBOOKS),
+        figures=REPORT_FIGURES,
+        errata="data/errata.csv",
+        config="config/config.yaml",
+        code=lib("report", "checks", "published"),
+    output:
+        "results/report.html",
+    log:
+        "results/logs/report.log",
+    benchmark:
+        "results/benchmarks/report.tsv"
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/report.py"
