@@ -35,6 +35,9 @@ def _variants(printed: str):
     with E/e, with a LaTeX-style minus or a space after the sign."""
     s = printed.strip()
     yield s
+    words = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"]
+    if s.isdigit() and int(s) < len(words):
+        yield words[int(s)]  # small integers written as words
     yield s.lstrip("+")
     if s.startswith("-"):
         yield "−" + s[1:]
