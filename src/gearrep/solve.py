@@ -124,6 +124,7 @@ def newton(
     upper=None,
     keep_inside: bool = False,
     rcond: float = 1e-13,
+    rows: bool = False,
 ) -> SolveResult:
     """Solve ``fun(x) = 0`` for a batch of independent problems.
 
@@ -140,6 +141,9 @@ def newton(
         outside them gets status OFF_FLANK.
     keep_inside : project every iterate onto the bounds (the "domain-kept" variant)
     rcond : relative singular-value threshold below which the Jacobian counts as singular
+    rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
+        (into the batch) of the rows of ``x``: the solver passes only the active rows, so
+        per-problem data (e.g. fixed parameters) can be looked up by ``idx``
 
     Returns
     -------
@@ -159,6 +163,16 @@ def newton(
     if keep_inside:
         x = np.clip(x, lo, hi)
 
+    if rows:
+        _fun, _jac = fun, jac
+        _idx = {"i": np.arange(n)}
+
+        def fun(xx):
+            return _fun(xx, _idx["i"])
+
+        jac = None if _jac is None else (lambda xx: _jac(xx, _idx["i"]))
+    else:
+        _idx = {"i": None}
     F = np.asarray(fun(x), dtype=float).reshape(n, -1)
     if F.shape[1] < k:
         raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
@@ -166,6 +180,7 @@ def newton(
     iters = np.zeros(n, dtype=int)
     status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
     status[~np.isfinite(res)] = int(Status.DIVERGED)
+    status[res < tol] = int(Status.CONVERGED)  # a start that already solves the system
     done = (res < tol) | ~np.isfinite(res)
     stalled = np.zeros(n, dtype=bool)
 
@@ -174,6 +189,7 @@ def newton(
         if act.size == 0:
             break
         xa, Fa = x[act], F[act]
+        _idx["i"] = act
         Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
         bad_j = ~np.all(np.isfinite(Ja), axis=(1, 2))
@@ -199,7 +215,9 @@ def newton(
                 xt = xa[idx] + lam[idx, None] * d[idx]
                 if keep_inside:
                     xt = np.clip(xt, lo, hi)
+                _idx["i"] = act[idx]
                 Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
+                _idx["i"] = act
                 rt = np.linalg.norm(Ft, axis=1)
                 x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
                 need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])

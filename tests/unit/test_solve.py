@@ -82,3 +82,19 @@ def test_with_status_marks_wrong_root():
     r = newton(sqrt2, np.array([[1.0, 0.0], [-3.0, 1.0]]))
     w = r.with_status(r.x[:, 0] < 0, Status.WRONG_ROOT)
     assert list(w.status_name) == ["converged", "wrong_root"]
+
+
+def test_start_already_at_root_is_converged_with_zero_iterations():
+    r = newton(sqrt2, np.array([[np.sqrt(2), np.sqrt(2)]]))
+    assert r.status[0] == Status.CONVERGED and r.iterations[0] == 0
+
+
+def test_rows_mode_passes_indices_of_active_rows():
+    # x^2 = p_i for each row; rows converge at different iterations, indices must stay aligned
+    p = np.array([4.0, 100.0, 1e-2, 2.0])
+    f = lambda x, i: x**2 - p[i, None]  # noqa: E731
+    j = lambda x, i: (2 * x)[:, :, None]  # noqa: E731
+    for jac in (j, None):
+        r = newton(f, np.ones((4, 1)), jac, rows=True)
+        assert np.all(r.converged)
+        np.testing.assert_allclose(r.x[:, 0], np.sqrt(p), atol=1e-11)  # residual 1e-12 / |2x|

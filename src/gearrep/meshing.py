@@ -1,0 +1,314 @@
+"""Meshing cycle: engagement limits, contact ratio and transmission error over the real cycle.
+
+Sources: seed 000 (curvilinear-tooth gear dissertation) eq (5.12)-(5.13); Temirkhan thesis
+(seed 003) eq (14); Litvin & Fuentes, "Gear Geometry and Applied Theory", 2nd ed., ch. 9
+(TE functions of neighbouring tooth pairs and their transfer points).
+
+Contact ratio (eq 5.13, corrected). Seed 000 prints m_c = (phi'_1E - phi'_1B) / 360 deg, where
+phi'_1B, phi'_1E are the pinion angles at which one pair of teeth comes into and goes out of
+mesh. Dimensionally the divisor must be the angular pitch 360 deg / T_p, not a full turn: with
+360 deg its own example (T_p = 20, m_c = 1.62) would need the pair to stay in mesh for 583 deg,
+more than a turn. Corrected:  m_c = (phi_1E - phi_1B) / (2 pi / N1).
+phi_1B and phi_1E are found here as the angles at which the contact point of one tooth pair
+reaches the boundary of either flank domain (tip/form circle or face edge of either member),
+by a Newton solve that adds the boundary equation and phi1 as unknown to the reduced TCA system.
+For an aligned involute pair with line contact pass ``v1=`` (the transverse section); the result
+is then the transverse contact ratio epsilon_alpha, which equals
+(sqrt(r_a1^2 - r_b1^2) + sqrt(r_a2^2 - r_b2^2) - a sin(alpha_w)) / p_b (:func:`contact_ratio_closed_form`).
+
+Real meshing cycle (TE envelope). Tooth pair k (k = 0 the reference pair) engages one angular
+pitch p1 = 2 pi / N1 later than pair k - 1 and its TE, with eq (14)'s nominal reference, is
+TE_k(phi1) = TE_0(phi1 - k p1) (identical teeth). Member 2 is driven: it is pushed to the most
+advanced of the positions demanded by the pairs in their engagement intervals, so the TE actually
+transmitted is the upper envelope max_k TE_k(phi1), and the pair in contact is the one with the
+largest (leading) TE. Pair 0 hands over to pair 1 at the transfer point phi_T where
+TE_0(phi_T) = TE_0(phi_T - p1) (inside the overlap [phi_1B + p1, phi_1E]); if pair 1 leads as soon
+as it engages the transfer is at phi_1B + p1, and if pair 0 leads until it leaves its flank the
+transfer is at phi_1E (edge contact beyond the flank is not modelled). The real cycle is
+[phi_T - p1, phi_T]. When the TE curves of neighbouring pairs coincide (conjugate action) the
+transfer point is indeterminate and is reported as NaN.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .solve import SolveResult, Status, newton
+from .tca import (ContactPoints, GearPair, _reduced_FJ, newton_rows, solve_contact,
+                  trace_path)
+
+
+def contact_ratio(phi1_begin, phi1_end, n1):
+    """Contact ratio from the engagement limits of one tooth pair, seed 000 eq (5.13) corrected:
+    m_c = (phi_1E - phi_1B) / (2 pi / N1) (angles in rad). Vectorised."""
+    if not (np.isfinite(n1) and n1 > 0):
+        raise ValueError(f"n1 must be > 0, got {n1!r}")
+    return (np.asarray(phi1_end, float) - np.asarray(phi1_begin, float)) * n1 / (2.0 * np.pi)
+
+
+def contact_ratio_closed_form(r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitch):
+    """Transverse contact ratio of an external involute pair (standard involute geometry, Litvin & Fuentes ch. 10):
+    (sqrt(r_a1^2 - r_b1^2) + sqrt(r_a2^2 - r_b2^2) - a sin(alpha_w)) / p_b, cos(alpha_w) = (r_b1 + r_b2)/a.
+
+    For the standard centre distance alpha_w = alpha and p_b = pi m cos(alpha). Vectorised.
+    """
+    ra1, rb1, ra2, rb2, a, pb = (np.asarray(x, float) for x in (r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitch))
+    for name, v in (("r_b1", rb1), ("r_b2", rb2), ("base_pitch", pb)):
+        if np.any(~(v > 0)):
+            raise ValueError(f"{name} must be > 0")
+    if np.any(ra1 < rb1) or np.any(ra2 < rb2):
+        raise ValueError("tip radii r_a1, r_a2 must be >= the base radii")
+    if np.any(a < rb1 + rb2):
+        raise ValueError("centre_distance must be >= r_b1 + r_b2")
+    sin_aw = np.sqrt(1.0 - ((rb1 + rb2) / a) ** 2)
+    return (np.sqrt(ra1**2 - rb1**2) + np.sqrt(ra2**2 - rb2**2) - a * sin_aw) / pb
+
+
+# ----------------------------------------------------------------------------------------------
+# engagement limits
+# ----------------------------------------------------------------------------------------------
+def _values(c: ContactPoints):
+    return np.stack([c.u1, c.v1, c.u2, c.v2], axis=-1)
+
+
+def _margins(pair: GearPair, vals):
+    lo = np.concatenate([pair.lower1, pair.lower2])
+    hi = np.concatenate([pair.upper1, pair.upper2])
+    span = np.where(np.isfinite(hi - lo), hi - lo, 1.0)
+    m = np.empty(vals.shape[:-1] + (8,))
+    m[..., 0::2] = (vals - lo) / span
+    m[..., 1::2] = (hi - vals) / span
+    return np.where(np.isfinite(m), m, np.inf), lo, hi
+
+
+@dataclass(frozen=True)
+class EngagementLimit:
+    """One end of the engagement interval: angle, the contact there, and which flank boundary."""
+
+    phi1: float
+    contact: ContactPoints
+    boundary: str  # e.g. "u2_max" (tip of member 2), "u1_max", "v1_min", ...
+    solve: SolveResult
+
+
+_BNAMES = ["u1_min", "u1_max", "v1_min", "v1_max", "u2_min", "u2_max", "v2_min", "v2_max"]
+
+
+def _boundary_solve(pair, contact: ContactPoints, j: int, v1_fixed, tol=1e-12, maxiter=50):
+    """Solve the reduced system plus 'parameter j//2 on its bound' for (u1[, v1], phi1)."""
+    lo = np.concatenate([pair.lower1, pair.lower2])
+    hi = np.concatenate([pair.upper1, pair.upper2])
+    p_idx, bound = j // 2, (lo if j % 2 == 0 else hi)[j // 2]
+    fixed = v1_fixed is not None
+    _, n1 = pair.member1(contact.u1, contact.v1, contact.phi1)
+    drop = float(np.argmax(np.abs(n1[0])))
+
+    def F(x, p):
+        u1 = x[:, 0]
+        v1 = p[:, 1] if fixed else x[:, 1]
+        phi1 = x[:, -1]
+        Fv, _, K = _reduced_FJ(pair, u1, v1, phi1, p[:, 0], derivs=False)
+        vals = np.stack([u1, v1, K["u2"], K["v2"]], axis=-1)[:, p_idx]
+        return np.column_stack([Fv, vals - bound])
+
+    x0 = [contact.u1[0]] + ([] if fixed else [contact.v1[0]]) + [contact.phi1[0]]
+    params = [drop] + ([float(v1_fixed)] if fixed else [])
+    res = newton_rows(F, None, np.array([x0]), np.array([params]), jacobian="numeric", tol=tol, maxiter=maxiter)
+    phi1 = float(res.x[0, -1])
+    v1 = float(v1_fixed) if fixed else float(res.x[0, 1])
+    c = solve_contact(pair, phi1, np.array([[res.x[0, 0], v1]]), v1=v1_fixed)
+    # the point is on the boundary: CONVERGED or OFF_FLANK by rounding; keep the boundary-solve status
+    st = c.status.copy()
+    if res.status[0] == Status.CONVERGED and st[0] in (Status.CONVERGED, Status.OFF_FLANK):
+        st[0] = Status.CONVERGED
+    else:
+        st[0] = res.status[0] if res.status[0] != Status.CONVERGED else st[0]
+    c = ContactPoints(**{**c.__dict__, "status": st})
+    return phi1, c, res
+
+
+def engagement_limits(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, step=None,
+                      max_steps: int = 400, tol: float = 1e-12):
+    """Angles phi_1B < phi_1E at which one tooth pair enters and leaves mesh (eq 5.13's limits).
+
+    Walks the path of contact by continuation from ``phi1_start`` (a position inside the
+    engagement interval, default 0) in both directions with ``step`` (default p1/10) until the
+    contact leaves the flank domain, then solves for the exact angle at which the contact is on the
+    boundary that was crossed (reduced formulation, eq 33-44). Returns (begin, end) as
+    :class:`EngagementLimit`; raises ValueError if the start position has no contact.
+    """
+    p1 = 2.0 * np.pi / pair.n1
+    h = p1 / 10.0 if step is None else float(step)
+    if not (np.isfinite(h) and h > 0):
+        raise ValueError(f"step must be > 0, got {step!r}")
+    c0 = solve_contact(pair, phi1_start, start, v1=v1, tol=tol)
+    if c0.status[0] != Status.CONVERGED:
+        raise ValueError(f"no contact inside the flanks at phi1_start = {phi1_start!r} "
+                         f"(status {c0.status_name[0]}); give another phi1_start or start")
+    out = []
+    for direction in (-1.0, 1.0):
+        last = c0
+        prev = None
+        first_out = None
+        for i in range(1, max_steps + 1):
+            phi = phi1_start + direction * i * h
+            guess = last.unknowns("reduced")
+            if prev is not None:
+                guess = guess + (guess - prev.unknowns("reduced"))
+            c = solve_contact(pair, phi, guess, v1=v1, tol=tol)
+            if c.status[0] != Status.CONVERGED:
+                first_out = c
+                break
+            prev, last = last, c
+        if first_out is None:
+            raise ValueError(f"contact did not leave the flanks within {max_steps} steps of {h!r} rad")
+        if first_out.status[0] == Status.OFF_FLANK:
+            m, _, _ = _margins(pair, _values(first_out))
+            j = int(np.argmin(m[0]))
+        else:  # no contact computed outside: the boundary nearest at the last inside point
+            m, _, _ = _margins(pair, _values(last))
+            j = int(np.argmin(m[0]))
+        phi, c, res = _boundary_solve(pair, last, j, v1, tol=tol)
+        if res.status[0] != Status.CONVERGED or not (min(last.phi1[0], first_out.phi1[0]) - 1e-9 <= phi
+                                                     <= max(last.phi1[0], first_out.phi1[0]) + 1e-9):
+            # a different boundary was crossed first: try all, keep the one nearest the last inside point
+            best = None
+            for jj in range(8):
+                try:
+                    p2, c2, r2 = _boundary_solve(pair, last, jj, v1, tol=tol)
+                except Exception:  # pragma: no cover - defensive
+                    continue
+                lo_, hi_ = sorted((last.phi1[0], first_out.phi1[0]))
+                if r2.status[0] == Status.CONVERGED and lo_ - 1e-9 <= p2 <= hi_ + 1e-9:
+                    if best is None or abs(p2 - last.phi1[0]) < abs(best[0] - last.phi1[0]):
+                        best = (p2, c2, r2, jj)
+            if best is None:
+                raise ValueError("could not locate the flank boundary crossed by the path of contact")
+            phi, c, res, j = best
+        out.append(EngagementLimit(phi1=phi, contact=c, boundary=_BNAMES[j], solve=res))
+    return out[0], out[1]
+
+
+# ----------------------------------------------------------------------------------------------
+# meshing cycle
+# ----------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class MeshingCycle:
+    """Meshing cycle of a gear pair.
+
+    begin, end : engagement limits of one tooth pair (phi_1B, phi_1E) with the boundary reached
+    contact_ratio : (phi_1E - phi_1B) / (2 pi / N1) (eq 5.13 corrected)
+    path : contact points of the reference pair on a grid over [phi_1B, phi_1E]
+    transfer_in, transfer_out : real-cycle limits (transfer points), NaN if indeterminate
+    transfer_kind : "crossing", "at_engagement" (next pair leads at once), "at_exit" (pair leads
+        until it leaves its flank) or "indeterminate"
+    phi1, te, pair_index : the TE envelope over the real cycle (or over [phi_1B, phi_1B + p1] when
+        indeterminate): angle, TE [rad], and which pair (k = -1, 0, 1) is in contact
+    te_peak_to_peak : max - min of ``te`` [rad]
+    """
+
+    begin: EngagementLimit
+    end: EngagementLimit
+    contact_ratio: float
+    path: ContactPoints
+    transfer_in: float
+    transfer_out: float
+    transfer_kind: str
+    phi1: np.ndarray
+    te: np.ndarray
+    pair_index: np.ndarray
+
+    @property
+    def te_peak_to_peak(self) -> float:
+        return float(np.nanmax(self.te) - np.nanmin(self.te))
+
+
+class _TEFunction:
+    """TE of the reference pair at arbitrary phi1 in its engagement interval (solves warm-started
+    from the traced path)."""
+
+    def __init__(self, pair, path: ContactPoints, v1, tol):
+        ok = path.converged
+        self.pair, self.v1, self.tol = pair, v1, tol
+        self.phi = path.phi1[ok]
+        self.x = path.unknowns("reduced")[ok]
+        self.lo, self.hi = self.phi.min(), self.phi.max()
+
+    def __call__(self, phi1):
+        phi1 = np.atleast_1d(np.asarray(phi1, float))
+        te = np.full(phi1.shape, -np.inf)
+        inside = (phi1 >= self.lo - 1e-12) & (phi1 <= self.hi + 1e-12)
+        if np.any(inside):
+            p = np.clip(phi1[inside], self.lo, self.hi)
+            start = np.column_stack([np.interp(p, self.phi, self.x[:, 0]), np.interp(p, self.phi, self.x[:, 1])])
+            c = solve_contact(self.pair, p, start, v1=self.v1, tol=self.tol)
+            # inside the engagement interval an OFF_FLANK status can only be rounding at its ends
+            ok = (c.status == Status.CONVERGED) | (c.status == Status.OFF_FLANK)
+            t = np.where(ok, c.te, np.nan)
+            te[inside] = t
+        return te
+
+
+def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, n_points: int = 81,
+                  tol: float = 1e-12) -> MeshingCycle:
+    """Engagement limits, contact ratio (eq 5.13 corrected), transfer points and the TE over the
+    real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring).
+
+    ``phi1_start``/``start``: a position with contact inside the flanks; ``v1``: fixed face-width
+    coordinate for line contact (None for point contact); ``n_points``: grid size of the path and
+    of the real-cycle TE.
+    """
+    if int(n_points) < 5:
+        raise ValueError(f"n_points must be >= 5, got {n_points!r}")
+    b, e = engagement_limits(pair, phi1_start, start, v1=v1, tol=tol)
+    mc = float(contact_ratio(b.phi1, e.phi1, pair.n1))
+    p1 = 2.0 * np.pi / pair.n1
+    grid = np.linspace(b.phi1, e.phi1, int(n_points))
+    path = trace_path(pair, grid[1:-1], b.contact.unknowns("reduced")[0], v1=v1, tol=tol)
+    path = ContactPoints.concatenate([b.contact, path, e.contact])
+    TE = _TEFunction(pair, path, v1, tol)
+
+    def envelope(phi):
+        cand = np.stack([TE(phi + p1), TE(phi), TE(phi - p1)], axis=-1)  # pairs k = -1, 0, +1
+        cand = np.where(np.isnan(cand), -np.inf, cand)
+        k = np.argmax(cand, axis=-1)
+        return np.take_along_axis(cand, k[:, None], axis=-1)[:, 0], k - 1
+
+    kind, t_out = "indeterminate", np.nan
+    if mc > 1.0:
+        ov = np.linspace(b.phi1 + p1, e.phi1, int(n_points))
+        g = TE(ov - p1) - TE(ov)
+        scale = np.nanmax(np.abs(path.te[path.converged])) if np.any(path.converged) else 0.0
+        gtol = 1e-13 + 1e-9 * scale
+        if np.all(np.abs(g) <= gtol * 10):
+            kind = "indeterminate"
+        elif g[0] > gtol:
+            kind, t_out = "at_engagement", float(b.phi1 + p1)
+        elif np.all(g < gtol):
+            kind, t_out = "at_exit", float(e.phi1)
+        else:
+            i = int(np.flatnonzero(g >= 0)[0])
+            lo_, hi_ = ov[i - 1], ov[i]
+            x0 = lo_ - g[i - 1] * (hi_ - lo_) / (g[i] - g[i - 1])
+
+            def G(x):
+                return (TE(x[:, 0] - p1) - TE(x[:, 0]))[:, None]
+
+            gt = max(1e-16, 1e-6 * gtol)
+            res = newton(G, np.array([[x0]]), tol=gt, maxiter=30, lower=[lo_ - 1e-9], upper=[hi_ + 1e-9])
+            if res.status[0] == Status.CONVERGED:
+                kind, t_out = "crossing", float(res.x[0, 0])
+            else:  # fall back to the secant estimate, flagged by the kind
+                kind, t_out = "crossing_unrefined", float(x0)
+    if np.isfinite(t_out):
+        t_in = t_out - p1
+        phi = np.linspace(t_in, t_out, int(n_points))
+    else:
+        t_in = np.nan
+        phi = np.linspace(b.phi1, b.phi1 + p1, int(n_points))
+    te, k = envelope(phi)
+    te = np.where(np.isfinite(te), te, np.nan)
+    return MeshingCycle(begin=b, end=e, contact_ratio=mc, path=path, transfer_in=float(t_in),
+                        transfer_out=float(t_out), transfer_kind=kind, phi1=phi, te=te, pair_index=k)

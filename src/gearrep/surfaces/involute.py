@@ -1,0 +1,547 @@
+"""Involute spur and helical tooth flanks with longitudinal crowning and tip/root relief.
+
+Source: Temirkhan, PhD thesis 2023 (seed 003): involute profile eq (1)-(2), spur flank eq (3)-(4),
+helical flank eq (5), longitudinal crowning eq (10)-(12), tip relief eq (13), the flanks with
+modifications eq (57)-(58), and the gear-size table (Table 1). Standard involute geometry
+(Litvin & Fuentes, "Gear Geometry and Applied Theory", 2nd ed., ch. 10 and 14) is used where
+the thesis, as printed, is wrong; every correction is listed below with its evidence.
+
+Parameters (as in the thesis, eq (35)-(36))
+-------------------------------------------
+``u`` is the distance of the flank point from the gear axis (the involute "radius") and ``v`` its
+axial coordinate (face-width coordinate), so that in the gear's own frame S_i
+
+    r(u, v) = ( u cos psi(u, v),  u sin psi(u, v),  v )                                    (A)
+
+with the polar angle
+
+    psi(u, v) = side * ( c - inv(u) - delta(u, v) / r_b ) + twist(v),                      (B)
+    inv(u)    = tan(a_u) - a_u = sqrt(u^2 - r_b^2)/r_b - atan(sqrt(u^2 - r_b^2)/r_b),
+                cos(a_u) = r_b / u                     (the polar angle of eq (3)-(4)),
+    c         = s_t / (2 r_p) + inv(alpha_t)           (half tooth-thickness angle + inv at r_p).
+
+The tooth is symmetric about the +x_i axis; ``side = +1`` is the flank on the +y_i side of that
+tooth and ``side = -1`` the flank on the -y_i side. ``v`` runs over the face width
+``[-b/2, b/2]`` (the mid-face plane is v = 0; the thesis measures v from the face edge,
+``v_thesis = v + b/2``, so its v_o = b/2 is our v = 0).
+
+Modifications ``delta(u, v) = delta_lead(v) + delta_profile(u)`` are material removed, measured
+in the transverse plane along the profile normal: turning an involute of base radius r_b by the
+angle delta / r_b moves it by exactly delta along its normal (base-pitch property), so (B) is an
+exact normal offset for constant delta and a first-order one for delta varying with u. On a
+helical flank the offset along the 3-D surface normal is delta * cos(beta_b).
+
+Helix (``helix_form``):
+* ``"true"`` (default): the involute helicoid, twist(v) = hand * v * tan(beta) / r_p, i.e. a
+  constant lead 2 pi r_p / tan(beta) = 2 pi r_b / tan(beta_b). Two helicoids of opposite hands with
+  equal normal module/pressure/helix angle are conjugate on parallel axes (line contact, TE = 0).
+* ``"thesis"``: eq (5)/(58) as printed, twist(v) = hand * asin(v sin(beta) / r_b). It is not a
+  helicoid (see correction 3).
+
+Corrections to the thesis (evidence in tests/unit/test_involute.py)
+-------------------------------------------------------------------
+1. Eq (1) and eq (57): the y component must read r_b (sin t - t cos t), not r_b (cos t - t sin t).
+   With the printed form the point at t = 0 is (r_b, r_b), at distance sqrt(2) r_b from the axis,
+   and its distance from the axis is not u of eq (2) (|r|^2 = 2 r_b^2 (cos^2 t + t^2 sin^2 t) instead
+   of r_b^2 (1 + t^2)). The thesis's own numbers were computed with a true involute: the pitch-point
+   example of section 6.1 (25/25 teeth, m = 2.5, 20 deg: u1 = 31.103, u2 = 31.402) satisfies
+   sqrt(u1^2 - r_b^2) + sqrt(u2^2 - r_b^2) = a sin(alpha) (21.375 vs 21.376), i.e. u1, u2 are the radii
+   of one point of the line of action, which holds only for the true involute.
+2. Table 1: the tip diameter is d_a = d_p + 2m (pitch diameter plus two addenda), not
+   "d_{1,2} + 2m" with d_{1,2} the base diameter. With the printed formula the 52/72-tooth,
+   m = 1 pair of section 6.2 would have its tip circle (r_a1 = 25.43) inside its pitch circle
+   (r_p1 = 26) and a negative contact ratio (-0.88): it could not mesh.
+3. Eq (5)/(58) is not a helicoid: the twist asin(v sin(beta)/r_b) is not linear in v (the lead
+   varies across the face, and the formula is undefined for |v| sin(beta) > r_b), and even at
+   mid-face its helix angle at the pitch cylinder is atan(sin(beta) / cos(alpha_t)) (14.48 deg for
+   the thesis's 14 deg example), not beta. Two such flanks with N1 != N2 are not conjugate (the
+   aligned, unmodified pair has no line contact and a non-zero TE). ``helix_form="true"`` gives the
+   involute helicoid; ``"thesis"`` reproduces (5)/(58) for comparison.
+4. Eq (57)/(58) add the modification to the Cartesian x and y components. That displaces the
+   profile in a fixed direction (not along its normal) and destroys the property that u is the
+   distance from the axis, on which the reduced TCA (eq 35-40) depends. Here the modification is
+   applied as a rotation of the transverse section by delta/r_b (eq B), which keeps u = |r_xy|
+   and offsets the flank by delta along its normal.
+5. Eq (12) normalises v - v_o by v_o: with the thesis's v in [0, b] and v_o = b/2 that is the half
+   face width; here the half width is an explicit parameter (default b/2).
+
+Eq (3)-(4) themselves are correct: acos((r_b/u)(cos t + t sin t)) equals inv(u) for u >= r_b (the
+polar angle of the involute that starts on the x axis), i.e. the ``side = -1`` flank with c = 0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .base import Surface, SurfacePoint
+
+
+def _check_finite(name: str, value, *, positive=False, nonneg=False):
+    v = float(value)
+    if not np.isfinite(v):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    if positive and not v > 0:
+        raise ValueError(f"{name} must be > 0, got {value!r}")
+    if nonneg and not v >= 0:
+        raise ValueError(f"{name} must be >= 0, got {value!r}")
+    return v
+
+
+# ----------------------------------------------------------------------------------------------
+# involute function in terms of the radius u (eq 2-4)
+# ----------------------------------------------------------------------------------------------
+def involute_polar_angle(u, r_b):
+    """Polar angle inv(u) of the involute of base radius ``r_b`` at radius ``u`` (thesis eq 2-4).
+
+    inv(u) = tan(a_u) - a_u with cos(a_u) = r_b/u, which equals eq (4)'s
+    acos((r_b/u)(cos t + t sin t)) with t = sqrt(u^2/r_b^2 - 1) (eq 2). Vectorised over ``u``;
+    NaN for u < r_b (inside the base circle, where the involute does not exist).
+    """
+    r_b = _check_finite("r_b", r_b, positive=True)
+    u = np.asarray(u, dtype=float)
+    with np.errstate(invalid="ignore"):
+        t = np.sqrt(u * u - r_b * r_b) / r_b
+    return t - np.arctan(t)
+
+
+def _inv_derivs(u, r_b):
+    """inv(u), d inv/du = s/(r_b u), d2 inv/du2 = r_b/(s u^2) with s = sqrt(u^2 - r_b^2)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        s = np.sqrt(u * u - r_b * r_b)
+        t = s / r_b
+        inv = t - np.arctan(t)
+        d1 = s / (r_b * u)
+        d2 = r_b / (s * u * u)
+    return inv, d1, d2
+
+
+def thesis_involute_xy(theta, r_b, corrected: bool = True):
+    """Involute point of eq (1): x = r_b (cos t + t sin t), y = r_b (sin t - t cos t) (corrected).
+
+    ``corrected=False`` returns the y component as printed in the thesis, r_b (cos t - t sin t),
+    for the evidence test of correction 1. ``theta`` is the roll angle t of eq (2).
+    """
+    r_b = _check_finite("r_b", r_b, positive=True)
+    t = np.asarray(theta, dtype=float)
+    x = r_b * (np.cos(t) + t * np.sin(t))
+    y = r_b * (np.sin(t) - t * np.cos(t)) if corrected else r_b * (np.cos(t) - t * np.sin(t))
+    return np.stack([x, y], axis=-1)
+
+
+# ----------------------------------------------------------------------------------------------
+# modifications: each returns (delta, d delta, d2 delta) of material removed (eq 10-13)
+# ----------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ParabolicCrowning:
+    """Longitudinal parabolic crowning, thesis eq (10): delta = c1 w^2 + c2 w + c3, w = v - v0.
+
+    ``c1`` [1/length] is the crowning coefficient (thesis a_1, a_p, c_1); ``c2`` a lead slope;
+    ``c3`` a uniform thinning.
+    """
+
+    c1: float
+    c2: float = 0.0
+    c3: float = 0.0
+    v0: float = 0.0
+
+    def __post_init__(self):
+        for n in ("c1", "c2", "c3", "v0"):
+            _check_finite(n, getattr(self, n))
+
+    def __call__(self, v):
+        w = np.asarray(v, dtype=float) - self.v0
+        return self.c1 * w * w + self.c2 * w + self.c3, 2.0 * self.c1 * w + self.c2, np.full_like(w, 2.0 * self.c1)
+
+
+@dataclass(frozen=True)
+class CircularCrowning:
+    """Longitudinal circular-arc crowning, thesis eq (11): delta = R - sqrt(R^2 - w^2), w = v - v0,
+    with R = (4 c_c^2 + b^2) / (8 c_c) so that delta = c_c at the face edges w = +-b/2.
+
+    ``crown`` is c_c (> 0, < b/2 so that the arc spans the face), ``face_width`` is b.
+    """
+
+    crown: float
+    face_width: float
+    v0: float = 0.0
+
+    def __post_init__(self):
+        _check_finite("crown", self.crown, positive=True)
+        _check_finite("face_width", self.face_width, positive=True)
+        _check_finite("v0", self.v0)
+        if not self.crown < 0.5 * self.face_width:
+            raise ValueError(f"crown must be in (0, face_width/2) = (0, {0.5 * self.face_width}), got {self.crown!r}")
+
+    @property
+    def radius(self) -> float:
+        """Arc radius R of eq (11)."""
+        return (4.0 * self.crown**2 + self.face_width**2) / (8.0 * self.crown)
+
+    def __call__(self, v):
+        w = np.asarray(v, dtype=float) - self.v0
+        R = self.radius
+        with np.errstate(invalid="ignore", divide="ignore"):
+            q = np.sqrt(R * R - w * w)
+            return R - q, w / q, R * R / q**3
+
+
+@dataclass(frozen=True)
+class LogarithmicCrowning:
+    """Longitudinal logarithmic crowning, thesis eq (12): delta = a1 ln(1 / (1 - a2 (w/h)^2)),
+    w = v - v0, h = ``half_width`` (the thesis's v_o = b/2, see correction 5).
+
+    ``a1`` [length] >= 0 scales the drop; ``a2`` in [0, 1) keeps the logarithm finite over the face
+    (delta(+-h) = a1 ln(1/(1 - a2))).
+    """
+
+    a1: float
+    a2: float
+    half_width: float
+    v0: float = 0.0
+
+    def __post_init__(self):
+        _check_finite("a1", self.a1, nonneg=True)
+        _check_finite("half_width", self.half_width, positive=True)
+        _check_finite("v0", self.v0)
+        a2 = _check_finite("a2", self.a2)
+        if not 0.0 <= a2 < 1.0:
+            raise ValueError(f"a2 must be in [0, 1), got {self.a2!r}")
+
+    def __call__(self, v):
+        s = (np.asarray(v, dtype=float) - self.v0) / self.half_width
+        h = self.half_width
+        with np.errstate(invalid="ignore", divide="ignore"):
+            q = 1.0 - self.a2 * s * s
+            d = -self.a1 * np.log(q)
+            d1 = 2.0 * self.a1 * self.a2 * s / (h * q)
+            d2 = 2.0 * self.a1 * self.a2 * (1.0 + self.a2 * s * s) / (h * h * q * q)
+        return d, d1, d2
+
+
+@dataclass(frozen=True)
+class TipRelief:
+    """Tip relief, thesis eq (13): delta = H(u - u0) c_m ((u - u0)/L)^2 (u = radius).
+
+    ``u0`` start radius of the relief, ``length`` L > 0, ``amount`` c_m >= 0 (relief at u0 + L).
+    C1 at u0; the second derivative (curvature) jumps there.
+    """
+
+    u0: float
+    length: float
+    amount: float
+
+    def __post_init__(self):
+        _check_finite("u0", self.u0, positive=True)
+        _check_finite("length", self.length, positive=True)
+        _check_finite("amount", self.amount, nonneg=True)
+
+    def __call__(self, u):
+        w = np.asarray(u, dtype=float) - self.u0
+        on = w > 0
+        k = self.amount / self.length**2
+        return np.where(on, k * w * w, 0.0), np.where(on, 2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
+
+
+@dataclass(frozen=True)
+class RootRelief:
+    """Root relief, eq (13) mirrored: delta = H(u0 - u) c_m ((u0 - u)/L)^2 (u = radius)."""
+
+    u0: float
+    length: float
+    amount: float
+
+    def __post_init__(self):
+        _check_finite("u0", self.u0, positive=True)
+        _check_finite("length", self.length, positive=True)
+        _check_finite("amount", self.amount, nonneg=True)
+
+    def __call__(self, u):
+        w = self.u0 - np.asarray(u, dtype=float)
+        on = w > 0
+        k = self.amount / self.length**2
+        return np.where(on, k * w * w, 0.0), np.where(on, -2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
+
+
+# ----------------------------------------------------------------------------------------------
+# gear data (Table 1, corrected) and the flank surface
+# ----------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class InvoluteGearData:
+    """Size of an involute spur/helical gear (thesis Table 1, tip diameter corrected: d_a = d_p + 2m).
+
+    ``module`` and ``pressure_angle`` are normal values (for spur gears normal = transverse);
+    ``helix_angle`` beta at the pitch cylinder. Profile shift ``x`` (coefficient), addendum and
+    dedendum coefficients ``h_a``, ``h_f``, and ``thinning`` (transverse arc tooth-thickness
+    reduction at the pitch circle, e.g. a backlash allowance) follow standard practice.
+    """
+
+    n_teeth: int
+    module: float
+    pressure_angle: float
+    face_width: float
+    helix_angle: float = 0.0
+    x: float = 0.0
+    h_a: float = 1.0
+    h_f: float = 1.25
+    thinning: float = 0.0
+
+    def __post_init__(self):
+        if int(self.n_teeth) != self.n_teeth or self.n_teeth < 3:
+            raise ValueError(f"n_teeth must be an integer >= 3, got {self.n_teeth!r}")
+        _check_finite("module", self.module, positive=True)
+        a = _check_finite("pressure_angle", self.pressure_angle)
+        if not 0.0 < a < np.pi / 2:
+            raise ValueError(f"pressure_angle must be in (0, pi/2) rad, got {self.pressure_angle!r}")
+        _check_finite("face_width", self.face_width, positive=True)
+        b = _check_finite("helix_angle", self.helix_angle)
+        if not 0.0 <= b < np.pi / 2:
+            raise ValueError(f"helix_angle must be in [0, pi/2) rad, got {self.helix_angle!r}")
+        for n in ("x", "h_a", "h_f", "thinning"):
+            _check_finite(n, getattr(self, n))
+
+    @property
+    def transverse_module(self) -> float:
+        return self.module / np.cos(self.helix_angle)
+
+    @property
+    def alpha_t(self) -> float:
+        """Transverse pressure angle, tan(alpha_t) = tan(alpha_n)/cos(beta)."""
+        return float(np.arctan(np.tan(self.pressure_angle) / np.cos(self.helix_angle)))
+
+    @property
+    def r_p(self) -> float:
+        """Pitch (reference) radius N m_t / 2 (Table 1: d_p = N m)."""
+        return 0.5 * self.n_teeth * self.transverse_module
+
+    @property
+    def r_b(self) -> float:
+        """Base radius r_p cos(alpha_t) (Table 1: d_b = d_p cos alpha)."""
+        return self.r_p * np.cos(self.alpha_t)
+
+    @property
+    def r_a(self) -> float:
+        """Tip radius r_p + (h_a + x) m (Table 1 corrected: d_a = d_p + 2m for h_a = 1, x = 0)."""
+        return self.r_p + (self.h_a + self.x) * self.module
+
+    @property
+    def r_f(self) -> float:
+        """Root radius r_p - (h_f - x) m."""
+        return self.r_p - (self.h_f - self.x) * self.module
+
+    @property
+    def beta_b(self) -> float:
+        """Base helix angle, tan(beta_b) = tan(beta) cos(alpha_t)."""
+        return float(np.arctan(np.tan(self.helix_angle) * np.cos(self.alpha_t)))
+
+    @property
+    def tooth_thickness(self) -> float:
+        """Transverse circular tooth thickness at the pitch circle m_t (pi/2 + 2 x tan alpha_n) - thinning."""
+        return self.transverse_module * (0.5 * np.pi + 2.0 * self.x * np.tan(self.pressure_angle)) - self.thinning
+
+    @property
+    def base_pitch(self) -> float:
+        """Transverse base pitch 2 pi r_b / N."""
+        return 2.0 * np.pi * self.r_b / self.n_teeth
+
+
+class InvoluteFlank(Surface):
+    """One flank of an involute spur or helical tooth, r(u, v) of eq (A)-(B) of the module docstring.
+
+    Parameters
+    ----------
+    gear : InvoluteGearData
+    side : +1 (flank on the +y_i side of the tooth centred on x_i) or -1
+    hand : +1 right-hand, -1 left-hand helix (ignored for spur gears); mating external helical
+        gears have opposite hands
+    crowning : ParabolicCrowning | CircularCrowning | LogarithmicCrowning | None (eq 10-12)
+    relief : sequence of TipRelief / RootRelief (eq 13)
+    helix_form : "true" (involute helicoid) or "thesis" (eq 5/58 as printed)
+    u_min, u_max : flank limits in u (defaults: max(r_b, r_f) = start of the involute above the
+        root or base circle, and r_a). Evaluation exactly at u = r_b is singular (cusp).
+    """
+
+    cylindrical = True  #: r = (u cos psi, u sin psi, v): u = radius, v = axial coordinate
+
+    def __init__(self, gear: InvoluteGearData, side: int = 1, hand: int = 1, *, crowning=None,
+                 relief=(), helix_form: str = "true", u_min=None, u_max=None):
+        if not isinstance(gear, InvoluteGearData):
+            raise ValueError(f"gear must be an InvoluteGearData, got {type(gear).__name__}")
+        if side not in (1, -1):
+            raise ValueError(f"side must be +1 or -1, got {side!r}")
+        if hand not in (1, -1):
+            raise ValueError(f"hand must be +1 or -1, got {hand!r}")
+        if helix_form not in ("true", "thesis"):
+            raise ValueError(f"helix_form must be 'true' or 'thesis', got {helix_form!r}")
+        if crowning is not None and not callable(crowning):
+            raise ValueError("crowning must be a crowning object (callable v -> (d, d', d'')) or None")
+        relief = tuple(relief)
+        for r in relief:
+            if not isinstance(r, (TipRelief, RootRelief)):
+                raise ValueError(f"relief entries must be TipRelief or RootRelief, got {type(r).__name__}")
+        self.gear = gear
+        self.side = int(side)
+        self.hand = int(hand)
+        self.crowning = crowning
+        self.relief = relief
+        self.helix_form = helix_form
+        self.r_b = gear.r_b
+        self.r_p = gear.r_p
+        self.c = gear.tooth_thickness / (2.0 * gear.r_p) + float(involute_polar_angle(gear.r_p, gear.r_b))
+        umin = max(gear.r_b, gear.r_f) if u_min is None else _check_finite("u_min", u_min, positive=True)
+        umax = gear.r_a if u_max is None else _check_finite("u_max", u_max, positive=True)
+        if umin < gear.r_b:
+            raise ValueError(f"u_min must be >= r_b = {gear.r_b}, got {umin!r}")
+        if not umax > umin:
+            raise ValueError(f"u_max must be > u_min = {umin}, got {umax!r}")
+        self.u_min, self.u_max = float(umin), float(umax)
+        self.v_min, self.v_max = -0.5 * gear.face_width, 0.5 * gear.face_width
+        self.fd_step = (1e-4 * gear.r_p, 1e-4 * gear.face_width)
+        self._tan_b = np.tan(gear.helix_angle)
+        self._sin_b = np.sin(gear.helix_angle)
+
+    # -- domain -----------------------------------------------------------------------------
+    @property
+    def lower(self) -> np.ndarray:
+        """Lower bounds (u_min, v_min) of the flank parameter domain."""
+        return np.array([self.u_min, self.v_min])
+
+    @property
+    def upper(self) -> np.ndarray:
+        """Upper bounds (u_max, v_max) of the flank parameter domain."""
+        return np.array([self.u_max, self.v_max])
+
+    @property
+    def outward_sign(self) -> int:
+        """+1 if unit(r_u x r_v) points out of the tooth material, else -1 (here: -side)."""
+        return -self.side
+
+    def contains(self, u, v, tol: float = 1e-12) -> np.ndarray:
+        """True where (u, v) lies in the flank domain (closed, with relative slack ``tol``)."""
+        u = np.asarray(u, float)
+        v = np.asarray(v, float)
+        lo, hi = self.lower, self.upper
+        s = tol * (1.0 + np.abs(np.concatenate([lo, hi])))
+        return (u >= lo[0] - s[0]) & (u <= hi[0] + s[2]) & (v >= lo[1] - s[1]) & (v <= hi[1] + s[3])
+
+    # -- polar angle and its derivatives (eq B) ---------------------------------------------
+    def twist(self, v):
+        """Helix twist of the transverse section at axial coordinate v, and its two derivatives."""
+        v = np.asarray(v, dtype=float)
+        if self.gear.helix_angle == 0.0:
+            z = np.zeros_like(v)
+            return z, z, z
+        if self.helix_form == "true":
+            k = self.hand * self._tan_b / self.r_p
+            return k * v, np.full_like(v, k), np.zeros_like(v)
+        a = self._sin_b / self.r_b
+        w = a * v
+        with np.errstate(invalid="ignore"):
+            q = 1.0 - w * w
+            return self.hand * np.arcsin(w), self.hand * a / np.sqrt(q), self.hand * a * a * w / q**1.5
+
+    def polar_angle_derivs(self, u, v):
+        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
+        u = np.asarray(u, dtype=float)
+        v = np.asarray(v, dtype=float)
+        u, v = np.broadcast_arrays(u, v)
+        inv, i1, i2 = _inv_derivs(u, self.r_b)
+        dp = np.zeros_like(u)
+        dp1 = np.zeros_like(u)
+        dp2 = np.zeros_like(u)
+        for r in self.relief:
+            a, b, c = r(u)
+            dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+        if self.crowning is not None:
+            dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
+        else:
+            dl = dl1 = dl2 = 0.0
+        tw, tw1, tw2 = self.twist(v)
+        s, rb = self.side, self.r_b
+        psi = s * (self.c - inv - (dp + dl) / rb) + tw
+        psi_u = s * (-i1 - dp1 / rb)
+        psi_uu = s * (-i2 - dp2 / rb)
+        psi_v = tw1 - s * dl1 / rb
+        psi_vv = tw2 - s * dl2 / rb
+        return psi, psi_u, np.broadcast_to(psi_v, u.shape), psi_uu, np.zeros_like(u), np.broadcast_to(psi_vv, u.shape)
+
+    def polar_angle(self, u, v):
+        """Polar angle psi(u, v) of the flank point in the gear frame (eq B)."""
+        return self.polar_angle_derivs(u, v)[0]
+
+    # -- surface ----------------------------------------------------------------------------
+    def position(self, u, v) -> np.ndarray:
+        """r(u, v) = (u cos psi, u sin psi, v) (eq A; thesis eq 3-5 with corrections 1, 3, 4)."""
+        u = np.asarray(u, dtype=float)
+        v = np.asarray(v, dtype=float)
+        u, v = np.broadcast_arrays(u, v)
+        psi = self.polar_angle(u, v)
+        return np.stack([u * np.cos(psi), u * np.sin(psi), v], axis=-1)
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        """Position and analytic first and second partial derivatives (eq A-B differentiated).
+
+        With e_r = (cos psi, sin psi, 0), e_t = (-sin psi, cos psi, 0), k = (0, 0, 1):
+        r_u = e_r + u psi_u e_t, r_v = u psi_v e_t + k,
+        r_uu = -u psi_u^2 e_r + (2 psi_u + u psi_uu) e_t,
+        r_uv = -u psi_u psi_v e_r + (psi_v + u psi_uv) e_t,
+        r_vv = -u psi_v^2 e_r + u psi_vv e_t.
+        """
+        u = np.asarray(u, dtype=float)
+        v = np.asarray(v, dtype=float)
+        u, v = np.broadcast_arrays(u, v)
+        psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
+        c, s = np.cos(psi), np.sin(psi)
+        z = np.zeros_like(u)
+        one = np.ones_like(u)
+        er = np.stack([c, s, z], axis=-1)
+        et = np.stack([-s, c, z], axis=-1)
+        k = np.stack([z, z, one], axis=-1)
+        U = u[..., None]
+
+        def comb(a, b):
+            return a[..., None] * er + b[..., None] * et
+
+        r = U * er + v[..., None] * k
+        r_u = comb(one, u * pu)
+        r_v = comb(z, u * pv) + k
+        r_uu = comb(-u * pu * pu, 2 * pu + u * puu)
+        r_uv = comb(-u * pu * pv, pv + u * puv)
+        r_vv = comb(-u * pv * pv, u * pvv)
+        return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
+
+    def outward_normal(self, u, v) -> np.ndarray:
+        """Unit normal pointing out of the tooth material."""
+        return self.outward_sign * self.evaluate(u, v).normal
+
+    def helix_angle_at(self, radius, v=0.0):
+        """Helix angle of the flank's helix at ``radius`` and axial position v: atan(radius dpsi/dv)."""
+        radius = np.asarray(radius, dtype=float)
+        _, tw1, _ = self.twist(np.broadcast_to(np.asarray(v, float), radius.shape))
+        return np.arctan(np.abs(radius * tw1))
+
+    def __repr__(self) -> str:
+        g = self.gear
+        return (f"InvoluteFlank(N={g.n_teeth}, m={g.module}, alpha={g.pressure_angle:.6g}, beta={g.helix_angle:.6g}, "
+                f"side={self.side}, hand={self.hand}, helix_form={self.helix_form!r})")
+
+
+def mating_flanks(gear1: InvoluteGearData, gear2: InvoluteGearData, *, side: int = 1, hand1: int = 1,
+                  crowning1=None, crowning2=None, relief1=(), relief2=(), helix_form: str = "true"):
+    """The two drive flanks of an external involute pair: same ``side``, opposite hands.
+
+    Checks that the pair can mesh (same normal module, pressure angle and helix angle).
+    """
+    for name in ("module", "pressure_angle", "helix_angle"):
+        a, b = getattr(gear1, name), getattr(gear2, name)
+        if not np.isclose(a, b, rtol=1e-12, atol=0):
+            raise ValueError(f"gear1.{name} = {a!r} and gear2.{name} = {b!r} must be equal for meshing")
+    f1 = InvoluteFlank(gear1, side, hand1, crowning=crowning1, relief=relief1, helix_form=helix_form)
+    f2 = InvoluteFlank(gear2, side, -hand1, crowning=crowning2, relief=relief2, helix_form=helix_form)
+    return f1, f2
+
+
+def standard_centre_distance(gear1: InvoluteGearData, gear2: InvoluteGearData) -> float:
+    """Reference centre distance r_p1 + r_p2 of an external pair (zero profile shift sum)."""
+    return gear1.r_p + gear2.r_p

@@ -1,0 +1,409 @@
+"""Tooth contact analysis: conventional (thesis eq 26-32) and reduced (eq 33-44) formulations."""
+
+import time
+
+import numpy as np
+import pytest
+
+from gearrep.solve import Status
+from gearrep.surfaces.base import Surface
+from gearrep.surfaces.involute import (
+    InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance,
+)
+from gearrep.tca import (
+    GearPair, Misalignment, default_start, reduced_unknowns, solve_contact, trace_path, transmission_error,
+)
+from gearrep.units import ARCMIN, ARCSEC
+
+D = np.radians
+ALPHA = D(20)
+
+
+def spur_pair(n1=52, n2=72, m=1.0, b=11.42, crown1=None, thin1=0.0, thin2=0.0, mis=None):
+    """Thesis sec. 6.2 spur pair (52/72, m = 1, 20 deg, b = 11.42)."""
+    g1 = InvoluteGearData(n1, m, ALPHA, b)
+    g2 = InvoluteGearData(n2, m, ALPHA, b)
+    c1 = crown1
+    if thin1:
+        c1 = ParabolicCrowning(0.0 if crown1 is None else crown1.c1, 0.0, thin1)
+    c2 = ParabolicCrowning(0.0, 0.0, thin2) if thin2 else None
+    f1, f2 = mating_flanks(g1, g2, crowning1=c1, crowning2=c2)
+    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
+
+
+def helical_pair(form="true", crown1=None, mis=None, n1=40, n2=37):
+    """Thesis Table 2 helical pair (40/37, m_n = 1, 20 deg, beta = 14 deg, b = 20)."""
+    g1 = InvoluteGearData(n1, 1.0, ALPHA, 20.0, helix_angle=D(14))
+    g2 = InvoluteGearData(n2, 1.0, ALPHA, 20.0, helix_angle=D(14))
+    f1, f2 = mating_flanks(g1, g2, crowning1=crown1, helix_form=form)
+    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
+
+
+def pitch_angle(pair, v1=0.0):
+    """phi1 at which the transverse section v1 of member 1 is in contact at the pitch point: the tooth
+    is centred on x, its flank crosses the pitch circle at +pi/(2 N1), and the helix turns the
+    section by hand v1 tan(beta)/r_p."""
+    f = pair.flank1
+    return -np.pi / (2 * pair.n1) - float(f.twist(v1)[0])
+
+
+PHI_SPUR = np.linspace(-0.12, 0.06, 13)  # inside the engagement interval of the 52/72 pair
+
+
+# ---------------------------------------------------------------------------------------------
+# aligned conjugate pairs: TE = 0, contact on the line / plane of action
+# ---------------------------------------------------------------------------------------------
+def test_aligned_spur_zero_te_on_line_of_action():
+    pair, g1, g2 = spur_pair()
+    P = np.array([g1.r_p, 0.0, 0.0])  # pitch point
+    d = np.array([np.sin(ALPHA), np.cos(ALPHA), 0.0])  # line of action (outward normal of flank 1)
+    for v1 in (-4.0, 0.0, 5.0):
+        red = solve_contact(pair, PHI_SPUR, v1=v1)
+        assert np.all(red.status == Status.CONVERGED)
+        assert np.max(np.abs(red.te_arcsec)) < 1e-9
+        rel = red.position - P
+        assert np.max(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])) < 1e-10  # distance to the line
+        assert np.max(np.abs(red.normal - d)) < 1e-12
+        assert np.allclose(red.position[:, 2], v1, atol=1e-12) and np.allclose(red.v2, v1, atol=1e-12)
+        conv = solve_contact(pair, PHI_SPUR, v1=v1, formulation="conventional")
+        assert np.all(conv.status == Status.CONVERGED)
+        assert np.max(np.abs(conv.te_arcsec)) < 1e-8  # residual tol 1e-12 mm -> ~1e-14 rad
+        assert np.max(np.abs(conv.position - red.position)) < 1e-9
+    # the roll relation of conjugate involutes: contact at roll length r_b1 (phi1 + pi/2N1) + r_p1 sin(a)
+    s = np.sqrt(red.u1**2 - g1.r_b**2)
+    assert np.allclose(s, g1.r_p * np.sin(ALPHA) + g1.r_b * (PHI_SPUR + np.pi / (2 * 52)), atol=1e-10)
+
+
+def test_aligned_helical_zero_te_in_plane_of_action():
+    pair, g1, g2 = helical_pair()
+    at, bb = g1.alpha_t, g1.beta_b
+    P = np.array([g1.r_p, 0.0, 0.0])
+    m = np.array([np.cos(at), -np.sin(at), 0.0])  # normal of the plane of action
+    for v1 in (-6.0, 0.0, 6.0):
+        phi = pitch_angle(pair, v1) + np.linspace(-0.06, 0.03, 7)
+        for form in ("reduced", "conventional"):
+            c = solve_contact(pair, phi, v1=v1, formulation=form)
+            ok = c.status == Status.CONVERGED
+            assert np.all(ok)
+            assert np.max(np.abs(c.te_arcsec[ok])) < (1e-9 if form == "reduced" else 1e-8)
+            assert np.max(np.abs((c.position[ok] - P) @ m)) < 1e-10  # in the plane of action
+            assert np.max(np.abs(c.normal[ok] @ m)) < 1e-12
+            assert np.allclose(np.abs(c.normal[ok, 2]), np.sin(bb), atol=1e-12)  # tilted by beta_b
+
+
+def test_thesis_helix_form_is_not_conjugate_for_unequal_gears():
+    """Correction 3 in action: with eq (5)/(58) the aligned 40/37 pair has no line contact."""
+    pair, _, _ = helical_pair("thesis")
+    true_pair, _, _ = helical_pair("true")
+    for v1 in (-8.0, 8.0):
+        phi = pitch_angle(true_pair, v1) + np.array([-0.02, 0.0, 0.02])
+        c = solve_contact(pair, phi, v1=v1)
+        assert np.all(c.status != Status.CONVERGED)
+        assert np.all(c.residual > 1e-5)  # normals cannot be made collinear in that section
+        c = solve_contact(true_pair, phi, v1=v1)
+        assert np.all(c.status == Status.CONVERGED)
+
+
+def test_te_sign_convention_eq_14():
+    """TE = (phi2 - phi20) - (N1/N2)(phi1 - phi10), phi2 in the driven sense: thinning either member's
+    drive flank by c3 makes member 2 lag by exactly c3 / r_b2 (negative TE)."""
+    c3 = 0.004
+    for kw in (dict(thin1=c3), dict(thin2=c3)):
+        pair, g1, g2 = spur_pair(**kw)
+        c = solve_contact(pair, PHI_SPUR, v1=0.0)
+        assert np.all(c.status == Status.CONVERGED)
+        assert np.allclose(c.te, -c3 / g2.r_b, rtol=1e-11, atol=0)
+    assert transmission_error(0.3, 0.3 * 52 / 72, 52, 72) == pytest.approx(0.0, abs=1e-16)
+    assert transmission_error(0.3, 0.25, 52, 72, phi10=0.1, phi20=0.05) == pytest.approx(0.2 - 52 / 72 * 0.2)
+
+
+def test_thesis_pitch_point_example():
+    """Sec. 6.1: spur 25/25, m = 2.5, b = 25, a_p = 1e-4 1/mm: u1 = 31.103, u2 = 31.402,
+    v1 = v2 = 12.5 (= mid-face, our v = 0). We find the angle at which u1 = 31.103 and check u2."""
+    g = InvoluteGearData(25, 2.5, ALPHA, 25.0)
+    f1, f2 = mating_flanks(g, g, crowning1=ParabolicCrowning(1e-4))
+    pair = GearPair(f1, f2, 25, 25, standard_centre_distance(g, g))
+    s1 = np.sqrt(31.103**2 - g.r_b**2)
+    phi1 = -np.pi / 50 + (s1 - g.r_p * np.sin(ALPHA)) / g.r_b
+    c = solve_contact(pair, phi1)
+    assert c.status[0] == Status.CONVERGED
+    assert c.u1[0] == pytest.approx(31.103, abs=1e-9)
+    assert c.u2[0] == pytest.approx(31.402, abs=1.5e-3)  # printed to 3 decimals; u1 rounding propagates
+    assert abs(c.v1[0]) < 1e-9 and abs(c.v2[0]) < 1e-9
+    assert abs(c.te_arcsec[0]) < 1e-9
+
+
+# ---------------------------------------------------------------------------------------------
+# crowned pinion under a shaft-angle error: closed-form first-order estimate
+# ---------------------------------------------------------------------------------------------
+C1 = 0.002857  # thesis sec. 6.2 crowning of gear 1
+
+
+@pytest.mark.parametrize("dg, rtol", [(1 * ARCMIN, 1e-5), (3 * ARCMIN, 3e-5), (6 * ARCMIN, 1e-4)])
+def test_crowned_pinion_misalignment_closed_form(dg, rtol):
+    """Closed-form estimate (leading order in the misalignment angle).
+
+    Spur pair, pinion crowned delta(z) = c z^2 (material removed along the normal, z = axial
+    coordinate from mid-face), gear unmodified; the outward normal of the pinion flank along the
+    line of action is n = (sin a, cos a, 0). Misalignment rotates the gear about an axis through its
+    centre O2 = (a, 0, 0). The gear flank is a cylinder along its axis, so what matters is its
+    section by the plane z = const:
+
+    * out-of-plane error dd (rotation about x_f, the centre line): a gear point (x, y0, z0) goes to
+      y = y0 cos dd - z0 sin dd, z = y0 sin dd + z0 cos dd; at fixed z the section is the original
+      profile shifted by -z tan dd in y and stretched by 1/cos dd in y. Along n this moves the gear
+      flank by  g(z) = -z tan(dd) cos(a) + y (1/cos dd - 1) cos(a).
+    * in-plane error dg (rotation about y_f): likewise at fixed z the section is shifted by
+      z tan dg in x and stretched by 1/cos dg in x - a:  g(z) = z tan(dg) sin(a) - (a - x)(1/cos dg - 1) sin(a).
+
+    The gap between the flanks along n at the nominal gear angle is c z^2 + g(z); turning the gear
+    forward by dphi2 opens it by r_b2 dphi2 (involute). Contact is where the gap is smallest:
+        z* = +tan(dd) cos(a) / (2c)            (out-of-plane)
+        z* = -tan(dg) sin(a) / (2c)            (in-plane)
+    and the gear must lead by minus that minimum gap, so (eq 14 sign: TE > 0 = gear leads)
+        TE = [tan^2(dd) cos^2(a) / (4c) - y (1/cos dd - 1) cos(a)] / r_b2      (out-of-plane)
+        TE = [tan^2(dg) sin^2(a) / (4c) + (a - x)(1/cos dg - 1) sin(a)] / r_b2  (in-plane)
+    with (x, y) the contact point. The shift is O(dd) and the TE offset O(dd^2); the neglected terms
+    are one order higher (tilt of the normals, crowning slope at z*), so the relative error should
+    grow about linearly with the angle, which the tolerances reflect.
+    """
+    crown = ParabolicCrowning(C1)
+    for kind in ("out-of-plane", "in-plane"):
+        mis = Misalignment(d_gamma_out=dg) if kind == "out-of-plane" else Misalignment(d_gamma_in=dg)
+        pair, g1, g2 = spur_pair(crown1=crown, mis=mis)
+        a = pair.centre_distance
+        c = solve_contact(pair, PHI_SPUR)
+        assert np.all(c.status == Status.CONVERGED)
+        x, y = c.position[:, 0], c.position[:, 1]
+        if kind == "out-of-plane":
+            z_cf = np.tan(dg) * np.cos(ALPHA) / (2 * C1)
+            te_cf = (np.tan(dg) ** 2 * np.cos(ALPHA) ** 2 / (4 * C1) - y * (1 / np.cos(dg) - 1) * np.cos(ALPHA)) / g2.r_b
+        else:
+            z_cf = -np.tan(dg) * np.sin(ALPHA) / (2 * C1)
+            te_cf = (np.tan(dg) ** 2 * np.sin(ALPHA) ** 2 / (4 * C1)
+                     + (a - x) * (1 / np.cos(dg) - 1) * np.sin(ALPHA)) / g2.r_b
+        assert np.allclose(c.position[:, 2], z_cf, rtol=rtol, atol=0)
+        assert np.allclose(c.v1, z_cf, rtol=rtol, atol=0)
+        assert np.allclose(c.te, te_cf, rtol=rtol, atol=0)
+        assert np.all(c.te > 0)
+        if dg == 3 * ARCMIN:
+            print(f"\n{kind} 3': shift {c.v1[6]:.6f} mm (closed form {z_cf:.6f}), "
+                  f"TE {c.te_arcsec[6]:.6f} arcsec (closed form {te_cf[6] / ARCSEC:.6f})")
+
+
+# ---------------------------------------------------------------------------------------------
+# the two formulations agree; jacobians agree
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("case", ["spur", "helical"])
+def test_conventional_and_reduced_agree(case):
+    mis = Misalignment(d_gamma_in=D(0.05), d_gamma_out=-D(0.03), d_E=0.05, d_H=0.01, d_Z=0.2)
+    if case == "spur":
+        pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=mis)
+        phi = PHI_SPUR
+    else:
+        pair, _, _ = helical_pair(crown1=ParabolicCrowning(0.0227), mis=mis)
+        phi = np.linspace(-0.05, 0.05, 9)
+    red = solve_contact(pair, phi)
+    conv = solve_contact(pair, phi, red.unknowns("conventional") + [0.3, -0.5, -0.3, 0.4, 0.01],
+                         formulation="conventional")
+    both = (red.status == Status.CONVERGED) & (conv.status == Status.CONVERGED)
+    assert both.sum() >= len(phi) - 2
+    assert np.max(np.abs(red.position[both] - conv.position[both])) < 1e-9
+    for name in ("u1", "v1", "u2", "v2"):
+        assert np.max(np.abs(getattr(red, name)[both] - getattr(conv, name)[both])) < 1e-9, name
+    assert np.max(np.abs(red.phi2[both] - conv.phi2[both])) < 1e-10
+    assert np.max(np.abs(red.normal[both] - conv.normal[both])) < 1e-10
+
+
+def test_numeric_and_analytic_jacobians_find_the_same_root():
+    pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.1)))
+    for form in ("reduced", "conventional"):
+        a = solve_contact(pair, PHI_SPUR, formulation=form)
+        n = solve_contact(pair, PHI_SPUR, formulation=form, jacobian="numeric")
+        assert np.all(a.converged) and np.all(n.converged)
+        assert np.max(np.abs(a.position - n.position)) < 1e-9
+        assert np.max(np.abs(a.phi2 - n.phi2)) < 1e-11
+
+
+# ---------------------------------------------------------------------------------------------
+# robustness: bad starts are flagged, converged points are the true root
+# ---------------------------------------------------------------------------------------------
+def test_far_starts_are_flagged_not_silent():
+    pair, g1, g2 = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
+    f1 = pair.flank1
+    ref = solve_contact(pair, 0.0)
+    assert ref.status[0] == Status.CONVERGED
+    far = np.array([[3 * f1.u_max, 0.0], [f1.u_max, 60.0], [0.5 * g1.r_b, 0.0], [f1.u_min, -60.0],
+                    [1e3, 1e3], [-5.0, 0.0], [1e6, -1e6]])
+    red = solve_contact(pair, 0.0, far)
+    conv_start = np.column_stack([far, np.full(len(far), g2.r_p), np.zeros(len(far)), np.full(len(far), 2.0)])
+    conv = solve_contact(pair, 0.0, conv_start, formulation="conventional")
+    for c in (red, conv):
+        ok = c.status == Status.CONVERGED
+        # every point is either flagged or the verified root inside the flanks
+        assert np.all(np.abs(c.u1[ok] - ref.u1[0]) < 1e-8) and np.all(np.abs(c.v1[ok] - ref.v1[0]) < 1e-8)
+        assert np.sum(~ok) >= 4
+        assert set(np.unique(c.status[~ok])) <= {Status.NOT_CONVERGED, Status.OFF_FLANK, Status.SINGULAR,
+                                                 Status.WRONG_ROOT, Status.DIVERGED}
+    # a position outside the engagement interval: the contact exists but off the flank
+    for form in ("reduced", "conventional"):
+        c = solve_contact(pair, [0.25, -0.3], formulation=form)
+        assert np.all(c.status == Status.OFF_FLANK)
+
+
+def test_random_starts_converge_only_to_the_true_root():
+    """Protocol (cf. thesis Table 10): 2000 starts uniform over the flank of member 1 at phi1 = 0;
+    conventional: u2, v2 at the middle of flank 2 and phi2 uniform in nominal +- 0.5 rad. A start
+    counts as converged only if status CONVERGED (residual < 1e-12, inside both flanks, normals
+    opposite); every such point must be the reference root."""
+    pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
+    f1, f2 = pair.flank1, pair.flank2
+    ref = solve_contact(pair, 0.0)
+    rng = np.random.default_rng(3)
+    n = 2000
+    st = np.column_stack([rng.uniform(f1.u_min, f1.u_max, n), rng.uniform(f1.v_min, f1.v_max, n)])
+    red = solve_contact(pair, 0.0, st)
+    cst = np.column_stack([st, np.full(n, 0.5 * (f2.u_min + f2.u_max)), np.zeros(n), rng.uniform(-0.5, 0.5, n)])
+    conv = solve_contact(pair, 0.0, cst, formulation="conventional")
+    for c in (red, conv):
+        ok = c.converged
+        assert np.max(np.abs(c.u1[ok] - ref.u1[0])) < 1e-9 and np.max(np.abs(c.v1[ok] - ref.v1[0])) < 1e-9
+        assert np.max(np.abs(c.phi2[ok] - ref.phi2[0])) < 1e-12
+    print(f"\nconvergence from {n} random starts: reduced {red.converged.mean():.2%} "
+          f"({red.iterations[red.converged].mean():.2f} it), conventional {conv.converged.mean():.2%} "
+          f"({conv.iterations[conv.converged].mean():.2f} it)")
+    assert red.converged.mean() > 0.99
+
+
+def test_choice_of_normal_components_decides_conditioning():
+    """Conventional system, crowned spur pair (normal ~ (sin a, cos a, ~0)): keeping the x and y
+    components of n1 + n2 (dropping the ~0 z component) leaves n_z fixed only through n_z^2, so the
+    5x5 Jacobian is nearly singular and the sign-flipped false roots n1z = +n2z appear (flagged
+    WRONG_ROOT). Dropping the largest component (default) is well conditioned."""
+    from gearrep.tca import _conventional_FJ
+    pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
+    ref = solve_contact(pair, 0.0)
+    x = ref.unknowns("conventional")
+    ratio = {}
+    for d in (1, 2):
+        s = np.linalg.svd(_conventional_FJ(pair, x, ref.phi1, np.array([d]))[1][0], compute_uv=False)
+        ratio[d] = s[-1] / s[0]
+    assert ratio[1] > 1e-5 and ratio[2] < 1e-7
+    rng = np.random.default_rng(0)
+    st = default_start(pair, np.zeros(200), "conventional") + rng.normal(0, [0.5, 1.0, 0.5, 1.0, 0.02], (200, 5))
+    auto = solve_contact(pair, 0.0, st, formulation="conventional")
+    xy = solve_contact(pair, 0.0, st, formulation="conventional", drop=2)
+    assert np.all(auto.converged)
+    assert np.sum(xy.status == Status.WRONG_ROOT) > 10
+    ok = xy.converged
+    assert np.max(np.abs(xy.v1[ok] - ref.v1[0])) < 1e-6  # the rest is right, but less accurate
+    # eq (27) as printed: the raw normals r_u x r_v of two alike-parameterised flanks are opposite at
+    # the contact, so n1 - n2 = 0 has no solution there; with outward normals n1 + n2 = 0 holds
+    P1 = pair.flank1.evaluate(ref.u1, ref.v1)
+    P2 = pair.flank2.evaluate(ref.u2, ref.v2)
+    raw1 = np.einsum("nij,nj->ni", pair.R1(ref.phi1), P1.normal)
+    raw2 = np.einsum("nij,nj->ni", pair.R2(ref.phi2), P2.normal)
+    assert np.allclose(raw1 + raw2, 0, atol=1e-12) and np.linalg.norm(raw1 - raw2) > 1.99
+
+
+def test_line_contact_needs_fixed_v1():
+    """Conjugate (unmodified, aligned) pair with v1 free: the contact is not isolated; the solver
+    reports it (SINGULAR / NOT_CONVERGED) instead of returning an arbitrary point."""
+    pair, _, _ = spur_pair()
+    c = solve_contact(pair, PHI_SPUR)
+    assert np.all(c.status != Status.CONVERGED)
+
+
+# ---------------------------------------------------------------------------------------------
+# the reduced formulation's explicit relations (eq 37-44)
+# ---------------------------------------------------------------------------------------------
+def test_reduced_explicit_relations_and_phi2_sign_rule():
+    mis = Misalignment(d_gamma_in=D(0.1), d_gamma_out=D(0.07), d_E=0.1, d_Z=0.3)
+    pair, _, _ = helical_pair(crown1=ParabolicCrowning(0.01), mis=mis)
+    f1 = pair.flank1
+    rng = np.random.default_rng(7)
+    u1 = rng.uniform(f1.u_min + 0.1, f1.u_max, 200)
+    v1 = rng.uniform(-8, 8, 200)
+    phi1 = rng.uniform(-0.3, 0.3, 200)
+    u2, v2, phi2 = reduced_unknowns(pair, u1, v1, phi1)
+    r1, _ = pair.member1(u1, v1, phi1)
+    r2, _ = pair.member2(u2, v2, phi2)
+    assert np.max(np.abs(r1 - r2)) < 1e-12  # eq (38): a common point by construction
+    # eq (41)-(44) with the sign rule: phi2 = sign((p2 x q2) . w2) acos(p2 . q2 / |q2|^2), evaluated
+    # in member 2's axis frame (w2 = -z there)
+    f2 = pair.flank2
+    from gearrep.tca import rot_z
+    p = np.einsum("ij,nj->ni", rot_z(pair.phase2), f2.position(u2, v2))
+    q = (r1 - pair.O2) @ pair.A2  # A2^T (r - O2)
+    p[:, 2] = q[:, 2] = 0.0
+    w = np.array([0.0, 0.0, -1.0])
+    sign = np.sign(np.cross(p, q) @ w)
+    eq43 = sign * np.arccos(np.clip(np.sum(p * q, axis=1) / np.sum(q * q, axis=1), -1, 1))
+    diff = (eq43 - phi2 + np.pi) % (2 * np.pi) - np.pi
+    assert np.max(np.abs(diff)) < 1e-7  # acos is only good to ~sqrt(eps)
+    # the acos form cannot resolve a small angle: cos(1e-9) == 1 in double precision
+    assert np.arccos(np.cos(1e-9)) == 0.0 and np.arctan2(np.sin(1e-9), np.cos(1e-9)) == pytest.approx(1e-9)
+
+
+def test_trace_path_by_continuation():
+    pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_out=D(0.05)))
+    phi = np.linspace(-0.13, 0.07, 41)
+    path = trace_path(pair, phi)
+    assert np.all(path.status == Status.CONVERGED)
+    assert np.all(np.diff(path.u1) > 0)  # contact climbs the pinion flank
+    assert np.mean(path.iterations) <= 3.0
+    same = solve_contact(pair, phi)
+    assert np.max(np.abs(same.position - path.position)) < 1e-9
+    conv = trace_path(pair, phi, default_start(pair, phi[:1], "conventional")[0], formulation="conventional")
+    assert np.all(conv.converged) and np.max(np.abs(conv.position - path.position)) < 1e-9
+
+
+# ---------------------------------------------------------------------------------------------
+# performance
+# ---------------------------------------------------------------------------------------------
+def test_performance_10000_aligned_spur_solves():
+    pair, _, _ = spur_pair()
+    rng = np.random.default_rng(0)
+    phi = rng.uniform(-0.12, 0.06, 10_000)
+    v1 = rng.uniform(-5.0, 5.0, 10_000)
+    solve_contact(pair, phi[:100], v1=v1[:100])  # warm-up
+    best = np.inf
+    for _ in range(3):
+        t0 = time.perf_counter()
+        c = solve_contact(pair, phi, v1=v1)
+        best = min(best, time.perf_counter() - t0)
+    assert np.all(c.status == Status.CONVERGED) and np.max(np.abs(c.te_arcsec)) < 1e-9
+    print(f"\n10,000 aligned spur contact solves (reduced, analytic Jacobian): {best:.3f} s "
+          f"({c.iterations.mean():.2f} iterations on average)")
+    assert best < 1.0
+
+
+# ---------------------------------------------------------------------------------------------
+# validation
+# ---------------------------------------------------------------------------------------------
+def test_input_validation():
+    pair, g1, g2 = spur_pair()
+    with pytest.raises(ValueError, match="formulation"):
+        solve_contact(pair, 0.0, formulation="litvin")
+    with pytest.raises(ValueError, match="start"):
+        solve_contact(pair, 0.0, np.zeros((1, 3)))
+    with pytest.raises(ValueError, match="phi1"):
+        solve_contact(pair, np.nan)
+    with pytest.raises(ValueError, match="jacobian"):
+        solve_contact(pair, 0.0, jacobian="exact")
+    with pytest.raises(ValueError, match="centre_distance"):
+        GearPair(pair.flank1, pair.flank2, 52, 72, -1.0)
+    with pytest.raises(ValueError, match="n1"):
+        GearPair(pair.flank1, pair.flank2, 0, 72, 62.0)
+    with pytest.raises(ValueError, match="d_gamma_in"):
+        Misalignment(d_gamma_in=1.0)
+    with pytest.raises(ValueError, match="n2"):
+        transmission_error(0.0, 0.0, 52, 0)
+
+    class Plane(Surface):
+        def position(self, u, v):
+            u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+            return np.stack([u, v, np.zeros_like(u)], axis=-1)
+
+    with pytest.raises(ValueError, match="cylindrical"):
+        solve_contact(GearPair(pair.flank1, Plane(), 52, 72, 62.0), 0.0)
