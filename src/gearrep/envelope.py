@@ -1,0 +1,817 @@
+"""Envelopes of one- and two-parameter families of surfaces, and their singular points.
+
+A tool surface r_1(u, v), given in its own frame S_1, is carried into the frame S_2 of the
+generated member by a rigid motion M_21(m) that depends on k = 1 or 2 motion parameters
+m = (m_1, ..., m_k). The family and the equations of meshing are
+
+    r_2(u, v, m) = M_21(m) r_1(u, v)                                            (F)
+    f_j(u, v, m) = n_1 . v^(12, j) = 0,   j = 1..k                              (E)
+
+with n_1 = unit(r_u x r_v) the tool normal and v^(12, j) = d r_2 / d m_j the velocity of the
+tool point relative to the generated member when m_j alone varies. Sources:
+
+* one-parameter family: Litvin & Fuentes, *Gear Geometry and Applied Theory* (GGAT), 2nd ed.,
+  ch. 6 (family of surfaces, equation of meshing n . v^(12) = 0); seed 002 eq 2.2.6-2.2.9 and
+  2.3.5-2.3.6 (rack-cutter generation, where (E) reduces to (r_p psi - y) N_x + x N_y = 0);
+* two-parameter family: seed 000 eq 4.3-4.5 (the hob surface moved by (theta, psi)).
+
+All vectors are evaluated in S_1 (the tool frame) and rotated into S_2 at the end. With
+W_j = M_21^{-1} dM_21/dm_j (a twist: rotation part Omega_j = [omega_j]_x, translation t_j),
+the relative velocity in S_1 is w_j = Omega_j r_1 + t_j, and f_j = n_1 . w_j.
+
+Generated surface. The 2 + k parameters q = (u, v, m) satisfy k equations, so two of them
+(``free``) parameterise the envelope and the other k (``solved``) follow from (E) by
+:func:`gearrep.solve.newton`. Seed 000 (READING_GUIDE) needs free = (l, psi), solved =
+(phi, theta), because the Jacobian of (E) in (theta, psi) is singular at mid-face; any choice
+is allowed here. The first derivatives of the generated surface are analytic (implicit
+differentiation: dq_S/dq_F = -(df/dq_S)^{-1} df/dq_F). Every partial derivative of r_2 with
+respect to q is tangent to the surface at the contact point (r_u, r_v are tool tangents; the
+v^(12, j) are tangent by (E)), so the NORMAL components of the second derivatives need no
+second derivatives of the solved parameters and are analytic too: the second fundamental form,
+hence every curvature, is exact to rounding. The tangential components of the second
+derivatives contain d^2 q_S / dq_F^2, taken by 4th-order central differences of the analytic
+first derivatives (error ~ h^4 + eps/h, about 1e-11 relative with the default steps).
+
+Singular points (undercutting). GGAT ch. 6 (and seed 002 sec. 2.4): a point of the generated
+surface is singular when the contact point can move on the tool and in the motion without
+moving on the generated surface, i.e. when the system
+
+    r_u du + r_v dv + sum_j v^(12, j) dm_j = 0        (2 tangential components)
+    df_j = f_ju du + f_jv dv + sum_i f_j,mi dm_i = 0   (k equations)
+
+has a nonzero solution. Its (2 + k)-square matrix is Litvin's determinant test (for k = 1 the
+3 x 3 determinant of GGAT ch. 6: rows (r_u, r_v, v^(12)) projected on the tangent plane and
+(f_u, f_v, f_phi)). Equivalently the k x k matrix E of :mod:`gearrep.curvature_relations`
+(Litvin's a_33 for k = 1) is singular, or the generated surface's tangent vectors are linearly
+dependent. :func:`singular_points` solves (E) together with det = 0 (Litvin's limiting line on
+the tool surface).
+
+Usage (the two-parameter hob set-up of seed 000; tool parameters are always called u, v):
+
+    motion = ChainMotion([rotation((0, 0, 1), [1 / N, 0]),            # gear turns theta / N
+                          rotation((1, 0, 0), [0, 1], point=(E, R_c, 0)),  # swivel psi
+                          translation((1, 0, 0), [0, 0], offset=E),        # centre distance
+                          rotation((1, 0, 0), [0, 0], offset=-pi / 2 + lam),
+                          rotation((0, 0, 1), [1, 0])],                    # hob spin theta
+                         names=("theta", "psi"))
+    env = Envelope(hob, motion, free=("u", "psi"))    # generated surface r(l, psi)
+    rec = env.solve(l, psi, guess=[pi, 0.0])          # EnvelopeResult (status per point)
+    surf = env.surface(guess=[pi, 0.0])               # a Surface of (l, psi)
+    gc = gearrep.curvature_relations.generated_curvatures(env, rec.params)
+
+(tests/unit/_envelope_cases.py builds this with a ZA-type thread; it reproduces the k_q column
+of seed 000 Table 4.3/4.4 at l = 4.38148 and 10.354.)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import numpy as np
+
+from .solve import SolveResult, Status, newton
+from .surfaces.base import Surface, SurfacePoint
+
+__all__ = [
+    "Motion",
+    "FunctionMotion",
+    "ChainMotion",
+    "rotation",
+    "translation",
+    "fixed",
+    "rack_generation_motion",
+    "EnvelopeResult",
+    "Envelope",
+    "EnvelopeSurface",
+    "singular_points",
+    "LocalGeometry",
+]
+
+TOOL_NAMES = ("u", "v")
+
+
+# --------------------------------------------------------------------------------------------
+# motions
+# --------------------------------------------------------------------------------------------
+def _check_names(names, k):
+    names = tuple(str(s) for s in names)
+    if len(names) != k:
+        raise ValueError(f"names must have {k} entries (one per motion parameter), got {names!r}")
+    if len(set(names)) != k or set(names) & set(TOOL_NAMES):
+        raise ValueError(f"motion parameter names must be distinct and not 'u' or 'v', got {names!r}")
+    return names
+
+
+class Motion:
+    """A rigid motion M_21(m) from the tool frame S_1 to the generated member's frame S_2.
+
+    Subclasses implement :meth:`matrices`. ``n_params`` is k (1 or 2) and ``names`` names the
+    motion parameters (e.g. ``("phi",)`` or ``("theta", "psi")``).
+    """
+
+    n_params: int = 1
+    names: tuple[str, ...] = ("phi",)
+
+    def matrices(self, m):  # pragma: no cover - abstract
+        """(M, dM, d2M) at parameters m (..., k): shapes (..., 4, 4), (..., k, 4, 4) and
+        (..., k, k, 4, 4); dM[..., j] = dM/dm_j, d2M[..., i, j] = d^2 M / dm_i dm_j."""
+        raise NotImplementedError
+
+    def _params(self, m):
+        m = np.asarray(m, dtype=float)
+        if self.n_params == 1 and (m.ndim == 0 or m.shape[-1] != 1):
+            m = m[..., None]
+        if m.shape[-1] != self.n_params:
+            raise ValueError(
+                f"m must have last dimension {self.n_params} (motion parameters {self.names}), "
+                f"got shape {m.shape}"
+            )
+        return m
+
+
+# fourth-order central differences (same weights as surfaces.base)
+_D1 = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0
+_D1_OFF = np.array([-2.0, -1.0, 1.0, 2.0])
+_D2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0
+_D2_OFF = np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
+
+
+class FunctionMotion(Motion):
+    """A motion given by a function ``M(m)`` (m (..., k) -> (..., 4, 4)).
+
+    ``dM`` and ``d2M`` (same signatures as :meth:`Motion.matrices` returns) may be supplied;
+    otherwise they are taken by 4th-order central differences with step ``fd_step`` (error
+    O(h^4) + O(eps/h) for dM and O(eps/h^2) for d2M: with h = 1e-3 and O(1) parameters about
+    1e-12 and 1e-10 relative, enough for curvatures to ~1e-9). Prefer :class:`ChainMotion`
+    (exact derivatives) when the motion is a product of rotations and translations.
+    """
+
+    def __init__(self, M: Callable, n_params: int = 1, names: Sequence[str] | None = None,
+                 dM: Callable | None = None, d2M: Callable | None = None, fd_step: float = 1e-3):
+        if n_params not in (1, 2):
+            raise ValueError(f"n_params must be 1 or 2, got {n_params!r}")
+        if not (fd_step > 0):
+            raise ValueError(f"fd_step must be > 0, got {fd_step!r}")
+        self.n_params = int(n_params)
+        self.names = _check_names(names or (("phi",) if n_params == 1 else ("theta", "psi")), n_params)
+        self._M, self._dM, self._d2M, self.fd_step = M, dM, d2M, float(fd_step)
+
+    def matrices(self, m):
+        m = self._params(m)
+        k, h = self.n_params, self.fd_step
+        M = np.asarray(self._M(m), dtype=float)
+        eye = np.eye(k)
+
+        def at(off):
+            return np.asarray(self._M(m + off), dtype=float)
+
+        if self._dM is not None:
+            dM = np.asarray(self._dM(m), dtype=float)
+        else:
+            dM = np.stack([sum(w * at(o * h * eye[j]) for w, o in zip(_D1, _D1_OFF)) / h
+                           for j in range(k)], axis=-3)
+        if self._d2M is not None:
+            d2M = np.asarray(self._d2M(m), dtype=float)
+        else:
+            rows = []
+            for i in range(k):
+                row = []
+                for j in range(k):
+                    if i == j:
+                        row.append(sum(w * (M if o == 0 else at(o * h * eye[i]))
+                                       for w, o in zip(_D2, _D2_OFF)) / h**2)
+                    else:
+                        row.append(sum(wi * wj * at(oi * h * eye[i] + oj * h * eye[j])
+                                       for wi, oi in zip(_D1, _D1_OFF)
+                                       for wj, oj in zip(_D1, _D1_OFF)) / h**2)
+                rows.append(np.stack(row, axis=-3))
+            d2M = np.stack(rows, axis=-4)
+        return M, dM, d2M
+
+
+@dataclass(frozen=True)
+class _Factor:
+    """One factor F(s) of a :class:`ChainMotion`; s = offset + coeffs . m (affine in m)."""
+
+    kind: str  # "rot", "trans", "fixed"
+    vector: np.ndarray  # unit axis (rot) or direction (trans)
+    point: np.ndarray  # a point on the rotation axis
+    coeffs: np.ndarray  # (k,) or empty for a fixed factor
+    offset: float
+    matrix: np.ndarray | None = None
+
+    def evaluate(self, s):
+        """F, dF/ds, d^2F/ds^2 at scalar parameters s (n,) -> (n, 4, 4) each."""
+        n = s.shape[0]
+        F = np.broadcast_to(np.eye(4), (n, 4, 4)).copy()
+        dF = np.zeros((n, 4, 4))
+        d2F = np.zeros((n, 4, 4))
+        if self.kind == "fixed":
+            F[:] = self.matrix
+            return F, dF, d2F
+        if self.kind == "trans":
+            F[:, :3, 3] = s[:, None] * self.vector
+            dF[:, :3, 3] = self.vector
+            return F, dF, d2F
+        a = self.vector
+        K = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
+        K2 = K @ K
+        c, sn = np.cos(s)[:, None, None], np.sin(s)[:, None, None]
+        R = np.eye(3) + sn * K + (1.0 - c) * K2  # Rodrigues' rotation formula
+        dR = c * K + sn * K2
+        d2R = -sn * K + c * K2
+        p = self.point
+        F[:, :3, :3] = R
+        F[:, :3, 3] = p - R @ p
+        dF[:, :3, :3] = dR
+        dF[:, :3, 3] = -dR @ p
+        d2F[:, :3, :3] = d2R
+        d2F[:, :3, 3] = -d2R @ p
+        return F, dF, d2F
+
+
+def _unit3(v, name):
+    v = np.asarray(v, dtype=float).reshape(-1)
+    if v.shape != (3,) or not np.all(np.isfinite(v)) or np.linalg.norm(v) == 0:
+        raise ValueError(f"{name} must be a finite nonzero 3-vector, got {v!r}")
+    return v / np.linalg.norm(v)
+
+
+def _coeffs(coeffs):
+    c = np.atleast_1d(np.asarray(coeffs, dtype=float))
+    if c.ndim != 1 or c.size not in (1, 2) or not np.all(np.isfinite(c)):
+        raise ValueError(f"coeffs must be 1 or 2 finite numbers (one per motion parameter), got {coeffs!r}")
+    return c
+
+
+def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
+    """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
+    s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
+    return _Factor("rot", _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3),
+                   _coeffs(coeffs), float(offset))
+
+
+def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
+    """Factor of a :class:`ChainMotion`: translation by s * direction, s = offset + coeffs . m
+    (``direction`` is used as given, not normalised, so s may be an angle times a radius)."""
+    d = np.asarray(direction, dtype=float).reshape(-1)
+    if d.shape != (3,) or not np.all(np.isfinite(d)):
+        raise ValueError(f"direction must be a finite 3-vector, got {direction!r}")
+    return _Factor("trans", d, np.zeros(3), _coeffs(coeffs), float(offset))
+
+
+def fixed(M) -> _Factor:
+    """Factor of a :class:`ChainMotion`: a constant 4 x 4 homogeneous matrix."""
+    M = np.asarray(M, dtype=float)
+    if M.shape != (4, 4) or not np.all(np.isfinite(M)):
+        raise ValueError(f"M must be a finite 4x4 matrix, got shape {M.shape}")
+    return _Factor("fixed", np.zeros(3), np.zeros(3), np.zeros(0), 0.0, M)
+
+
+class ChainMotion(Motion):
+    """M_21(m) = F_1 F_2 ... F_n, each factor a :func:`rotation`, :func:`translation` or
+    :func:`fixed` matrix (Litvin's chain M_21 = M_2f M_fh ... of GGAT ch. 2), with exact first
+    and second derivatives by the product rule. Factor parameters are affine in m."""
+
+    def __init__(self, factors: Sequence[_Factor], names: Sequence[str] = ("phi",)):
+        names = tuple(names)
+        if len(names) not in (1, 2):
+            raise ValueError(f"names must name 1 or 2 motion parameters, got {names!r}")
+        self.n_params = len(names)
+        self.names = _check_names(names, self.n_params)
+        if len(factors) == 0:
+            raise ValueError("factors must not be empty")
+        for f in factors:
+            if not isinstance(f, _Factor):
+                raise ValueError("factors must be made by rotation(), translation() or fixed()")
+            if f.kind != "fixed" and f.coeffs.size != self.n_params:
+                raise ValueError(
+                    f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}"
+                )
+        self.factors = tuple(factors)
+
+    def matrices(self, m):
+        m = self._params(m)
+        shape = m.shape[:-1]
+        k = self.n_params
+        mm = m.reshape(-1, k)
+        n = mm.shape[0]
+        P = np.broadcast_to(np.eye(4), (n, 4, 4)).copy()
+        dP = np.zeros((n, k, 4, 4))
+        d2P = np.zeros((n, k, k, 4, 4))
+        for f in self.factors:
+            if f.kind == "fixed":
+                F = f.matrix
+                P, dP, d2P = P @ F, dP @ F, d2P @ F
+                continue
+            s = f.offset + mm @ f.coeffs
+            F, Fs, Fss = f.evaluate(s)
+            dF = f.coeffs[None, :, None, None] * Fs[:, None]  # (n, k, 4, 4)
+            d2F = (f.coeffs[:, None] * f.coeffs[None, :])[None, :, :, None, None] * Fss[:, None, None]
+            d2P = (d2P @ F[:, None, None] + dP[:, :, None] @ dF[:, None, :]
+                   + dP[:, None, :] @ dF[:, :, None] + P[:, None, None] @ d2F)
+            dP = dP @ F[:, None] + P[:, None] @ dF
+            P = P @ F
+        return (P.reshape(shape + (4, 4)), dP.reshape(shape + (k, 4, 4)),
+                d2P.reshape(shape + (k, k, 4, 4)))
+
+
+def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi") -> ChainMotion:
+    """Rack-cutter -> member motion of seed 002 sec. 2.2-2.3 (fig. 2.2.3): M_1c(phi).
+
+    The rack frame S_c has its pitch plane x_c = 0 and the member's axis parallel to z_c, at
+    x_c = member_side * r_p (``member_side`` = -1, the default, puts the member on the side
+    x_c < 0; +1 on x_c > 0, e.g. the gear of seed 002, generated by the rigidly connected rack on
+    the other side from the pinion). The rack translates by s_c = r_p phi (along -y in the fixed
+    frame) while the member turns by phi (clockwise for member_side = -1):
+
+        member_side = -1:  M_1c = Rot_z(phi)  Trans(r_p, -r_p phi, 0)
+        member_side = +1:  M_1c = Rot_z(-phi) Trans(-r_p, -r_p phi, 0)
+
+    In both cases the instantaneous axis is x_c = 0, y_c = r_p phi (the point (X_c, Y_c) of
+    seed 002 eq 2.2.8-2.2.9) and the generic meshing equation n . v^(1c) = 0 equals seed 002
+    eq 2.3.6, +-[(r_p phi - y_c) N_x + x_c N_y] = 0 (tested). With member_side = -1 a rack of
+    helix angle beta > 0 (:mod:`gearrep.surfaces.rack`) generates a right-hand member; with
+    member_side = +1 a left-hand one (seed 002 sec. 2.1: one rack generates a left-hand pinion
+    and a right-hand gear).
+    """
+    if not (np.isfinite(r_p) and r_p > 0):
+        raise ValueError(f"r_p (pitch radius) must be finite and > 0, got {r_p!r}")
+    if member_side not in (1, -1):
+        raise ValueError(f"member_side must be +1 or -1, got {member_side!r}")
+    s = -float(member_side)
+    return ChainMotion(
+        [rotation((0, 0, 1), [s]), translation((1.0, 0.0, 0.0), [0.0], offset=s * r_p),
+         translation((0.0, -r_p, 0.0), [1.0])],
+        names=(name,),
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# local envelope geometry
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LocalGeometry:
+    """Local quantities at a batch of parameter points q (n, 2+k); every vector in the tool
+    frame S_1 (rotate by M[:, :3, :3] into S_2). Returned by :meth:`Envelope.local`."""
+
+    M: np.ndarray  # (n,4,4)
+    tool: SurfacePoint  # tool point and derivatives in S_1
+    N: np.ndarray  # (n,3) r_u x r_v
+    n: np.ndarray  # (n,3) unit normal
+    w: np.ndarray  # (n,k,3) relative velocities v^(12,j)
+    omega: np.ndarray  # (n,k,3) relative angular velocities
+    Xr: np.ndarray  # (n,k,k,3) M^-1 d2M_ij r_h (direction part)
+    f: np.ndarray  # (n,k) meshing functions (unit normal)
+    J: np.ndarray  # (n,k,2+k) Jacobian of f in q
+    T: np.ndarray  # (n,2+k,3) dr_2/dq in S_1
+    H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
+
+
+def _inv_rigid(M):
+    R = M[..., :3, :3]
+    t = M[..., :3, 3]
+    Mi = np.zeros_like(M)
+    Mi[..., :3, :3] = np.swapaxes(R, -1, -2)
+    Mi[..., :3, 3] = -np.einsum("...ji,...j->...i", R, t)
+    Mi[..., 3, 3] = 1.0
+    return Mi
+
+
+def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
+    k = motion.n_params
+    u, v, m = q[:, 0], q[:, 1], q[:, 2:]
+    p = tool.evaluate(u, v)
+    M, dM, d2M = motion.matrices(m)
+    Mi = _inv_rigid(M)
+    W = Mi[:, None] @ dM  # (n,k,4,4)
+    X = Mi[:, None, None] @ d2M  # (n,k,k,4,4)
+    Om = W[..., :3, :3]
+    omega = np.stack([Om[..., 2, 1], Om[..., 0, 2], Om[..., 1, 0]], axis=-1)
+    r = p.r
+    w = np.einsum("nkab,nb->nka", Om, r) + W[..., :3, 3]
+    Xr = np.einsum("nijab,nb->nija", X[..., :3, :3], r) + X[..., :3, 3]
+    N = np.cross(p.r_u, p.r_v)
+    Nn = np.linalg.norm(N, axis=-1, keepdims=True)
+    n = N / Nn
+    f = np.einsum("na,nka->nk", n, w)
+    # derivatives of the unit normal: n_x = (I - n n^T) N_x / |N|
+    N_u = np.cross(p.r_uu, p.r_v) + np.cross(p.r_u, p.r_uv)
+    N_v = np.cross(p.r_uv, p.r_v) + np.cross(p.r_u, p.r_vv)
+
+    def dn(Nx):
+        return (Nx - n * np.sum(n * Nx, -1, keepdims=True)) / Nn
+
+    n_u, n_v = dn(N_u), dn(N_v)
+    Om_ru = np.einsum("nkab,nb->nka", Om, p.r_u)
+    Om_rv = np.einsum("nkab,nb->nka", Om, p.r_v)
+    f_u = np.einsum("na,nka->nk", n_u, w) + np.einsum("na,nka->nk", n, Om_ru)
+    f_v = np.einsum("na,nka->nk", n_v, w) + np.einsum("na,nka->nk", n, Om_rv)
+    # df_j/dm_i = n . (X_ij r_h) - n . (omega_i x w_j)
+    f_m = np.einsum("na,nija->nji", n, Xr) - np.einsum(
+        "na,nija->nji", n, np.cross(omega[:, :, None, :], w[:, None, :, :]))
+    J = np.concatenate([f_u[..., None], f_v[..., None], f_m], axis=-1)
+    T = np.concatenate([p.r_u[:, None], p.r_v[:, None], w], axis=1)
+    nq = 2 + k
+    H = np.zeros((q.shape[0], nq, nq, 3))
+    H[:, 0, 0], H[:, 0, 1], H[:, 1, 0], H[:, 1, 1] = p.r_uu, p.r_uv, p.r_uv, p.r_vv
+    H[:, 0, 2:], H[:, 2:, 0] = Om_ru, Om_ru
+    H[:, 1, 2:], H[:, 2:, 1] = Om_rv, Om_rv
+    H[:, 2:, 2:] = Xr
+    return LocalGeometry(M, p, N, n, w, omega, Xr, f, J, T, H)
+
+
+# --------------------------------------------------------------------------------------------
+# result record
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class EnvelopeResult:
+    """Points of an envelope with their generating parameters and the solve record.
+
+    Attributes
+    ----------
+    names : parameter names, ("u", "v") + motion names
+    params : (n, 2 + k) generating parameters q = (u, v, m) (last iterate where not converged)
+    point : (n, 3) generated point in S_2
+    normal : (n, 3) unit tool normal n_1 = unit(r_u x r_v) carried into S_2 (the common normal)
+    tangents : (n, 2, 3) derivatives of the generated point in the two free parameters (S_2)
+    singular_measure : (n,) smallest / largest singular value of Litvin's (2+k)-square matrix
+        with unit-scaled rows (0 at a singular point of the generated surface)
+    singular : (n,) singular_measure < singular_tol
+    litvin_det : (n,) determinant of that matrix (tangential components in the basis
+        t1 = unit(r_u), t2 = n x t1); changes sign across Litvin's limiting line
+    solve : the :class:`gearrep.solve.SolveResult` of the solved parameters
+    """
+
+    names: tuple[str, ...]
+    params: np.ndarray
+    point: np.ndarray
+    normal: np.ndarray
+    tangents: np.ndarray
+    singular_measure: np.ndarray
+    singular: np.ndarray
+    litvin_det: np.ndarray
+    solve: SolveResult
+
+    def param(self, name: str) -> np.ndarray:
+        """Column of ``params`` by name."""
+        if name not in self.names:
+            raise ValueError(f"name must be one of {self.names}, got {name!r}")
+        return self.params[:, self.names.index(name)]
+
+    @property
+    def status(self) -> np.ndarray:
+        return self.solve.status
+
+    @property
+    def residual(self) -> np.ndarray:
+        return self.solve.residual
+
+    @property
+    def iterations(self) -> np.ndarray:
+        return self.solve.iterations
+
+    @property
+    def converged(self) -> np.ndarray:
+        return self.solve.converged
+
+    def __len__(self) -> int:
+        return self.params.shape[0]
+
+
+def _litvin_matrix(loc: LocalGeometry):
+    """Litvin's singularity matrix [[T . t1], [T . t2], [J]] ((2+k)-square) per point."""
+    t1 = loc.tool.r_u / np.linalg.norm(loc.tool.r_u, axis=-1, keepdims=True)
+    t2 = np.cross(loc.n, t1)
+    A = np.concatenate([np.einsum("nqa,na->nq", loc.T, t1)[:, None],
+                        np.einsum("nqa,na->nq", loc.T, t2)[:, None], loc.J], axis=1)
+    return A
+
+
+def _singularity(loc: LocalGeometry):
+    """(singular_measure, litvin_det); NaN where the local data are not finite."""
+    A = _litvin_matrix(loc)
+    ok = np.all(np.isfinite(A), axis=(1, 2))
+    meas = np.full(A.shape[0], np.nan)
+    det = np.full(A.shape[0], np.nan)
+    if np.any(ok):
+        Ao = A[ok]
+        det[ok] = np.linalg.det(Ao)
+        scale = np.linalg.norm(Ao, axis=-1, keepdims=True)
+        s = np.linalg.svd(Ao / np.where(scale > 0, scale, 1.0), compute_uv=False)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            meas[ok] = np.where(s[:, 0] > 0, s[:, -1] / np.where(s[:, 0] > 0, s[:, 0], 1.0), 0.0)
+    return meas, det
+
+
+# --------------------------------------------------------------------------------------------
+# the envelope
+# --------------------------------------------------------------------------------------------
+class Envelope:
+    """Envelope of the family r_2(u, v, m) = M_21(m) r_1(u, v) (eq F, E of the module doc).
+
+    Parameters
+    ----------
+    tool : the generating surface (a :class:`gearrep.surfaces.base.Surface` in S_1)
+    motion : a :class:`Motion` with k = 1 or 2 parameters
+    free : the two parameters (names or indices into ("u", "v") + motion.names) that
+        parameterise the generated surface; the other k are solved from the meshing equations
+    lower, upper : bounds of the SOLVED parameters (k,), giving status OFF_FLANK outside
+    tol, maxiter : passed to :func:`gearrep.solve.newton` (tol on the meshing residual, whose
+        unit is length for a rotation parameter)
+    singular_tol : threshold on ``singular_measure`` for the ``singular`` flag
+    """
+
+    def __init__(self, tool: Surface, motion: Motion, free=("u", "v"), *, lower=None, upper=None,
+                 tol: float = 1e-12, maxiter: int = 50, singular_tol: float = 1e-6):
+        if not isinstance(tool, Surface):
+            raise ValueError("tool must be a gearrep.surfaces.base.Surface")
+        if not isinstance(motion, Motion) or motion.n_params not in (1, 2):
+            raise ValueError("motion must be a gearrep.envelope.Motion with 1 or 2 parameters")
+        self.tool, self.motion = tool, motion
+        self.k = motion.n_params
+        self.names = TOOL_NAMES + tuple(motion.names)
+        idx = []
+        for f in free:
+            if isinstance(f, str):
+                if f not in self.names:
+                    raise ValueError(f"free must name parameters among {self.names}, got {f!r}")
+                idx.append(self.names.index(f))
+            else:
+                i = int(f)
+                if not 0 <= i < len(self.names):
+                    raise ValueError(f"free index must be in [0, {len(self.names) - 1}], got {f!r}")
+                idx.append(i)
+        if len(idx) != 2 or idx[0] == idx[1]:
+            raise ValueError(f"free must be two distinct parameters, got {free!r}")
+        self.free = tuple(idx)
+        self.solved = tuple(i for i in range(2 + self.k) if i not in idx)
+        try:
+            self.lower = None if lower is None else np.broadcast_to(np.asarray(lower, float), (self.k,))
+            self.upper = None if upper is None else np.broadcast_to(np.asarray(upper, float), (self.k,))
+        except ValueError:
+            raise ValueError(f"lower and upper must broadcast to ({self.k},) (one per solved parameter)") from None
+        if not (tol > 0):
+            raise ValueError(f"tol must be > 0, got {tol!r}")
+        if not (singular_tol >= 0):
+            raise ValueError(f"singular_tol must be >= 0, got {singular_tol!r}")
+        self.tol, self.maxiter, self.singular_tol = float(tol), int(maxiter), float(singular_tol)
+
+    # ---- basic evaluations --------------------------------------------------------------
+    def _q(self, q):
+        q = np.asarray(q, dtype=float)
+        if q.shape[-1] != 2 + self.k:
+            raise ValueError(f"q must have last dimension {2 + self.k} ({self.names}), got {q.shape}")
+        return q
+
+    def meshing(self, q) -> np.ndarray:
+        """Equations of meshing f_j = n_1 . v^(12, j) (eq E; seed 000 eq 4.4-4.5;
+        seed 002 eq 2.2.7) at q (..., 2+k) -> (..., k)."""
+        q = self._q(q)
+        flat = q.reshape(-1, 2 + self.k)
+        return _local(self.tool, self.motion, flat).f.reshape(q.shape[:-1] + (self.k,))
+
+    def meshing_jacobian(self, q) -> np.ndarray:
+        """Partial derivatives of the meshing functions in q: (..., k, 2+k)."""
+        q = self._q(q)
+        flat = q.reshape(-1, 2 + self.k)
+        return _local(self.tool, self.motion, flat).J.reshape(q.shape[:-1] + (self.k, 2 + self.k))
+
+    def family(self, q) -> np.ndarray:
+        """Family of tool surfaces in S_2, r_2 = M_21(m) r_1(u, v) (eq F) at q -> (..., 3)."""
+        q = self._q(q)
+        flat = q.reshape(-1, 2 + self.k)
+        r = self.tool.position(flat[:, 0], flat[:, 1])
+        M, _, _ = self.motion.matrices(flat[:, 2:])
+        out = np.einsum("nab,nb->na", M[:, :3, :3], r) + M[:, :3, 3]
+        return out.reshape(q.shape[:-1] + (3,))
+
+    def local(self, q) -> LocalGeometry:
+        """All local quantities at flat q (n, 2+k) (vectors in the tool frame S_1): the tool
+        point and derivatives, unit normal, w_j = v^(12, j), omega_j, the meshing functions and
+        their Jacobian (used by :mod:`gearrep.curvature_relations`)."""
+        q = np.atleast_2d(self._q(q))
+        if q.ndim != 2 or not np.all(np.isfinite(q)):
+            raise ValueError(f"q must be a finite (n, {2 + self.k}) array")
+        return _local(self.tool, self.motion, q)
+
+    # ---- solving ------------------------------------------------------------------------
+    def _assemble(self, a, b, xs):
+        n = xs.shape[0]
+        q = np.empty((n, 2 + self.k))
+        q[:, self.free[0]], q[:, self.free[1]] = a, b
+        q[:, list(self.solved)] = xs
+        return q
+
+    def _solve_flat(self, a, b, x0):
+        S = list(self.solved)
+
+        def fun(x, idx):
+            return _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x)).f
+
+        def jac(x, idx):
+            return _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x)).J[:, :, S]
+
+        res = newton(fun, x0, jac, tol=self.tol, maxiter=self.maxiter, lower=self.lower,
+                     upper=self.upper, rows=True)
+        return res, self._assemble(a, b, res.x)
+
+    def _free_values(self, a, b):
+        try:
+            a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+        except ValueError:
+            raise ValueError("the two free parameter arrays must broadcast to a common shape") from None
+        if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+            raise ValueError(f"free parameters {self.free_names} must be finite")
+        return a, b
+
+    def _guess(self, guess, a, b):
+        if guess is None:
+            raise ValueError(f"guess for the solved parameters {self.solved_names} is required")
+        g = guess(a, b) if callable(guess) else guess
+        g = np.asarray(g, dtype=float)
+        if not np.all(np.isfinite(g)):
+            raise ValueError(f"guess for {self.solved_names} must be finite")
+        if self.k == 1 and (g.ndim == 0 or g.shape[-1] != 1):
+            g = g[..., None]
+        try:
+            return np.broadcast_to(g, a.shape + (self.k,)).reshape(-1, self.k).copy()
+        except ValueError:
+            raise ValueError(f"guess must broadcast to {a.shape + (self.k,)}, got shape {g.shape}") from None
+
+    @property
+    def free_names(self):
+        return tuple(self.names[i] for i in self.free)
+
+    @property
+    def solved_names(self):
+        return tuple(self.names[i] for i in self.solved)
+
+    def _derivs(self, loc: LocalGeometry):
+        """dq/dq_F (n, 2+k, 2) by implicit differentiation of the meshing equations."""
+        n = loc.J.shape[0]
+        JS = loc.J[:, :, list(self.solved)]
+        JF = loc.J[:, :, list(self.free)]
+        D = np.zeros((n, 2 + self.k, 2))
+        D[:, self.free[0], 0] = 1.0
+        D[:, self.free[1], 1] = 1.0
+        ok = np.all(np.isfinite(loc.J), axis=(1, 2))
+        ok[ok] = np.abs(np.linalg.det(JS[ok])) > 0
+        sol = np.full((n, self.k, 2), np.nan)
+        if np.any(ok):
+            sol[ok] = -np.linalg.solve(JS[ok], JF[ok])
+        D[:, list(self.solved), :] = sol
+        return D
+
+    def solve(self, a, b, guess=None) -> EnvelopeResult:
+        """Solve the meshing equations for the solved parameters at free values (a, b).
+
+        ``a``, ``b`` broadcast to a common shape S; ``guess`` (callable (a, b) -> S + (k,), or
+        an array broadcastable to it) starts the Newton iteration. Returns an
+        :class:`EnvelopeResult` of n = prod(S) points (flattened, C order).
+        """
+        a, b = self._free_values(a, b)
+        x0 = self._guess(guess, a, b)
+        af, bf = a.reshape(-1), b.reshape(-1)
+        res, q = self._solve_flat(af, bf, x0)
+        return self._record(q, res)
+
+    def _record(self, q, res):
+        loc = _local(self.tool, self.motion, q)
+        D = self._derivs(loc)
+        R = loc.M[:, :3, :3]
+        point = np.einsum("nab,nb->na", R, loc.tool.r) + loc.M[:, :3, 3]
+        normal = np.einsum("nab,nb->na", R, loc.n)
+        tan1 = np.einsum("nqa,nqf->nfa", loc.T, D)
+        tangents = np.einsum("nab,nfb->nfa", R, tan1)
+        meas, det = _singularity(loc)
+        return EnvelopeResult(self.names, q, point, normal, tangents, meas,
+                              np.nan_to_num(meas, nan=np.inf) < self.singular_tol, det, res)
+
+    def at(self, q) -> EnvelopeResult:
+        """Record at given full parameters q (n, 2+k) without solving (status CONVERGED where
+        the meshing residual is below ``tol``, NOT_CONVERGED elsewhere)."""
+        q = np.atleast_2d(self._q(q)).astype(float)
+        f = self.meshing(q)
+        r = np.linalg.norm(f, axis=-1)
+        st = np.where(r < self.tol, int(Status.CONVERGED), int(Status.NOT_CONVERGED))
+        res = SolveResult(q[:, list(self.solved)], r, np.zeros(len(r), int), st)
+        return self._record(q, res)
+
+    def surface(self, guess, fd_step=(1e-3, 1e-3)) -> "EnvelopeSurface":
+        """The generated surface as a :class:`gearrep.surfaces.base.Surface` of the two free
+        parameters (see :class:`EnvelopeSurface`)."""
+        return EnvelopeSurface(self, guess, fd_step)
+
+
+class EnvelopeSurface(Surface):
+    """The envelope as a Surface r(a, b) of the two free parameters of an :class:`Envelope`.
+
+    ``position`` solves the meshing equations (NaN where the solve fails; OFF_FLANK points are
+    returned). ``evaluate`` returns analytic first derivatives and second derivatives whose
+    normal components are analytic (so curvatures are exact to rounding); their tangential
+    components use 4th-order central differences of the analytic first derivatives with steps
+    ``fd_step`` (error ~ h^4 + 1e-16/h relative). Its normal unit(r_a x r_b) is +- the tool
+    normal; compare with :meth:`EnvelopeSurface.solve` (``normal``) to know which.
+    """
+
+    def __init__(self, envelope: Envelope, guess, fd_step=(1e-3, 1e-3)):
+        if not isinstance(envelope, Envelope):
+            raise ValueError("envelope must be a gearrep.envelope.Envelope")
+        h = tuple(float(x) for x in np.broadcast_to(np.asarray(fd_step, float), (2,)))
+        if not all(x > 0 for x in h):
+            raise ValueError(f"fd_step must be two positive steps, got {fd_step!r}")
+        self.envelope, self.guess, self.fd_step = envelope, guess, h
+
+    def solve(self, u, v) -> EnvelopeResult:
+        """The :class:`EnvelopeResult` at free parameters (u, v)."""
+        return self.envelope.solve(u, v, self.guess)
+
+    def position(self, u, v):
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        rec = self.solve(u, v)
+        ok = np.isin(rec.status, (int(Status.CONVERGED), int(Status.OFF_FLANK)))
+        pts = np.where(ok[:, None], rec.point, np.nan)
+        return pts.reshape(u.shape + (3,))
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        env = self.envelope
+        u, v = env._free_values(u, v)
+        shape = u.shape
+        a, b = u.reshape(-1), v.reshape(-1)
+        S = list(env.solved)
+        res, q = env._solve_flat(a, b, env._guess(self.guess, u, v))
+        bad = ~np.isin(res.status, (int(Status.CONVERGED), int(Status.OFF_FLANK)))
+        loc = _local(env.tool, env.motion, q)
+        D = env._derivs(loc)
+        # D at shifted free parameters, warm-started by the first-order predictor
+        shifted = {}
+        for d, h in enumerate(self.fd_step):
+            for o in (-2, -1, 1, 2):
+                da, db = (o * h, 0.0) if d == 0 else (0.0, o * h)
+                x0 = q[:, S] + D[:, S, d] * (o * h)
+                r2, q2 = env._solve_flat(a + da, b + db, x0)
+                bad |= ~np.isin(r2.status, (int(Status.CONVERGED), int(Status.OFF_FLANK)))
+                shifted[(d, o)] = env._derivs(_local(env.tool, env.motion, q2))
+        # second derivatives of the solved parameters: d/d(free_d) of D[..., e]
+        D2 = np.zeros((a.size, 2 + env.k, 2, 2))
+        for d, h in enumerate(self.fd_step):
+            dD = sum(w * shifted[(d, int(o))] for w, o in zip(_D1, _D1_OFF)) / h  # d/d(free_d) of D
+            D2[:, :, :, d] = dD
+        D2 = 0.5 * (D2 + np.swapaxes(D2, -1, -2))
+        D2[:, list(env.free)] = 0.0
+        R = loc.M[:, :3, :3]
+        first = np.einsum("nqa,nqf->nfa", loc.T, D)  # (n,2,3) in S_1
+        second = (np.einsum("npqa,npf,nqg->nfga", loc.H, D, D)
+                  + np.einsum("nqa,nqfg->nfga", loc.T, D2))
+        first = np.einsum("nab,nfb->nfa", R, first)
+        second = np.einsum("nab,nfgb->nfga", R, second)
+        r = np.einsum("nab,nb->na", R, loc.tool.r) + loc.M[:, :3, 3]
+        nanify = (lambda x: np.where(bad.reshape((-1,) + (1,) * (x.ndim - 1)), np.nan, x))
+        r, first, second = nanify(r), nanify(first), nanify(second)
+
+        def sh(x):
+            return x.reshape(shape + (3,))
+
+        return SurfacePoint(sh(r), sh(first[:, 0]), sh(first[:, 1]), sh(second[:, 0, 0]),
+                            sh(second[:, 0, 1]), sh(second[:, 1, 1]))
+
+
+def singular_points(envelope: Envelope, fixed_name, fixed_value, guess) -> EnvelopeResult:
+    """Litvin's limiting points: solve the meshing equations together with the singularity
+    condition det(A) = 0 (A = Litvin's (2+k)-square matrix, module doc; GGAT ch. 6 for k = 1;
+    seed 002 sec. 2.4) with one parameter ``fixed_name`` held at ``fixed_value`` (array).
+
+    ``guess`` (n, 1+k) or broadcastable: starting values of the other 1 + k parameters in the
+    order of ``envelope.names`` without the fixed one. The points found on the tool surface
+    form Litvin's line L: tool points beyond it generate an undercut (self-intersecting)
+    surface. Returns an :class:`EnvelopeResult` (its ``solve`` holds the combined solve)."""
+    if fixed_name not in envelope.names:
+        raise ValueError(f"fixed_name must be one of {envelope.names}, got {fixed_name!r}")
+    j = envelope.names.index(fixed_name)
+    others = [i for i in range(2 + envelope.k) if i != j]
+    fv = np.atleast_1d(np.asarray(fixed_value, dtype=float)).reshape(-1)
+    if not np.all(np.isfinite(fv)):
+        raise ValueError("fixed_value must be finite")
+    try:
+        x0 = np.broadcast_to(np.asarray(guess, dtype=float), (fv.size, 1 + envelope.k)).copy()
+    except ValueError:
+        raise ValueError(f"guess must broadcast to ({fv.size}, {1 + envelope.k}): the parameters "
+                         f"{tuple(n for n in envelope.names if n != fixed_name)}") from None
+
+    def assemble(x, idx):
+        q = np.empty((x.shape[0], 2 + envelope.k))
+        q[:, j] = fv[idx]
+        q[:, others] = x
+        return q
+
+    def fun(x, idx):
+        loc = _local(envelope.tool, envelope.motion, assemble(x, idx))
+        A = _litvin_matrix(loc)
+        scale = np.prod(np.linalg.norm(A, axis=-1), axis=-1)
+        return np.concatenate([loc.f, (np.linalg.det(A) / scale)[:, None]], axis=1)
+
+    res = newton(fun, x0, tol=envelope.tol * 10, maxiter=envelope.maxiter, rows=True)
+    rec = envelope._record(assemble(res.x, np.arange(fv.size)), res)
+    return rec

@@ -1,0 +1,200 @@
+"""Rack-cutter surfaces: straight (involute-generating) and parabolic normal profiles.
+
+Source: seed 002 (NASA CR-2000-209415), sec. 2.1-2.3: the rack-cutter surface is a cylinder
+whose generatrix is the skew tooth direction a-a (helix angle beta) and whose normal section is
+the profile,
+
+    r_a(u) = [u, a u^2, 0, 1]^T                                 (seed 002 eq 1.1, 2.2.1)
+    r_c(u, theta) = M_cb(theta) M_ba r_a(u)                     (seed 002 eq 2.2.2-2.2.3)
+    N_c = L_cb L_ba N_a,   N_a = k_a x dr_a/du                  (seed 002 eq 2.2.4-2.2.5)
+
+with theta = |O_c O_b| the displacement along the tooth direction. The straight rack of an
+involute gear is the same construction with a straight normal profile at the normal pressure
+angle alpha_n (GGAT ch. on involute helical gears: a rack-cutter with a straight normal
+profile generates an involute helicoid, tested in tests/unit/test_envelope.py).
+
+Frames (the figures of seed 002 are not in the text, so they are fixed here and used by
+:func:`gearrep.envelope.rack_generation_motion`):
+
+* S_c (rack): the pitch plane is x_c = 0; x_c points AWAY from the generated member (the member
+  lies on x_c < 0); y_c is the direction of the rack's translation; z_c is parallel to the
+  member's axis.
+* The tooth direction is t = (0, sin beta, cos beta); the normal section S_b has axes
+  x_b = x_c (tooth height), y_b = (0, cos beta, -sin beta) (in the pitch plane, normal to the
+  teeth) and z_b = t. So r_c(u, theta) = x_b(u) e_x + y_b(u) e_yb + theta t.
+* Straight profile: (x_b, y_b) = (u cos alpha_n, y0 + side u sin alpha_n): u is the signed
+  distance from the pitch line along the profile, u > 0 away from the member (the rack
+  dedendum, which generates the member's addendum); side = +1 / -1 picks the flank whose
+  tooth thickness grows / shrinks with x_b (with the member at x_c < 0, side = +1 is the
+  right-hand flank of a rack tooth centred at y_b < y0). The profile crosses the pitch line at
+  y_b = y0.
+* Parabolic profile (seed 002 eq 2.2.1, fig. 1.4, 2.7.1): the parabola x_a = u, y_a = a u^2
+  has its vertex at the design point Q, x_a along the tangent of the straight profile above
+  (inclined at alpha_n to the tooth height), and y_a along the profile normal at Q, oriented
+  from Q towards the pitch point P = (0, y0); |QP| = l (seed 002 sec. 2.7: l = cos(alpha_n)/P_n,
+  see :func:`nasa_l`). So the common normal at Q passes through P, and for a > 0 the centre of
+  curvature C (|QC| = 1/(2a), seed 002 eq 2.7.4) lies on the same ray beyond or before P. The
+  placement reproduces the principal curvatures of seed 002 sec. 2.5 (tested) when the pinion
+  is generated on the side x_c < 0 and the gear on x_c > 0
+  (:func:`gearrep.envelope.rack_generation_motion`, ``member_side``): Q lies at
+  x_b(Q) = l sin alpha_n > 0, i.e. in the pinion's addendum and the gear's dedendum.
+
+Normals: N = r_u x r_theta = y_b'(u) e_x - x_b'(u) e_yb (since e_x x t = -e_yb, e_yb x t = e_x);
+for the straight profile N = side sin(alpha_n) e_x - cos(alpha_n) e_yb, always towards -y_b.
+
+Units: lengths in the design data's unit (inches for seed 002, whose P_n is in 1/in).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .base import Surface, SurfacePoint
+
+__all__ = ["RackCutter", "StraightRackCutter", "ParabolicRackCutter", "nasa_l"]
+
+
+def _angle(x, name, lo, hi, lo_open=True, hi_open=True):
+    x = float(x)
+    ok = np.isfinite(x) and (x > lo if lo_open else x >= lo) and (x < hi if hi_open else x <= hi)
+    if not ok:
+        lb = "(" if lo_open else "["
+        rb = ")" if hi_open else "]"
+        raise ValueError(f"{name} must be in {lb}{lo:.6g}, {hi:.6g}{rb} rad, got {x!r}")
+    return x
+
+
+def _finite(x, name):
+    x = float(x)
+    if not np.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {x!r}")
+    return x
+
+
+def _side(side):
+    if side not in (1, -1):
+        raise ValueError(f"side must be +1 or -1, got {side!r}")
+    return int(side)
+
+
+def nasa_l(alpha_n: float, P_n: float) -> float:
+    """Distance l = |QP| = cos(alpha_n) / P_n of seed 002 sec. 2.7 item 2 (P_n normal
+    diametral pitch, 1/in; l in inches)."""
+    _angle(alpha_n, "alpha_n", 0.0, np.pi / 2)
+    if not (np.isfinite(P_n) and P_n > 0):
+        raise ValueError(f"P_n (normal diametral pitch) must be finite and > 0, got {P_n!r}")
+    return float(np.cos(alpha_n) / P_n)
+
+
+class RackCutter(Surface):
+    """A rack-cutter cylinder r_c(u, theta) = x_b(u) e_x + y_b(u) e_yb + theta t (module doc;
+    seed 002 eq 2.2.3) with analytic first and second derivatives.
+
+    Subclasses define the normal profile by :meth:`profile` returning (x, y, x', y', x'', y'')
+    as functions of u.
+    """
+
+    def __init__(self, beta: float = 0.0):
+        self.beta = _angle(beta, "beta (helix angle)", -np.pi / 2, np.pi / 2)
+        sb, cb = np.sin(self.beta), np.cos(self.beta)
+        self.e_x = np.array([1.0, 0.0, 0.0])
+        self.e_yb = np.array([0.0, cb, -sb])  # normal to the teeth, in the pitch plane
+        self.t = np.array([0.0, sb, cb])  # tooth direction a-a
+
+    def profile(self, u):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def _combine(self, x, y, theta):
+        return x[..., None] * self.e_x + y[..., None] * self.e_yb + np.asarray(theta)[..., None] * self.t
+
+    def position(self, u, theta):
+        u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
+        x, y = self.profile(u)[:2]
+        return self._combine(x, y, theta)
+
+    def evaluate(self, u, theta) -> SurfacePoint:
+        """Position and analytic derivatives: r_u = x' e_x + y' e_yb, r_theta = t,
+        r_uu = x'' e_x + y'' e_yb, r_utheta = r_thetatheta = 0."""
+        u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
+        x, y, xu, yu, xuu, yuu = self.profile(u)
+        zero = np.zeros(u.shape + (3,))
+        r = self._combine(x, y, theta)
+        r_u = xu[..., None] * self.e_x + yu[..., None] * self.e_yb
+        r_t = np.broadcast_to(self.t, u.shape + (3,)).copy()
+        r_uu = xuu[..., None] * self.e_x + yuu[..., None] * self.e_yb
+        return SurfacePoint(r, r_u, r_t, r_uu, zero, zero.copy())
+
+    def profile_curvature(self, u):
+        """Signed curvature of the normal profile, (x'y'' - y'x'') / |r_u|^3 (positive when it
+        turns towards the normal N = r_u x r_theta)."""
+        u = np.asarray(u, float)
+        _, _, xu, yu, xuu, yuu = self.profile(u)
+        return (xu * yuu - yu * xuu) / np.hypot(xu, yu) ** 3
+
+
+class StraightRackCutter(RackCutter):
+    """Rack-cutter with a straight normal profile at pressure angle alpha_n (generates an
+    involute helicoid, transverse pressure angle tan(alpha_t) = tan(alpha_n)/cos(beta)).
+
+    Parameters
+    ----------
+    alpha_n : normal pressure angle, in (0, pi/2) rad
+    beta : helix angle of the rack teeth, in (-pi/2, pi/2) rad (beta > 0 generates a
+        right-hand member with :func:`gearrep.envelope.rack_generation_motion` and
+        member_side = -1, a left-hand one with member_side = +1)
+    y0 : where the profile crosses the pitch line, along y_b (length)
+    side : +1 or -1, the flank (module doc)
+    """
+
+    def __init__(self, alpha_n: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
+        super().__init__(beta)
+        self.alpha_n = _angle(alpha_n, "alpha_n (normal pressure angle)", 0.0, np.pi / 2)
+        self.y0 = _finite(y0, "y0")
+        self.side = _side(side)
+
+    def profile(self, u):
+        u = np.asarray(u, float)
+        ca, sa = np.cos(self.alpha_n), np.sin(self.alpha_n)
+        z = np.zeros_like(u)
+        return (u * ca, self.y0 + self.side * u * sa, z + ca, z + self.side * sa, z, z.copy())
+
+
+class ParabolicRackCutter(RackCutter):
+    """Rack-cutter with the parabolic normal profile x_a = u, y_a = a u^2 of seed 002
+    (eq 1.1, 2.2.1-2.2.5), placed as in the module doc.
+
+    Parameters
+    ----------
+    a : parabola coefficient (1/length); the profile curvature at Q is 2a (seed 002
+        eq 2.5.2, 2.7.4); a > 0 bends the profile towards P; any finite value (a = 0 gives a
+        straight profile offset by l from P)
+    alpha_n : normal pressure angle, in (0, pi/2) rad
+    l : |QP| (length, finite, >= 0); seed 002 uses l = cos(alpha_n)/P_n (:func:`nasa_l`)
+    beta, y0, side : as for :class:`StraightRackCutter`
+    """
+
+    def __init__(self, a: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0,
+                 side: int = 1):
+        super().__init__(beta)
+        self.a = _finite(a, "a (parabola coefficient)")
+        self.alpha_n = _angle(alpha_n, "alpha_n (normal pressure angle)", 0.0, np.pi / 2)
+        self.l = _finite(l, "l (|QP|)")
+        if self.l < 0:
+            raise ValueError(f"l (|QP|) must be >= 0, got {l!r}")
+        self.y0 = _finite(y0, "y0")
+        self.side = _side(side)
+        ca, sa = np.cos(self.alpha_n), np.sin(self.alpha_n)
+        s = self.side
+        self.tangent_q = np.array([ca, s * sa])  # x_a in (x_b, y_b)
+        self.normal_q = np.array([-sa, s * ca])  # y_a: from Q towards P
+        self.q_point = np.array([0.0, self.y0]) - self.l * self.normal_q  # Q = P - l y_a
+
+    def profile(self, u):
+        u = np.asarray(u, float)
+        Q, d, m = self.q_point, self.tangent_q, self.normal_q
+        x = Q[0] + u * d[0] + self.a * u**2 * m[0]
+        y = Q[1] + u * d[1] + self.a * u**2 * m[1]
+        xu = d[0] + 2 * self.a * u * m[0]
+        yu = d[1] + 2 * self.a * u * m[1]
+        z = np.zeros_like(u)
+        return x, y, xu, yu, z + 2 * self.a * m[0], z + 2 * self.a * m[1]

@@ -1,0 +1,300 @@
+"""gearrep.envelope: one- and two-parameter envelopes against closed forms, singular points."""
+
+import numpy as np
+import pytest
+from _envelope_cases import (
+    HOB,
+    TORUS,
+    Cylinder,
+    Plane,
+    ellipsoid_motion,
+    hob_case,
+    principal_wrt,
+    torus_motion,
+)
+
+from gearrep.envelope import (
+    ChainMotion,
+    Envelope,
+    FunctionMotion,
+    fixed,
+    rack_generation_motion,
+    rotation,
+    singular_points,
+    translation,
+)
+from gearrep.solve import Status, newton
+from gearrep.surfaces.base import fd_derivatives
+from gearrep.surfaces.rack import StraightRackCutter
+from gearrep.units import DEG
+
+
+def inv(a):
+    return np.tan(a) - a
+
+
+def involute_case(N=20, mn=3.0, alpha_n=20 * DEG, beta=15 * DEG, y0=0.3, side=1):
+    r_p = mn * N / (2 * np.cos(beta))
+    rack = StraightRackCutter(alpha_n, beta, y0=y0, side=side)
+    env = Envelope(rack, rack_generation_motion(r_p), free=("u", "v"))
+    alpha_t = np.arctan(np.tan(alpha_n) / np.cos(beta))
+    return env, r_p, alpha_t, r_p * np.cos(alpha_t)
+
+
+# ---- motions -------------------------------------------------------------------------------
+def test_chain_motion_derivatives_match_finite_differences():
+    mot = ChainMotion([
+        rotation((0, 0, 1), [0.05, 0.0]),
+        rotation((1, 0.2, 0), [0.0, 1.0], point=(60, 110, 0)),
+        translation((1, 0, 0), [0.0, 3.0], offset=60),
+        fixed(np.diag([1.0, -1.0, -1.0, 1.0])),
+        rotation((0, 0, 1), [1.0, 0.7]),
+    ], names=("theta", "psi"))
+    m = np.array([[0.3, -0.1], [2.0, 0.05]])
+    M, dM, d2M = mot.matrices(m)
+    fd = FunctionMotion(lambda x: mot.matrices(x)[0], 2, ("theta", "psi"), fd_step=1e-3)
+    _, dMf, d2Mf = fd.matrices(m)
+    np.testing.assert_allclose(dM, dMf, atol=1e-9)
+    np.testing.assert_allclose(d2M, d2Mf, atol=1e-7)
+    R = M[..., :3, :3]
+    np.testing.assert_allclose(R @ np.swapaxes(R, -1, -2), np.broadcast_to(np.eye(3), R.shape), atol=1e-14)
+    assert M.shape == (2, 4, 4) and dM.shape == (2, 2, 4, 4) and d2M.shape == (2, 2, 2, 4, 4)
+
+
+@pytest.mark.parametrize("member_side", [-1, 1])
+def test_rack_meshing_equals_seed002_eq_2_3_6(member_side):
+    """n . v^(1c) = +-[(r_p phi - y_c) N_x + x_c N_y] / |N| (seed 002 eq 2.2.9 / 2.3.6)."""
+    r_p = 7.0
+    rack = StraightRackCutter(25 * DEG, 19.948 * DEG, y0=0.1)
+    env = Envelope(rack, rack_generation_motion(r_p, member_side))
+    rng = np.random.default_rng(1)
+    q = rng.uniform(-1, 1, (20, 3))
+    p = rack.evaluate(q[:, 0], q[:, 1])
+    N = np.cross(p.r_u, p.r_v)
+    f = ((r_p * q[:, 2] - p.r[:, 1]) * N[:, 0] + p.r[:, 0] * N[:, 1]) / np.linalg.norm(N, axis=1)
+    np.testing.assert_allclose(env.meshing(q)[:, 0], -member_side * f, atol=1e-14)
+    # the pitch point of the rack (x_c = 0, y_c = r_p phi) is carried to (member_side * -r_p, 0)
+    M, _, _ = rack_generation_motion(r_p, member_side).matrices(np.array([0.4]))
+    P = M @ np.array([0.0, r_p * 0.4, 0.0, 1.0])
+    np.testing.assert_allclose(np.hypot(P[0], P[1]), r_p, rtol=1e-15)
+
+
+# ---- one-parameter: involute helicoid ---------------------------------------------------------
+@pytest.mark.parametrize("beta, side", [(0.0, 1), (15 * DEG, 1), (-25 * DEG, -1)])
+def test_straight_rack_generates_involute_helicoid(beta, side):
+    env, r_p, alpha_t, r_b = involute_case(beta=beta, side=side)
+    u, th = np.meshgrid(np.linspace(-3.0, 3.0, 7), np.linspace(-20, 20, 5))
+    rec = env.solve(u, th, guess=0.0)
+    assert np.all(rec.converged) and np.all(rec.residual < 1e-12)
+    assert np.all(rec.iterations <= 2)  # the meshing equation is affine in phi: one Newton step
+    X = rec.point
+    rho, Th, Z = np.hypot(X[:, 0], X[:, 1]), np.arctan2(X[:, 1], X[:, 0]), X[:, 2]
+    # closed form: polar angle = (y0/cos(beta) + Z tan(beta)) / r_p + side (inv(a_rho) - inv(a_t))
+    # (the profile's pitch point touches the pitch circle when r_p phi = y_c(pitch) at that Z)
+    a_rho = np.arccos(r_b / rho)
+    Th_c = (0.3 / np.cos(beta) + Z * np.tan(beta)) / r_p + side * (inv(a_rho) - inv(alpha_t))
+    assert np.max(np.abs(rho * (Th - Th_c))) < 1e-10  # mm
+    # the generated point carries the tool normal; it is normal to the involute helicoid
+    tang = rec.tangents
+    np.testing.assert_allclose(np.einsum("na,nfa->nf", rec.normal, tang), 0.0, atol=1e-12)
+    # sanity on the closed form itself: the other flank's formula is far off
+    assert np.max(np.abs(rho * (Th - Th_c + 2 * side * (inv(a_rho) - inv(alpha_t))))) > 1e-3
+
+
+def test_generated_surface_curvatures_closed_form():
+    """Involute helicoid: principal curvatures 0 (generatrix) and cos(beta_b)/sqrt(r^2 - r_b^2)
+    in the transverse direction (transverse involute curvature 1/rho_t with Meusnier's factor
+    cos(beta_b), the angle between the surface normal and the transverse plane)."""
+    beta = 15 * DEG
+    env, r_p, alpha_t, r_b = involute_case(beta=beta)
+    beta_b = np.arctan(np.tan(beta) * np.cos(alpha_t))
+    surf = env.surface(guess=0.0)
+    u, th = np.meshgrid(np.linspace(-2.5, 3.0, 6), np.linspace(-10, 10, 3))
+    p = surf.evaluate(u, th)
+    rec = surf.solve(u, th)
+    np.testing.assert_allclose(p.r.reshape(-1, 3), rec.point, atol=1e-12)
+    rho = np.hypot(rec.point[:, 0], rec.point[:, 1])
+    k_closed = np.cos(beta_b) / np.sqrt(rho**2 - r_b**2)
+    k1, k2 = principal_wrt(p, rec.normal.reshape(p.r.shape))
+    k1, k2 = k1.reshape(-1), k2.reshape(-1)
+    # the tool normal points away from the involute's centre of curvature (convex): k = -1/rho
+    np.testing.assert_allclose(k2, -k_closed, rtol=1e-8)
+    np.testing.assert_allclose(k1, 0.0, atol=1e-8 * k_closed.max())
+
+
+def test_envelope_surface_derivatives_match_finite_differences():
+    env, *_ = involute_case(beta=20 * DEG)
+    surf = env.surface(guess=0.0, fd_step=(1e-3, 1e-3))
+    u, th = np.linspace(-2, 2, 5), np.linspace(-5, 5, 5)
+    p = surf.evaluate(u, th)
+    q = fd_derivatives(surf.position, u, th, 1e-2, 1e-2)
+    for name, tol in (("r", 1e-13), ("r_u", 1e-9), ("r_v", 1e-9), ("r_uu", 1e-7), ("r_uv", 1e-7), ("r_vv", 1e-7)):
+        np.testing.assert_allclose(getattr(p, name), getattr(q, name), atol=tol, err_msg=name)
+
+
+# ---- singular points (undercutting) ----------------------------------------------------------
+@pytest.mark.parametrize("beta", [0.0, 20 * DEG])
+def test_undercut_limit_of_small_pinion(beta):
+    """10-tooth, 20 deg, m = 1: the rack's limiting line is at x_c = -r_p sin^2(alpha_t) (the
+    line of action meets the base circle), and the singular point lies on the base circle."""
+    env, r_p, alpha_t, r_b = involute_case(N=10, mn=1.0, alpha_n=20 * DEG, beta=beta, y0=0.0)
+    th = np.array([0.0, 1.5, -3.0])
+    # phi of the contact shifts by theta sin(beta) / r_p along a helical rack tooth
+    sp = singular_points(env, "v", th, guess=np.c_[np.full(3, -0.6), -0.4 + th * np.sin(beta) / r_p])
+    assert np.all(sp.converged)
+    x_c = sp.param("u") * np.cos(20 * DEG)
+    np.testing.assert_allclose(x_c, -r_p * np.sin(alpha_t) ** 2, rtol=1e-10)
+    np.testing.assert_allclose(np.hypot(sp.point[:, 0], sp.point[:, 1]), r_b, rtol=1e-10)
+    assert np.all(sp.singular)
+    # the limit is undercut for a 1-module addendum: r_p sin^2 alpha_t < m
+    assert r_p * np.sin(alpha_t) ** 2 < 1.0
+    # along a profile, Litvin's determinant changes sign exactly at the limit; the generated
+    # surface's tangent vectors there become parallel
+    u_lim = sp.param("u")[0]
+    rec = env.solve(u_lim + np.array([-0.2, -1e-3, 1e-3, 0.2]), 0.0, guess=0.0)
+    d = rec.litvin_det
+    assert d[0] * d[3] < 0 and d[1] * d[2] < 0 and d[0] * d[1] > 0
+    assert rec.singular_measure[1] < 1e-2 * rec.singular_measure[3]
+    area = np.linalg.norm(np.cross(rec.tangents[:, 0], rec.tangents[:, 1]), axis=-1)  # |r_u x r_theta|
+    assert area[1] < 1e-2 * area[3] and area[2] < 1e-2 * area[0]
+    # on both sides of the limit the generated points lie outside the base circle: rack points
+    # deeper than the limit generate the second branch of the involute beyond its cusp (undercut)
+    r = np.hypot(rec.point[:, 0], rec.point[:, 1])
+    assert np.all(r > r_b) and r[0] > r[1] and r[3] > r[2]
+
+
+# ---- two-parameter envelopes --------------------------------------------------------------------
+def test_two_parameter_torus_from_cylinder():
+    R0, r0, rho = TORUS["R0"], TORUS["r0"], TORUS["rho"]
+    env = Envelope(Cylinder(rho), torus_motion(**TORUS), free=("theta", "psi"))
+    th, ps = np.meshgrid(np.linspace(-0.5, 2.5, 4), np.linspace(-1.2, 1.2, 5))
+    rec = env.solve(th, ps, guess=[0.1, 0.2])
+    assert np.all(rec.converged)
+    X = rec.point
+    rc = np.hypot(X[:, 0], X[:, 1]) - R0
+    np.testing.assert_allclose(np.hypot(rc, X[:, 2]), r0 + rho, rtol=1e-14)
+    # position: p(theta, psi) + rho n, with the tool contact point fixed at (u, v) = (0, 0)
+    t, p = rec.param("theta"), rec.param("psi")
+    Xc = np.stack([(R0 + (r0 + rho) * np.cos(p)) * np.cos(t), (R0 + (r0 + rho) * np.cos(p)) * np.sin(t),
+                   (r0 + rho) * np.sin(p)], -1)
+    np.testing.assert_allclose(X, Xc, atol=1e-12)
+    np.testing.assert_allclose(rec.params[:, :2], 0.0, atol=1e-12)
+    np.testing.assert_allclose(rec.normal, (Xc - np.stack([R0 * np.cos(t), R0 * np.sin(t), 0 * t], -1)) / (r0 + rho),
+                               atol=1e-13)
+    # generated surface curvatures by direct differential geometry vs closed form
+    surf = env.surface([0.1, 0.2])
+    sp = surf.evaluate(t, p)
+    k1, k2 = principal_wrt(sp, rec.normal)
+    kmer = -1.0 / (r0 + rho)
+    kpar = -np.cos(p) / (R0 + (r0 + rho) * np.cos(p))
+    np.testing.assert_allclose(k1, np.maximum(kmer, kpar), rtol=1e-10)
+    np.testing.assert_allclose(k2, np.minimum(kmer, kpar), rtol=1e-10)
+
+
+@pytest.mark.parametrize("free, grid", [
+    (("theta", "psi"), (np.linspace(-2, 2, 4), np.linspace(0.3, 1.2, 3))),
+    (("v", "psi"), (np.linspace(-0.4, 0.4, 3), np.linspace(0.3, 1.2, 3))),
+])
+def test_two_parameter_ellipsoid_from_plane(free, grid):
+    axes = np.array([3.0, 2.0, 1.2])
+    env = Envelope(Plane(), ellipsoid_motion(axes), free=free)
+    a, b = np.meshgrid(*grid)
+    rec = env.solve(a, b, guess=[0.0, 0.0])
+    assert np.all(rec.converged)
+    X = rec.point
+    np.testing.assert_allclose(np.sum(X**2 / axes**2, -1), 1.0, atol=1e-13)
+    np.testing.assert_allclose(np.cross(rec.normal, X / axes**2), 0.0, atol=1e-11)  # normal = grad
+
+
+def test_two_parameter_hob_parameterised_by_l_psi():
+    """Seed 000 set-up: with free (l, psi) the solve for (phi, theta) is regular across the
+    mid-face psi = 0, where the Jacobian of the meshing equations in (theta, psi) is singular."""
+    tool, motion = hob_case()
+    env = Envelope(tool, motion, free=("u", "psi"))
+    l, ps = np.meshgrid(np.linspace(4.4, 10.3, 4), np.array([-0.1, 0.0, 0.1]))
+    rec = env.solve(l, ps, guess=[np.pi, 0.0])
+    assert np.all(rec.converged) and not np.any(rec.singular)
+    J = env.meshing_jacobian(rec.params)
+    s_tp = np.linalg.svd(J[:, :, 2:], compute_uv=False)
+    s_pt = np.linalg.svd(J[:, :, 1:3], compute_uv=False)
+    mid = rec.param("psi") == 0.0
+    assert np.all(s_tp[mid, 1] < 1e-12 * s_tp[mid, 0])  # (theta, psi): singular at mid-face
+    assert np.all(s_pt[:, 1] > 1e-3 * s_pt[:, 0])  # (phi, theta): regular
+    # the working profile lies about the 20-tooth gear's pitch circle (r = 30 mm, tip 33)
+    r = np.hypot(rec.point[:, 0], rec.point[:, 1])
+    assert np.all((r > 27.5) & (r < 33.5))
+    assert HOB["N"] == 20
+
+
+def test_status_is_reported_not_hidden():
+    # (u, psi) cannot parameterise the plane/ellipsoid family: f_psi does not depend on (v, theta)
+    env = Envelope(Plane(), ellipsoid_motion(), free=("u", "psi"))
+    rec = env.solve(np.array([0.2, 0.3]), np.array([0.5, 0.6]), guess=[0.0, 0.0])
+    assert not np.any(rec.converged)
+    # bounds on the solved parameter give OFF_FLANK
+    env1, *_ = involute_case()
+    rec = Envelope(env1.tool, env1.motion, lower=[-0.01], upper=[0.01]).solve([0.0, 3.0], 0.0, guess=0.0)
+    assert rec.status[0] == Status.CONVERGED and rec.status[1] == Status.OFF_FLANK
+    # a tool that returns NaN (a point off its domain): DIVERGED, not an exception
+    class Bad(Plane):
+        def evaluate(self, u, v):
+            p = super().evaluate(u, v)
+            return type(p)(p.r * np.nan, p.r_u, p.r_v, p.r_uu, p.r_uv, p.r_vv)
+
+    rec = Envelope(Bad(), ellipsoid_motion(), free=("theta", "psi")).solve(0.1, 0.5, guess=[0.0, 0.0])
+    assert rec.status[0] == Status.DIVERGED and not rec.singular[0]
+    # EnvelopeSurface.position gives NaN for failed solves
+    surf = env.surface([0.0, 0.0])
+    assert np.all(np.isnan(surf.position(0.2, 0.5)))
+
+
+def test_newton_rows_and_initial_root():
+    """Support added to gearrep.solve.newton for this module: rows=True passes the batch indices
+    of the active rows; a starting point that is already a root counts as converged."""
+    c = np.array([1.0, 2.0, 3.0])
+    seen = []
+
+    def fun(x, idx):
+        seen.append(idx.copy())
+        return x**2 - c[idx, None]
+
+    r = newton(fun, np.array([[1.0], [1.0], [1.0]]), rows=True)
+    assert np.all(r.converged) and r.iterations[0] == 0
+    np.testing.assert_allclose(r.x[:, 0], np.sqrt(c), rtol=1e-14)
+    assert any(len(s) < 3 for s in seen)
+
+
+def test_validation():
+    env, *_ = involute_case()
+    with pytest.raises(ValueError, match="free"):
+        Envelope(env.tool, env.motion, free=("u", "u"))
+    with pytest.raises(ValueError, match="free"):
+        Envelope(env.tool, env.motion, free=("u", "psi"))
+    with pytest.raises(ValueError, match="tool"):
+        Envelope(object(), env.motion)
+    with pytest.raises(ValueError, match="r_p"):
+        rack_generation_motion(-1.0)
+    with pytest.raises(ValueError, match="member_side"):
+        rack_generation_motion(1.0, member_side=0)
+    with pytest.raises(ValueError, match="guess"):
+        env.solve(0.0, 0.0)
+    with pytest.raises(ValueError, match="q must"):
+        env.meshing(np.zeros((3, 4)))
+    with pytest.raises(ValueError, match="coeffs"):
+        ChainMotion([rotation((0, 0, 1), [1.0, 2.0])], names=("phi",))
+    with pytest.raises(ValueError, match="axis"):
+        rotation((0, 0, 0))
+    with pytest.raises(ValueError, match="n_params"):
+        FunctionMotion(lambda m: None, 3)
+    with pytest.raises(ValueError, match="finite"):
+        env.solve(np.nan, 0.0, guess=0.0)
+    with pytest.raises(ValueError, match="guess"):
+        env.solve(0.0, 0.0, guess=[0.0, 1.0, 2.0])
+    with pytest.raises(ValueError, match="guess"):
+        singular_points(env, "v", [0.0, 1.0], guess=[1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match="fixed_name"):
+        singular_points(env, "psi", [0.0], guess=[1.0, 2.0])
+    with pytest.raises(ValueError, match="lower"):
+        Envelope(env.tool, env.motion, lower=[0.0, 1.0, 2.0])
+    with pytest.raises(ValueError, match="m must"):
+        torus_motion(**TORUS).matrices(np.zeros((2, 3)))
