@@ -102,3 +102,12 @@ def test_parse_row():
     assert pub.parse_row("l1_mm=4.381;side=L") == {"l1_mm": "4.381", "side": "L"}
     with pytest.raises(pub.PublishedDataError):
         pub.parse_row("nonsense")
+
+
+def test_errata_file_is_well_formed():
+    from conftest import ROOT
+
+    errata = pd.read_csv(ROOT / "data" / "errata.csv", dtype=str, keep_default_na=False)
+    assert list(errata.columns) == ["seed", "location", "printed", "correction", "evidence"]
+    assert set(errata["seed"]) <= set(pub.SEEDS)
+    assert (errata["evidence"].str.len() > 20).all(), "every erratum needs its evidence"
