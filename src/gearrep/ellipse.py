@@ -1,0 +1,283 @@
+"""Instantaneous contact ellipse: Litvin's elastic-approach ellipse and the Hertz ellipse.
+
+Sources
+-------
+* Elastic-approach ellipse: seed 002 sect. 2.6 eq 2.6.1-2.6.6 (= seed 000 eq 5.14-5.17 =
+  seed 004 eq 21-26; Litvin & Fuentes, *Gear Geometry and Applied Theory*, "contact ellipse"):
+  kS_i = k_I^(i) + k_II^(i), g_i = k_I^(i) - k_II^(i),
+  A = (kS1 - kS2 - R)/4, B = (kS1 - kS2 + R)/4, R = sqrt(g1^2 - 2 g1 g2 cos 2sigma + g2^2),
+  a = |delta/A|^(1/2), b = |delta/B|^(1/2), cos 2alpha = (g1 - g2 cos 2sigma)/R,
+  sin 2alpha = g2 sin 2sigma / R (2.6.2, see the sign note below); area S = pi a b (seed 004
+  eq 27).
+* Hertz: Johnson, *Contact Mechanics* (1985), sect. 4.2 and eq 3.63-3.64 (ellipsoidal
+  pressure p = p0 sqrt(1 - x^2/a^2 - y^2/b^2) on an elastic half-space), written with Carlson
+  symmetric elliptic integrals (scipy.special.elliprf / elliprd; DLMF 19.25.1) so that neither
+  the circular limit (e -> 0) nor very slender ellipses (e -> 1) lose digits.
+
+Derivation and conventions (elastic approach)
+---------------------------------------------
+Let n be the common unit normal of the two surfaces at the contact point and kappa^(i)(q) the
+normal curvature of surface i in the tangent direction q, both w.r.t. n (k > 0 where the
+surface bends toward n, gearrep.curvature). To second order, surface i lies at height
+z_i = kappa^(i)(q) rho^2 / 2 above the tangent plane (along n) at distance rho in direction q,
+so the normal separation of the surfaces is |z_1 - z_2| = |kappa^(12)(q)| rho^2 / 2 with the
+relative curvature kappa^(12) = kappa^(1) - kappa^(2). By Euler's formula
+kappa^(12)(q) = (kS1 - kS2)/2 + (R/2) cos 2(q - alpha), whose extrema are 2B (at q = alpha)
+and 2A (at q = alpha + pi/2); in principal relative axes (xi along alpha + pi/2, eta along
+alpha) the separation is A xi^2 + B eta^2. The elastic-approach contact region is where the
+separation does not exceed the elastic approach delta: A xi^2 + B eta^2 = delta (seed 004
+eq 21), i.e. semi-axes |delta/A|^(1/2) along xi and |delta/B|^(1/2) along eta. For a sphere of
+radius R on a plane A = B = 1/(2R) and the radius is sqrt(2 R delta).
+
+This module returns ``a`` = semi-MAJOR and ``b`` = semi-MINOR axis, whichever of A, B they
+come from, and ``alpha`` = the angle from e_I^(1) to the MINOR axis (the direction of largest
+|kappa^(12)|), counter-clockwise about n in the same sense as sigma, wrapped to (-pi/2, pi/2].
+With Litvin's orientation of n (kappa^(12) >= 0, no interference) this is exactly his labelling
+(a from A, b from B, alpha^(1) to the b axis); with the opposite n all curvatures flip sign,
+A and B swap roles, and the returned ellipse is unchanged. Sign note: eq 2.6.2 as printed
+(sin 2alpha = +g2 sin 2sigma / R) measures alpha^(1) in the sense opposite to sigma; here
+sin 2alpha = -g2 sin 2sigma / R with both angles counter-clockwise about n (|alpha| agrees).
+``elliptic`` is False where A and B have opposite signs or one vanishes (saddle-shaped
+separation: the region is not an ellipse; a or b is then the |delta/.|^(1/2) formal value or inf).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from scipy.special import elliprd, elliprf
+
+from .curvature import PrincipalCurvatures, relative_curvature, relative_principal_curvatures
+from .solve import SolveResult, Status, newton
+
+__all__ = [
+    "ContactEllipse",
+    "HertzContact",
+    "litvin_coefficients",
+    "elastic_ellipse",
+    "elastic_ellipse_from_relative",
+    "elastic_ellipse_at",
+    "effective_modulus",
+    "hertz_ratio",
+    "hertz_contact",
+]
+
+
+class ContactEllipse(NamedTuple):
+    """Elastic-approach contact ellipse (see module docstring for conventions).
+
+    a, b: semi-major / semi-minor axis; alpha: angle e_I^(1) -> minor axis (about n, sense of
+    sigma); A, B: Litvin's coefficients (A <= B algebraically); area = pi a b; elliptic: A B > 0.
+    major_axis, minor_axis: unit 3-vectors (only from :func:`elastic_ellipse_at`)."""
+
+    a: np.ndarray
+    b: np.ndarray
+    alpha: np.ndarray
+    A: np.ndarray
+    B: np.ndarray
+    area: np.ndarray
+    elliptic: np.ndarray
+    major_axis: np.ndarray | None = None
+    minor_axis: np.ndarray | None = None
+
+    @property
+    def ratio(self) -> np.ndarray:
+        """a / b (>= 1)."""
+        return self.a / self.b
+
+
+def _check_positive(name, x, allow_inf=False):
+    x = np.asarray(x, dtype=float)
+    ok = (x > 0) & (np.isfinite(x) | allow_inf)
+    if not np.all(ok):
+        bad = x[~ok] if x.ndim else x
+        raise ValueError(f"{name} must be > 0 and finite, got {np.ravel(bad)[:5]!r}")
+    return x
+
+
+def litvin_coefficients(kI1, kII1, kI2, kII2, sigma):
+    """Litvin's A, B (seed 002 eq 2.6.4-2.6.6) and alpha (eq 2.6.1-2.6.2, measured in the
+    sense of sigma) from the principal curvatures of both surfaces w.r.t. a common normal and
+    the angle sigma from e_I^(1) to e_I^(2). Returns (A, B, alpha), A <= B, alpha the angle of
+    the B direction (largest algebraic relative curvature).
+
+    Computed as 2A, 2B = principal relative curvatures (gearrep.curvature), algebraically equal
+    to the printed formulas but free of the cancellation in kS1 - kS2 - R."""
+    k1, k2, alpha = relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma)
+    return 0.5 * k2, 0.5 * k1, alpha
+
+
+def _wrap_half_pi(x):
+    """Wrap an axis angle to (-pi/2, pi/2]."""
+    return np.pi / 2 - np.mod(np.pi / 2 - x, np.pi)
+
+
+def _ellipse_from_AB(A, B, alpha_B, delta):
+    delta = _check_positive("delta (elastic approach)", delta)
+    A, B, alpha_B, delta = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (A, B, alpha_B, delta)))
+    with np.errstate(divide="ignore"):
+        sa = np.sqrt(np.abs(delta / A))  # along the A direction (alpha_B + pi/2)
+        sb = np.sqrt(np.abs(delta / B))  # along the B direction (alpha_B)
+    # minor axis = direction of larger |relative curvature|
+    b_is_minor = np.abs(B) >= np.abs(A)
+    a = np.where(b_is_minor, sa, sb)
+    b = np.where(b_is_minor, sb, sa)
+    alpha = _wrap_half_pi(np.where(b_is_minor, alpha_B, alpha_B + np.pi / 2))
+    elliptic = A * B > 0
+    return ContactEllipse(a, b, alpha, A, B, np.pi * a * b, elliptic)
+
+
+def elastic_ellipse(kI1, kII1, kI2, kII2, sigma, delta) -> ContactEllipse:
+    """Elastic-approach contact ellipse from both surfaces' principal curvatures (common
+    normal), the angle sigma between e_I^(1) and e_I^(2) and the elastic approach ``delta``
+    (> 0). Seed 002 eq 2.6.1-2.6.6 = seed 000 eq 5.14-5.17 = seed 004 eq 21-27.
+
+    Only cos 2sigma enters a and b, so an unsigned sigma = arccos(e_I^(1).e_I^(2)) (seed 000
+    eq 5.15) gives the right axes; alpha's sign then follows that sigma's sense."""
+    A, B, alpha = litvin_coefficients(kI1, kII1, kI2, kII2, sigma)
+    return _ellipse_from_AB(A, B, alpha, delta)
+
+
+def elastic_ellipse_from_relative(k1_rel, k2_rel, delta, alpha=0.0) -> ContactEllipse:
+    """Elastic-approach ellipse from the two principal relative curvatures (any order) and
+    delta: A = min/2, B = max/2 (seed 002 eq 2.6.3-2.6.5 with 2A, 2B the principal relative
+    curvatures). ``alpha`` is the angle of the max-relative-curvature direction from the
+    reference direction (default 0); the returned alpha refers to the minor axis."""
+    k1_rel, k2_rel = np.broadcast_arrays(np.asarray(k1_rel, float), np.asarray(k2_rel, float))
+    alpha = np.asarray(alpha, dtype=float)
+    swap = k2_rel > k1_rel
+    hi = np.where(swap, k2_rel, k1_rel)
+    lo = np.where(swap, k1_rel, k2_rel)
+    alpha_B = np.where(swap, alpha + np.pi / 2, alpha)
+    return _ellipse_from_AB(0.5 * lo, 0.5 * hi, alpha_B, delta)
+
+
+def elastic_ellipse_at(c1: PrincipalCurvatures, c2: PrincipalCurvatures, delta, *,
+                       normal_tol: float = 1e-6) -> ContactEllipse:
+    """Elastic-approach ellipse from both surfaces' :class:`PrincipalCurvatures` at the
+    contact point (same unit normal; see gearrep.curvature.with_opposite_normal), including
+    the unit 3-vectors of the major and minor axes. Seed 002 eq 2.6.1-2.6.6 with the true
+    signed sigma (gearrep.curvature.relative_curvature)."""
+    rel = relative_curvature(c1, c2, normal_tol=normal_tol)
+    el = _ellipse_from_AB(0.5 * rel.k2, 0.5 * rel.k1, rel.alpha, delta)
+    b_is_minor = (np.abs(el.B) >= np.abs(el.A))[..., None]
+    minor = np.where(b_is_minor, rel.e1, rel.e2)
+    major = np.cross(minor, rel.normal)  # perpendicular, in the tangent plane
+    return el._replace(major_axis=major, minor_axis=minor)
+
+
+# ------------------------------------------------------------------------------------ Hertz
+
+
+class HertzContact(NamedTuple):
+    """Hertz elliptical contact (Johnson sect. 4.2).
+
+    a >= b: semi-axes (a along the direction of the SMALLER relative curvature); p0: maximum
+    pressure = 3P/(2 pi a b); approach: mutual approach of distant points = p0 b K(e) / E*;
+    e: eccentricity sqrt(1 - b^2/a^2); A, B: gap coefficients (gap = A x^2 + B y^2, A <= B);
+    Estar: effective modulus; residual, iterations, status: the eccentricity solve
+    (gearrep.solve record; Status.SINGULAR where the relative curvatures are not both of one
+    sign, outputs NaN there)."""
+
+    a: np.ndarray
+    b: np.ndarray
+    p0: np.ndarray
+    approach: np.ndarray
+    e: np.ndarray
+    A: np.ndarray
+    B: np.ndarray
+    Estar: np.ndarray
+    residual: np.ndarray
+    iterations: np.ndarray
+    status: np.ndarray
+
+    @property
+    def converged(self) -> np.ndarray:
+        return self.status == Status.CONVERGED
+
+
+def effective_modulus(E1, nu1, E2=None, nu2=None) -> np.ndarray:
+    """E* with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Johnson eq 4.22); the second body
+    defaults to the first material. E must be > 0 and -1 < nu <= 0.5."""
+    E2 = E1 if E2 is None else E2
+    nu2 = nu1 if nu2 is None else nu2
+    for name, E in (("E1", E1), ("E2", E2)):
+        _check_positive(name + " (Young's modulus)", E)
+    for name, nu in (("nu1", nu1), ("nu2", nu2)):
+        nu = np.asarray(nu, dtype=float)
+        if not np.all((nu > -1.0) & (nu <= 0.5)):
+            raise ValueError(f"{name} (Poisson ratio) must be in (-1, 0.5], got {np.ravel(nu)[:5]!r}")
+    E1, nu1, E2, nu2 = (np.asarray(x, dtype=float) for x in (E1, nu1, E2, nu2))
+    return 1.0 / ((1.0 - nu1**2) / E1 + (1.0 - nu2**2) / E2)
+
+
+def _integrals(p):
+    """I_s = int_0^{pi/2} sin^2 t / D dt and I_c = int cos^2 t / D dt, D = sqrt(1 - m sin^2 t),
+    m = e^2 = 1 - p, p = (b/a)^2: I_s = R_D(0, p, 1)/3 = (K - E)/m, I_c = p R_D(0, 1, p)/3 =
+    (E - p K)/m (DLMF 19.25.1); and K(m) = R_F(0, p, 1)."""
+    return elliprd(0.0, p, 1.0) / 3.0, p * elliprd(0.0, 1.0, p) / 3.0, elliprf(0.0, p, 1.0)
+
+
+def hertz_ratio(b_over_a) -> np.ndarray:
+    """B/A of the Hertz gap for an ellipse of aspect b/a (Johnson eq 4.32-4.33):
+    B/A = [(a/b)^2 E(e) - K(e)] / [K(e) - E(e)] = R_D(0, 1, p) / R_D(0, p, 1), p = (b/a)^2.
+    (scipy's ellipk/ellipe take the parameter m = e^2; the Carlson form avoids the 0/0 at
+    e -> 0.)"""
+    p = np.asarray(b_over_a, dtype=float) ** 2
+    return elliprd(0.0, 1.0, p) / elliprd(0.0, p, 1.0)
+
+
+def hertz_contact(k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: float = 1e-13,
+                  maxiter: int = 50) -> HertzContact:
+    """Hertz contact of two elastic bodies from the principal relative curvatures at the
+    contact point (kappa^(1) - kappa^(2), any common normal; both must have one sign), the
+    normal load and the elastic constants. Johnson sect. 4.2 (eq 4.33-4.36, 3.63-3.64):
+
+    gap = A x^2 + B y^2, A = min|k_rel|/2, B = max|k_rel|/2; the aspect b/a solves
+    B/A = R_D(0, 1, p)/R_D(0, p, 1), p = (b/a)^2 (:func:`hertz_ratio`), by Newton on
+    s = ln(a/b) >= 0 (gearrep.solve.newton; residual/status reported); then
+    a^3 = 3 P I_s / (2 pi A E*), I_s = (K - E)/e^2, b = a sqrt(p), p0 = 3P/(2 pi a b),
+    approach = p0 b K(e)/E*. Circular case: a^3 = 3 P R/(4 E*) with 1/R = 2A.
+    """
+    load = _check_positive("load", load)
+    Estar = effective_modulus(E1, nu1, E2, nu2)
+    k1_rel, k2_rel, load, Estar = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float) for x in (k1_rel, k2_rel, load, Estar)))
+    shape = k1_rel.shape
+    k1f, k2f = k1_rel.ravel(), k2_rel.ravel()
+    ok = (k1f * k2f > 0) & np.isfinite(k1f) & np.isfinite(k2f)
+    A = 0.5 * np.minimum(np.abs(k1f), np.abs(k2f))
+    B = 0.5 * np.maximum(np.abs(k1f), np.abs(k2f))
+    n = k1f.size
+    s = np.full(n, np.nan)
+    res = np.full(n, np.nan)
+    its = np.zeros(n, dtype=int)
+    status = np.full(n, int(Status.SINGULAR), dtype=int)
+    idx = np.flatnonzero(ok)
+    if idx.size:
+        target = np.log(B[idx] / A[idx])
+
+        def fun(x, rows):
+            p = np.exp(-2.0 * x[:, 0])
+            return (np.log(hertz_ratio(np.sqrt(p))) - target[rows])[:, None]
+
+        x0 = (2.0 / 3.0) * target  # a/b ~ (B/A)^(2/3) (Johnson)
+        sr: SolveResult = newton(fun, x0[:, None], tol=tol, maxiter=maxiter, lower=[0.0],
+                                 rows=True)
+        s[idx], res[idx], its[idx], status[idx] = sr.x[:, 0], sr.residual, sr.iterations, sr.status
+    p = np.exp(-2.0 * s)
+    Is, _, K = _integrals(np.where(ok, p, 1.0))
+    P, Es = load.ravel(), Estar.ravel()
+    with np.errstate(invalid="ignore", divide="ignore"):
+        a = np.cbrt(3.0 * P * Is / (2.0 * np.pi * A * Es))
+        b = a * np.sqrt(p)
+        p0 = 3.0 * P / (2.0 * np.pi * a * b)
+        approach = p0 * b * K / Es
+        e = np.sqrt(np.maximum(-np.expm1(-2.0 * s), 0.0))
+    bad = ~ok
+    for arr in (a, b, p0, approach, e):
+        arr[bad] = np.nan
+    r = lambda x: x.reshape(shape)  # noqa: E731
+    return HertzContact(r(a), r(b), r(p0), r(approach), r(e), r(A), r(B), Estar,
+                        r(res), r(its), r(status))

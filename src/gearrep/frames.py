@@ -1,0 +1,243 @@
+"""Coordinate transformations in Litvin's M_ij / L_ij notation, and misalignment set-ups.
+
+Source: Litvin & Fuentes, *Gear Geometry and Applied Theory* (2nd ed.), ch. 1
+("Coordinate transformation"): r_i = M_ij r_j with 4x4 homogeneous matrices M_ij, and
+L_ij = the upper-left 3x3 block of M_ij for free vectors (normals, tangents). Misalignment
+set-ups: seed 000 sect. 5.2 / Fig 5.1 (S_h rotated about X_h by dgamma_h relative to S_f,
+S_v rotated about Y_h by dgamma_v relative to S_h, centre-distance change dC, axial error dZ
+along the gear axis) and seed 002 sect. 2.8 / Fig 2.8.1 (shortest-distance change dE, shaft
+angle change dgamma).
+
+Conventions
+-----------
+* Right-handed Cartesian frames; all angles in radians.
+* ``rot_x(a)``, ``rot_y(a)``, ``rot_z(a)`` are ACTIVE rotations by +a (counter-clockwise
+  looking down the axis towards the origin): rot_z(a) @ (1, 0, 0) = (cos a, sin a, 0).
+* M_ij maps coordinates of a point in frame S_j to its coordinates in frame S_i:
+  r_i = M_ij r_j. Chains multiply left to right: M_ik = M_ij M_jk (:func:`compose`), and
+  M_ji = M_ij^-1 (:func:`inverse`).
+* If frame S_j is obtained from S_i by turning it through the angle phi about their common z
+  axis (and translating its origin to t, given in S_i), then M_ij = homogeneous(rot_z(phi), t)
+  and M_ji = homogeneous(rot_z(-phi), -rot_z(-phi) t). E.g. a gear frame S_1 rotating by phi_1
+  about the fixed z_f axis: M_f1 = homogeneous(rot_z(phi_1)), M_1f = homogeneous(rot_z(-phi_1))
+  (Litvin's M_1f has +sin phi_1 in row 1, column 2, i.e. rot_z(-phi_1)).
+* Matrices are stacked over leading batch dimensions: an angle array of shape S gives
+  (S, 3, 3) or (S, 4, 4); points (..., 3) broadcast against them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "rot_x",
+    "rot_y",
+    "rot_z",
+    "rotation",
+    "rotation_about_axis",
+    "homogeneous",
+    "translation",
+    "compose",
+    "transform_points",
+    "transform_vectors",
+    "inverse",
+    "is_rigid",
+    "rotation_about_line",
+    "misalignment_rotation",
+    "gear_mounting",
+]
+
+
+def _rot(a, i, j):
+    a = np.asarray(a, dtype=float)
+    c, s = np.cos(a), np.sin(a)
+    R = np.zeros(a.shape + (3, 3))
+    k = 3 - i - j
+    R[..., k, k] = 1.0
+    R[..., i, i] = c
+    R[..., j, j] = c
+    R[..., i, j] = -s
+    R[..., j, i] = s
+    return R
+
+
+def rot_x(a) -> np.ndarray:
+    """Active rotation by ``a`` about x: [[1, 0, 0], [0, c, -s], [0, s, c]] (Litvin ch. 1)."""
+    return _rot(a, 1, 2)
+
+
+def rot_y(a) -> np.ndarray:
+    """Active rotation by ``a`` about y: [[c, 0, s], [0, 1, 0], [-s, 0, c]] (Litvin ch. 1)."""
+    return _rot(a, 2, 0)
+
+
+def rot_z(a) -> np.ndarray:
+    """Active rotation by ``a`` about z: [[c, -s, 0], [s, c, 0], [0, 0, 1]] (Litvin ch. 1)."""
+    return _rot(a, 0, 1)
+
+
+def rotation(axis: str, a) -> np.ndarray:
+    """``rot_x``/``rot_y``/``rot_z`` selected by ``axis`` in {'x', 'y', 'z'}."""
+    try:
+        return {"x": rot_x, "y": rot_y, "z": rot_z}[axis](a)
+    except KeyError:
+        raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}") from None
+
+
+def rotation_about_axis(axis, a) -> np.ndarray:
+    """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
+    R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis)."""
+    k = np.asarray(axis, dtype=float)
+    nrm = np.linalg.norm(k, axis=-1, keepdims=True)
+    if np.any(nrm == 0):
+        raise ValueError("axis must be a non-zero vector")
+    k = k / nrm
+    a = np.asarray(a, dtype=float)
+    k, a = np.broadcast_arrays(k, a[..., None])
+    a = a[..., 0]
+    K = np.zeros(k.shape[:-1] + (3, 3))
+    K[..., 0, 1], K[..., 0, 2] = -k[..., 2], k[..., 1]
+    K[..., 1, 0], K[..., 1, 2] = k[..., 2], -k[..., 0]
+    K[..., 2, 0], K[..., 2, 1] = -k[..., 1], k[..., 0]
+    s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
+    return np.eye(3) + s * K + (1.0 - c) * (K @ K)
+
+
+def homogeneous(R=None, t=None) -> np.ndarray:
+    """4x4 homogeneous matrix [[R, t], [0 0 0 1]] (Litvin ch. 1). R (..., 3, 3) defaults to
+    the identity, t (..., 3) to zero; batch dimensions broadcast."""
+    R = np.eye(3) if R is None else np.asarray(R, dtype=float)
+    t = np.zeros(3) if t is None else np.asarray(t, dtype=float)
+    if R.shape[-2:] != (3, 3):
+        raise ValueError(f"R must have shape (..., 3, 3), got {R.shape}")
+    if t.shape[-1:] != (3,):
+        raise ValueError(f"t must have shape (..., 3), got {t.shape}")
+    batch = np.broadcast_shapes(R.shape[:-2], t.shape[:-1])
+    M = np.zeros(batch + (4, 4))
+    M[..., :3, :3] = R
+    M[..., :3, 3] = t
+    M[..., 3, 3] = 1.0
+    return M
+
+
+def translation(t) -> np.ndarray:
+    """Pure translation homogeneous(None, t)."""
+    return homogeneous(None, t)
+
+
+def compose(*M) -> np.ndarray:
+    """Matrix product left to right: compose(M_ij, M_jk, M_kl) = M_il (Litvin ch. 1).
+
+    Works for 4x4 or 3x3 stacks with broadcasting batch dimensions."""
+    if not M:
+        raise ValueError("compose needs at least one matrix")
+    out = np.asarray(M[0], dtype=float)
+    for m in M[1:]:
+        out = out @ np.asarray(m, dtype=float)
+    return out
+
+
+def transform_points(M, p) -> np.ndarray:
+    """r_i = M_ij r_j for points p (..., 3) given in S_j; M (..., 4, 4) (or (..., 3, 3)
+    for a pure rotation). Batch dimensions broadcast."""
+    M = np.asarray(M, dtype=float)
+    p = np.asarray(p, dtype=float)
+    out = np.einsum("...ij,...j->...i", M[..., :3, :3], p)
+    if M.shape[-1] == 4:
+        out = out + M[..., :3, 3]
+    return out
+
+
+def transform_vectors(M, v) -> np.ndarray:
+    """Free vectors (normals, tangents, velocities): v_i = L_ij v_j with L_ij the 3x3 block of
+    M_ij (Litvin ch. 1); the translation is ignored."""
+    M = np.asarray(M, dtype=float)
+    return np.einsum("...ij,...j->...i", M[..., :3, :3], np.asarray(v, dtype=float))
+
+
+def is_rigid(M, tol: float = 1e-10) -> np.ndarray:
+    """True where the 3x3 block of M is a proper rotation (R^T R = I, det R = +1 within tol)
+    and the last row is (0, 0, 0, 1)."""
+    M = np.asarray(M, dtype=float)
+    R = M[..., :3, :3]
+    orth = np.max(np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)), axis=(-2, -1)) <= tol
+    ok = orth & (np.abs(np.linalg.det(R) - 1.0) <= tol)
+    if M.shape[-1] == 4:
+        ok &= np.max(np.abs(M[..., 3, :] - np.array([0, 0, 0, 1.0])), axis=-1) <= tol
+    return ok
+
+
+def inverse(M, check: bool = True, tol: float = 1e-10) -> np.ndarray:
+    """Inverse of a rigid transform: M_ji = M_ij^-1 = [[R^T, -R^T t], [0, 1]] (Litvin ch. 1).
+
+    3x3 input returns R^T. With ``check`` a ValueError is raised if M is not rigid (use
+    numpy.linalg.inv for general matrices)."""
+    M = np.asarray(M, dtype=float)
+    if check and not np.all(is_rigid(M, tol)):
+        raise ValueError("inverse: M is not a rigid transform (R^T R != I, det R != 1 or bad last row)")
+    Rt = np.swapaxes(M[..., :3, :3], -1, -2)
+    if M.shape[-1] == 3:
+        return Rt.copy()
+    return homogeneous(Rt, -np.einsum("...ij,...j->...i", Rt, M[..., :3, 3]))
+
+
+def rotation_about_line(point, axis, a) -> np.ndarray:
+    """Homogeneous active rotation by ``a`` about the line through ``point`` with direction
+    ``axis``: x -> R (x - point) + point."""
+    R = rotation_about_axis(axis, a)
+    point = np.asarray(point, dtype=float)
+    return homogeneous(R, point - np.einsum("...ij,...j->...i", R, point))
+
+
+def misalignment_rotation(gamma_h=0.0, gamma_v=0.0, axes: str = "xy") -> np.ndarray:
+    """Rotation L_fv of a misaligned frame S_v relative to the fixed frame S_f (seed 000
+    Fig 5.1): S_h is turned about X_h (= X_f) by gamma_h relative to S_f, then S_v about Y_h
+    by gamma_v relative to S_h, so L_fv = L_fh L_hv = rot_x(gamma_h) rot_y(gamma_v).
+
+    ``axes`` = two letters naming the axes of the first and second rotation (default 'xy'
+    as in seed 000); callers decide which is the "horizontal" / "vertical" one for their
+    frames. Vectorised over angle arrays."""
+    if len(axes) != 2 or axes[0] == axes[1]:
+        raise ValueError(f"axes must be two different letters of 'xyz', got {axes!r}")
+    return rotation(axes[0], gamma_h) @ rotation(axes[1], gamma_v)
+
+
+def gear_mounting(center_distance, *, d_center=0.0, d_axial=0.0, gamma_in_plane=0.0,
+                  gamma_out_of_plane=0.0, center_axis: str = "x") -> np.ndarray:
+    """M_fq: coordinates in the (non-rotating) mounting frame S_q of a misaligned gear ->
+    the fixed frame S_f of the pinion, for parallel-axis gears.
+
+    Nominal set-up: the pinion axis is z_f through O_f; the gear axis is parallel to z_f and
+    passes through O_q = C e_c, C = ``center_distance``, e_c = x_f (``center_axis`` = 'x') or
+    y_f ('y') the centre-distance line. S_q coincides with S_f translated to O_q. Errors:
+
+    * ``d_center`` (dC, seed 000; dE, seed 002): O_q moves to (C + dC) e_c;
+    * ``gamma_in_plane``: rotation of the gear axis about the line through O_q normal to the
+      plane of the axes (direction z_f x e_c). The axes stay coplanar (they intersect): this
+      is the misalignment "in the plane of the axes";
+    * ``gamma_out_of_plane``: rotation about the centre-distance line e_c through O_q. The axes
+      become crossed (shaft-angle change dgamma of seed 002); "out of the plane of the axes";
+    * ``d_axial`` (dZ, seed 000): the gear slides by dZ along its own (misaligned) axis z_q.
+
+    M_fq = T((C + dC) e_c) R_in(gamma_in_plane) R_out(gamma_out_of_plane) T(dZ z), i.e. the
+    in-plane rotation is applied about the fixed frame's axis and the out-of-plane one about
+    the once-rotated centre line (to first order in small angles the order does not matter).
+    The gear's own rotating frame S_2 then follows as M_f2 = M_fq @ homogeneous(rot_z(phi_2)).
+    Which of the two angles a paper calls "horizontal" or "vertical" depends on its frame
+    (seed 000 rotates about X_h then Y_h, see :func:`misalignment_rotation`); state it in the
+    caller. Vectorised over array arguments.
+    """
+    if center_axis not in ("x", "y"):
+        raise ValueError(f"center_axis must be 'x' or 'y', got {center_axis!r}")
+    C = np.asarray(center_distance, dtype=float) + np.asarray(d_center, dtype=float)
+    zero = np.zeros_like(C)
+    if center_axis == "x":
+        origin = np.stack(np.broadcast_arrays(C, zero, zero), -1)
+        R = rot_y(gamma_in_plane) @ rot_x(gamma_out_of_plane)
+    else:
+        # plane of axes = y-z plane; its normal z x y = -x: rotate about -x by gamma_in_plane
+        origin = np.stack(np.broadcast_arrays(zero, C, zero), -1)
+        R = rot_x(-np.asarray(gamma_in_plane, dtype=float)) @ rot_y(gamma_out_of_plane)
+    dz = np.asarray(d_axial, dtype=float)
+    axial = np.stack(np.broadcast_arrays(np.zeros_like(dz), np.zeros_like(dz), dz), -1)
+    return compose(translation(origin), homogeneous(R), translation(axial))
