@@ -7,7 +7,7 @@ CORES  ?= 2
 export PATH := $(abspath $(BIN)):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: setup reproduce test test-all clean
+.PHONY: setup reproduce test test-all screenshot clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -24,6 +24,10 @@ test: $(STAMP)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -m ''
+
+# Screenshot of the report in headless Chromium (needs the Debian package `chromium`).
+screenshot: $(STAMP)
+	$(BIN)/snakemake --cores $(CORES) results/report.png
 
 clean:
 	rm -rf results .snakemake

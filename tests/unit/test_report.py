@@ -53,3 +53,36 @@ def test_render_rejects_broken_scorecard(card):
 
 def test_anchor_matches_nbconvert_headings():
     assert report.anchor("Table 4.3") == "Table-4.3"
+
+
+def _load_screenshot_module():
+    import importlib.util
+
+    from conftest import ROOT
+
+    spec = importlib.util.spec_from_file_location("screenshot", ROOT / "workflow" / "scripts" / "screenshot.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_report_screenshot_in_headless_browser(card, tmp_path):
+    """The page opens offline in a real browser and shows the status colours of the summary bar.
+
+    .ci/run installs Debian's chromium when it is missing; elsewhere the test is skipped."""
+    import matplotlib.image as mpimg
+    import numpy as np
+
+    shot = _load_screenshot_module()
+    if shot.find_browser() is None:
+        pytest.skip("no Chromium-family browser installed")
+    page = tmp_path / "report.html"
+    page.write_text(report.render(card, {"curvature: k_s": png()}, pd.DataFrame(), {"python": "3.11"}),
+                    encoding="utf-8")
+    out = shot.screenshot(page, tmp_path / "report.png", width=1000, height=800)
+    img = mpimg.imread(out)[..., :3]
+    assert img.shape[:2] == (800, 1000)
+    assert img.std() > 0.05, "screenshot is blank"
+    for hex_colour in ("#1a7f37", "#cf222e"):  # reproduced (green) and deviates (red) in the summary bar
+        rgb = np.array([int(hex_colour[i:i + 2], 16) for i in (1, 3, 5)]) / 255.0
+        assert (np.abs(img - rgb).max(axis=-1) < 0.03).sum() > 20, f"{hex_colour} not on screen"

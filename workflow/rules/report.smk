@@ -35,3 +35,17 @@ rule report:
         "../envs/gearrep.yaml"
     script:
         "../scripts/report.py"
+
+
+# Optional (not in the default target; needs Chromium): `snakemake --cores 1 results/report.png`.
+rule report_screenshot:
+    input:
+        "results/report.html",
+    output:
+        "results/report.png",
+    log:
+        "results/logs/report_screenshot.log",
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/screenshot.py"
