@@ -7,6 +7,8 @@ from snakemake.utils import min_version, validate
 min_version("8.0")
 
 configfile: "config/config.yaml"
+# `snakemake --report report.html` (after a run) collects the figures and the scorecard.
+report: "workflow/report/workflow.rst"
 # Stop before any job runs (and before anything is written) on a bad config value.
 validate(config, "config/schema.yaml")
 

@@ -12,3 +12,8 @@ def lib(*modules):
 
 def published_files(pattern="*.csv"):
     return sorted(str(p) for p in Path(PUBLISHED_DIR).glob(pattern))
+
+
+def figure(path, replication):
+    """A figure output flagged for `snakemake --report` under the replication's category."""
+    return report(path, caption="../report/figure.rst", category=replication)

@@ -8,7 +8,7 @@ rule scorecard:
         published=published_files(),
         code=lib("checks", "published", "units"),
     output:
-        csv="results/scorecard.csv",
+        csv=report("results/scorecard.csv", caption="../report/scorecard.rst", category="scorecard"),
         md="results/scorecard.md",
     log:
         "results/logs/scorecard.log",

@@ -13,7 +13,7 @@ from gearrep import report
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
 card = pd.read_csv(smk.input.scorecard, dtype={"seed": str}, keep_default_na=False, na_values=[""])
-card["replication"] = card["replication"].fillna("")
+card["replication"] = card["replication"].astype(object).fillna("").astype(str)
 figures = {Path(f).parent.parent.name + ": " + Path(f).stem.replace("_", " "): Path(f).read_bytes()
            for f in smk.input.figures}
 errata = pd.read_csv(smk.input.errata, dtype=str, keep_default_na=False)
