@@ -27,6 +27,7 @@ for _smk in sorted(Path(workflow.basedir, "workflow", "rules").glob("rep_*.smk")
 
 include: "workflow/rules/scorecard.smk"
 include: "workflow/rules/report.smk"
+include: "workflow/rules/bench.smk"
 
 
 rule all:

@@ -1,0 +1,143 @@
+"""Run time against error: repeated timing, accuracy sweeps, Pareto fronts and the knee setting.
+
+Used by the ``bench`` workflow target (``workflow/rules/bench.smk``). Pure functions: the caller
+passes the computation and the settings; nothing here reads files or the config.
+
+* :func:`time_call`: median wall time of repeated calls (``time.perf_counter``), with the machine
+  load (1-minute load average) recorded beside it, so that a timing taken on a busy machine can be
+  recognised as such.
+* :func:`sweep`: runs a computation for every setting of its accuracy knobs, and measures the
+  error of each against a reference result computed in the same process at the most accurate
+  setting (the caller supplies the reference setting and the error metric).
+* :func:`pareto_front`: the settings that no other setting beats in both time and error.
+* :func:`knee`: the setting chosen as default: on the Pareto front, in log10(time)-log10(error)
+  coordinates scaled to the unit square, the point farthest below the chord joining the fastest
+  and the most accurate front points (the "knee": past it, extra time buys little accuracy).
+  With ``error_target`` it is instead the fastest front point whose error meets the target (the
+  target being a stated fraction of the tightest published tolerance, say), falling back to the
+  knee when no point meets it.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import numpy as np
+import pandas as pd
+
+#: error floor used in log coordinates (an exact result has error 0)
+ERROR_FLOOR = 1e-300
+
+
+@dataclass(frozen=True)
+class Timing:
+    """Wall times of ``repeats`` calls: median and minimum in seconds, and the 1-min load average."""
+
+    median_s: float
+    min_s: float
+    repeats: int
+    load_1min: float
+
+
+def load_average() -> float:
+    """The 1-minute load average of the machine (NaN where the OS does not report it)."""
+    try:
+        return float(os.getloadavg()[0])
+    except (AttributeError, OSError):
+        return float("nan")
+
+
+def time_call(fn: Callable[[], Any], *, repeats: int = 5, warmup: int = 1) -> tuple[Any, Timing]:
+    """Call ``fn()`` ``warmup`` times untimed, then ``repeats`` times timed; return the last result
+    and its :class:`Timing` (median, min). ``repeats`` >= 1, ``warmup`` >= 0."""
+    if not isinstance(repeats, (int, np.integer)) or repeats < 1:
+        raise ValueError(f"repeats must be an integer >= 1, got {repeats!r}")
+    if not isinstance(warmup, (int, np.integer)) or warmup < 0:
+        raise ValueError(f"warmup must be an integer >= 0, got {warmup!r}")
+    result = None
+    for _ in range(warmup):
+        result = fn()
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        result = fn()
+        times.append(time.perf_counter() - t0)
+    return result, Timing(float(np.median(times)), float(np.min(times)), int(repeats), load_average())
+
+
+def sweep(run: Callable[[dict], Any], settings: list[dict], reference: dict,
+          error: Callable[[Any, Any], float], *, repeats: int = 3) -> pd.DataFrame:
+    """Time ``run(setting)`` for each setting and measure ``error(result, reference_result)``.
+
+    run : computation of one setting (a dict of knob values)
+    settings : the knob settings to sweep (each a dict with the same keys)
+    reference : the high-accuracy setting; its result is computed first, in the same process
+    error : non-negative error of a result against the reference result (a float; NaN if failed)
+    Returns one row per setting: the knob columns, ``time_s`` (median), ``time_min_s``, ``error``,
+    ``load_1min``, ``pareto`` (on the front) and ``knee`` (the chosen default).
+    """
+    if not settings:
+        raise ValueError("settings must hold at least one knob setting")
+    keys = list(settings[0])
+    for s in settings:
+        if list(s) != keys:
+            raise ValueError(f"settings must all have the knobs {keys}, got {list(s)}")
+    ref = run(dict(reference))
+    rows = []
+    for s in settings:
+        res, t = time_call(lambda s=s: run(dict(s)), repeats=repeats, warmup=0)
+        err = float(error(res, ref))
+        if not (np.isnan(err) or err >= 0):
+            raise ValueError(f"error must be non-negative or NaN, got {err} for setting {s}")
+        rows.append({**s, "time_s": t.median_s, "time_min_s": t.min_s, "error": err, "load_1min": t.load_1min})
+    out = pd.DataFrame(rows)
+    out["pareto"] = pareto_front(out["time_s"].to_numpy(), out["error"].to_numpy())
+    k = knee(out["time_s"].to_numpy(), out["error"].to_numpy())
+    out["knee"] = np.arange(len(out)) == k
+    return out
+
+
+def pareto_front(time_s, error) -> np.ndarray:
+    """Boolean mask of the non-dominated points: no other point is at least as fast AND at least
+    as accurate, and strictly better in one. Points with a NaN error are never on the front."""
+    t = np.asarray(time_s, float)
+    e = np.asarray(error, float)
+    if t.shape != e.shape or t.ndim != 1:
+        raise ValueError("time_s and error must be 1-D arrays of the same length")
+    ok = np.isfinite(t) & np.isfinite(e)
+    mask = np.zeros(t.shape, bool)
+    for i in np.flatnonzero(ok):
+        better_eq = ok & (t <= t[i]) & (e <= e[i])
+        strictly = better_eq & ((t < t[i]) | (e < e[i]))
+        mask[i] = not strictly.any()
+    return mask
+
+
+def knee(time_s, error, *, error_target: float | None = None) -> int:
+    """Index of the chosen default setting (see the module docstring). Raises ValueError if no
+    point has a finite time and error."""
+    t = np.asarray(time_s, float)
+    e = np.asarray(error, float)
+    front = np.flatnonzero(pareto_front(t, e))
+    if front.size == 0:
+        raise ValueError("no setting has a finite time and error")
+    if error_target is not None:
+        if not error_target > 0:
+            raise ValueError(f"error_target must be > 0, got {error_target}")
+        good = front[e[front] <= error_target]
+        if good.size:
+            return int(good[np.argmin(t[good])])
+    if front.size <= 2:
+        return int(front[np.argmin(e[front])])  # two points: nothing to trade, take the accurate one
+    x = np.log10(t[front])
+    y = np.log10(np.maximum(e[front], ERROR_FLOOR))
+    xs = (x - x.min()) / max(np.ptp(x), 1e-300)
+    ys = (y - y.min()) / max(np.ptp(y), 1e-300)
+    a, b = np.argmin(xs), np.argmin(ys)  # fastest, most accurate
+    d = np.array([xs[b] - xs[a], ys[b] - ys[a]])
+    # signed distance below the chord from the fastest to the most accurate point
+    dist = (d[0] * (ys - ys[a]) - d[1] * (xs - xs[a])) / max(np.hypot(*d), 1e-300)
+    return int(front[np.argmin(dist)]) if np.min(dist) < 0 else int(front[b])

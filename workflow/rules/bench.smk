@@ -1,0 +1,31 @@
+# Run time against error and throughput (issue 10): `snakemake --cores 2 bench`.
+# Not part of the default target; timings are medians of repeated runs with the machine load
+# recorded. A replication joins by defining `bench_cases(params)` in its module and being listed
+# in config `bench: replications`.
+
+BENCH_DIR = "results/bench"
+
+
+rule bench_core:
+    input:
+        published_dir=config["published_dir"],
+        code=lib("benchmark", "plotting", "published", "solve", "tca", "surfaces.involute", "surfaces.base", "units"),
+    output:
+        throughput=f"{BENCH_DIR}/throughput.csv",
+        sweep=f"{BENCH_DIR}/core_tca.csv",
+        figure=figure(f"{BENCH_DIR}/figures/core_tca_time_vs_error.png", "bench"),
+    params:
+        n_vectorised=config["bench"]["n_vectorised"],
+        n_single=config["bench"]["n_single"],
+        repeats=config["bench"]["repeats"],
+    log:
+        "results/logs/bench_core.log",
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/bench_core.py"
+
+
+rule bench:
+    input:
+        rules.bench_core.output,
