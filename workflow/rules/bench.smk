@@ -29,3 +29,37 @@ rule bench_core:
 rule bench:
     input:
         rules.bench_core.output,
+        f"{BENCH_DIR}/defaults.csv",
+
+
+rule bench_replication:
+    input:
+        code=lambda wc: lib("benchmark", "plotting", f"replications.{wc.name}"),
+    output:
+        sweep=f"{BENCH_DIR}/{{name}}.csv",
+        defaults=f"{BENCH_DIR}/{{name}}_defaults.csv",
+        figure=figure(f"{BENCH_DIR}/figures/{{name}}_time_vs_error.png", "bench"),
+    wildcard_constraints:
+        name="|".join(config["bench"]["replications"]) or "no-replication",
+    log:
+        "results/logs/bench_{name}.log",
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/bench_replication.py"
+
+
+rule bench_defaults:
+    input:
+        expand(f"{BENCH_DIR}/{{name}}_defaults.csv", name=config["bench"]["replications"]),
+    output:
+        f"{BENCH_DIR}/defaults.csv",
+    log:
+        "results/logs/bench_defaults.log",
+    run:
+        import pandas as pd
+
+        frames = [pd.read_csv(f) for f in input]
+        (pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(
+            columns=["replication", "case", "setting", "time_s", "error", "error_unit", "error_target", "current",
+                     "rule"])).to_csv(output[0], index=False)
