@@ -10,6 +10,7 @@ from __future__ import annotations
 import base64
 import html
 import re
+from urllib.parse import quote
 
 import pandas as pd
 
@@ -39,8 +40,9 @@ details{margin:.4rem 0}summary{cursor:pointer;font-weight:600}
 
 
 def anchor(text: str) -> str:
-    """The anchor nbconvert gives a markdown heading: spaces become '-', most punctuation kept."""
-    return re.sub(r"\s+", "-", str(text).strip())
+    """The id nbconvert gives a markdown heading (also one displayed from a code cell): spaces become
+    '-', then URL quoting that keeps ?/:@!$&'()*+,;= (nbconvert.filters.strings._convert_header_id)."""
+    return quote(re.sub(r"\s+", " ", str(text).strip()).replace(" ", "-"), safe="?/:@!$&'()*+,;=")
 
 
 def _fmt(v) -> str:

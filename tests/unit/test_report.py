@@ -52,7 +52,11 @@ def test_render_rejects_broken_scorecard(card):
 
 
 def test_anchor_matches_nbconvert_headings():
-    assert report.anchor("Table 4.3") == "Table-4.3"
+    from nbconvert.filters.strings import add_anchor
+
+    for heading in ("Table 4.3", 'Table 10 "Convergence outcomes" (sec 6.2)', "Section 5.5: TE, 3'", "Fig 12 & 13"):
+        html = add_anchor(f"<h2>{heading.replace('&', '&amp;')}</h2>")
+        assert f'id="{report.anchor(heading)}"' in html.replace("&amp;", "&"), (heading, html)
 
 
 def _load_screenshot_module():
