@@ -7,15 +7,11 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
+from gearrep.units import KNOWN_UNITS as UNITS
+
 PUB = Path(__file__).parents[2] / "data" / "published"
 
-VALUE_COLS = ["id", "seed", "source", "line", "row", "quantity", "printed", "value", "unit",
-              "precision_kind", "precision", "rounding", "notes"]
-PARAM_COLS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
-CLAIM_COLS = ["id", "seed", "source", "line", "kind", "statement", "parameters", "confirm_if",
-              "refute_if", "notes"]
-UNITS = {"mm", "in", "deg", "rad", "arcsec", "arcmin", "per_mm", "per_in", "mm2", "in2", "s",
-         "pct", "count", "1"}
 
 L1_KEYS = {f"l1_mm={v}" for v in ["4.381", "4.979", "5.576", "6.173", "6.770", "7.368", "7.965",
                                   "8.562", "9.159", "9.757", "10.354"]}
@@ -44,7 +40,7 @@ def cell(df, row, q, col="printed"):
 @pytest.mark.parametrize("t", T4 + T5 + ["text"])
 def test_value_file_format(values, t):
     df = values[t]
-    assert list(df.columns) == VALUE_COLS
+    assert list(df.columns) == VALUE_COLUMNS
     assert (df["seed"] == "000").all()
     assert set(df["unit"]) <= UNITS
     assert set(df["precision_kind"]) <= {"decimals", "sig"}
@@ -188,7 +184,7 @@ def test_text_values(values):
 
 def test_params_table5_1():
     df = load("params_000_table5_1.csv")
-    assert list(df.columns) == PARAM_COLS
+    assert list(df.columns) == PARAM_COLUMNS
     assert set(df["unit"]) <= UNITS
     p = df.set_index(["example", "parameter"])["printed"]
     assert p[("5.1", "N_gear")] == "40" and p[("5.1", "N_pinion")] == "20"
@@ -205,7 +201,7 @@ def test_params_table5_1():
 
 def test_params_examples():
     df = load("params_000_examples.csv")
-    assert list(df.columns) == PARAM_COLS
+    assert list(df.columns) == PARAM_COLUMNS
     assert len(df) == 54
     assert set(df["example"]) == {f"5.{i}" for i in range(1, 10)}
     assert df.groupby("example").size().eq(6).all()
@@ -228,7 +224,7 @@ def test_params_examples():
 
 def test_claims():
     df = load("claims_000.csv")
-    assert list(df.columns) == CLAIM_COLS
+    assert list(df.columns) == CLAIM_COLUMNS
     assert set(df["kind"]) == {"missing-table", "trend", "approximate"}
     missing = df[df.kind == "missing-table"]
     assert set(missing["source"].str.extract(r"(Table \d\.\d)")[0]) == {

@@ -15,17 +15,15 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
+from gearrep.units import KNOWN_UNITS as UNITS
+
+from _published_format import printed_precision as _precision, read_text_csv as _read
+
 PUB = Path(__file__).parents[2] / "data" / "published"
 SEED_DIR = Path(__file__).parents[3] / "shared" / "seeds"
 SEED_FILES = {"002": "002_f0171829ee188968.txt", "004": "004_de0fa252fc3e91a7.txt"}
 
-VALUE_COLUMNS = ["id", "seed", "source", "line", "row", "quantity", "printed", "value", "unit",
-                 "precision_kind", "precision", "rounding", "notes"]
-PARAM_COLUMNS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
-CLAIM_COLUMNS = ["id", "seed", "source", "line", "kind", "statement", "parameters", "confirm_if",
-                 "refute_if", "notes"]
-UNITS = {"mm", "in", "deg", "rad", "arcsec", "arcmin", "per_mm", "per_in", "mm2", "in2", "s", "pct",
-         "count", "1"}
 
 VALUE_COUNTS = {
     "values_002_S2.5.csv": 4,
@@ -57,16 +55,6 @@ CLAIM_COUNTS = {"claims_002.csv": 26, "claims_004.csv": 24}
 WORD_NUMBERS = {("params_004_examples.csv", "phi1_at_pitch_point"), ("params_002_T6.2.csv", "meshing_zones")}
 
 
-def _read(name: str) -> pd.DataFrame:
-    return pd.read_csv(PUB / name, dtype=str, keep_default_na=False)
-
-
-def _precision(printed: str) -> tuple[str, int]:
-    mant, _, exp = printed.lower().partition("e")
-    mant = mant.lstrip("+-")
-    if exp:
-        return "sig", len(mant.replace(".", "").lstrip("0"))
-    return "decimals", len(mant.partition(".")[2])
 
 
 def _values(name: str) -> pd.DataFrame:
