@@ -1,0 +1,191 @@
+"""Compute only what is asked (issue 10 item 4), checked on Snakemake's own dry-run plans.
+
+* Every rule declares as inputs exactly the gearrep modules its script or notebook imports,
+  directly or through other gearrep modules (found independently here with the standard
+  library's ``modulefinder``), so that a library change reruns exactly the jobs it affects.
+* Asking for one replication's checks, or for the scorecard, plans no figure, notebook, report
+  or benchmark job; the benchmark and the screenshot stay out of the default target.
+* With every output up to date, touching one library module plans exactly the jobs that use it.
+
+Each test runs Snakemake in a private copy of the repository's tracked inputs (dry runs only).
+"""
+
+from __future__ import annotations
+
+import json
+import modulefinder
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT
+
+COPY = ["Snakefile", "config", "workflow", "data", "src", "notebooks"]
+SRC = ROOT / "src"
+
+
+@pytest.fixture(scope="module")
+def wf(tmp_path_factory):
+    d = tmp_path_factory.mktemp("wf")
+    for name in COPY:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, d / name, ignore=shutil.ignore_patterns("__pycache__"))
+        elif src.exists():
+            shutil.copy2(src, d / name)
+    return d
+
+
+def smk(cwd, *args):
+    out = subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    return out.stdout + out.stderr
+
+
+def plan(cwd, *args) -> list[dict]:
+    """The jobs of a dry run: rule, input, output, wildcards, reason (lists of paths)."""
+    jobs, job = [], None
+    for line in smk(cwd, "-n", *args).splitlines():
+        m = re.match(r"^(?:local)?rule (\w+):$", line)
+        if m:
+            job = {"rule": m.group(1), "input": [], "output": [], "wildcards": {}, "reason": ""}
+            jobs.append(job)
+            continue
+        m = re.match(r"^    (input|output|wildcards|reason): (.*)$", line)
+        if job is not None and m:
+            key, val = m.groups()
+            if key in ("input", "output"):
+                job[key] = [p.strip() for p in val.split(",")]
+            elif key == "wildcards":
+                job[key] = dict(kv.strip().split("=", 1) for kv in val.split(","))
+            else:
+                job[key] = val
+        elif not line.startswith("    "):
+            job = None
+    return jobs
+
+
+def rule_sources() -> dict[str, Path]:
+    """rule name -> the script or notebook it runs (rules with shell/run blocks are left out)."""
+    out = {}
+    for smk_file in sorted((ROOT / "workflow" / "rules").glob("*.smk")):
+        text = smk_file.read_text()
+        blocks = re.split(r"^rule (\w+):\s*$", text, flags=re.M)
+        for name, body in zip(blocks[1::2], blocks[2::2]):
+            m = re.search(r"^\s+(?:script|notebook):\s*\n?\s*f?\"([^\"]+)\"", body, flags=re.M)
+            if m:
+                out[name] = (smk_file.parent / m.group(1)).resolve()
+    return out
+
+
+class _GearrepFinder(modulefinder.ModuleFinder):
+    """modulefinder restricted to gearrep: other top-level packages are not followed."""
+
+    def import_hook(self, name, caller=None, fromlist=None, level=-1):
+        if level <= 0 and name.split(".")[0] != "gearrep":
+            return None
+        return super().import_hook(name, caller, fromlist, level)
+
+
+def gearrep_files(source: Path, extra_modules=()) -> set[str]:
+    """Repository-relative files of every gearrep module `source` (script or notebook) imports."""
+    code = source.read_text()
+    if source.suffix == ".ipynb":
+        cells = json.loads(code)["cells"]
+        code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+        code = "\n".join(ln for ln in code.splitlines() if not ln.lstrip().startswith(("%", "!")))
+    code += "".join(f"\nimport {m}" for m in extra_modules)
+    finder = _GearrepFinder(path=[str(SRC)] + sys.path)
+    with tempfile.TemporaryDirectory() as d:
+        tmp = Path(d) / f"{source.stem}.py"
+        tmp.write_text(code)
+        finder.run_script(str(tmp))
+    missing = sorted(m for m in finder.badmodules if m.startswith("gearrep"))
+    assert not missing, f"{source.name} imports gearrep modules that do not exist: {missing}"
+    return {str(Path(m.__file__).resolve().relative_to(ROOT)) for name, m in finder.modules.items()
+            if name.startswith("gearrep")}
+
+
+def _bench_names() -> list[str]:
+    return sorted(p.stem for p in (SRC / "gearrep" / "replications").glob("*.py")
+                  if re.search(r"^def bench_cases\(", p.read_text(), flags=re.M))
+
+
+def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
+    extra = tmp_path / "bench_all.yaml"
+    extra.write_text("bench:\n  replications: " + json.dumps(_bench_names()) + "\n")
+    jobs = plan(wf, "all", "bench", "results/report.png", "--forceall", "--configfile", "config/config.yaml",
+                str(extra))
+    sources = rule_sources()
+    checked, wrong = set(), []
+    for job in jobs:
+        src = sources.get(job["rule"])
+        if src is None:
+            continue
+        dynamic = [f"gearrep.replications.{job['wildcards']['name']}"] if job["rule"] == "bench_replication" else []
+        declared = {p for p in job["input"] if p.startswith("src/gearrep/")}
+        wanted = gearrep_files(src, dynamic)
+        if declared != wanted:
+            wrong.append(f"rule {job['rule']} ({src.name}): declared but not imported {sorted(declared - wanted)}; "
+                         f"imported but not declared {sorted(wanted - declared)}")
+        checked.add(job["rule"])
+    assert not wrong, "\n".join(wrong)
+    assert {"scorecard", "report", "bench_core"} <= checked
+
+
+FINAL_KINDS = re.compile(r"^results/(notebooks/|report|bench/|.*/figures/)")
+
+
+def _check_files(wf) -> dict[str, str]:
+    out = {}
+    for smk_file in sorted((wf / "workflow" / "rules").glob("rep_*.smk")):
+        for path in re.findall(r"results/checks/(\w+)\.csv", smk_file.read_text()):
+            out[path] = f"results/checks/{path}.csv"
+    return out
+
+
+def test_one_replication_check_file_plans_only_its_own_chain(wf):
+    files = _check_files(wf)
+    for name, target in files.items():
+        jobs = plan(wf, "--forceall", target)
+        rules = [j["rule"] for j in jobs]
+        assert all(r.startswith(f"{name}_") for r in rules), (target, rules)
+        assert len(rules) == len(set(rules)), (target, rules)
+        outs = [o for j in jobs for o in j["output"]]
+        assert not [o for o in outs if FINAL_KINDS.match(o)], (target, outs)
+
+
+def test_scorecard_plans_no_figure_notebook_report_or_bench(wf):
+    jobs = plan(wf, "--forceall", "results/scorecard.md")
+    outs = [o for j in jobs for o in j["output"]]
+    assert not [o for o in outs if FINAL_KINDS.match(o)], outs
+    n_checks = sum(len(plan(wf, "--forceall", t)) for t in _check_files(wf).values())
+    assert len(jobs) == 1 + n_checks  # the scorecard job itself plus each replication's check chain
+
+
+def test_job_counts_of_framework_targets(wf):
+    assert [j["rule"] for j in plan(wf, "--forceall", "results/bench/throughput.csv")] == ["bench_core"]
+    assert sorted(j["rule"] for j in plan(wf, "--forceall", "bench")) == ["bench", "bench_core", "bench_defaults"]
+    default = {j["rule"] for j in plan(wf, "--forceall")}
+    assert not {r for r in default if r.startswith("bench")} and "report_screenshot" not in default
+    assert {"scorecard", "report", "all"} <= default
+
+
+def test_touching_one_module_reruns_exactly_its_users(wf):
+    """Mark every output of the default target as up to date (empty files + --touch), then touch
+    src/gearrep/report.py: only the report job (and the `all` target) may be planned."""
+    for job in plan(wf, "--forceall"):
+        for o in job["output"]:
+            p = wf / o
+            p.parent.mkdir(parents=True, exist_ok=True)
+            p.touch()
+    smk(wf, "--cores", "1", "--touch", "-q")
+    assert "Nothing to be done" in smk(wf, "-n")
+    (wf / "src" / "gearrep" / "report.py").touch()
+    assert sorted(j["rule"] for j in plan(wf)) == ["all", "report"]
