@@ -7,7 +7,7 @@ CORES  ?= 2
 export PATH := $(abspath $(BIN)):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: setup reproduce test test-all screenshot clean
+.PHONY: setup reproduce test test-all stress bench screenshot clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -24,6 +24,14 @@ test: $(STAMP)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -m ''
+
+# Numerical stress suite, full version (the default `make test` runs its fast subset).
+stress: $(STAMP)
+	$(BIN)/python -m pytest -m stress tests/stress
+
+# Run time against error and throughput (results/bench/).
+bench: $(STAMP)
+	$(BIN)/snakemake --cores $(CORES) bench
 
 # Screenshot of the report in headless Chromium (needs the Debian package `chromium`).
 screenshot: $(STAMP)

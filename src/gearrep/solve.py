@@ -53,12 +53,15 @@ class SolveResult:
     residual : (n,) Euclidean norm of the residual at ``x``
     iterations : (n,) Newton iterations taken
     status : (n,) :class:`Status` codes
+    condition : (n,) 2-norm condition number s_max/s_min of the Jacobian at the last iteration
+        (inf where it was exactly singular, NaN where no iteration was taken)
     """
 
     x: np.ndarray
     residual: np.ndarray
     iterations: np.ndarray
     status: np.ndarray
+    condition: np.ndarray | None = None
 
     @property
     def converged(self) -> np.ndarray:
@@ -73,7 +76,7 @@ class SolveResult:
         """Copy with ``status`` set where ``mask`` holds (e.g. WRONG_ROOT after verification)."""
         st = self.status.copy()
         st[np.asarray(mask, dtype=bool)] = int(status)
-        return SolveResult(self.x, self.residual, self.iterations, st)
+        return SolveResult(self.x, self.residual, self.iterations, st, self.condition)
 
     def __len__(self) -> int:
         return len(self.status)
@@ -183,6 +186,7 @@ def newton(
     status[res < tol] = int(Status.CONVERGED)  # a start that already solves the system
     done = (res < tol) | ~np.isfinite(res)
     stalled = np.zeros(n, dtype=bool)
+    cond = np.full(n, np.nan)
 
     for _ in range(int(maxiter)):
         act = np.flatnonzero(~done)
@@ -194,8 +198,10 @@ def newton(
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
         bad_j = ~np.all(np.isfinite(Ja), axis=(1, 2))
         Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-        d, singular, _ = _lstsq_step(Ja, Fa, rcond)
+        d, singular, sv = _lstsq_step(Ja, Fa, rcond)
         singular |= bad_j
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cond[act] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
         iters[act] += 1
 
         lam = np.ones(act.size)
@@ -238,4 +244,4 @@ def newton(
 
     inside = np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi))), axis=1)
     status[(status == Status.CONVERGED) & ~inside] = int(Status.OFF_FLANK)
-    return SolveResult(x=x, residual=res, iterations=iters, status=status)
+    return SolveResult(x=x, residual=res, iterations=iters, status=status, condition=cond)

@@ -286,6 +286,8 @@ class ContactPoints:
     residual, iterations, status : from :func:`gearrep.solve.newton`, with OFF_FLANK (member-2
         parameters outside its flank, reduced form) and WRONG_ROOT (normals not opposite) added
     formulation : "reduced" or "conventional"
+    condition : condition number of the Newton Jacobian at the last iteration (see
+        :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve
     """
 
     u1: np.ndarray
@@ -301,6 +303,7 @@ class ContactPoints:
     iterations: np.ndarray
     status: np.ndarray
     formulation: str = "reduced"
+    condition: np.ndarray | None = None
 
     def __len__(self):
         return len(self.status)
@@ -321,14 +324,17 @@ class ContactPoints:
         """Subset by index or boolean mask."""
         kw = {f: getattr(self, f)[idx] for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal",
                                                    "te", "residual", "iterations", "status")}
-        return ContactPoints(formulation=self.formulation, **kw)
+        cond = None if self.condition is None else self.condition[idx]
+        return ContactPoints(formulation=self.formulation, condition=cond, **kw)
 
     @staticmethod
     def concatenate(items) -> "ContactPoints":
         items = list(items)
         kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in
               ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te", "residual", "iterations", "status")}
-        return ContactPoints(formulation=items[0].formulation, **kw)
+        conds = [c.condition for c in items]
+        cond = None if any(c is None for c in conds) else np.concatenate(conds)
+        return ContactPoints(formulation=items[0].formulation, condition=cond, **kw)
 
     def unknowns(self, formulation=None) -> np.ndarray:
         """Solution as a start array: (u1, v1) for reduced, (u1, v1, u2, v2, phi2) for conventional."""
@@ -610,7 +616,8 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
     status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
     te = transmission_error(phi1, phi2, pair.n1, pair.n2, phi10, phi20)
     return ContactPoints(u1=u1, v1=v1, u2=u2, v2=v2, phi1=phi1, phi2=phi2, position=r, normal=n1, te=te,
-                         residual=res.residual, iterations=res.iterations, status=status, formulation=formulation)
+                         residual=res.residual, iterations=res.iterations, status=status, formulation=formulation,
+                         condition=res.condition)
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):

@@ -98,3 +98,18 @@ def test_rows_mode_passes_indices_of_active_rows():
         r = newton(f, np.ones((4, 1)), jac, rows=True)
         assert np.all(r.converged)
         np.testing.assert_allclose(r.x[:, 0], np.sqrt(p), atol=1e-11)  # residual 1e-12 / |2x|
+
+
+def test_condition_number_of_the_last_jacobian_is_reported():
+    A = np.diag([1.0, 1e-3])
+    b = np.array([2.0, 3e-3])
+
+    def fun(x):
+        return x @ A.T - b
+
+    res = newton(fun, np.zeros((2, 2)), lambda x: np.broadcast_to(A, (len(x), 2, 2)), tol=1e-12)
+    assert np.all(res.converged)
+    np.testing.assert_allclose(res.condition, 1e3, rtol=1e-12)
+    solved = newton(fun, np.array([[2.0, 3.0]]), tol=1e-12)  # start is the root: no iteration taken
+    assert solved.iterations[0] == 0 and np.isnan(solved.condition[0])
+    assert np.array_equal(res.with_status([True, False], Status.WRONG_ROOT).condition, res.condition)
