@@ -6,13 +6,8 @@ printed at the end of the run."""
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).parents[1] / "unit"))  # shared case builders (test_tca helpers)
 
 _SEEN: list[tuple[str, int, int, float, float, float]] = []
 
