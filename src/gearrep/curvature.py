@@ -43,7 +43,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .surfaces.base import SurfacePoint, unit
+from .surfaces.base import SurfacePoint, cross, unit
 
 __all__ = [
     "FundamentalForms",
@@ -137,7 +137,7 @@ def _tangent_frame(p: SurfacePoint):
     tangent vector with components x = (dr.t1, dr.t2)."""
     n = p.normal
     t1 = unit(p.r_u)
-    t2 = np.cross(n, t1)
+    t2 = cross(n, t1)
     # coordinates of r_u, r_v in (t1, t2): J = [[j11, j12], [0, j22]], j22 > 0
     j11 = np.linalg.norm(p.r_u, axis=-1)
     j12 = _dot(p.r_v, t1)
@@ -247,7 +247,7 @@ def signed_angle(a, b, n) -> np.ndarray:
     (-pi, pi]."""
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
-    return np.arctan2(_dot(np.asarray(n, dtype=float), np.cross(a, b)), _dot(a, b))
+    return np.arctan2(_dot(np.asarray(n, dtype=float), cross(a, b)), _dot(a, b))
 
 
 def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma,
@@ -302,5 +302,5 @@ def relative_curvature(c1: PrincipalCurvatures, c2: PrincipalCurvatures, *,
     k1, k2, alpha = relative_principal_curvatures(c1.k1, c1.k2, c2.k1, c2.k2, sigma, umbilic_tol)
     ca, sa = np.cos(alpha)[..., None], np.sin(alpha)[..., None]
     e1 = ca * c1.e1 + sa * c1.e2
-    e2 = np.cross(n, e1)
+    e2 = cross(n, e1)
     return RelativeCurvature(k1, k2, alpha, sigma, e1, e2, n)

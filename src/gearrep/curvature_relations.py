@@ -64,7 +64,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .envelope import Envelope
-from .surfaces.base import SurfacePoint
+from .surfaces.base import SurfacePoint, cross
 
 try:  # the contract's principal curvatures (gearrep.curvature), when present
     from .curvature import principal_curvatures as _contract_principal
@@ -101,7 +101,7 @@ def _principal(p: SurfacePoint):
         return pc.k1, pc.k2, pc.e1, pc.e2, pc.normal
     n = p.normal
     t1 = p.r_u / np.linalg.norm(p.r_u, axis=-1, keepdims=True)
-    t2 = np.cross(n, t1)
+    t2 = cross(n, t1)
     L = np.sum(p.r_uu * n, -1)
     M = np.sum(p.r_uv * n, -1)
     N = np.sum(p.r_vv * n, -1)
@@ -115,7 +115,7 @@ def _principal(p: SurfacePoint):
     s22 = i12 * i12 * L + 2 * i12 * i22 * M + i22 * i22 * N
     k1, k2, ang = _sym2_eig(s11, s12, s22)
     e1 = np.cos(ang)[..., None] * t1 + np.sin(ang)[..., None] * t2
-    return k1, k2, e1, np.cross(n, e1), n
+    return k1, k2, e1, cross(n, e1), n
 
 
 @dataclass(frozen=True)
@@ -165,11 +165,11 @@ def _coefficients(envelope: Envelope, q):
     w, om = loc.w, loc.omega  # (n,k,3)
     wf = np.einsum("nka,na->nk", w, e1)
     wh = np.einsum("nka,na->nk", w, e2)
-    nxo = np.cross(n[:, None, :], om)  # n x omega_j
+    nxo = cross(n[:, None, :], om)  # n x omega_j
     C = np.stack([-k1[:, None] * wf + np.einsum("nka,na->nk", nxo, e1),
                   -k2[:, None] * wh + np.einsum("nka,na->nk", nxo, e2)], axis=1)  # (n,2,k)
     II = k1[:, None, None] * wf[:, :, None] * wf[:, None, :] + k2[:, None, None] * wh[:, :, None] * wh[:, None, :]
-    ow = np.einsum("na,nija->nij", n, np.cross(om[:, :, None, :], w[:, None, :, :]))  # n.(omega_i x w_j)
+    ow = np.einsum("na,nija->nij", n, cross(om[:, :, None, :], w[:, None, :, :]))  # n.(omega_i x w_j)
     E = -II + ow + np.swapaxes(ow, 1, 2) - np.einsum("na,nija->nij", n, loc.Xr)
     return loc, k1, k2, e1, e2, C, E
 
@@ -205,7 +205,7 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     nk = envelope.k
     A = np.zeros((q.shape[0], 2 + nk, 2 + nk))
     A[:, :2, :2], A[:, :2, 2:], A[:, 2:, :2], A[:, 2:, 2:] = B, C, np.swapaxes(C, 1, 2), E
-    return GeneratedCurvatures(k1, k2, rot(e1), rot(np.cross(loc.n, e1)), rot(loc.n),
+    return GeneratedCurvatures(k1, k2, rot(e1), rot(cross(loc.n, e1)), rot(loc.n),
                                k_f, k_h, rot(e_f), rot(e_h), sigma, A)
 
 

@@ -71,7 +71,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .solve import SolveResult, Status, newton
-from .surfaces.base import Surface, SurfacePoint
+from .surfaces.base import Surface, SurfacePoint, cross
 
 __all__ = [
     "Motion",
@@ -392,13 +392,13 @@ def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     r = p.r
     w = np.einsum("nkab,nb->nka", Om, r) + W[..., :3, 3]
     Xr = np.einsum("nijab,nb->nija", X[..., :3, :3], r) + X[..., :3, 3]
-    N = np.cross(p.r_u, p.r_v)
+    N = cross(p.r_u, p.r_v)
     Nn = np.linalg.norm(N, axis=-1, keepdims=True)
     n = N / Nn
     f = np.einsum("na,nka->nk", n, w)
     # derivatives of the unit normal: n_x = (I - n n^T) N_x / |N|
-    N_u = np.cross(p.r_uu, p.r_v) + np.cross(p.r_u, p.r_uv)
-    N_v = np.cross(p.r_uv, p.r_v) + np.cross(p.r_u, p.r_vv)
+    N_u = cross(p.r_uu, p.r_v) + cross(p.r_u, p.r_uv)
+    N_v = cross(p.r_uv, p.r_v) + cross(p.r_u, p.r_vv)
 
     def dn(Nx):
         return (Nx - n * np.sum(n * Nx, -1, keepdims=True)) / Nn
@@ -410,7 +410,7 @@ def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     f_v = np.einsum("na,nka->nk", n_v, w) + np.einsum("na,nka->nk", n, Om_rv)
     # df_j/dm_i = n . (X_ij r_h) - n . (omega_i x w_j)
     f_m = np.einsum("na,nija->nji", n, Xr) - np.einsum(
-        "na,nija->nji", n, np.cross(omega[:, :, None, :], w[:, None, :, :]))
+        "na,nija->nji", n, cross(omega[:, :, None, :], w[:, None, :, :]))
     J = np.concatenate([f_u[..., None], f_v[..., None], f_m], axis=-1)
     T = np.concatenate([p.r_u[:, None], p.r_v[:, None], w], axis=1)
     nq = 2 + k
@@ -483,7 +483,7 @@ class EnvelopeResult:
 def _litvin_matrix(loc: LocalGeometry):
     """Litvin's singularity matrix [[T . t1], [T . t2], [J]] ((2+k)-square) per point."""
     t1 = loc.tool.r_u / np.linalg.norm(loc.tool.r_u, axis=-1, keepdims=True)
-    t2 = np.cross(loc.n, t1)
+    t2 = cross(loc.n, t1)
     A = np.concatenate([np.einsum("nqa,na->nq", loc.T, t1)[:, None],
                         np.einsum("nqa,na->nq", loc.T, t2)[:, None], loc.J], axis=1)
     return A

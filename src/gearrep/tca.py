@@ -85,6 +85,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solve import SolveResult, Status, newton, status_names
+from .surfaces.base import cross
 from .units import ARCSEC
 
 try:  # rotation matrices from gearrep.frames (active rotations, (..., 3, 3))
@@ -349,11 +350,11 @@ class ContactPoints:
 # ----------------------------------------------------------------------------------------------
 def _normal_derivs(P, sign):
     """Unit normal sign * (r_u x r_v)/|.| and its u- and v-derivatives."""
-    N = np.cross(P.r_u, P.r_v)
+    N = cross(P.r_u, P.r_v)
     L = np.linalg.norm(N, axis=-1, keepdims=True)
     n = N / L
-    dNu = np.cross(P.r_uu, P.r_v) + np.cross(P.r_u, P.r_uv)
-    dNv = np.cross(P.r_uv, P.r_v) + np.cross(P.r_u, P.r_vv)
+    dNu = cross(P.r_uu, P.r_v) + cross(P.r_u, P.r_uv)
+    dNv = cross(P.r_uv, P.r_v) + cross(P.r_u, P.r_vv)
     dnu = (dNu - n * np.sum(n * dNu, axis=-1, keepdims=True)) / L
     dnv = (dNv - n * np.sum(n * dNv, axis=-1, keepdims=True)) / L
     return sign * n, sign * dnu, sign * dnv
@@ -402,7 +403,7 @@ def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
         ang_v = (r2[..., 0] * P2.r_v[..., 1] - r2[..., 1] * P2.r_v[..., 0]) / q2
         dphi2 = ang_u[..., None] * du2 + ang_v[..., None] * dv2 - dth
         dn2l = dn2u[..., None, :] * du2[..., None] + dn2v[..., None, :] * dv2[..., None]
-        dn2 = _mv(R2[..., None, :, :], dn2l) + np.cross(pair.w2, n2)[..., None, :] * dphi2[..., None]
+        dn2 = _mv(R2[..., None, :, :], dn2l) + cross(pair.w2, n2)[..., None, :] * dphi2[..., None]
     out.update(dr=dr, dn1=dn1, du2=du2, dv2=dv2, dphi2=dphi2, dn2=dn2)
     return out
 
@@ -418,11 +419,11 @@ def _keep(vec, drop):
 
 def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
     K = _reduced_kernel(pair, u1, v1, phi1, derivs=derivs)
-    c = np.cross(K["n1"], K["n2"])
+    c = cross(K["n1"], K["n2"])
     F = _keep(c, drop)
     if not derivs:
         return F, None, K
-    dc = np.cross(K["dn1"], K["n2"][..., None, :]) + np.cross(K["n1"][..., None, :], K["dn2"])  # (n,2,3)
+    dc = cross(K["dn1"], K["n2"][..., None, :]) + cross(K["n1"][..., None, :], K["dn2"])  # (n,2,3)
     J = np.swapaxes(_keep(dc, drop), -1, -2)  # (n, 2 eq, 2 unknowns)
     return F, J, K
 
@@ -444,8 +445,8 @@ def _conventional_FJ(pair, x, phi1, drop, derivs=True):
     F = np.concatenate([r1 - r2, _keep(n1 + n2, drop)], axis=-1)
     if not derivs:
         return F, None
-    cols_r = [_mv(R1, P1.r_u), _mv(R1, P1.r_v), -_mv(R2, P2.r_u), -_mv(R2, P2.r_v), -np.cross(pair.w2, rel2)]
-    cols_n = [_mv(R1, dn1u), _mv(R1, dn1v), _mv(R2, dn2u), _mv(R2, dn2v), np.cross(pair.w2, n2)]
+    cols_r = [_mv(R1, P1.r_u), _mv(R1, P1.r_v), -_mv(R2, P2.r_u), -_mv(R2, P2.r_v), -cross(pair.w2, rel2)]
+    cols_n = [_mv(R1, dn1u), _mv(R1, dn1v), _mv(R2, dn2u), _mv(R2, dn2v), cross(pair.w2, n2)]
     Jr = np.stack(cols_r, axis=-1)  # (n,3,5)
     Jn = np.stack(cols_n, axis=-2)  # (n,5,3)
     J = np.concatenate([Jr, np.swapaxes(_keep(Jn, drop), -1, -2)], axis=-2)

@@ -37,3 +37,12 @@ def test_normal_orientation_and_flip():
     assert np.dot(p.normal, p.r) < 0
     np.testing.assert_allclose(p.flipped().normal, -p.normal)
     np.testing.assert_allclose(np.linalg.norm(unit(p.r)), 1.0)
+
+
+def test_cross_matches_numpy_with_broadcasting():
+    from gearrep.surfaces.base import cross
+
+    rng = np.random.default_rng(0)
+    a, b = rng.normal(size=(4, 1, 3)), rng.normal(size=(5, 3))
+    np.testing.assert_array_equal(cross(a, b), np.cross(a, b))
+    np.testing.assert_array_equal(cross([1.0, 0, 0], [0, 1.0, 0]), [0, 0, 1.0])

@@ -22,6 +22,16 @@ def unit(v: np.ndarray, axis: int = -1) -> np.ndarray:
     return v / np.linalg.norm(v, axis=axis, keepdims=True)
 
 
+def cross(a, b) -> np.ndarray:
+    """Cross product along the last axis with broadcasting, written out by components (same
+    result as ``np.cross(a, b)``, several times faster on small batches)."""
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
 @dataclass(frozen=True)
 class SurfacePoint:
     """Position and partial derivatives of a surface at parameters (u, v); each (..., 3)."""
@@ -36,7 +46,7 @@ class SurfacePoint:
     @property
     def normal(self) -> np.ndarray:
         """Unit normal n = (r_u x r_v) / |r_u x r_v| (the orientation every curvature uses)."""
-        return unit(np.cross(self.r_u, self.r_v))
+        return unit(cross(self.r_u, self.r_v))
 
     def flipped(self) -> "SurfacePoint":
         """The same point with the parameters swapped (v, u): the normal changes sign."""
