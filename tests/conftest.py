@@ -31,3 +31,21 @@ def seed_lines():
     for f in sorted(d.glob("*.txt")):
         out[f.name[:3]] = f.read_text(encoding="utf-8").splitlines()
     return out
+
+
+#: what a workflow run needs from the repository (everything tracked that Snakemake reads)
+WORKFLOW_INPUTS = ["Snakefile", "config", "workflow", "data", "src", "notebooks"]
+
+
+def copy_workflow(dest: Path) -> Path:
+    """Copy the workflow's tracked inputs into ``dest`` so a test can run Snakemake without
+    touching the working tree (and without leftovers of an earlier run)."""
+    import shutil
+
+    for name in WORKFLOW_INPUTS:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__", ".ipynb_checkpoints"))
+        elif src.exists():
+            shutil.copy2(src, dest / name)
+    return dest

@@ -15,7 +15,6 @@ from __future__ import annotations
 import json
 import modulefinder
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -23,21 +22,15 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, copy_workflow
 
-COPY = ["Snakefile", "config", "workflow", "data", "src", "notebooks"]
 SRC = ROOT / "src"
 
 
 @pytest.fixture(scope="module")
 def wf(tmp_path_factory):
     d = tmp_path_factory.mktemp("wf")
-    for name in COPY:
-        src = ROOT / name
-        if src.is_dir():
-            shutil.copytree(src, d / name, ignore=shutil.ignore_patterns("__pycache__"))
-        elif src.exists():
-            shutil.copy2(src, d / name)
+    copy_workflow(d)
     return d
 
 

@@ -1,28 +1,22 @@
-"""The Snakemake workflow: config validation, lint, and an incremental no-op re-run.
+"""The Snakemake workflow: config validation and lint (the full run and its no-op re-run are in
+test_full_workflow.py).
 
 Each test runs Snakemake in a private copy of the repository's tracked inputs, so nothing is
 written into the working tree and no test depends on an earlier run's results/.
 """
 
-import shutil
 import subprocess
 import sys
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, copy_workflow
 
-COPY = ["Snakefile", "config", "workflow", "data", "src"]
 
 
 @pytest.fixture()
 def wf(tmp_path):
-    for name in COPY:
-        src = ROOT / name
-        if src.is_dir():
-            shutil.copytree(src, tmp_path / name, ignore=shutil.ignore_patterns("__pycache__"))
-        else:
-            shutil.copy2(src, tmp_path / name)
+    copy_workflow(tmp_path)
     return tmp_path
 
 
@@ -46,13 +40,3 @@ def test_bad_config_stops_before_any_job(wf, key, bad):
 def test_lint_is_clean(wf):
     out = smk(wf, "--lint")
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
-
-
-def test_scorecard_then_nothing_to_do(wf):
-    out = smk(wf, "--cores", "2", "results/scorecard.md")
-    assert out.returncode == 0, out.stderr[-3000:]
-    card = (wf / "results" / "scorecard.md").read_text()
-    assert "## Counts by paper" in card
-    again = smk(wf, "-n", "results/scorecard.md")
-    assert again.returncode == 0
-    assert "Nothing to be done" in again.stdout + again.stderr

@@ -1,0 +1,127 @@
+"""The whole default workflow, run once cold in a private copy of the repository (issue 9, issue 2).
+
+`snakemake --cores 2` with the fast overlay `config/fast.yaml` (fewer random starts, coarser
+sweeps; the same code paths) must build the scorecard, every replication's checks and figures,
+execute and render every notebook and write `results/report.html`; afterwards a dry run plans
+nothing and a no-op run is quick. The rendered report links every check row to a heading of its
+notebook, and a notebook fed a result without its columns fails with the traceback, not a blank
+figure. Nothing here reads the working tree's results/.
+"""
+
+from __future__ import annotations
+
+import html
+import importlib.util
+import json
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from conftest import ROOT, copy_workflow
+
+FAST = ROOT / "config" / "fast.yaml"
+
+
+def smk(cwd, *args, timeout=900):
+    extra = ["--configfile", "config/config.yaml", "config/fast.yaml"] if FAST.exists() else []
+    return subprocess.run([sys.executable, "-m", "snakemake", *args, *extra], cwd=cwd, capture_output=True,
+                          text=True, timeout=timeout)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    d = tmp_path_factory.mktemp("full")
+    copy_workflow(d)
+    t0 = time.perf_counter()
+    out = smk(d, "--cores", "2")
+    elapsed = time.perf_counter() - t0
+    assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-4000:]
+    print(f"\ncold default workflow (fast overlay): {elapsed:.1f} s")
+    return d
+
+
+def notebooks(d) -> list[str]:
+    return sorted(p.stem for p in (d / "results" / "notebooks").glob("*.html"))
+
+
+def test_default_target_builds_scorecard_report_and_every_notebook(run):
+    card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str})
+    assert set(card["seed"]) == {"000", "002", "003", "004"}
+    assert "## Counts by paper" in (run / "results" / "scorecard.md").read_text()
+    names = {p.stem for p in (ROOT / "notebooks").glob("*.ipynb")}
+    assert set(notebooks(run)) == names, "every notebook in notebooks/ is executed and rendered"
+    page = (run / "results" / "report.html").read_text(encoding="utf-8")
+    for seed in ("000", "002", "003", "004"):
+        assert seed in page
+    assert "<img" in page or not names  # key figures are embedded once replications add them
+
+
+def test_rendered_notebooks_have_no_errors_and_a_heading_per_check_source(run):
+    card = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
+    for name in notebooks(run):
+        text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
+        executed = json.loads((run / "results" / "notebooks" / f"{name}.ipynb").read_text())
+        errors = [o for c in executed["cells"] if c["cell_type"] == "code" for o in c.get("outputs", [])
+                  if o.get("output_type") == "error"]
+        assert not errors, f"{name}: {errors[0].get('ename')}: {errors[0].get('evalue')}"
+        assert "<img" in text or "image/png" in text, f"{name}: no figure rendered"
+        ids = set(re.findall(r'id="([^"]+)"', text))
+        from gearrep.report import anchor
+
+        sources = set(card.loc[card["replication"] == name, "source"])
+        missing = sorted(s for s in sources if anchor(s) not in ids and html.escape(anchor(s)) not in ids)
+        assert not missing, f"{name}: no heading for check sources {missing[:8]} (report links would be dead)"
+
+
+def test_dry_run_after_full_run_plans_nothing_and_noop_is_fast(run):
+    out = smk(run, "-n")
+    assert out.returncode == 0 and "Nothing to be done" in out.stdout + out.stderr
+    t0 = time.perf_counter()
+    out = smk(run, "--cores", "2")
+    elapsed = time.perf_counter() - t0
+    assert out.returncode == 0 and "Nothing to be done" in out.stdout + out.stderr
+    assert elapsed < 3.0 * 2, f"no-op re-run took {elapsed:.1f} s (target 3 s; x2 margin for a loaded CI machine)"
+
+
+def test_real_report_in_headless_browser(run):
+    spec = importlib.util.spec_from_file_location("screenshot", ROOT / "workflow" / "scripts" / "screenshot.py")
+    shot = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(shot)
+    if shot.find_browser() is None:
+        pytest.skip("no Chromium-family browser installed")
+    import matplotlib.image as mpimg
+
+    img = mpimg.imread(shot.screenshot(run / "results" / "report.html", run / "results" / "report.png",
+                                       width=1200, height=900))[..., :3]
+    assert img.std() > 0.05, "screenshot of the report is blank"
+
+
+def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):
+    """Each notebook rule, fed a copy of its first CSV input with every column but the first
+    removed, must fail (papermill leaves the traceback in the executed notebook)."""
+    rules = {}
+    for f in (run / "workflow" / "rules").glob("rep_*.smk"):
+        for name, body in re.findall(r"^rule (\w+_notebook):\s*$(.*?)(?=^rule |\Z)", f.read_text(), flags=re.M | re.S):
+            rules[name] = body
+    assert rules or not list((ROOT / "notebooks").glob("*.ipynb"))
+    for rule in sorted(rules):
+        goal = f"results/notebooks/{rule[:-len('_notebook')]}.executed"
+        jobs = smk(run, "-n", "--forcerun", rule, goal).stdout
+        m = re.search(rf"rule {rule}:\n    input: ([^\n]+)", jobs)
+        assert m, jobs[-2000:]
+        csvs = [p.strip() for p in m.group(1).split(",") if p.strip().endswith(".csv")]
+        assert csvs, f"{rule} reads no CSV"
+        target = run / csvs[0]
+        saved = target.read_bytes()
+        try:
+            df = pd.read_csv(target)
+            df.iloc[:, :1].to_csv(target, index=False)
+            out = smk(run, "--cores", "1", "--forcerun", rule, goal)
+            assert out.returncode != 0, f"{rule} rendered with {csvs[0]} stripped to one column"
+        finally:
+            target.write_bytes(saved)
