@@ -33,6 +33,11 @@ CHECK_COLUMNS = [
     "rel_err", "tolerance", "tolerance_basis", "status", "note",
 ]
 
+#: check-table columns that hold text: give these as ``dtype`` when reading a check CSV, or
+#: pandas turns seeds such as "003" into the integer 3 (`validate_checks` rejects that)
+TEXT_COLUMNS = {c: str for c in ("id", "seed", "source", "row", "quantity", "unit", "tolerance_basis", "status",
+                                 "note")}
+
 _FP_SLACK = 1e-12
 
 
@@ -157,6 +162,10 @@ def validate_checks(checks: pd.DataFrame) -> pd.DataFrame:
         raise ValueError(f"unknown statuses {bad}; allowed {STATUSES}")
     if checks["id"].duplicated().any():
         raise ValueError(f"duplicate check ids: {sorted(set(checks['id'][checks['id'].duplicated()]))[:10]}")
+    bad_seed = [s for s in checks["seed"].unique() if not (isinstance(s, str) and len(s) == 3 and s.isdigit())]
+    if bad_seed:
+        raise ValueError(f"seed must be a three-digit string such as '003', got {bad_seed[:5]} "
+                         "(read check CSVs with dtype=checks.TEXT_COLUMNS)")
     return checks
 
 

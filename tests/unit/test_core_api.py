@@ -132,3 +132,14 @@ def test_param_table_selects_file_and_example():
 def test_load_average_is_a_nonnegative_number_or_nan():
     la = benchmark.load_average()
     assert isinstance(la, float) and (math.isnan(la) or la >= 0.0)
+
+
+def test_check_csv_round_trip_keeps_seed_text_and_bad_seeds_are_rejected(tmp_path):
+    rec = checks.not_computed(_values(), "r")
+    f = tmp_path / "c.csv"
+    rec.to_csv(f, index=False)
+    back = pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""])
+    assert list(back["seed"]) == ["000", "000"]
+    checks.validate_checks(back)
+    with pytest.raises(ValueError, match="three-digit string"):
+        checks.validate_checks(pd.read_csv(f, keep_default_na=False, na_values=[""]))

@@ -9,7 +9,7 @@ from gearrep import checks, published
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
 pub = published.load(Path(smk.input.published[0]).parent)
-tables = {Path(f).stem: pd.read_csv(f, keep_default_na=False, na_values=[""]) for f in smk.input.checks}
+tables = {Path(f).stem: pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""]) for f in smk.input.checks}
 card = checks.scorecard(tables, pub.values, pub.claims)
 card["paper"] = card["seed"].map(published.PAPERS)
 
