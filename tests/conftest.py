@@ -1,8 +1,12 @@
-"""Shared test fixtures: repository paths, the published data, the seed texts."""
+"""Shared test fixtures: repository paths, the published data, the seed texts, workflow copies,
+and the condition-number record of the stress suite (tests/stress; `make stress` runs it in full,
+the table of Jacobian condition numbers seen is printed at the end of the run)."""
 
 import os
+import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,3 +53,41 @@ def copy_workflow(dest: Path) -> Path:
         elif src.exists():
             shutil.copy2(src, dest / name)
     return dest
+
+
+def tool_env() -> dict:
+    """Environment for running Snakemake from a test: the interpreter's bin directory first on
+    PATH, so the notebook directive finds papermill and the render rule finds jupyter nbconvert
+    even when pytest was started as `.venv/bin/python -m pytest` without an activated venv."""
+    env = dict(os.environ)
+    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
+    env.setdefault("MPLBACKEND", "Agg")
+    return env
+
+
+_SEEN: list[tuple[str, int, int, float, float, float]] = []
+
+
+@pytest.fixture()
+def record_conditions(request):
+    """Call with (array of condition numbers) to report them under the test's name."""
+
+    def record(cond, label=""):
+        c = np.asarray(cond, float)
+        n_inf = int(np.sum(np.isposinf(c)))
+        c = c[np.isfinite(c)]
+        name = request.node.name + (f" [{label}]" if label else "")
+        stats = (float(c.min()), float(np.median(c)), float(c.max())) if c.size else (np.nan,) * 3
+        _SEEN.append((name, c.size, n_inf, *stats))
+
+    return record
+
+
+def pytest_terminal_summary(terminalreporter):
+    if not _SEEN:
+        return
+    tr = terminalreporter
+    tr.section("Jacobian condition numbers seen (converged and unconverged solves)")
+    tr.write_line(f"{'case':70s} {'n':>6s} {'singular':>8s} {'min':>10s} {'median':>10s} {'max':>10s}")
+    for name, n, n_inf, lo, med, hi in _SEEN:
+        tr.write_line(f"{name[:70]:70s} {n:6d} {n_inf:8d} {lo:10.3g} {med:10.3g} {hi:10.3g}")

@@ -348,8 +348,9 @@ class ContactPoints:
 # ----------------------------------------------------------------------------------------------
 # geometry kernels with analytic derivatives
 # ----------------------------------------------------------------------------------------------
-def _normal_derivs(P, sign):
-    """Unit normal sign * (r_u x r_v)/|.| and its u- and v-derivatives."""
+def normal_derivatives(P, sign):
+    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surfaces.base.SurfacePoint` and its u- and
+    v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v)."""
     N = cross(P.r_u, P.r_v)
     L = np.linalg.norm(N, axis=-1, keepdims=True)
     n = N / L
@@ -369,7 +370,7 @@ def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     P1 = pair.flank1.evaluate(u1, v1)
     R1 = pair.R1(phi1)
     r = _mv(R1, P1.r)
-    n1l, dn1u, dn1v = _normal_derivs(P1, pair.sign1)
+    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
     n1 = _mv(R1, n1l)
     s = _mv(pair._Q, r - pair.O2)  # member-2 axis frame, before Rz(-phi2)
     v2 = s[..., 2]
@@ -383,7 +384,7 @@ def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     phi2 = ref + _wrap(ang2 - th - ref)
     R2 = pair.R2(phi2)
     with np.errstate(invalid="ignore", divide="ignore"):
-        n2l, dn2u, dn2v = _normal_derivs(P2, pair.sign2)
+        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
     n2 = _mv(R2, n2l)
     out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2, P1=P1, P2=P2)
     if not derivs:
@@ -434,8 +435,8 @@ def _conventional_FJ(pair, x, phi1, drop, derivs=True):
     R1 = pair.R1(phi1)
     with np.errstate(invalid="ignore", divide="ignore"):
         P2 = pair.flank2.evaluate(u2, v2)
-        n2l, dn2u, dn2v = _normal_derivs(P2, pair.sign2)
-    n1l, dn1u, dn1v = _normal_derivs(P1, pair.sign1)
+        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
+    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
     R2 = pair.R2(phi2)
     r1 = _mv(R1, P1.r)
     rel2 = _mv(R2, P2.r)

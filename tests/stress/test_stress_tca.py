@@ -77,14 +77,14 @@ def test_misalignment_from_1e_7_rad_to_edge_contact(plane, record_conditions):
     grows with the misalignment until it leaves the flank, where the point must be OFF_FLANK (never
     a converged point outside [-b/2, b/2])."""
     angles = np.concatenate([np.logspace(-7, -2, 11), [0.02, 0.05, 0.1]])
-    shifts, statuses = [], []
+    shifts, statuses, conds = [], [], []
     for ang in angles:
         mis = Misalignment(d_gamma_in=ang) if plane == "in" else Misalignment(d_gamma_out=ang)
         pair, g1, _ = pair_of(52, 72, mis=mis)
         phi1 = -np.pi / (2 * 52)
         c = solve_contact(pair, np.full(5, phi1), np.column_stack([np.full(5, g1.r_p), np.linspace(-5, 5, 5)]))
         assert_honest(c)
-        record_conditions(c.condition, f"{plane}-plane {ang:.1e} rad")
+        conds.append(c.condition)
         conv = c.converged
         if conv.any():
             v = c.v1[conv]
@@ -95,6 +95,7 @@ def test_misalignment_from_1e_7_rad_to_edge_contact(plane, record_conditions):
             shifts.append(np.inf)
         statuses.append(set(np.unique(c.status)))
     shifts = np.array(shifts)
+    record_conditions(np.concatenate(conds), f"{plane}-plane, 1e-7 .. 0.1 rad")
     # small misalignments: shift proportional to the angle (first order), then growth to the edge
     small = angles <= 1e-4
     ratio = shifts[small] / angles[small]

@@ -22,14 +22,14 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from conftest import ROOT, copy_workflow
+from conftest import ROOT, copy_workflow, tool_env
 
 FAST = ROOT / "config" / "fast.yaml"
 
 
 def smk(cwd, *args, timeout=900):
     extra = ["--configfile", "config/config.yaml", "config/fast.yaml"] if FAST.exists() else []
-    return subprocess.run([sys.executable, "-m", "snakemake", *args, *extra], cwd=cwd, capture_output=True,
+    return subprocess.run([sys.executable, "-m", "snakemake", *args, *extra], cwd=cwd, capture_output=True, env=tool_env(),
                           text=True, timeout=timeout)
 
 

@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from conftest import ROOT, copy_workflow
+from conftest import ROOT, copy_workflow, tool_env
 
 
 
@@ -21,7 +21,7 @@ def wf(tmp_path):
 
 
 def smk(cwd, *args, timeout=600):
-    return subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True,
+    return subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(),
                           text=True, timeout=timeout)
 
 
