@@ -1,0 +1,465 @@
+"""ZA worm-type hob cutter and the curvilinear-tooth gear it generates (two-parameter envelope).
+
+Sources
+-------
+* Hob thread surface: seed 000 eq 4.40 (position), 4.41 (normal N_1 = r_l x r_phi), 4.46-4.48
+  (second derivatives), principal curvatures and directions eq 4.42-4.45 (computed here by
+  :func:`gearrep.curvature.principal_curvatures`, the same quantities from the fundamental forms).
+  In eq 4.40 the upper sign is the right-side thread surface, the lower sign the left side.
+* Generation (two-parameter enveloping, seed 000 eq 4.1-4.5 and sec. 4.5): seed 000 chapters 2-3
+  (the machine kinematics) are NOT in the text; the set-up below is the reconstruction given in
+  /work/shared/READING_GUIDE.md (seed 000 part), verified here against the surviving numbers of
+  Tables 4.3/4.4 (see :mod:`gearrep.replications.tseng_curvature`):
+
+  - hob of Table 5.1: normal module m = 3 mm, alpha_n = 20 deg, pitch radius r_h = 30 mm,
+    single start; lead angle sin(lambda) = m / (2 r_h) (Table 5.1 prints 2.866 deg);
+    lead per radian P_1 = m / (2 cos lambda); r_t (the radius of the apex of the V-shaped thread
+    groove, where l = 0) = r_h - (pi m / 4) / tan(alpha_n) = 23.52641 mm;
+  - theta = hob spin, the work gear turns theta / N; psi swivels the whole hob about an axis
+    parallel to the centre-distance line X, through the arc centre, which lies R_c from the hob
+    centre in the tangential (Y) direction; centre distance E = m N / 2 + r_h; hob axis set at
+    the lead angle. The chain (hob frame S_1 -> gear frame S_2, :class:`gearrep.envelope.ChainMotion`):
+
+        M_21 = Rot_z(theta/N) Rot_x(psi; about (E, s_c R_c, 0)) Trans_x(E) Rot_x(lambda - pi/2) Rot_z(theta)
+
+    with s_c = ``arc_centre`` (+1 or -1) the side of the arc centre. ``arc_centre = -1`` (the
+    default) makes the upper-sign (right-side) thread generate the CONVEX flank Sigma_2R of the
+    tables (k_s, k_q > 0, elliptic) and the lower-sign thread the concave flank Sigma_2L
+    (hyperbolic), as seed 000 sec. 4.5 states. ``arc_centre = +1`` (the choice of the older test
+    case tests/unit/_envelope_cases.py::hob_case) swaps convex and concave: that case reproduces
+    k_q but not k_s of Table 4.3 because it computes the concave flank.
+
+* Two variants of the thread profile (``ZAHob.variant``):
+
+  - ``"axial"`` (default): a straight line in the AXIAL section at alpha_n (a true ZA hob),
+    i.e. eq 4.40 with the sin(beta)/cos(beta) factors removed from the profile terms
+    (P_1 phi kept). This variant reproduces Tables 4.3/4.4.
+  - ``"printed"``: eq 4.40 exactly as printed, with beta = the hob lead angle: the profile line
+    is tilted out of the axial section (a straight line in the normal section).
+
+Gear frame of the tables ("thesis frame" S_f): Z_f = gear axis, X_f along the centre line of
+the tooth whose flanks are generated at theta ~ pi (tooth symmetric about X_f: the flank of the
+upper sign lies on +Y_f, the lower-sign flank on -Y_f); it is the generation frame S_2 turned
+by +pi/N about Z (``GeneratedGear.frame_rotation_rad``). The mid-face Z_f = 0 is psi = 0.
+
+Parameterisation of the generated surface: (l, psi) free, (phi, theta) solved from the two
+equations of meshing, because the Jacobian of the meshing equations in (theta, psi) is singular
+at mid-face (READING_GUIDE; tested in tests/unit/test_envelope.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import NamedTuple
+
+import numpy as np
+
+from ..curvature import PrincipalCurvatures, principal_curvatures
+from ..curvature_relations import (
+    GeneratedCurvatures,
+    generated_curvatures,
+    seed000_b_coefficients,
+    seed000_principal_curvatures,
+    seed000_system,
+)
+from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
+from ..solve import SolveResult, Status, newton
+from .base import Surface, SurfacePoint
+
+__all__ = [
+    "HOB_VARIANTS",
+    "FLANK_SIDE",
+    "ZAHob",
+    "HobThread",
+    "GeneratedGear",
+    "SeedCurvatures",
+    "RotatedSurface",
+]
+
+HOB_VARIANTS = ("axial", "printed")
+#: thread side (sign of eq 4.40) that generates each flank of the tables with arc_centre = -1
+FLANK_SIDE = {"R": +1, "L": -1}
+
+
+def _pos(name, x):
+    x = float(x)
+    if not (np.isfinite(x) and x > 0):
+        raise ValueError(f"{name} must be a finite number > 0, got {x!r}")
+    return x
+
+
+@dataclass(frozen=True)
+class ZAHob:
+    """Design data of the ZA worm-type hob (defaults: Table 5.1 of seed 000).
+
+    module_mm : normal module m (> 0)
+    pressure_angle_rad : alpha_n, in (0, pi/2)
+    pitch_radius_mm : r_h (> m / 2, so that the lead angle exists)
+    variant : "axial" (true ZA, reproduces the tables) or "printed" (eq 4.40 as printed)
+    """
+
+    module_mm: float = 3.0
+    pressure_angle_rad: float = float(np.radians(20.0))
+    pitch_radius_mm: float = 30.0
+    variant: str = "axial"
+
+    def __post_init__(self):
+        m = _pos("module_mm", self.module_mm)
+        a = float(self.pressure_angle_rad)
+        if not (np.isfinite(a) and 0 < a < np.pi / 2):
+            raise ValueError(f"pressure_angle_rad must be in (0, pi/2), got {self.pressure_angle_rad!r}")
+        r = _pos("pitch_radius_mm", self.pitch_radius_mm)
+        if r <= m / 2:
+            raise ValueError(f"pitch_radius_mm must be > module_mm / 2 = {m / 2}, got {r!r}")
+        if self.variant not in HOB_VARIANTS:
+            raise ValueError(f"variant must be one of {HOB_VARIANTS}, got {self.variant!r}")
+        if self.apex_radius_mm <= 0:
+            raise ValueError("pitch_radius_mm too small: the thread-groove apex radius r_t would be <= 0")
+
+    @property
+    def lead_angle_rad(self) -> float:
+        """lambda, sin(lambda) = m / (2 r_h) (Table 5.1: 2.866 deg)."""
+        return float(np.arcsin(self.module_mm / (2 * self.pitch_radius_mm)))
+
+    @property
+    def lead_per_rad_mm(self) -> float:
+        """P_1 = m / (2 cos lambda) (single start; eq 4.40)."""
+        return float(self.module_mm / (2 * np.cos(self.lead_angle_rad)))
+
+    @property
+    def apex_radius_mm(self) -> float:
+        """r_t = r_h - (pi m / 4) / tan(alpha_n): radius of the groove apex (l = 0)."""
+        return float(self.pitch_radius_mm - (np.pi * self.module_mm / 4) / np.tan(self.pressure_angle_rad))
+
+    @property
+    def beta_rad(self) -> float:
+        """beta of eq 4.40 (the lead angle in the printed variant, 0 in the axial variant)."""
+        return self.lead_angle_rad if self.variant == "printed" else 0.0
+
+    def thread(self, side: int) -> "HobThread":
+        """The thread surface of eq 4.40: side +1 = upper sign (right side), -1 = lower sign."""
+        return HobThread(self, side)
+
+
+class HobThread(Surface):
+    """Hob thread surface r_1(l, phi) of seed 000 eq 4.40 in the hob frame S_1, with the
+    analytic derivatives of eq 4.41 (r_l, r_phi), 4.46 (r_ll = 0), 4.47, 4.48. Surface
+    parameters u = l (mm, along the straight profile line from the groove apex) and v = phi
+    (rad). The normal is unit(r_l x r_phi) (eq 4.41)."""
+
+    def __init__(self, hob: ZAHob, side: int):
+        if not isinstance(hob, ZAHob):
+            raise ValueError("hob must be a ZAHob")
+        if side not in (1, -1):
+            raise ValueError(f"side must be +1 (upper sign of eq 4.40) or -1 (lower sign), got {side!r}")
+        self.hob, self.side = hob, int(side)
+        a, b = hob.pressure_angle_rad, hob.beta_rad
+        self._ca, self._sa = np.cos(a), np.sin(a)
+        self._sb, self._cb = np.sin(b), np.cos(b)
+        self._rt, self._P = hob.apex_radius_mm, hob.lead_per_rad_mm
+
+    def _parts(self, l, p):
+        l, p = np.broadcast_arrays(np.asarray(l, float), np.asarray(p, float))
+        s = self.side
+        A = self._rt + l * self._ca
+        B = s * l * self._sa * self._sb
+        C = s * l * self._sa * self._cb
+        return l, p, A, B, C, np.cos(p), np.sin(p)
+
+    def position(self, l, p):
+        l, p, A, B, C, c, sn = self._parts(l, p)
+        return np.stack([A * c - B * sn, -A * sn - B * c, C - self._P * p], -1)
+
+    def evaluate(self, l, p) -> SurfacePoint:
+        l, p, A, B, C, c, sn = self._parts(l, p)
+        s = self.side
+        ca, Bl, Cl = self._ca, s * self._sa * self._sb, s * self._sa * self._cb  # dA/dl, dB/dl, dC/dl
+        z = np.zeros_like(l)
+        r = np.stack([A * c - B * sn, -A * sn - B * c, C - self._P * p], -1)
+        r_l = np.stack([ca * c - Bl * sn, -ca * sn - Bl * c, z + Cl], -1)
+        r_p = np.stack([-A * sn - B * c, -A * c + B * sn, z - self._P], -1)
+        r_lp = np.stack([-ca * sn - Bl * c, -ca * c + Bl * sn, z], -1)
+        r_pp = np.stack([-A * c + B * sn, A * sn + B * c, z], -1)
+        return SurfacePoint(r, r_l, r_p, np.zeros_like(r), r_lp, r_pp)
+
+    def principal(self, l, p) -> PrincipalCurvatures:
+        """k_f >= k_h and e_f, e_h of the thread (eq 4.42-4.45), signed for unit(r_l x r_phi)."""
+        return principal_curvatures(self.evaluate(l, p))
+
+
+class RotatedSurface(Surface):
+    """A surface turned by the rigid rotation R (3 x 3): r'(u, v) = R r(u, v)."""
+
+    def __init__(self, surface: Surface, R):
+        R = np.asarray(R, float)
+        if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-12):
+            raise ValueError("R must be a 3 x 3 rotation matrix")
+        self.surface, self.R = surface, R
+
+    def _rot(self, x):
+        return x @ self.R.T
+
+    def position(self, u, v):
+        return self._rot(self.surface.position(u, v))
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        p = self.surface.evaluate(u, v)
+        return SurfacePoint(*(self._rot(x) for x in (p.r, p.r_u, p.r_v, p.r_uu, p.r_uv, p.r_vv)))
+
+
+class SeedCurvatures(NamedTuple):
+    """Principal curvatures of the generated flank labelled as in seed 000 Tables 4.2-4.5, in
+    the thesis frame S_f.
+
+    k_s, e_s : the principal direction nearest the gear axis Z_f (along Z_f at mid-face), with
+        e_s . Z_f >= 0
+    k_q, e_q : the other one; e_q = n_out x e_s (n_out the normal pointing out of the tooth):
+        the orientation the printed tables use for both flanks (see the replication module)
+    Curvatures are signed w.r.t. ``normal`` = the hob normal unit(r_l x r_phi) of eq 4.41
+    carried into S_f (the tables' convention: k > 0 where the flank bends toward it).
+    normal_out : n_out; point : the flank point (mm) in S_f
+    k_s_seed, k_q_seed, sigma_seed : the same pair from the chapter's method (eq 4.33-4.39 with
+        the corrected signs, then 4.24-4.26; e_s nearest the hob direction e_f)
+    result : the :class:`gearrep.envelope.EnvelopeResult` (generation frame) with the statuses
+    """
+
+    k_s: np.ndarray
+    k_q: np.ndarray
+    e_s: np.ndarray
+    e_q: np.ndarray
+    normal: np.ndarray
+    normal_out: np.ndarray
+    point: np.ndarray
+    k_s_seed: np.ndarray
+    k_q_seed: np.ndarray
+    sigma_seed: np.ndarray
+    generated: GeneratedCurvatures
+    result: EnvelopeResult
+
+
+@dataclass(frozen=True)
+class GeneratedGear:
+    """One flank of the curvilinear-tooth gear generated by the ZA hob (module doc).
+
+    hob : :class:`ZAHob`
+    n_teeth : N of the work gear (>= 4)
+    R_c_mm : nominal radius of the circular-arc tooth trace (> 0); ``np.inf`` gives the spur-gear
+        limit, where the swivel becomes a translation along the gear axis and psi is that axial
+        feed in mm (Z_f = psi for arc_centre = -1)
+    side : thread side (+1 upper sign of eq 4.40, -1 lower sign); with arc_centre = -1,
+        +1 generates Sigma_2R (convex) and -1 Sigma_2L (concave): see :data:`FLANK_SIDE`
+    arc_centre : side of the arc centre, -1 (default, the tables' convention) or +1
+    tol, maxiter : Newton settings of the meshing solve (tol on the meshing residual, mm, for
+        R_c <= 100 mm; see :attr:`effective_tol`)
+    """
+
+    hob: ZAHob = field(default_factory=ZAHob)
+    n_teeth: int = 20
+    R_c_mm: float = 110.0
+    side: int = 1
+    arc_centre: int = -1
+    tol: float = 1e-12
+    maxiter: int = 50
+
+    def __post_init__(self):
+        if not isinstance(self.hob, ZAHob):
+            raise ValueError("hob must be a ZAHob")
+        if int(self.n_teeth) != self.n_teeth or self.n_teeth < 4:
+            raise ValueError(f"n_teeth must be an integer >= 4, got {self.n_teeth!r}")
+        if not (float(self.R_c_mm) > 0 and not np.isnan(float(self.R_c_mm))):
+            raise ValueError(f"R_c_mm must be > 0 (np.inf for the spur-gear limit), got {self.R_c_mm!r}")
+        if self.side not in (1, -1):
+            raise ValueError(f"side must be +1 or -1, got {self.side!r}")
+        if self.arc_centre not in (1, -1):
+            raise ValueError(f"arc_centre must be +1 or -1, got {self.arc_centre!r}")
+        _pos("tol", self.tol)
+        if int(self.maxiter) < 1:
+            raise ValueError(f"maxiter must be >= 1, got {self.maxiter!r}")
+
+    @classmethod
+    def flank(cls, name: str, **kw) -> "GeneratedGear":
+        """Sigma_2R (``name="R"``) or Sigma_2L (``"L"``) of seed 000 with arc_centre = -1."""
+        if name not in FLANK_SIDE:
+            raise ValueError(f"name must be 'R' or 'L', got {name!r}")
+        return cls(side=FLANK_SIDE[name], **kw)
+
+    # ---- set-up ---------------------------------------------------------------------------
+    @property
+    def pitch_radius_mm(self) -> float:
+        return self.hob.module_mm * self.n_teeth / 2
+
+    @property
+    def centre_distance_mm(self) -> float:
+        """E = m N / 2 + r_h (hob cutting at the standard centre distance, no profile shift)."""
+        return self.pitch_radius_mm + self.hob.pitch_radius_mm
+
+    @property
+    def frame_rotation_rad(self) -> float:
+        """Angle (about Z) from the generation frame S_2 to the thesis frame S_f: pi / N."""
+        return float(np.pi / self.n_teeth)
+
+    @property
+    def to_thesis(self) -> np.ndarray:
+        """3 x 3 rotation S_2 -> S_f."""
+        a = self.frame_rotation_rad
+        c, s = np.cos(a), np.sin(a)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+    def thread(self) -> HobThread:
+        return self.hob.thread(self.side)
+
+    def motion(self) -> ChainMotion:
+        """M_21(theta, psi) of the module doc (hob frame -> generation frame S_2)."""
+        E, lam = self.centre_distance_mm, self.hob.lead_angle_rad
+        if np.isinf(self.R_c_mm):  # spur-gear limit: the swivel becomes an axial feed (psi in mm)
+            swivel = translation((0.0, 0.0, -float(self.arc_centre)), [0.0, 1.0])
+        else:
+            swivel = rotation((1, 0, 0), [0.0, 1.0], point=(E, self.arc_centre * self.R_c_mm, 0.0))  # swivel psi
+        return ChainMotion([
+            rotation((0, 0, 1), [1.0 / self.n_teeth, 0.0]),  # work gear turns theta / N
+            swivel,
+            translation((1, 0, 0), [0.0, 0.0], offset=E),  # centre distance
+            rotation((1, 0, 0), [0.0, 0.0], offset=lam - np.pi / 2),  # hob axis set at the lead angle
+            rotation((0, 0, 1), [1.0, 0.0]),  # hob spin theta
+        ], names=("theta", "psi"))
+
+    @property
+    def effective_tol(self) -> float:
+        """Meshing-residual tolerance actually used: ``tol`` * max(1, R_c / 100 mm). The psi
+        equation of meshing is a velocity with lever arm ~R_c, so its rounding floor grows like
+        eps * R_c (about 1e-12 mm at R_c = 5000 mm); R_c = inf (axial feed) is not scaled."""
+        scale = 1.0 if np.isinf(self.R_c_mm) else max(1.0, float(self.R_c_mm) / 100.0)
+        return self.tol * scale
+
+    def envelope(self) -> Envelope:
+        """The two-parameter envelope with free (l, psi) and solved (phi, theta)."""
+        return Envelope(self.thread(), self.motion(), free=("u", "psi"), tol=self.effective_tol, maxiter=self.maxiter)
+
+    DEFAULT_GUESS = (np.pi, 0.0)  #: (phi, theta) start: the thread at the work gear's tooth space
+
+    # ---- points ---------------------------------------------------------------------------
+    def solve(self, l_mm, psi_rad, guess=None) -> EnvelopeResult:
+        """Generated points at (l, psi) (broadcast, flattened), in the GENERATION frame S_2.
+
+        ``guess`` for (phi, theta): by default the mid-face solution, itself started from the
+        spur-gear limit (R_c = inf) solved from (pi, 0) (a far start can reach another branch
+        of the meshing equations for large R_c); away from mid-face continued in psi when the
+        direct start fails. Every converged point is verified (:meth:`verify`): a root outside
+        the generated tooth (radial band r_p +- 2.5 m, angular sector +-pi/N about X_f) gets
+        status WRONG_ROOT, never passed on as converged."""
+        env = self.envelope()
+        l, ps = np.broadcast_arrays(np.asarray(l_mm, float), np.asarray(psi_rad, float))
+        lf, pf = l.reshape(-1), ps.reshape(-1)
+        if guess is not None:
+            return self.verify(env.solve(lf, pf, guess=guess))
+        x0 = self._mid_solution(env, lf)
+        rec = env.solve(lf, pf, guess=x0)
+        if not np.all(rec.converged):
+            rec = self._march(env, lf, pf, x0)
+        return self.verify(rec)
+
+    def _mid_solution(self, env, l):
+        """(phi, theta) at (l, psi = 0): spur limit from (pi, 0), then this R_c from there."""
+        S = list(env.solved)
+        spur = env if np.isinf(self.R_c_mm) else replace(self, R_c_mm=np.inf).envelope()
+        r0 = spur.solve(l, 0 * l, guess=self.DEFAULT_GUESS)
+        x = np.where(r0.converged[:, None], r0.params[:, S], np.asarray(self.DEFAULT_GUESS))
+        if not np.isinf(self.R_c_mm):
+            r1 = env.solve(l, 0 * l, guess=x)
+            x = np.where(r1.converged[:, None], r1.params[:, S], x)
+        return x
+
+    def _march(self, env, l, ps, x, step=0.02):
+        """Continuation in psi from mid-face (warm starts), for large |psi|."""
+        nstep = max(1, int(np.ceil(np.max(np.abs(ps)) / step)))
+        for t in np.linspace(0, 1, nstep + 1)[1:]:
+            rec = env.solve(l, t * ps, guess=x)
+            x = np.where(rec.converged[:, None], rec.params[:, list(env.solved)], x)
+        return rec
+
+    def verify(self, rec: EnvelopeResult) -> EnvelopeResult:
+        """Mark converged roots outside the generated tooth as WRONG_ROOT (see :meth:`solve`)."""
+        pt = rec.point @ self.to_thesis.T
+        r = np.hypot(pt[:, 0], pt[:, 1])
+        ang = np.arctan2(pt[:, 1], pt[:, 0])
+        m = self.hob.module_mm
+        Rc = self.R_c_mm
+        # the tooth's centre line leaves X_f along the arc trace: circumferential offset R_c - sqrt(R_c^2 - Z^2)
+        drift = 0.0 if np.isinf(Rc) else (Rc - np.sqrt(np.maximum(Rc**2 - pt[:, 2] ** 2, 0.0))) / self.pitch_radius_mm
+        inside = (np.abs(r - self.pitch_radius_mm) <= 2.5 * m) & (np.abs(ang) <= np.pi / self.n_teeth + drift)
+        bad = rec.converged & ~inside
+        if np.any(bad):
+            rec = replace(rec, solve=rec.solve.with_status(bad, Status.WRONG_ROOT))
+        return rec
+
+    def points(self, l_mm, psi_rad, guess=None):
+        """(point, hob normal, EnvelopeResult) with point and normal in the thesis frame S_f."""
+        rec = self.solve(l_mm, psi_rad, guess)
+        R = self.to_thesis
+        return rec.point @ R.T, rec.normal @ R.T, rec
+
+    def l_at_radius(self, radius_mm, psi_rad=0.0, l0_mm=6.0) -> SolveResult:
+        """The l whose generated point at psi lies at distance ``radius_mm`` from the gear axis
+        (e.g. the tip r_a = 33 mm: first row of Tables 4.2-4.5). Newton on l (one unknown)."""
+        r_target, ps = np.broadcast_arrays(np.atleast_1d(np.asarray(radius_mm, float)),
+                                           np.atleast_1d(np.asarray(psi_rad, float)))
+        r_target, ps = r_target.reshape(-1), ps.reshape(-1)
+        if np.any(~np.isfinite(r_target) | (r_target <= 0)):
+            raise ValueError(f"radius_mm must be finite and > 0, got {radius_mm!r}")
+
+        def fun(x, idx):
+            rec = self.solve(x[:, 0], ps[idx])
+            r = np.hypot(rec.point[:, 0], rec.point[:, 1])
+            out = (r - r_target[idx])[:, None]
+            out[~rec.converged] = np.nan
+            return out
+
+        return newton(fun, np.full((r_target.size, 1), float(l0_mm)), tol=1e-11, rows=True)
+
+    # ---- curvatures -----------------------------------------------------------------------
+    def curvatures(self, l_mm, psi_rad=0.0, guess=None) -> SeedCurvatures:
+        """Principal curvatures and directions of the generated flank at (l, psi), labelled
+        and oriented as in seed 000 Tables 4.2-4.5 (see :class:`SeedCurvatures`), from
+        K_2 = K_1 + C E^-1 C^T (:func:`gearrep.curvature_relations.generated_curvatures`) and,
+        independently, from the chapter's eq 4.33-4.39 (corrected) and 4.24-4.26."""
+        rec = self.solve(l_mm, psi_rad, guess)
+        env = self.envelope()
+        gc = generated_curvatures(env, rec.params)
+        R = self.to_thesis
+        e1, e2, n = gc.e1 @ R.T, gc.e2 @ R.T, gc.normal @ R.T
+        pt = rec.point @ R.T
+        # e_s: the principal direction nearest Z_f
+        use1 = np.abs(e1[:, 2]) >= np.abs(e2[:, 2])
+        k_s = np.where(use1, gc.k1, gc.k2)
+        k_q = np.where(use1, gc.k2, gc.k1)
+        e_s = np.where(use1[:, None], e1, e2)
+        e_s = e_s * np.where(e_s[:, 2] < 0, -1.0, 1.0)[:, None]
+        n_out = self.outward(pt, n)
+        e_q = np.cross(n_out, e_s)
+        # the chapter's method (eq 4.33-4.39 corrected, 4.24-4.26)
+        b = seed000_system(env, rec.params)
+        b11, b12, b22 = seed000_b_coefficients(b)
+        ks_b, kq_b, sig_b = seed000_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
+        return SeedCurvatures(k_s, k_q, e_s, e_q, n, n_out, pt, ks_b, kq_b, sig_b, gc, rec)
+
+    @staticmethod
+    def outward(point, normal) -> np.ndarray:
+        """+-normal pointing out of the tooth (away from its centre line X_f) at thesis-frame
+        points: the sign of (polar angle of the point) * (normal . e_theta)."""
+        point, normal = np.asarray(point, float), np.asarray(normal, float)
+        ang = np.arctan2(point[..., 1], point[..., 0])
+        e_th = np.stack([-np.sin(ang), np.cos(ang), np.zeros_like(ang)], -1)
+        s = np.sign(ang * np.sum(normal * e_th, -1))
+        return normal * np.where(s == 0, 1.0, s)[..., None]
+
+    def surface(self, frame: str = "thesis", fd_step=(1e-3, 1e-4)) -> Surface:
+        """The generated flank as a :class:`gearrep.surfaces.base.Surface` of (l, psi) (for
+        direct differential geometry and TCA): analytic first derivatives, second derivatives
+        with analytic normal components (:class:`gearrep.envelope.EnvelopeSurface`). ``frame``
+        "thesis" (S_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
+        s = EnvelopeSurface(self.envelope(), self.DEFAULT_GUESS, fd_step)
+        if frame == "generation":
+            return s
+        if frame == "thesis":
+            return RotatedSurface(s, self.to_thesis)
+        raise ValueError(f"frame must be 'thesis' or 'generation', got {frame!r}")
