@@ -25,15 +25,19 @@ def smk(cwd, *args, timeout=600):
                           text=True, timeout=timeout)
 
 
-@pytest.mark.parametrize("key, bad", [("tol", "-1.0e-12"), ("maxiter", "0")])
-def test_bad_config_stops_before_any_job(wf, key, bad):
-    cfg = (wf / "config" / "config.yaml").read_text()
-    lines = [ln if not ln.strip().startswith(f"{key}:") else f"  {key}: {bad}" for ln in cfg.splitlines()]
-    (wf / "config" / "config.yaml").write_text("\n".join(lines) + "\n")
+@pytest.mark.parametrize("section, key, bad", [("thesis", "tol", -1.0e-12), ("catt", "maxiter", 0),
+                                               ("bench", "repeats", 0)])
+def test_bad_config_stops_before_any_job(wf, section, key, bad):
+    import yaml
+
+    f = wf / "config" / "config.yaml"
+    cfg = yaml.safe_load(f.read_text())
+    cfg[section][key] = bad
+    f.write_text(yaml.safe_dump(cfg))
     out = smk(wf, "--cores", "1")
     assert out.returncode != 0
     text = out.stdout + out.stderr
-    assert key in text and "solver" in text, text[-2000:]
+    assert key in text and section in text, text[-2000:]
     assert not (wf / "results").exists(), "nothing may be written on a bad config"
 
 

@@ -11,11 +11,8 @@ TSENG_TCA_FIGURES = {
     "hob": "ke_vs_hob_radius.png",
     "ab": "a_over_b_vs_R_c.png",
 }
-
-
-def tseng_tca_file(name):
-    return f"{TSENG_KE_DIR if name in TSENG_TCA_KE else TSENG_TCA_DIR}/{name}.csv"
-
+TSENG_TCA_FILES = {name: f"{TSENG_KE_DIR if name in TSENG_TCA_KE else TSENG_TCA_DIR}/{name}.csv"
+                   for name in TSENG_TCA_TABLES}
 
 TSENG_TCA_LIB = lib("replications.tseng_tca", "published", "checks", "curvature", "curvature_relations", "ellipse",
                     "envelope", "solve", "surfaces.hob", "units")
@@ -26,7 +23,7 @@ rule tseng_tca_run:
         code=TSENG_TCA_LIB,
         params=published_files("params_000_*.csv"),
     output:
-        **{name: tseng_tca_file(name) for name in TSENG_TCA_TABLES},
+        **{name: TSENG_TCA_FILES[name] for name in TSENG_TCA_TABLES},
     params:
         settings=config.get("tseng_tca", {}),  # a changed setting reruns the job (params are tracked)
     log:
@@ -41,7 +38,7 @@ rule tseng_tca_run:
 
 rule tseng_tca_figures:
     input:
-        tables=[tseng_tca_file(name) for name in TSENG_TCA_KE + ["ke_vs_hob_radius", "ellipse_ratio"]],
+        tables=[TSENG_TCA_FILES[name] for name in TSENG_TCA_KE + ["ke_vs_hob_radius", "ellipse_ratio"]],
         published=published_files("values_000_T5.*.csv") + published_files("values_000_text.csv"),
         code=lib("plotting", "published"),
     output:
@@ -56,7 +53,7 @@ rule tseng_tca_figures:
 
 rule tseng_tca_checks:
     input:
-        tables=[tseng_tca_file(name) for name in TSENG_TCA_TABLES],
+        tables=[TSENG_TCA_FILES[name] for name in TSENG_TCA_TABLES],
         published=published_files("*_000_*.csv") + published_files("claims_000.csv"),
         code=TSENG_TCA_LIB,
     output:
@@ -72,7 +69,7 @@ rule tseng_tca_checks:
 rule tseng_tca_notebook:
     input:
         checks="results/checks/tseng_tca.csv",
-        tables=[tseng_tca_file(name) for name in TSENG_TCA_TABLES],
+        tables=[TSENG_TCA_FILES[name] for name in TSENG_TCA_TABLES],
         figures=[f"{TSENG_TCA_DIR}/figures/{v}" for v in TSENG_TCA_FIGURES.values()],
         published=published_files("values_000_T5.*.csv") + published_files("values_000_text.csv"),
         benchmark="results/benchmarks/tseng_tca_run.tsv",
@@ -88,7 +85,7 @@ rule tseng_tca_notebook:
 
 
 CHECK_FILES.append("results/checks/tseng_tca.csv")
-FINAL_OUTPUTS.extend([tseng_tca_file(name) for name in TSENG_TCA_TABLES])
+FINAL_OUTPUTS.extend([TSENG_TCA_FILES[name] for name in TSENG_TCA_TABLES])
 FINAL_OUTPUTS.extend([f"{TSENG_TCA_DIR}/figures/{v}" for v in TSENG_TCA_FIGURES.values()])
 REPORT_FIGURES.extend([f"{TSENG_TCA_DIR}/figures/{TSENG_TCA_FIGURES['ke']}",
                        f"{TSENG_TCA_DIR}/figures/{TSENG_TCA_FIGURES['zp']}"])
