@@ -383,6 +383,13 @@ def _inv_rigid(M):
     return Mi
 
 
+def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
+    """:meth:`Envelope.local` without input validation, for use inside a solver's iterations: a
+    non-finite row of ``q`` (n, 2+k) gives non-finite outputs in that row (which
+    :func:`gearrep.solve.newton` reports as DIVERGED) instead of raising for the whole batch."""
+    return _local(tool, motion, np.asarray(q, dtype=float))
+
+
 def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     k = motion.n_params
     u, v, m = q[:, 0], q[:, 1], q[:, 2:]

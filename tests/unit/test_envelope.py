@@ -298,3 +298,15 @@ def test_validation():
         Envelope(env.tool, env.motion, lower=[0.0, 1.0, 2.0])
     with pytest.raises(ValueError, match="m must"):
         torus_motion(**TORUS).matrices(np.zeros((2, 3)))
+
+
+def test_local_geometry_passes_nonfinite_rows_through():
+    from gearrep.envelope import local_geometry
+
+    env, _, _, _ = involute_case()
+    q = np.array([[0.5, 0.1, 0.2], [np.nan, 0.1, 0.2]])
+    loc = local_geometry(env.tool, env.motion, q)
+    np.testing.assert_array_equal(loc.f[0], env.local(q[:1]).f[0])
+    assert not np.all(np.isfinite(loc.f[1]))
+    with pytest.raises(ValueError, match="finite"):
+        env.local(q)

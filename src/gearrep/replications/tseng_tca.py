@@ -72,7 +72,7 @@ from .. import checks as _checks
 from ..curvature import PrincipalCurvatures, with_opposite_normal
 from ..curvature_relations import generated_curvatures
 from ..ellipse import elastic_ellipse_at
-from ..envelope import _local
+from ..envelope import local_geometry
 from ..published import parse_row
 from ..solve import SolveResult, Status, newton, status_names
 from ..surfaces.hob import GeneratedGear, ZAHob
@@ -239,7 +239,7 @@ def make_pair(R_cp_mm: float, R_cg_mm: float, assembly: Assembly | None = None,
 def _member(flank: Flank, q):
     """Point, d point/dq, hob normal, d normal/dq (generation frame S_2) and the meshing
     functions with their Jacobian at q = (l, phi, theta, psi) (n, 4)."""
-    loc = _local(flank.tool, flank.motion, q)
+    loc = local_geometry(flank.tool, flank.motion, q)
     R = loc.M[:, :3, :3]
     p = loc.tool
     r = np.einsum("nab,nb->na", R, p.r) + loc.M[:, :3, 3]
