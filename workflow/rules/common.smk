@@ -18,13 +18,26 @@ def _module_file(parts):
     return f if f.is_file() else None
 
 
+_IMPORTS = {}
+
+
 def _gearrep_imports(parts):
-    """gearrep modules imported by module `parts` (absolute and relative imports)."""
+    """gearrep modules imported by module `parts` (absolute and relative imports); parsed once."""
+    key = tuple(parts)
+    if key not in _IMPORTS:
+        _IMPORTS[key] = _parse_gearrep_imports(list(parts))
+    return _IMPORTS[key]
+
+
+def _parse_gearrep_imports(parts):
     f = _module_file(parts)
     is_pkg = f.name == "__init__.py"
     package = list(parts) if is_pkg else list(parts[:-1])
     found = []
-    for node in ast.walk(ast.parse(f.read_text(), str(f))):
+    text = f.read_text()
+    if "import" not in text:
+        return []
+    for node in ast.walk(ast.parse(text, str(f))):
         if isinstance(node, ast.Import):
             found += [a.name.split(".")[1:] for a in node.names if a.name.split(".")[0] == "gearrep"]
         elif isinstance(node, ast.ImportFrom):
