@@ -143,3 +143,26 @@ def test_check_csv_round_trip_keeps_seed_text_and_bad_seeds_are_rejected(tmp_pat
     checks.validate_checks(back)
     with pytest.raises(ValueError, match="three-digit string"):
         checks.validate_checks(pd.read_csv(f, keep_default_na=False, na_values=[""]))
+
+
+def test_normal_derivatives_match_finite_differences():
+    from gearrep.surfaces.analytic import Torus
+
+    surf = Torus(c=5.0, a=1.5)
+    u, v = np.array([0.3, 1.2]), np.array([0.7, -2.0])
+    n, n_u, n_v = tca.normal_derivatives(surf.evaluate(u, v), -1)
+    h = 1e-6
+    for d, (du, dv) in ((n_u, (h, 0.0)), (n_v, (0.0, h))):
+        plus = surf.evaluate(u + du, v + dv).normal
+        minus = surf.evaluate(u - du, v - dv).normal
+        np.testing.assert_allclose(d, -(plus - minus) / (2 * h), atol=1e-8)
+    np.testing.assert_allclose(n, -surf.evaluate(u, v).normal, atol=1e-15)
+
+
+def test_catt_turn_over_is_a_half_turn_about_x():
+    from gearrep.surfaces.catt import turn_over
+
+    T = turn_over()
+    np.testing.assert_array_equal(T @ np.array([1.0, 2.0, 3.0]), [1.0, -2.0, -3.0])
+    np.testing.assert_allclose(T @ T, np.eye(3))
+    assert np.linalg.det(T) == pytest.approx(1.0)  # a rotation, not a mirror
