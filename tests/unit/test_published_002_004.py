@@ -18,10 +18,11 @@ import pytest
 from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
 from gearrep.units import KNOWN_UNITS as UNITS
 
+from conftest import seeds_dir
 from _published_format import printed_precision as _precision, read_text_csv as _read
 
 PUB = Path(__file__).parents[2] / "data" / "published"
-SEED_DIR = Path(__file__).parents[3] / "shared" / "seeds"
+SEED_DIR = seeds_dir()
 SEED_FILES = {"002": "002_f0171829ee188968.txt", "004": "004_de0fa252fc3e91a7.txt"}
 
 
