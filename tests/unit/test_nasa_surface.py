@@ -1,0 +1,93 @@
+"""gearrep.surfaces.novikov: closed-form rack-generated flanks (seed 002 eq 2.2.6-2.3.6) against the
+library's envelope solve and EnvelopeSurface derivatives."""
+
+import numpy as np
+import pytest
+
+from gearrep.surfaces.base import fd_derivatives
+from gearrep.surfaces.novikov import RackGeneratedFlank, pitch_radius
+from gearrep.units import DEG
+
+
+@pytest.mark.parametrize("side, beta", [(-1, 19.948 * DEG), (1, 19.948 * DEG), (-1, -19.948 * DEG), (1, -10 * DEG)])
+def test_closed_form_matches_envelope(side, beta):
+    f = RackGeneratedFlank(0.425 if side < 0 else 0.394, 25 * DEG, 0.18126, beta, 1.81 if side < 0 else 8.19, side)
+    u = np.array([-0.12, 0.0, 0.07, 0.15])
+    th = np.array([0.5, -1.0, 2.0, 0.0])
+    rec = f.solve(u, th)
+    assert np.all(rec.converged)
+    e = f.evaluate(u, th)
+    np.testing.assert_allclose(e.r, rec.point, atol=1e-12)
+    phi = f.rolling_angle(u, th)[0]
+    np.testing.assert_allclose(phi, rec.param("phi"), atol=1e-13)
+    # meshing equation satisfied exactly at the closed-form angle
+    q = np.column_stack([u, th, phi])
+    assert np.max(np.abs(f.envelope.meshing(q))) < 1e-13
+    es = f._surface.evaluate(u, th)  # EnvelopeSurface: analytic first, FD-tangential second derivatives
+    for a, b in ((e.r_u, es.r_u), (e.r_v, es.r_v)):
+        np.testing.assert_allclose(a, b, atol=1e-13)
+    fd = fd_derivatives(f.position, u, th, 1e-3, 1e-3)
+    for a, b in ((e.r_uu, fd.r_uu), (e.r_uv, fd.r_uv), (e.r_vv, fd.r_vv)):
+        np.testing.assert_allclose(a, b, atol=1e-7)
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="outward_sign"):
+        RackGeneratedFlank(0.4, 25 * DEG, 0.18, 0.3, 2.0, -1, outward_sign=0)
+    with pytest.raises(ValueError, match="u_range"):
+        RackGeneratedFlank(0.4, 25 * DEG, 0.18, 0.3, 2.0, -1, u_range=(1.0, -1.0))
+    with pytest.raises(ValueError, match="P_n"):
+        pitch_radius(17, 0.0, 0.3)
+    with pytest.raises(ValueError, match="N"):
+        pitch_radius(1.5, 5.0, 0.3)
+    assert pitch_radius(17, 5.0, np.arccos(0.94)) == pytest.approx(17 / 9.4)
+
+
+def test_unplunged_worm_grinds_the_rack_generated_pinion():
+    """Without plunging the worm's and pinion's racks coincide, so the two-parameter envelope is the
+    rack-generated pinion (module doc of WormGeneratedPinion); plunging removes material at the ends."""
+    from gearrep.solve import newton
+    from gearrep.surfaces.novikov import WormGeneratedPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    l, rp, a = np.cos(an) / Pn, pitch_radius(17, Pn, beta), Pn / (2 * 5.88)
+    pin = RackGeneratedFlank(a, an, l, beta, rp, -1)
+    psi, ll = np.meshgrid(np.linspace(-0.2, 0.2, 3), np.linspace(-0.8, 0.8, 3))
+    for a_pl, lo, hi in ((0.0, 0.0, 1e-12), (0.00139, 1e-5, 2e-3)):
+        w = WormGeneratedPinion(a, an, l, beta, rp, Pn, 3.82, a_pl)
+        rec = w.solve(psi.ravel(), ll.ravel())
+        assert np.all(rec.converged)
+
+        def F(x, idx, pts=rec.point):
+            return pin.evaluate(x[:, 0], x[:, 1]).r - pts[idx]
+
+        x0 = np.column_stack([np.zeros(len(rec.point)), rec.point[:, 2] / np.cos(beta)])
+        # foot of the normal from the ground point on the rack-generated pinion: F parallel to its normal
+        # (two components of F x n vanish), then the gap is |F . n|
+        res = newton(lambda x, idx: np.cross(F(x, idx), pin.evaluate(x[:, 0], x[:, 1]).normal)[:, :2], x0,
+                     tol=1e-13, rows=True)
+        assert np.all(res.converged)
+        gap = np.abs(np.einsum("na,na->n", F(res.x, np.arange(len(x0))), pin.evaluate(res.x[:, 0], res.x[:, 1]).normal))
+        mid = np.abs(ll.ravel()) < 1e-12
+        assert np.all(gap[mid] <= 1e-12)
+        assert np.all(gap[~mid] >= lo) and np.all(gap <= hi)
+
+
+def test_normal_part_surface_matches_envelope_surface():
+    """NormalPartSurface: same r, r_u, r_v as EnvelopeSurface and the same normal components of the
+    second derivatives (hence the same unit-normal derivatives and curvatures)."""
+    from gearrep.curvature import principal_curvatures
+    from gearrep.surfaces.novikov import WormGeneratedPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    w = WormGeneratedPinion(Pn / (2 * 5.88), an, np.cos(an) / Pn, beta, pitch_radius(17, Pn, beta), Pn, 3.82, 0.00139)
+    psi, ll = np.array([-0.1, 0.0, 0.15]), np.array([0.5, -0.7, 1.2])
+    full, light = w.evaluate(psi, ll), w.light().evaluate(psi, ll)
+    for a, b in ((full.r, light.r), (full.r_u, light.r_u), (full.r_v, light.r_v)):
+        np.testing.assert_allclose(a, b, atol=1e-12)
+    n = full.normal
+    for a, b in ((full.r_uu, light.r_uu), (full.r_uv, light.r_uv), (full.r_vv, light.r_vv)):
+        np.testing.assert_allclose(np.sum(a * n, -1), np.sum(b * n, -1), rtol=1e-7, atol=1e-9)
+    pf, pl = principal_curvatures(full), principal_curvatures(light)
+    np.testing.assert_allclose([pf.k1, pf.k2], [pl.k1, pl.k2], rtol=1e-7, atol=1e-9)
+    assert w.light().outward_sign == w.outward_sign
