@@ -103,7 +103,33 @@ def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None,
 
 
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
-    """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask."""
+    """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask.
+
+    Square 2x2 systems (the reduced TCA) take a closed form: singular values from the
+    rotation/reflection split of the matrix (s1 = Q + R, s2 = |det| / s1 with
+    Q = |((a+d)/2, (c-b)/2)|, R = |((a-d)/2, (c+b)/2)|) and the step from the adjugate; rows found
+    singular go through the SVD so that they get the same pseudo-inverse step."""
+    if J.shape[1:] == (2, 2):
+        return _step_2x2(J, F, rcond)
+    return _svd_step(J, F, rcond)
+
+
+def _step_2x2(J, F, rcond):
+    a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
+    s1 = np.hypot(0.5 * (a + d), 0.5 * (c - b)) + np.hypot(0.5 * (a - d), 0.5 * (c + b))
+    det = a * d - b * c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s2 = np.where(s1 > 0, np.abs(det) / s1, 0.0)
+        singular = ~(s2 > rcond * s1)
+        step = -np.stack([d * F[:, 0] - b * F[:, 1], a * F[:, 1] - c * F[:, 0]], axis=-1) / det[:, None]
+    sv = np.stack([s1, s2], axis=-1)
+    if np.any(singular):
+        idx = np.flatnonzero(singular)
+        step[idx], _, sv[idx] = _svd_step(J[idx], F[idx], rcond)
+    return step, singular, sv
+
+
+def _svd_step(J, F, rcond):
     U, s, Vt = np.linalg.svd(J, full_matrices=False)
     smax = s[:, :1]
     singular = ~(s[:, -1] > rcond * smax[:, 0])

@@ -113,3 +113,24 @@ def test_condition_number_of_the_last_jacobian_is_reported():
     solved = newton(fun, np.array([[2.0, 3.0]]), tol=1e-12)  # start is the root: no iteration taken
     assert solved.iterations[0] == 0 and np.isnan(solved.condition[0])
     assert np.array_equal(res.with_status([True, False], Status.WRONG_ROOT).condition, res.condition)
+
+
+def test_closed_form_2x2_step_matches_the_svd_step():
+    from gearrep.solve import _step_2x2, _svd_step
+
+    rng = np.random.default_rng(7)
+    J = rng.normal(size=(400, 2, 2)) * 10.0 ** rng.uniform(-4, 4, size=(400, 1, 1))
+    J[:50, 1] = 3.0 * J[:50, 0]  # exactly singular rows
+    J[50:60, 1] = 3.0 * J[50:60, 0]
+    J[50:60, 1, 1] += 1e-9 * np.abs(J[50:60, 0]).max(axis=-1)  # condition ~1e9
+    F = rng.normal(size=(400, 2))
+    d1, sing1, s1 = _step_2x2(J, F, 1e-13)
+    d2, sing2, s2 = _svd_step(J, F, 1e-13)
+    np.testing.assert_array_equal(sing1, sing2)
+    assert sing1[:50].all() and not sing1[50:].any()
+    # singular values agree to rounding relative to the largest one (the SVD's own accuracy)
+    assert np.all(np.abs(s1 - s2) <= 1e-13 * s2[:, :1] + 1e-12 * s2)
+    ok = ~sing1
+    np.testing.assert_allclose(d1[ok][10:], d2[ok][10:], rtol=1e-9)  # well-conditioned rows
+    np.testing.assert_allclose(d1[50:60], d2[50:60], rtol=1e-5)  # condition ~1e9: same step to its accuracy
+    np.testing.assert_array_equal(d1[:50], d2[:50])  # singular rows: the SVD pseudo-inverse step itself

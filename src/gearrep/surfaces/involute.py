@@ -493,22 +493,22 @@ class InvoluteFlank(Surface):
         u, v = np.broadcast_arrays(u, v)
         psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
         c, s = np.cos(psi), np.sin(psi)
-        z = np.zeros_like(u)
-        one = np.ones_like(u)
-        er = np.stack([c, s, z], axis=-1)
-        et = np.stack([-s, c, z], axis=-1)
-        k = np.stack([z, z, one], axis=-1)
-        U = u[..., None]
+        # the six vectors are written component by component into one array (no stacking)
+        out = np.zeros((6,) + u.shape + (3,))
+        r, r_u, r_v, r_uu, r_uv, r_vv = out
 
-        def comb(a, b):
-            return a[..., None] * er + b[..., None] * et
+        def put(vec, a, b):  # vec <- a e_r + b e_t in the x, y components
+            vec[..., 0] = a * c - b * s
+            vec[..., 1] = a * s + b * c
 
-        r = U * er + v[..., None] * k
-        r_u = comb(one, u * pu)
-        r_v = comb(z, u * pv) + k
-        r_uu = comb(-u * pu * pu, 2 * pu + u * puu)
-        r_uv = comb(-u * pu * pv, pv + u * puv)
-        r_vv = comb(-u * pv * pv, u * pvv)
+        put(r, u, 0.0)
+        r[..., 2] = v
+        put(r_u, 1.0, u * pu)
+        put(r_v, 0.0, u * pv)
+        r_v[..., 2] = 1.0
+        put(r_uu, -u * pu * pu, 2 * pu + u * puu)
+        put(r_uv, -u * pu * pv, pv + u * puv)
+        put(r_vv, -u * pv * pv, u * pvv)
         return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
 
     def outward_normal(self, u, v) -> np.ndarray:
