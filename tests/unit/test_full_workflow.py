@@ -59,6 +59,21 @@ def test_default_target_builds_scorecard_report_and_every_notebook(run):
     assert "<img" in page or not names  # key figures are embedded once replications add them
 
 
+def test_readme_counts_are_the_scorecard_counts(run):
+    """The README's "Results at a glance" table must not drift from what the workflow computes."""
+    card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str})
+    counts = card.groupby(["seed", "status"]).size()
+    cols = ["reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed"]
+    text = (ROOT / "README.md").read_text()
+    block = text.split("## Results at a glance", 1)[1].split("\n## ", 1)[0]
+    rows = [ln.split("|")[1:-1] for ln in block.splitlines() if re.match(r"^\| 00\d \|", ln)]
+    assert {r[0].strip() for r in rows} == {"000", "002", "003", "004"}
+    for r in rows:
+        seed = r[0].strip()
+        got = [int(counts.get((seed, c), 0)) for c in cols]
+        assert [int(x) for x in r[1:6]] == got, f"README row {seed}: {r[1:6]} but the scorecard has {got}"
+
+
 def test_rendered_notebooks_have_no_errors_and_a_heading_per_check_source(run):
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
     for name in notebooks(run):
