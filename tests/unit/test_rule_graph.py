@@ -77,11 +77,15 @@ def rule_sources() -> dict[str, Path]:
     return out
 
 
+SCRIPT_MODULES = {p.stem for p in (ROOT / "workflow" / "scripts").glob("*.py")}
+
+
 class _GearrepFinder(modulefinder.ModuleFinder):
-    """modulefinder restricted to gearrep: other top-level packages are not followed."""
+    """modulefinder restricted to gearrep and the helper modules beside the scripts (which
+    Snakemake puts on sys.path): other top-level packages are not followed."""
 
     def import_hook(self, name, caller=None, fromlist=None, level=-1):
-        if level <= 0 and name.split(".")[0] != "gearrep":
+        if level <= 0 and name.split(".")[0] not in ("gearrep", *SCRIPT_MODULES):
             return None
         return super().import_hook(name, caller, fromlist, level)
 
@@ -94,7 +98,7 @@ def gearrep_files(source: Path, extra_modules=()) -> set[str]:
         code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
         code = "\n".join(ln for ln in code.splitlines() if not ln.lstrip().startswith(("%", "!")))
     code += "".join(f"\nimport {m}" for m in extra_modules)
-    finder = _GearrepFinder(path=[str(SRC)] + sys.path)
+    finder = _GearrepFinder(path=[str(SRC), str(ROOT / "workflow" / "scripts")] + sys.path)
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d) / f"{source.stem}.py"
         tmp.write_text(code)

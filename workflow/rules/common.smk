@@ -69,6 +69,10 @@ def lib(*modules):
     return sorted(str(_module_file(list(k)).relative_to(workflow.basedir)) for k in seen)
 
 
+#: I/O helpers the replications' run and check scripts import (declared as their input)
+REPLICATION_IO = "workflow/scripts/replication_io.py"
+
+
 def published_files(pattern="*.csv"):
     return sorted(str(p) for p in Path(PUBLISHED_DIR).glob(pattern))
 

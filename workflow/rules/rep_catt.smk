@@ -16,6 +16,7 @@ CATT_LIB = lib("replications.catt", "surfaces.catt", "surfaces.base", "checks", 
 
 rule catt_run:
     input:
+        io=REPLICATION_IO,
         code=CATT_LIB,
         params=published_files("params_004_*.csv"),
     output:
@@ -50,6 +51,7 @@ rule catt_figures:
 
 rule catt_checks:
     input:
+        io=REPLICATION_IO,
         tables=[f"{CATT_DIR}/{name}.csv" for name in CATT_TABLES],
         published=published_files("*_004_*.csv") + published_files("claims_004.csv"),
         code=CATT_LIB,

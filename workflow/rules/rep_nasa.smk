@@ -18,6 +18,7 @@ NASA_LIB = lib("replications.nasa", "surfaces.novikov", "surfaces.rack", "surfac
 
 rule nasa_run:
     input:
+        io=REPLICATION_IO,
         code=NASA_LIB,
         params=published_files("params_002_*.csv") + published_files("values_002_T6.2.*.csv"),
     output:
@@ -57,6 +58,7 @@ rule nasa_figures:
 
 rule nasa_checks:
     input:
+        io=REPLICATION_IO,
         tables=[f"{NASA_DIR}/{name}.csv" for name in NASA_TABLES],
         published=published_files("*_002_*.csv") + published_files("claims_002.csv"),
         code=NASA_LIB,

@@ -21,6 +21,7 @@ THESIS_LIB = lib("replications.thesis", "checks", "published")
 
 rule thesis_run:
     input:
+        io=REPLICATION_IO,
         code=THESIS_LIB,
     output:
         **{name: f"{THESIS_DIR}/{name}.csv" for name in THESIS_TABLES},
@@ -58,6 +59,7 @@ rule thesis_figures:
 
 rule thesis_checks:
     input:
+        io=REPLICATION_IO,
         tables=[f"{THESIS_DIR}/{name}.csv" for name in THESIS_TABLES],
         published=published_files("*_003_*.csv") + published_files("claims_003.csv"),
         code=THESIS_LIB,

@@ -17,6 +17,7 @@ TC_LIB = lib("replications.tseng_curvature", "surfaces.hob", "checks", "publishe
 
 rule tseng_curvature_tables:
     input:
+        io=REPLICATION_IO,
         code=TC_LIB,
         params=published_files("params_000_*.csv"),
     output:
@@ -37,6 +38,7 @@ rule tseng_curvature_tables:
 
 rule tseng_curvature_extras:
     input:
+        io=REPLICATION_IO,
         code=TC_LIB,
         params=published_files("params_000_*.csv"),
     output:
@@ -73,6 +75,7 @@ rule tseng_curvature_figures:
 
 rule tseng_curvature_checks:
     input:
+        io=REPLICATION_IO,
         tables=[f"{TSENG_IFACE_DIR}/{name}.csv" for name in TC_IFACE]
         + [f"{TC_DIR}/{name}.csv" for name in TC_TABLES + TC_EXTRAS],
         published=published_files("*_000_*.csv") + published_files("claims_000.csv"),

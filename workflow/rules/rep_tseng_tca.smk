@@ -20,6 +20,7 @@ TSENG_TCA_LIB = lib("replications.tseng_tca", "published", "checks", "curvature"
 
 rule tseng_tca_run:
     input:
+        io=REPLICATION_IO,
         code=TSENG_TCA_LIB,
         params=published_files("params_000_*.csv"),
     output:
@@ -53,6 +54,7 @@ rule tseng_tca_figures:
 
 rule tseng_tca_checks:
     input:
+        io=REPLICATION_IO,
         tables=[TSENG_TCA_FILES[name] for name in TSENG_TCA_TABLES],
         published=published_files("*_000_*.csv") + published_files("claims_000.csv"),
         code=TSENG_TCA_LIB,

@@ -4,10 +4,10 @@ All numerics are in gearrep.replications.catt.run; this script reads the config 
 and the design data of data/published/params_004_examples.csv, and writes one CSV per table."""
 
 import time
-from pathlib import Path
 
 import pandas as pd
 
+import replication_io
 from gearrep import published
 from gearrep.replications import catt
 
@@ -22,12 +22,4 @@ tables = catt.run(params)
 elapsed = time.perf_counter() - t0
 tables["run_info"] = pd.DataFrame([{"table": "all", "run_seconds": elapsed, "n_designs": len(params["designs"]),
                                     "n_cycle_rows": len(tables["cycle"])}])
-out = Path(smk.output.cycle).parent
-out.mkdir(parents=True, exist_ok=True)
-expected = {Path(f).stem for f in smk.output}
-missing = expected - set(tables)
-if missing:
-    raise RuntimeError(f"catt.run did not return tables {sorted(missing)}")
-for name in sorted(expected):
-    tables[name].to_csv(out / f"{name}.csv", index=False)
-Path(smk.log[0]).write_text(f"catt.run: {elapsed:.1f} s; tables: {sorted(expected)}\n")
+replication_io.write_tables(tables, smk.output, smk.log[0], "catt.run", elapsed)

@@ -4,8 +4,8 @@ Reads the config section ``nasa`` and the design data in data/published (params_
 6.2.1-6.2.2 values); all numerics are in gearrep.replications.nasa.run."""
 
 import time
-from pathlib import Path
 
+import replication_io
 from gearrep import published
 from gearrep.replications import nasa
 
@@ -15,12 +15,4 @@ params = dict(smk.params.settings)
 params["design"] = nasa.design_from_published(published.load(smk.config["published_dir"]))
 t0 = time.perf_counter()
 tables = nasa.run(params)
-out = Path(smk.output.curvatures).parent
-out.mkdir(parents=True, exist_ok=True)
-expected = {Path(f).stem for f in smk.output}
-missing = expected - set(tables)
-if missing:
-    raise RuntimeError(f"nasa.run did not return tables {sorted(missing)}")
-for name in sorted(expected):
-    tables[name].to_csv(out / f"{name}.csv", index=False)
-Path(smk.log[0]).write_text(f"nasa.run: {time.perf_counter() - t0:.1f} s; tables: {sorted(expected)}\n")
+replication_io.write_tables(tables, smk.output, smk.log[0], "nasa.run", time.perf_counter() - t0)

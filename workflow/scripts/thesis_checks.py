@@ -1,17 +1,11 @@
 """Seed 003 (thesis): check records against the published numbers (Snakemake script)."""
 
-from pathlib import Path
-
-import pandas as pd
-
-from gearrep import checks, published
+import replication_io
+from gearrep import published
 from gearrep.replications import thesis
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
-tables = {Path(f).stem: pd.read_csv(f) for f in smk.input.tables}
+tables = replication_io.read_tables(smk.input.tables)
 pub = published.load(smk.config["published_dir"])
-records = checks.validate_checks(thesis.checks(tables, pub))
-Path(smk.output[0]).parent.mkdir(parents=True, exist_ok=True)
-records.to_csv(smk.output[0], index=False)
-Path(smk.log[0]).write_text(f"{len(records)} check records: {records['status'].value_counts().to_dict()}\n")
+replication_io.write_checks(thesis.checks(tables, pub), smk.output[0], smk.log[0])

@@ -4,8 +4,8 @@ library). Design data from data/published/params_000_*.csv, settings from the co
 `tseng_curvature:`."""
 
 import time
-from pathlib import Path
 
+import replication_io
 from gearrep import published
 from gearrep.replications import tseng_curvature as tc
 
@@ -16,13 +16,5 @@ params = dict(smk.params.settings)
 params.update(tc.design_from_published(pub.params))
 t0 = time.perf_counter()
 tables = tc.run(params, parts=list(smk.params.parts))
-elapsed = time.perf_counter() - t0
-expected = {Path(f).stem: f for f in smk.output}
-missing = set(expected) - set(tables)
-if missing:
-    raise RuntimeError(f"tseng_curvature.run did not return tables {sorted(missing)}")
-for name, path in expected.items():
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    tables[name].to_csv(path, index=False, float_format="%.15g")
-Path(smk.log[0]).write_text(f"tseng_curvature.run(parts={list(smk.params.parts)}): {elapsed:.2f} s; "
-                            f"tables: {sorted(expected)}\n")
+replication_io.write_tables(tables, smk.output, smk.log[0], f"tseng_curvature.run(parts={list(smk.params.parts)})",
+                            time.perf_counter() - t0, float_format="%.15g")

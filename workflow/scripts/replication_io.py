@@ -1,0 +1,35 @@
+"""I/O shared by the replications' Snakemake scripts (importable because Snakemake puts the
+scripts' directory on sys.path): write a run's tables to the rule's outputs, read tables back,
+write a validated check table. The numerics stay in gearrep.replications.<name>."""
+
+from pathlib import Path
+
+import pandas as pd
+
+from gearrep import checks
+
+
+def write_tables(tables: dict, outputs, log: str, label: str, seconds: float, float_format=None) -> None:
+    """Write ``tables[stem]`` to each output path (named by its file stem); a missing table is an error."""
+    expected = {Path(f).stem: f for f in outputs}
+    missing = sorted(set(expected) - set(tables))
+    if missing:
+        raise RuntimeError(f"{label} did not return tables {missing}")
+    for name, path in expected.items():
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        tables[name].to_csv(path, index=False, float_format=float_format)
+    Path(log).write_text(f"{label}: {seconds:.2f} s; tables: {sorted(expected)}\n")
+
+
+def read_tables(paths) -> dict:
+    """{file stem: DataFrame} of a rule's table inputs."""
+    return {Path(f).stem: pd.read_csv(f) for f in paths}
+
+
+def write_checks(records: pd.DataFrame, path: str, log: str) -> pd.DataFrame:
+    """Validate the check records and write them; the log gets the counts by status."""
+    records = checks.validate_checks(records)
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    records.to_csv(path, index=False)
+    Path(log).write_text(f"{len(records)} check records: {records['status'].value_counts().to_dict()}\n")
+    return records
