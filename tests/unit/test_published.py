@@ -111,3 +111,21 @@ def test_errata_file_is_well_formed():
     assert list(errata.columns) == ["seed", "location", "printed", "correction", "evidence"]
     assert set(errata["seed"]) <= set(pub.SEEDS)
     assert (errata["evidence"].str.len() > 20).all(), "every erratum needs its evidence"
+
+
+def test_errata_evidence_points_at_tests_that_exist():
+    """An erratum's evidence that names a test file (and test) must name one that exists, so the
+    evidence cannot silently rot when tests are renamed."""
+    import re
+
+    from conftest import ROOT
+
+    errata = pd.read_csv(ROOT / "data" / "errata.csv", dtype=str, keep_default_na=False)
+    refs = {m for ev in errata["evidence"] for m in re.findall(r"tests/[\w/]+\.py(?:::\w+)?", ev)}
+    assert refs, "the errata cite no tests at all"
+    for ref in sorted(refs):
+        path, _, name = ref.partition("::")
+        f = ROOT / path
+        assert f.is_file(), f"{ref}: no such file"
+        if name:
+            assert re.search(rf"^def {name}\(", f.read_text(), flags=re.M), f"{ref}: no such test"
