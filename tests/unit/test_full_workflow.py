@@ -59,6 +59,14 @@ def test_default_target_builds_scorecard_report_and_every_notebook(run):
     assert "<img" in page or not names  # key figures are embedded once replications add them
 
 
+def test_every_deviation_and_gap_carries_its_explanation(run):
+    """A value that deviates, a claim that fails and a value not computed each say why."""
+    card = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
+    need = card[card["status"].isin(["deviates", "qualitative-fails", "not-computed"])]
+    short = need[need["note"].str.strip().str.len() < 20]
+    assert short.empty, f"{len(short)} rows without an explanation, e.g. {short[['id', 'status', 'note']].head(5).to_dict('records')}"
+
+
 def test_readme_counts_are_the_scorecard_counts(run):
     """The README's "Results at a glance" table must not drift from what the workflow computes."""
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str})

@@ -1097,6 +1097,17 @@ def _value_records(tables, values) -> list[dict]:
                         f"a TCA residual of 1e-6 leaves Z_p free within +-{float(s['Z_p_band_at_residual_1e-6_mm']):.4f} mm; "
                         f"the tangency search across the face (physical_contact) finds {int(row['n_tangencies'])} "
                         "distinct tangency(ies) at this phi1', so the offset is not a choice between roots")
+            if q == "KE":
+                zp = values[(values["source"] == f"Table {tab}") & (values["quantity"] == "Z_p")
+                            & (values["row"] == pub["row"])]
+                s = _row_at(sens, phi1) if len(sens) else None
+                where = (f"our contact lies {float(row['Z_p_mm']) - float(zp['value'].iloc[0]):+.4f} mm from the printed "
+                         "Z_p along the face (the ill-conditioned direction, see this row's Z_p record)"
+                         if len(zp) else "the printed Z_p of this row did not survive")
+                note = (f"KE of the contact the TCA finds ({int(row['n_tangencies'])} distinct tangency(ies) at this "
+                        f"phi1'); {where}; with near-equal lengthwise curvatures the KE depends on where along the "
+                        "face the contact sits, and the Jacobian condition here is "
+                        f"{float(s['jacobian_cond']) if s is not None else float(row['jacobian_cond']):.3g}")
             if q == "Z_g" and tab in ("5.7", "5.9"):
                 note = ("Z_g is the contact's axial coordinate in the gear frame of eq 5.3 (z_f - dZ). The "
                         f"printed sign is the opposite of ours (|computed| - |printed| = "
