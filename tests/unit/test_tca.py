@@ -407,3 +407,33 @@ def test_input_validation():
 
     with pytest.raises(ValueError, match="cylindrical"):
         solve_contact(GearPair(pair.flank1, Plane(), 52, 72, 62.0), 0.0)
+
+
+def test_contact_curvatures_and_ellipse_of_a_crowned_spur_pair():
+    """Aligned 52/72 pair, pinion crowned delta = c1 v^2 (a normal offset): at every contact point
+    (v1 = 0) the relative curvature is 1/rho1 + 1/rho2 across the profile (involute radii of
+    curvature rho = sqrt(u^2 - r_b^2)) and 2 c1 along the face, so a = sqrt(2 delta / (2 c1)) along
+    z and b = sqrt(2 delta / (1/rho1 + 1/rho2))."""
+    from gearrep.curvature import relative_curvature
+    from gearrep.tca import contact_curvatures, contact_ellipse
+
+    pair, g1, g2 = spur_pair(crown1=ParabolicCrowning(C1))
+    c = solve_contact(pair, np.linspace(-0.1, 0.05, 7))
+    assert np.all(c.converged) and np.allclose(c.v1, 0.0, atol=1e-9)
+    p1, p2 = contact_curvatures(pair, c)
+    np.testing.assert_allclose(p1.normal, c.normal, atol=1e-12)
+    np.testing.assert_allclose(p2.normal, c.normal, atol=1e-9)
+    rel = relative_curvature(p1, p2)
+    rho1, rho2 = np.sqrt(c.u1**2 - g1.r_b**2), np.sqrt(c.u2**2 - g2.r_b**2)
+    k_profile = 1 / rho1 + 1 / rho2
+    np.testing.assert_allclose(np.sort(np.abs([rel.k1, rel.k2]), axis=0), np.sort([np.full(7, 2 * C1), k_profile], axis=0),
+                               rtol=1e-7)
+    delta = 0.00632
+    el = contact_ellipse(pair, c, delta)
+    assert np.all(el.elliptic)
+    assert np.all(rel.k1 < 0) and np.all(rel.k2 < 0)  # convex on convex, seen from member 1 (outward normal)
+    np.testing.assert_allclose(el.a, np.sqrt(2 * delta / (2 * C1)), rtol=1e-7)
+    np.testing.assert_allclose(el.b, np.sqrt(2 * delta / k_profile), rtol=1e-7)
+    np.testing.assert_allclose(np.abs(el.major_axis[:, 2]), 1.0, atol=1e-9)  # along the face
+    bad = solve_contact(pair, [0.3])  # off the flank: not converged -> NaN, not a number
+    assert not bad.converged[0] and np.isnan(contact_ellipse(pair, bad, delta).a[0])
