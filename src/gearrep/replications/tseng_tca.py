@@ -348,7 +348,7 @@ class KEResult:
     def take(self, idx) -> "KEResult":
         s = self.solve
         return KEResult(self.phi1[idx], self.x[idx], SolveResult(s.x[idx], s.residual[idx], s.iterations[idx],
-                        s.status[idx]), *(getattr(self, f)[idx] for f in
+                        s.status[idx], None if s.condition is None else s.condition[idx]), *(getattr(self, f)[idx] for f in
                         ("r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond")),
                         *(None if getattr(self, f) is None else getattr(self, f)[idx] for f in _DIAG))
 
@@ -376,7 +376,7 @@ def _finish(pair: Pair, x, phi1, res: SolveResult, drop) -> KEResult:
     status = res.status.copy()
     false_root = np.linalg.norm(np.cross(Np, Ng), axis=1) > 1e-9
     status[(status == Status.CONVERGED) & false_root] = int(Status.WRONG_ROOT)
-    res = SolveResult(res.x, res.residual, res.iterations, status)
+    res = SolveResult(res.x, res.residual, res.iterations, status, res.condition)
     # member frames: S_p = the pinion's thesis frame (z kept by M_vp), S_g: z_g = z_f - dZ
     rpm = np.einsum("ab,nb->na", pair.pinion.placement, rp)
     rgm = np.einsum("ab,nb->na", pair.gear.placement, rg)

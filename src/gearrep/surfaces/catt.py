@@ -390,7 +390,7 @@ class CATTFlank(Surface):
         res = newton(F, np.column_stack([x0, z, radius]), J, tol=tol, maxiter=maxiter)
         st = res.status.copy()
         st[(res.iterations == 0) & (res.residual < tol)] = int(Status.CONVERGED)
-        return SolveResult(res.x[:, :2], res.residual, res.iterations, st)
+        return SolveResult(res.x[:, :2], res.residual, res.iterations, st, res.condition)
 
     def section_profile(self, z, radii):
         """Transverse profile at axial coordinate ``z``: points (n, 3) at ``radii`` and the solve record."""
