@@ -219,6 +219,38 @@ def test_helical_crowning_rows(tables):
     assert ar.loc["in", "l_vs_p_pct"] == pytest.approx(-2.26, abs=0.3)
 
 
+def test_te_readings_table(tables, published):
+    rd = tables["te_readings"]
+    assert set(rd["reading"]) == set(T.TE_READINGS) and len(rd) == 54 * len(T.TE_READINGS)
+    assert rd.loc[rd["reading"] != "axis_pivot_rigid_arcsec", "value_abs"].notna().all()
+    w = rd.pivot_table(index=["plane", "misalignment_deg", "crown_kind", "table_row"], columns="reading",
+                       values="value_abs")
+    # rigid-body face-end term, closed form: 1000 (b/2) sin(0.05 deg) / r_p1, r_p1 = 40 / (2 cos 14 deg)
+    r_p1 = 20.0 / np.cos(np.radians(14.0))
+    out = w.xs(("out", 0.05, "circular", 1))
+    assert out["face_end_rigid_pinion_mrad"] == pytest.approx(1e4 * np.sin(np.radians(0.05)) / r_p1, rel=1e-12)
+    tan_at = np.tan(np.radians(20.0)) / np.cos(np.radians(14.0))
+    inn = w.xs(("in", -0.05, "circular", 1))
+    assert inn["face_end_rigid_pinion_mrad"] / out["face_end_rigid_pinion_mrad"] == pytest.approx(tan_at, rel=1e-12)
+    # our TCA with the pivot at either face end brackets the rigid term: their mean is it to first order
+    small = w[w.index.get_level_values("misalignment_deg").map(abs) <= 0.1]
+    mean = 0.5 * (small["face_end_tca_plus_arcsec"] + small["face_end_tca_minus_arcsec"])
+    np.testing.assert_allclose(mean, small["face_end_rigid_arcsec"], rtol=0.01)
+    # comparison with the printed Delta phi_max (regression of the finding, not a pass criterion)
+    j, summ = T.readings_vs_printed(rd, T._t34_values(published.values[published.values["seed"] == T.SEED]))
+    assert len(j) == len(rd)
+    sm = summ.set_index("reading")
+    assert sm.loc["face_end_rigid_pinion_mrad", "median_ratio"] == pytest.approx(0.9965, abs=0.002)
+    assert sm.loc["face_end_rigid_pinion_mrad", "min_ratio"] == pytest.approx(0.846, abs=0.002)
+    assert sm.loc["env_max_arcsec", "max_ratio"] < 0.15  # our eq-14 reading: >= 10x the printed magnitudes
+
+
+def test_te_max_notes_carry_the_readings(check_records):
+    t = check_records[check_records["id"].str.contains("-T4-") & check_records["id"].str.endswith("-te_max")]
+    assert len(t) == 27 and (t["status"] == "deviates").all()
+    assert t["note"].str.contains("face_end_rigid_pinion_mrad").all()
+
+
 # ---------------------------------------------------------------------------------------------
 # every published seed-003 value and claim gets a status
 # ---------------------------------------------------------------------------------------------

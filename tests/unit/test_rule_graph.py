@@ -41,8 +41,22 @@ def smk(cwd, *args):
     return out.stdout + out.stderr
 
 
+_PLANS: dict = {}
+
+
 def plan(cwd, *args) -> list[dict]:
-    """The jobs of a dry run: rule, input, output, wildcards, reason (lists of paths)."""
+    """The jobs of a dry run: rule, input, output, wildcards, reason (lists of paths). Plans with
+    --forceall do not depend on the state of results/, so they are computed once per module."""
+    key = (str(cwd), args)
+    if "--forceall" in args and key in _PLANS:
+        return _PLANS[key]
+    jobs = _plan(cwd, *args)
+    if "--forceall" in args:
+        _PLANS[key] = jobs
+    return jobs
+
+
+def _plan(cwd, *args) -> list[dict]:
     jobs, job = [], None
     for line in smk(cwd, "-n", *args).splitlines():
         m = re.match(r"^(?:local)?rule (\w+):$", line)

@@ -5,7 +5,7 @@ THESIS_DIR = "results/thesis"
 THESIS_TABLES = [
     "convergence", "convergence_detail", "agreement", "references", "starts_table10", "starts_sec61",
     "starts_helical", "timing", "te_summary", "te_curves", "te_cycle", "te_sensitivity", "crowning_areas",
-    "errata", "protocol", "run_info",
+    "errata", "protocol", "run_info", "te_readings",
 ]
 THESIS_FIGURES = {
     "clouds": "convergence_clouds_table10.png",

@@ -96,6 +96,18 @@ Findings (numbers in results/thesis/*.csv)
   contact, ~ angle * tan(beta) per unit of path) dominates the TE and makes it linear along the path,
   so lead crowning alone cannot give a continuous TE (Litvin's result); the thesis's tiny Delta phi_max
   values (0.16-1.7 arcsec) are not reproduced.
+* Which reading could the printed Delta phi_max be? :func:`te_readings` tabulates fixed candidate
+  readings (pivot at the pitch point / member-2 axis / a face end z = +-b/2; TE of the envelope, its
+  peak-to-peak, the linear or the parabolic part of one pair, the first-order crown term; gear vs
+  pinion angle; arcsec vs 1e-3 rad; normal vs transverse module). The printed magnitudes are
+  proportional to the angle, nearly independent of the crown, with an in/out-of-plane ratio
+  tan(alpha_t) = 0.375, and follow 1000 * (b/2) sin(angle) / r_p1 (times tan(alpha_t) in-plane) to
+  -0.3..+0.05 % for the first circular/parabolic amounts, -3.2..+0.7 % for all circular/parabolic rows
+  (12-15 % low for the logarithmic crown at 0.2 deg out-of-plane): the rigid-body TE of turning
+  about a face end, as pinion angle, in 1e-3 rad. The thesis states none
+  of these three choices (it labels the values arcsec, eq 14 is in gear angle, no pivot is given)
+  and no reading reproduces the printed row-to-row variation, so the checks keep our eq-14 reading
+  and report the comparison in their notes.
 
 Errata found (evidence in errata.csv and the tests)
 ---------------------------------------------------
@@ -1110,10 +1122,20 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     area = float(np.trapezoid(env, cyc)) if fin.all() else np.nan
     # the pair's own contact nearest the pitch-point position
     i0 = int(np.argmin(np.where(ok, np.abs(phi), np.inf))) if ok.any() else None
+    # least-squares quadratic of one pair's TE over its engagement: linear part (rad per rad of phi1)
+    # and the parabolic part's amplitude over one period T = 2 pi / N1 (c2 (T/2)^2)
+    if ok.sum() >= 3:
+        c2, c1, _ = np.polyfit(phi[ok], te[ok], 2)
+        lin_slope, parab = float(c1), float(abs(c2) * (0.5 * p1) ** 2)
+    else:
+        lin_slope = parab = np.nan
     return dict(phi1=phi, te=te, ok=ok, u1=c.u1, v1=c.v1, u2=c.u2, v2=c.v2, cycle_phi1=cyc, cycle_te=env,
                 continuous=continuous, te_extreme=te_ext, area=area, jump_arcsec=jump_arcsec,
                 te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
                 v1_at_pitch=float(c.v1[i0]) if i0 is not None else np.nan,
+                te_at_pitch=float(te[i0]) if i0 is not None else np.nan,
+                env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
+                te_linear_slope=lin_slope, te_parabolic_part=parab,
                 engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan))
 
 
@@ -1164,7 +1186,10 @@ def _te_rows(label, kind, amount, plane, angle_deg, pair, res, fo, frame):
                 v1_shift_mm=res["v1_at_pitch"], first_order_te_arcsec=fo["te"] / ARCSEC if fo else np.nan,
                 first_order_v_shift_mm=fo["v_shift"] if fo else np.nan,
                 lead_error_rad=fo["lead_error"] if fo else np.nan,
-                engagement_begin_rad=res["engagement"][0], engagement_end_rad=res["engagement"][1])
+                engagement_begin_rad=res["engagement"][0], engagement_end_rad=res["engagement"][1],
+                te_at_pitch_arcsec=res["te_at_pitch"] / ARCSEC, te_cycle_pp_arcsec=res["env_pp"] / ARCSEC,
+                te_linear_slope_arcsec_per_rad=res["te_linear_slope"] / ARCSEC,
+                te_parabolic_part_arcsec=res["te_parabolic_part"] / ARCSEC)
 
 
 def _curve_rows(label, kind, amount, plane, angle_deg, res, frame):
@@ -1237,6 +1262,119 @@ def te_studies(p: dict) -> dict:
                              te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan))
     return dict(te_summary=pd.DataFrame(summary), te_curves=pd.concat(curves, ignore_index=True),
                 te_cycle=pd.concat(cycles, ignore_index=True), te_sensitivity=pd.DataFrame(sens))
+
+
+#: candidate readings of the thesis's "maximum TE" (Tables 3-4), see :func:`te_readings`
+TE_READINGS = {
+    "env_max_arcsec": "largest |TE| transmitted over one cycle, pivot at the pitch point (our te_max) [arcsec]",
+    "cycle_pp_arcsec": "peak-to-peak of the transmitted TE over one cycle, pitch-point pivot [arcsec]",
+    "pair_linear_half_period_arcsec": "|linear part| of one pair's TE (least-squares quadratic over its engagement) "
+                                      "times half a period pi/N1, pitch-point pivot [arcsec]",
+    "parabolic_part_arcsec": "parabolic part only: |c2| (T/2)^2 of the same quadratic, T = 2 pi/N1 [arcsec]",
+    "crown_first_order_arcsec": "crown term alone, first order e^2/(4 c r_b2 cos^2 beta_b) [arcsec]",
+    "pair_at_pitch_arcsec": "TE of one pair at the pitch-point position, pitch-point pivot [arcsec]",
+    "axis_pivot_rigid_arcsec": "rigid-body TE of the member-2 axis pivot (mid-face on its axis): in-plane the axial "
+                               "shift r_p2 sin(angle) times tan(beta)/r_p2; out-of-plane none [arcsec]",
+    "face_end_rigid_arcsec": "rigid-body TE of a pivot at a face end (lever b/2), member 2 turned, gear angle (eq 14): "
+                             "(b/2) sin(angle)/r_p2, in-plane times tan(alpha_t) [arcsec]",
+    "face_end_tca_plus_arcsec": "our TCA, pivot at the face end z = +b/2 of member 2, one pair at the pitch-point "
+                                "position [arcsec]",
+    "face_end_tca_minus_arcsec": "same, pivot at the face end z = -b/2 [arcsec]",
+    "face_end_rigid_pinion_mrad": "face-end rigid-body TE expressed as pinion angle (r_p1 instead of r_p2, i.e. eq 14 "
+                                  "times N2/N1) in 1e-3 rad (the thesis states its misalignments in mrad) [mrad]",
+    "face_end_rigid_pinion_mrad_transverse_module": "same with a transverse module 1 (r_p1 = N1/2 = 20 mm) [mrad]",
+    "face_end_tca_plus_pinion_mrad": "face_end_tca_plus as pinion angle in 1e-3 rad [mrad]",
+    "face_end_tca_minus_pinion_mrad": "face_end_tca_minus as pinion angle in 1e-3 rad [mrad]",
+}
+
+
+def _te_at_pitch_position(pair: GearPair, tol: float = 1e-12) -> float:
+    """TE [rad] of one pair at phi1 = 0 (pitch-point position): reduced solve from (r_p1, v1 = 0),
+    then from the robust start; NaN (reported, not guessed) if neither converges."""
+    phi = np.zeros(1)
+    u0 = np.array([pair.flank1.gear.r_p])
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        c = solve_contact(pair, phi, np.column_stack([u0, [0.0]]), formulation="reduced", damped=False, tol=tol)
+        if c.status[0] != Status.CONVERGED:
+            u1r, _ = robust_start(pair, phi, u0, np.zeros(1))
+            c = solve_contact(pair, phi, np.column_stack([u1r, [0.0]]), formulation="reduced", damped=False, tol=tol)
+    return float(c.te[0]) if c.status[0] == Status.CONVERGED else np.nan
+
+
+def te_readings(p: dict, te_summary: pd.DataFrame) -> pd.DataFrame:
+    """Candidate readings of the thesis's Delta phi_max for every computed row of Tables 3-4 (long
+    format: one row per table row and reading; magnitudes, since the sign depends on axis
+    orientations the thesis does not print). Nothing here is fitted to the printed values: the
+    pivots (pitch point, member-2 axis, face ends z = +-b/2), radii (r_p1, r_p2) and units are
+    fixed alternatives. Rigid-body terms are first order in the angle; turning the pinion instead
+    of the gear about the same pivot gives the same relative displacement (opposite sign), so the
+    member does not change these magnitudes."""
+    h = te_summary[te_summary["case"] == "helical_40_37"]
+    d = DESIGN["helical_40_37"]
+    base = _pair_40_37()
+    g1, g2 = base.flank1.gear, base.flank2.gear
+    half_b = 0.5 * d["face_width"]
+    p1 = 2 * np.pi / d["n1"]
+    tan_at, tan_b = np.tan(g1.alpha_t), np.tan(d["helix_angle_deg"] * DEG)
+    r_p1_transverse = 0.5 * d["n1"] * d["module"]
+    a2 = float(p["crowning_log_a2"])
+    rows = []
+    for r in h.itertuples():
+        ang = abs(r.misalignment_deg) * DEG
+        lever = tan_at if r.plane == "in" else 1.0
+        crown = crowning_object(r.crown_kind, r.crown_amount, d["face_width"], a2)
+        tca = {}
+        for sgn, name in ((1.0, "plus"), (-1.0, "minus")):
+            m = misalignment(r.plane, r.misalignment_deg * DEG, base, "pitch_point")
+            hz, a = sgn * half_b, r.misalignment_deg * DEG
+            # pivot Q = C + (0, 0, hz): extra translation (I - R)(Q - C) of member 2
+            m = (Misalignment(d_gamma_in=m.d_gamma_in, d_E=m.d_E - hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a)))
+                 if r.plane == "in" else
+                 Misalignment(d_gamma_out=m.d_gamma_out, d_H=m.d_H + hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a))))
+            tca[name] = _te_at_pitch_position(_pair_40_37(crown, m), tol=float(p["tol"]))
+        vals = {
+            "env_max_arcsec": abs(r.te_max_arcsec),
+            "cycle_pp_arcsec": r.te_cycle_pp_arcsec,
+            "pair_linear_half_period_arcsec": abs(r.te_linear_slope_arcsec_per_rad) * 0.5 * p1,
+            "parabolic_part_arcsec": r.te_parabolic_part_arcsec,
+            "crown_first_order_arcsec": abs(r.first_order_te_arcsec),
+            "pair_at_pitch_arcsec": abs(r.te_at_pitch_arcsec),
+            "axis_pivot_rigid_arcsec": (np.sin(ang) * tan_b if r.plane == "in" else 0.0) / ARCSEC,
+            "face_end_rigid_arcsec": half_b * np.sin(ang) * lever / g2.r_p / ARCSEC,
+            "face_end_tca_plus_arcsec": abs(tca["plus"]) / ARCSEC,
+            "face_end_tca_minus_arcsec": abs(tca["minus"]) / ARCSEC,
+            "face_end_rigid_pinion_mrad": half_b * np.sin(ang) * lever / g1.r_p * 1e3,
+            "face_end_rigid_pinion_mrad_transverse_module": half_b * np.sin(ang) * lever / r_p1_transverse * 1e3,
+            "face_end_tca_plus_pinion_mrad": abs(tca["plus"]) * g2.r_p / g1.r_p * 1e3,
+            "face_end_tca_minus_pinion_mrad": abs(tca["minus"]) * g2.r_p / g1.r_p * 1e3,
+        }
+        for k, v in vals.items():
+            rows.append(dict(table=r.table, plane=r.plane, misalignment_deg=r.misalignment_deg, crown_kind=r.crown_kind,
+                             table_row=int(r.table_row), crown_amount=r.crown_amount, reading=k, value_abs=float(v),
+                             unit="mrad" if "mrad" in k else "arcsec",
+                             description=TE_READINGS[k]))
+    return pd.DataFrame(rows)
+
+
+def readings_vs_printed(readings: pd.DataFrame, values: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Join :func:`te_readings` with the printed Delta phi_max of Tables 3-4 (``values``: rows of
+    values_003_T3/T4 with quantity te_max) -> (per row and reading: printed, ratio |printed| /
+    reading; per reading: median, min and max ratio and the largest |ratio - 1| over the rows)."""
+    v = values[values["quantity"] == "te_max"]
+    pub = []
+    for _, r in v.iterrows():
+        rk = _parse_row(r["row"])
+        pub.append(dict(plane=rk["plane"], misalignment_deg=float(rk["misalignment_deg"]), crown_kind=rk["crown"],
+                        table_row=int(rk["table_row"]), printed_te_max=float(r["value"])))
+    pub = pd.DataFrame(pub, columns=["plane", "misalignment_deg", "crown_kind", "table_row", "printed_te_max"])
+    keys = ["plane", "misalignment_deg", "crown_kind", "table_row"]
+    j = readings.merge(pub, on=keys, how="inner")
+    j["ratio_printed_to_reading"] = j["printed_te_max"].abs() / j["value_abs"]
+    g = j.groupby("reading", sort=False)["ratio_printed_to_reading"]
+    summ = pd.DataFrame(dict(n_rows=g.size(), median_ratio=g.median(), min_ratio=g.min(), max_ratio=g.max(),
+                             max_abs_rel_dev=g.apply(lambda x: float(np.max(np.abs(x - 1.0))))))
+    summ["unit"] = j.groupby("reading", sort=False)["unit"].first()
+    return j, summ.reset_index()
 
 
 # ----------------------------------------------------------------------------------------------
@@ -1347,6 +1485,7 @@ def run(params: dict | None = None) -> dict[str, pd.DataFrame]:
     t1 = time.perf_counter()
     tables.update(te_studies(p))
     tables["crowning_areas"] = crowning_areas(tables["te_summary"])
+    tables["te_readings"] = te_readings(p, tables["te_summary"])
     tables["errata"] = errata_table(p)
     tables["protocol"] = protocol_table(p)
     t2 = time.perf_counter()
@@ -1602,6 +1741,42 @@ def _not_computed_reason(r: pd.Series) -> str:
             "workflow settings compute it")
 
 
+#: readings quoted in each Tables 3-4 te_max note (see :data:`TE_READINGS`)
+_NOTE_READINGS = ("face_end_rigid_pinion_mrad", "face_end_tca_minus_pinion_mrad", "face_end_tca_plus_pinion_mrad",
+                  "env_max_arcsec", "pair_linear_half_period_arcsec", "crown_first_order_arcsec")
+
+
+def _t34_values(vals: pd.DataFrame) -> pd.DataFrame:
+    tag = vals["id"].astype(str).str.split("-").str[1]
+    return vals[tag.isin(["T3", "T4"]) & (vals["quantity"] == "te_max")]
+
+
+def _add_reading_notes(facts: dict, tables: dict, vals: pd.DataFrame) -> None:
+    """Append to each Tables 3-4 te_max note how the printed value compares with the candidate
+    readings of te_readings (the computed value of the check stays our eq-14 reading)."""
+    if "te_readings" not in tables or not len(tables["te_readings"]):
+        return
+    j, summ = readings_vs_printed(tables["te_readings"], _t34_values(vals))
+    sm = summ.set_index("reading")
+    best = sm.loc["face_end_rigid_pinion_mrad"]
+    tail = (f"; over all {int(best.n_rows)} rows |printed| / reading = {best.min_ratio:.3g}..{best.max_ratio:.3g} "
+            f"(median {best.median_ratio:.4g}) for the face-end/pinion-angle/1e-3 rad reading, "
+            f"{sm.loc['env_max_arcsec', 'min_ratio']:.2g}..{sm.loc['env_max_arcsec', 'max_ratio']:.2g} for ours: the "
+            "printed magnitudes follow ~1000 * (b/2) sin(angle) / r_p1 (times tan(alpha_t) in-plane), i.e. the rigid-body "
+            "TE of a pivot at a face end in pinion angle and 1e-3 rad, none of which the thesis states (it labels the "
+            "values arcsec, defines TE in gear angle, eq 14, and gives no pivot); the row-to-row variation is not "
+            "reproduced by any reading, so the check keeps our eq-14 reading (table te_readings)")
+    for (plane, ang, kind, row), g in j.groupby(["plane", "misalignment_deg", "crown_kind", "table_row"]):
+        key = f"t34_{plane}_{abs(ang):g}_{kind}_{int(row)}"
+        if key not in facts:
+            continue
+        gi = g.set_index("reading")
+        parts = ", ".join(f"{k} {gi.loc[k, 'value_abs']:.4g} {gi.loc[k, 'unit']} (ratio {gi.loc[k, 'ratio_printed_to_reading']:.3g})"
+                          for k in _NOTE_READINGS if k in gi.index)
+        facts[key] = dict(facts[key], note=facts[key]["note"] + f". Candidate readings of Delta phi_max (magnitudes; "
+                          f"|printed| / reading): {parts}" + tail)
+
+
 def checks(tables: dict, published) -> pd.DataFrame:
     """Check records (gearrep.checks) for every seed-003 value and claim on file.
 
@@ -1613,6 +1788,7 @@ def checks(tables: dict, published) -> pd.DataFrame:
     """
     facts = {**_facts(tables), **_te_facts(tables)}
     vals = published.values[published.values["seed"] == SEED]
+    _add_reading_notes(facts, tables, vals)
     recs = []
     for _, r in vals.iterrows():
         key = fact_key(r)
