@@ -76,6 +76,7 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
+from . import _params
 from .. import checks as _checks
 from ..solve import Status, newton, status_names
 from .. import curvature as _curv
@@ -126,25 +127,14 @@ FAST_PARAMS = {"step_deg": 1.0, "n_tip_edge": 81, "n_clip_nodes": 200,
 _DESIGN_KEYS = ("name", "group", "z1", "z2", "module", "R_T", "face_width")
 
 
-def _num(params, key, lo, hi, *, integer=False):
-    v = params[key]
-    try:
-        f = float(v)
-    except (TypeError, ValueError):
-        raise ValueError(f"{key} must be a number in [{lo}, {hi}], got {v!r}") from None
-    if not (np.isfinite(f) and lo <= f <= hi) or (integer and f != int(f)):
-        raise ValueError(f"{key} must be {'an integer' if integer else 'a number'} in [{lo}, {hi}], got {v!r}")
-    return int(f) if integer else f
+_num = _params.number
 
 
 def validate_params(params: dict) -> dict:
     """Merge ``params`` over :data:`DEFAULTS` and check every field (ValueError names the key)."""
     if not isinstance(params, dict):
         raise ValueError("params must be a dict")
-    unknown = sorted(set(params) - set(DEFAULTS))
-    if unknown:
-        raise ValueError(f"unknown params keys {unknown}; allowed {sorted(DEFAULTS)}")
-    p = {**DEFAULTS, **params}
+    p = _params.merge("catt", DEFAULTS, params)
     p["thickness"] = {**DEFAULTS["thickness"], **params.get("thickness", {})}
     p["section_check"] = {**DEFAULTS["section_check"], **params.get("section_check", {})}
     p["gap_check"] = {**DEFAULTS["gap_check"], **params.get("gap_check", {})}

@@ -44,7 +44,6 @@ Conventions of the TCA frames: :mod:`gearrep.surfaces.novikov`.
 
 from __future__ import annotations
 
-import copy
 import time
 
 import numpy as np
@@ -52,6 +51,7 @@ import pandas as pd
 from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
 
+from . import _params
 from .. import checks as ck
 from ..curvature import PrincipalCurvatures, principal_curvatures
 from ..curvature_relations import generated_curvatures
@@ -89,23 +89,11 @@ def validate_params(params: dict | None = None, *, fast: bool = False) -> dict:
     """Defaults overlaid with ``params`` (and :data:`FAST_PARAMS` if ``fast``), checked; the
     design data (``design``, from :func:`design_from_published`) pass through unchecked here and
     are checked by :func:`design_from_published`. ValueError names the key."""
-    p = copy.deepcopy(DEFAULT_PARAMS)
-    if fast:
-        p.update(copy.deepcopy(FAST_PARAMS))
-    design = None
-    for k, v in (params or {}).items():
-        if k == "design":
-            design = v
-            continue
-        if k not in DEFAULT_PARAMS:
-            raise ValueError(f"nasa params: unknown key {k!r}")
-        p[k] = copy.deepcopy(v)
-    for k in _COUNTS:
-        if int(p[k]) != p[k] or p[k] < 1:
-            raise ValueError(f"nasa params: {k} must be a positive integer, got {p[k]!r}")
-    for k in _POSITIVE:
-        if not (np.isfinite(float(p[k])) and float(p[k]) > 0):
-            raise ValueError(f"nasa params: {k} must be > 0, got {p[k]!r}")
+    design = (params or {}).get("design")
+    p = _params.merge("nasa", DEFAULT_PARAMS, {k: v for k, v in (params or {}).items() if k != "design"},
+                      *([FAST_PARAMS] if fast else []))
+    _params.counts("nasa", p, _COUNTS)
+    _params.positive("nasa", p, _POSITIVE)
     if p["tol"] > 1e-8:
         raise ValueError(f"nasa params: tol must be <= 1e-8, got {p['tol']!r}")
     if p["worm_points_per_cycle"] < 6:

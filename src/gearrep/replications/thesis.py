@@ -130,13 +130,13 @@ Errata found (evidence in errata.csv and the tests)
 
 from __future__ import annotations
 
-import copy
 import time
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
+from . import _params
 from .. import checks as ck
 from ..solve import SolveResult, Status, newton
 from ..surfaces.involute import (
@@ -224,23 +224,13 @@ def validate_params(params: dict | None = None, *, fast: bool = False) -> dict:
 
     Raises ValueError naming the key for an unknown key or a value out of range.
     """
-    p = copy.deepcopy(DEFAULT_PARAMS)
-    if fast:
-        p.update(copy.deepcopy(FAST_PARAMS))
-    for k, v in (params or {}).items():
-        if k not in DEFAULT_PARAMS:
-            raise ValueError(f"thesis params: unknown key {k!r}")
-        p[k] = copy.deepcopy(v)
+    p = _params.merge("thesis", DEFAULT_PARAMS, params, *([FAST_PARAMS] if fast else []))
     if int(p["seed"]) != p["seed"] or p["seed"] < 0:
         raise ValueError(f"thesis params: seed must be an integer >= 0, got {p['seed']!r}")
-    for k in _POSITIVE:
-        if not (np.isfinite(float(p[k])) and float(p[k]) > 0):
-            raise ValueError(f"thesis params: {k} must be > 0, got {p[k]!r}")
+    _params.positive("thesis", p, _POSITIVE)
     if p["tol"] > 1e-6:
         raise ValueError(f"thesis params: tol must be <= 1e-6 (a converged point must be a contact), got {p['tol']!r}")
-    for k in _COUNTS:
-        if int(p[k]) != p[k] or p[k] < 1:
-            raise ValueError(f"thesis params: {k} must be a positive integer, got {p[k]!r}")
+    _params.counts("thesis", p, _COUNTS)
     if p["n_starts"] < 10 or p["n_starts_sec61"] < 10 or p["n_starts_window"] < 10:
         raise ValueError("thesis params: n_starts* must be >= 10")
     if p["te_n_points"] < 5:

@@ -60,6 +60,7 @@ import time
 import numpy as np
 import pandas as pd
 
+from . import _params
 from .. import checks as _checks
 from ..curvature import principal_curvatures
 from ..ellipse import elastic_ellipse_from_relative
@@ -106,26 +107,13 @@ DEFAULTS = {
 FAST_PARAMS = {"face_n_l": 3, "face_n_z": 5, "rc_sweep_mm": [50.0, 110.0, 5000.0, 50000.0], "undercut_n_l": 11}
 
 
-def _num(p, key, lo, hi, integer=False):
-    v = p[key]
-    try:
-        x = int(v) if integer else float(v)
-    except (TypeError, ValueError):
-        raise ValueError(f"{key} must be a number in [{lo}, {hi}], got {v!r}") from None
-    if integer and x != v:
-        raise ValueError(f"{key} must be an integer in [{lo}, {hi}], got {v!r}")
-    if not (np.isfinite(x) and lo <= x <= hi):
-        raise ValueError(f"{key} must be in [{lo}, {hi}], got {v!r}")
-    return x
+_num = _params.number
 
 
 def validate_params(params: dict | None = None) -> dict:
     """Merge ``params`` over :data:`DEFAULTS` and check each key (ValueError names it)."""
     params = dict(params or {})
-    unknown = sorted(set(params) - set(DEFAULTS))
-    if unknown:
-        raise ValueError(f"unknown tseng_curvature params {unknown}; allowed {sorted(DEFAULTS)}")
-    p = {**DEFAULTS, **params}
+    p = _params.merge("tseng_curvature", DEFAULTS, params)
     out = dict(p)
     out["module_mm"] = _num(p, "module_mm", 0.1, 100.0)
     out["pressure_angle_deg"] = _num(p, "pressure_angle_deg", 5.0, 40.0)

@@ -78,6 +78,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from . import _params
 from .. import checks as _checks
 from ..curvature import PrincipalCurvatures, with_opposite_normal
 from ..curvature_relations import generated_curvatures
@@ -835,13 +836,7 @@ FAST_PARAMS = {"hob_radii_mm": [30.0, 50.0], "continuation_steps": 3, "ellipse_R
 def validate_params(params: dict | None = None, *, fast: bool = False) -> dict:
     """Defaults overlaid with ``params`` (and :data:`FAST_PARAMS` if ``fast``); ValueError names
     the key of an unknown or out-of-range value."""
-    p = copy.deepcopy(DEFAULT_PARAMS)
-    if fast:
-        p.update(copy.deepcopy(FAST_PARAMS))
-    for k, v in (params or {}).items():
-        if k not in DEFAULT_PARAMS:
-            raise ValueError(f"tseng_tca params: unknown key {k!r}")
-        p[k] = copy.deepcopy(v)
+    p = _params.merge("tseng_tca", DEFAULT_PARAMS, params, *([FAST_PARAMS] if fast else []))
     if not (0 < float(p["tol"]) <= 1e-6):
         raise ValueError(f"tseng_tca params: tol must be in (0, 1e-6] mm, got {p['tol']!r}")
     a, b, s = float(p["phi1_start_deg"]), float(p["phi1_end_deg"]), float(p["phi1_step_deg"])
