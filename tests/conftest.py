@@ -91,3 +91,23 @@ def pytest_terminal_summary(terminalreporter):
     tr.write_line(f"{'case':70s} {'n':>6s} {'singular':>8s} {'min':>10s} {'median':>10s} {'max':>10s}")
     for name, n, n_inf, lo, med, hi in _SEEN:
         tr.write_line(f"{name[:70]:70s} {n:6d} {n_inf:8d} {lo:10.3g} {med:10.3g} {hi:10.3g}")
+
+
+def assert_honest(c, ref=None, tol=1e-12, atol=1e-8):
+    """Stress-suite check of a batch of contact points (gearrep.tca.ContactPoints): every status is
+    known; converged points are finite with residual below ``tol`` and, if ``ref`` is given, equal
+    to that reference contact. Returns the converged positions."""
+    from gearrep.solve import Status
+
+    assert set(np.unique(c.status)) <= {int(s) for s in Status}
+    ok = c.converged
+    for name in ("u1", "v1", "u2", "v2", "phi2", "te", "residual"):
+        assert np.all(np.isfinite(getattr(c, name)[ok])), name
+    assert np.all(np.isfinite(c.position[ok])) and np.all(np.isfinite(c.normal[ok]))
+    assert np.all(c.residual[ok] < tol)
+    p = c.position[ok]
+    if ref is not None:
+        assert np.all(np.abs(c.u1[ok] - ref.u1[0]) < atol), np.max(np.abs(c.u1[ok] - ref.u1[0]))
+        assert np.all(np.abs(c.v1[ok] - ref.v1[0]) < atol)
+        assert np.all(np.abs(c.phi2[ok] - ref.phi2[0]) < atol)
+    return p

@@ -12,13 +12,13 @@ import pytest
 
 from gearrep.solve import Status
 from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance
+from conftest import assert_honest
 from gearrep.tca import GearPair, Misalignment, solve_contact, trace_path
 
 pytestmark = pytest.mark.stress
 
 ALPHA = np.radians(20.0)
 C1 = 0.002857  # thesis sec. 6.2 parabolic crowning coefficient (1/mm)
-KNOWN = {int(s) for s in Status}
 
 
 def pair_of(n1, n2, *, m=1.0, b=11.42, helix_deg=0.0, crown=C1, mis=None, x1=0.0, x2=0.0):
@@ -27,22 +27,6 @@ def pair_of(n1, n2, *, m=1.0, b=11.42, helix_deg=0.0, crown=C1, mis=None, x1=0.0
     f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(crown) if crown else None)
     a = standard_centre_distance(g1, g2)
     return GearPair(f1, f2, n1, n2, a, misalignment=mis), g1, g2
-
-
-def assert_honest(c, ref=None, tol=1e-12, atol=1e-8):
-    """Every status is known; converged points are finite, solved and (if given) the reference."""
-    assert set(np.unique(c.status)) <= KNOWN
-    ok = c.converged
-    for name in ("u1", "v1", "u2", "v2", "phi2", "te", "residual"):
-        assert np.all(np.isfinite(getattr(c, name)[ok])), name
-    assert np.all(np.isfinite(c.position[ok])) and np.all(np.isfinite(c.normal[ok]))
-    assert np.all(c.residual[ok] < tol)
-    p = c.position[ok]
-    if ref is not None:
-        assert np.all(np.abs(c.u1[ok] - ref.u1[0]) < atol), np.max(np.abs(c.u1[ok] - ref.u1[0]))
-        assert np.all(np.abs(c.v1[ok] - ref.v1[0]) < atol)
-        assert np.all(np.abs(c.phi2[ok] - ref.phi2[0]) < atol)
-    return p
 
 
 def _box_starts(rng, lo, hi, n, grow=0.5):
