@@ -15,7 +15,7 @@ RULES = "\n".join(p.read_text() for p in (ROOT / "workflow" / "rules").glob("*.s
 
 
 def test_there_is_a_notebook_per_replication_module():
-    mods = {p.stem for p in (ROOT / "src" / "gearrep" / "replications").glob("*.py") if p.stem != "__init__"}
+    mods = {p.stem for p in (ROOT / "src" / "gearrep" / "replications").glob("*.py") if not p.stem.startswith("_")}
     have = {p.stem for p in NOTEBOOKS}
     assert mods <= have, f"replications without a notebook: {sorted(mods - have)}"
 
