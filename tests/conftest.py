@@ -18,6 +18,22 @@ def seeds_dir() -> Path:
     return Path(os.environ.get("GEARREP_SEEDS", ROOT.parent / "shared" / "seeds"))
 
 
+CONFIG_FILES = [ROOT / "config" / "config.yaml", ROOT / "config" / "test.yaml"]
+
+
+def study_settings(key: str) -> dict:
+    """Settings of study ``key`` as the quick workflow run resolves them: the declared values,
+    overridden by config/config.yaml, then by config/test.yaml (the test configuration, the same
+    file `snakemake --configfile config/test.yaml` uses)."""
+    import yaml
+
+    from gearrep import settings
+    from gearrep.replications import load
+
+    layers = [(yaml.safe_load(f.read_text()) or {}).get(key) for f in CONFIG_FILES]
+    return settings.resolve(load(key).SETTINGS, *layers, where=key)
+
+
 @pytest.fixture(scope="session")
 def published():
     from gearrep import published as pub
