@@ -38,9 +38,30 @@ def run(tmp_path_factory):
     out = smk(d, "--cores", "2")
     elapsed = time.perf_counter() - t0
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-4000:]
+    # timings are printed, not asserted (no timed assertion in the default run; targets: make bench)
     print(f"\ncold default workflow: {elapsed:.1f} s")
-    assert elapsed < 2 * 180, f"cold run took {elapsed:.0f} s (target 3 min; x2 margin for a loaded CI machine)"
     return d
+
+
+def test_scorecard_equals_the_reference_id_by_id(run):
+    """Restructuring must not change results: same ids and statuses, computed values equal to 1e-12
+    relative (run times excepted) as tests/data/scorecard_reference.csv, the scorecard of the
+    previous main. A deliberate change of results updates that file in the same commit, with the
+    reason in the commit message and CHANGELOG.md."""
+    ref = pd.read_csv(ROOT / "tests" / "data" / "scorecard_reference.csv", dtype=str, keep_default_na=False)
+    new = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
+    a, b = ref.set_index("id"), new.set_index("id")
+    assert sorted(a.index) == sorted(b.index)
+    b = b.loc[a.index]
+    changed = a.index[a["status"] != b["status"]]
+    assert changed.empty, list(zip(changed, a.loc[changed, "status"], b.loc[changed, "status"]))[:10]
+    timed = a["quantity"].str.contains("time|second", case=False)
+    x = pd.to_numeric(a.loc[~timed, "computed"], errors="coerce")
+    y = pd.to_numeric(b.loc[~timed, "computed"], errors="coerce")
+    both_nan = x.isna() & y.isna()
+    close = (x - y).abs() <= 1e-12 * pd.concat([x.abs(), y.abs()], axis=1).max(axis=1).clip(lower=1e-300)
+    bad = x.index[~(both_nan | close)]
+    assert bad.empty, [(i, x[i], y[i]) for i in bad[:10]]
 
 
 def notebooks(d) -> list[str]:
@@ -99,14 +120,14 @@ def test_rendered_notebooks_have_no_errors_and_a_heading_per_check_source(run):
         assert not missing, f"{name}: no heading for check sources {missing[:8]} (report links would be dead)"
 
 
-def test_dry_run_after_full_run_plans_nothing_and_noop_is_fast(run):
+def test_dry_run_after_full_run_plans_nothing(run):
     out = smk(run, "-n")
     assert out.returncode == 0 and "Nothing to be done" in out.stdout + out.stderr
     t0 = time.perf_counter()
     out = smk(run, "--cores", "2")
     elapsed = time.perf_counter() - t0
     assert out.returncode == 0 and "Nothing to be done" in out.stdout + out.stderr
-    assert elapsed < 3.0 * 2, f"no-op re-run took {elapsed:.1f} s (target 3 s; x2 margin for a loaded CI machine)"
+    print(f"\nno-op re-run: {elapsed:.1f} s")
 
 
 def test_real_report_in_headless_browser(run):

@@ -78,16 +78,26 @@ def _plan(cwd, *args) -> list[dict]:
     return jobs
 
 
-def rule_sources() -> dict[str, Path]:
-    """rule name -> the script or notebook it runs (rules with shell/run blocks are left out)."""
+def rule_sources() -> dict[str, tuple[Path, list[str]]]:
+    """rule name -> (the script or notebook it runs, modules it imports dynamically); rules with
+    shell/run blocks are left out. The replication rules are generated from the registry."""
+    from gearrep.replications import REGISTRY, load
+
     out = {}
     for smk_file in sorted((ROOT / "workflow" / "rules").glob("*.smk")):
-        text = smk_file.read_text()
-        blocks = re.split(r"^rule (\w+):\s*$", text, flags=re.M)
+        blocks = re.split(r"^rule (\w+):\s*$", smk_file.read_text(), flags=re.M)
         for name, body in zip(blocks[1::2], blocks[2::2]):
             m = re.search(r"^\s+(?:script|notebook):\s*\n?\s*f?\"([^\"]+)\"", body, flags=re.M)
             if m:
-                out[name] = (smk_file.parent / m.group(1)).resolve()
+                out[name] = ((smk_file.parent / m.group(1)).resolve(), [])
+    scripts = ROOT / "workflow" / "scripts"
+    for key in REGISTRY:
+        dynamic = [f"gearrep.replications.{key}"]
+        for job in load(key).JOBS:
+            out[f"{key}_{job}"] = (scripts / "run_job.py", dynamic)
+        out[f"{key}_checks"] = (scripts / "run_checks.py", dynamic)
+        out[f"{key}_figures"] = (scripts / f"{key}_figures.py", [])
+        out[f"{key}_notebook"] = (ROOT / "notebooks" / f"{key}.ipynb", [])
     return out
 
 
@@ -124,8 +134,9 @@ def gearrep_files(source: Path, extra_modules=()) -> set[str]:
 
 
 def _bench_names() -> list[str]:
-    return sorted(p.stem for p in (SRC / "gearrep" / "replications").glob("*.py")
-                  if re.search(r"^def bench_cases\(", p.read_text(), flags=re.M))
+    from gearrep.replications import REGISTRY
+
+    return sorted(REGISTRY)
 
 
 def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
@@ -136,10 +147,11 @@ def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
     sources = rule_sources()
     checked, wrong = set(), []
     for job in jobs:
-        src = sources.get(job["rule"])
+        src, dynamic = sources.get(job["rule"], (None, []))
         if src is None:
             continue
-        dynamic = [f"gearrep.replications.{job['wildcards']['name']}"] if job["rule"] == "bench_replication" else []
+        if job["rule"] == "bench_replication":
+            dynamic = [f"gearrep.replications.{job['wildcards']['name']}"]
         declared = {p for p in job["input"] if p.startswith("src/gearrep/")}
         wanted = gearrep_files(src, dynamic)
         if declared != wanted:
@@ -154,11 +166,9 @@ FINAL_KINDS = re.compile(r"^results/(notebooks/|report|bench/|.*/figures/)")
 
 
 def _check_files(wf) -> dict[str, str]:
-    out = {}
-    for smk_file in sorted((wf / "workflow" / "rules").glob("rep_*.smk")):
-        for path in re.findall(r"results/checks/(\w+)\.csv", smk_file.read_text()):
-            out[path] = f"results/checks/{path}.csv"
-    return out
+    from gearrep.replications import REGISTRY, load
+
+    return {key: f"results/{load(key).CHECK_OUTPUTS['checks']}" for key in REGISTRY}
 
 
 def test_one_replication_check_file_plans_only_its_own_chain(wf):
@@ -184,7 +194,10 @@ def test_job_counts_of_framework_targets(wf):
     assert [j["rule"] for j in plan(wf, "--forceall", "results/bench/throughput.csv")] == ["bench_core"]
     import yaml
 
-    n_rep = len(yaml.safe_load((wf / "config" / "config.yaml").read_text())["bench"]["replications"])
+    from gearrep.replications import REGISTRY
+
+    n_rep = len(((yaml.safe_load((wf / "config" / "config.yaml").read_text()) or {}).get("bench") or {}).get(
+        "replications", list(REGISTRY)))
     bench = sorted(j["rule"] for j in plan(wf, "--forceall", "bench"))
     assert bench == sorted(["bench", "bench_core", "bench_defaults"] + ["bench_replication"] * n_rep)
     default = {j["rule"] for j in plan(wf, "--forceall")}
@@ -204,3 +217,20 @@ def test_touching_one_module_reruns_exactly_its_users(wf):
     assert "Nothing to be done" in smk(wf, "-n")
     (wf / "src" / "gearrep" / "report.py").touch()
     assert sorted(j["rule"] for j in plan(wf)) == ["all", "report"]
+
+
+def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):
+    """Issue 15: asking for one KE table plans and runs that table's job alone."""
+    d = copy_workflow(tmp_path / "wf")
+    target = "results/tseng/ke_table_5_4.csv"
+    jobs = plan(d, target)
+    assert [j["rule"] for j in jobs] == ["tseng_tca_ke_table_5_4"]
+    smk(d, "--cores", "1", target)
+    tables = sorted(str(p.relative_to(d)) for p in (d / "results").rglob("*.csv"))
+    assert tables == [target], tables
+
+
+@pytest.mark.parametrize("target", ["results/thesis/convergence.csv", "results/tseng/curvature_table_4_3.csv"])
+def test_one_study_output_plans_its_job_alone(wf, target):
+    jobs = plan(wf, "--forceall", target)
+    assert len(jobs) == 1, [j["rule"] for j in jobs]

@@ -26,13 +26,14 @@ def smk(cwd, *args, timeout=600):
 
 
 @pytest.mark.parametrize("section, key, bad", [("thesis", "tol", -1.0e-12), ("catt", "maxiter", 0),
-                                               ("bench", "repeats", 0)])
+                                               ("bench", "repeats", 0), ("thesis", "tol", float("nan")),
+                                               ("nasaa", "tol", 1e-9)])
 def test_bad_config_stops_before_any_job(wf, section, key, bad):
     import yaml
 
     f = wf / "config" / "config.yaml"
-    cfg = yaml.safe_load(f.read_text())
-    cfg[section][key] = bad
+    cfg = yaml.safe_load(f.read_text()) or {}
+    cfg.setdefault(section, {})[key] = bad
     f.write_text(yaml.safe_dump(cfg))
     out = smk(wf, "--cores", "1")
     assert out.returncode != 0
@@ -44,3 +45,13 @@ def test_bad_config_stops_before_any_job(wf, section, key, bad):
 def test_lint_is_clean(wf):
     out = smk(wf, "--lint")
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+
+
+def test_quick_run_with_the_test_configuration_plans_every_study(wf):
+    """config/test.yaml (the tests' settings) drives a quick workflow run through --configfile."""
+    out = smk(wf, "-n", "--configfile", "config/test.yaml")
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    from gearrep.replications import REGISTRY
+
+    for key in REGISTRY:
+        assert f"{key}_checks" in out.stdout

@@ -1,23 +1,23 @@
 # Run time against error and throughput (issue 10): `snakemake --cores 2 bench`.
 # Not part of the default target; timings are medians of repeated runs with the machine load
-# recorded. A replication joins by defining `bench_cases(params)` in its module and being listed
-# in config `bench: replications`.
+# recorded. A study joins by defining `bench_cases(settings, design)` in its package and being
+# listed in config `bench: replications`.
 
 BENCH_DIR = "results/bench"
 
 
 rule bench_core:
     input:
-        published_dir=config["published_dir"],
-        code=lib("benchmark", "plotting", "published", "solve", "tca", "surfaces.involute", "surfaces.base", "units"),
+        published_dir=PUBLISHED_DIR,
+        code=script_lib("workflow/scripts/bench_core.py"),
     output:
         throughput=f"{BENCH_DIR}/throughput.csv",
         sweep=f"{BENCH_DIR}/core_tca.csv",
         figure=figure(f"{BENCH_DIR}/figures/core_tca_time_vs_error.png", "bench"),
     params:
-        n_vectorised=config["bench"]["n_vectorised"],
-        n_single=config["bench"]["n_single"],
-        repeats=config["bench"]["repeats"],
+        n_vectorised=RESOLVED["bench"]["n_vectorised"],
+        n_single=RESOLVED["bench"]["n_single"],
+        repeats=RESOLVED["bench"]["repeats"],
     log:
         "results/logs/bench_core.log",
     conda:
@@ -34,13 +34,18 @@ rule bench:
 
 rule bench_replication:
     input:
-        code=lambda wc: lib("benchmark", "plotting", f"replications.{wc.name}"),
+        code=lambda wc: script_lib("workflow/scripts/bench_replication.py", f"replications.{wc.name}"),
+        design=lambda wc: published_files(*load_study(wc.name).DESIGN_DATA),
     output:
         sweep=f"{BENCH_DIR}/{{name}}.csv",
         defaults=f"{BENCH_DIR}/{{name}}_defaults.csv",
         figure=figure(f"{BENCH_DIR}/figures/{{name}}_time_vs_error.png", "bench"),
+    params:
+        settings=lambda wc: SETTINGS[wc.name],
+        published_dir=PUBLISHED_DIR,
+        repeats=RESOLVED["bench"]["repeats"],
     wildcard_constraints:
-        name="|".join(config["bench"]["replications"]) or "no-replication",
+        name="|".join(RESOLVED["bench"]["replications"]) or "no-replication",
     log:
         "results/logs/bench_{name}.log",
     conda:
@@ -51,7 +56,7 @@ rule bench_replication:
 
 rule bench_defaults:
     input:
-        expand(f"{BENCH_DIR}/{{name}}_defaults.csv", name=config["bench"]["replications"]),
+        expand(f"{BENCH_DIR}/{{name}}_defaults.csv", name=RESOLVED["bench"]["replications"]),
     output:
         f"{BENCH_DIR}/defaults.csv",
     log:

@@ -1,80 +1,51 @@
-# Shared helpers for the rules: library modules as inputs, published-data files.
+# Shared helpers for the rules: the configuration resolved before any job, library modules as
+# inputs, published-data files, report figures.
+import os
+import sys
 from pathlib import Path
 
-PUBLISHED_DIR = config["published_dir"]
+# Tools the rules run (papermill for the notebook directive, nbconvert) come from the interpreter
+# that runs Snakemake, not from whatever PATH the user has: .venv/bin/snakemake works unactivated.
+PYTHON = sys.executable
+os.environ["PATH"] = os.pathsep.join([str(Path(PYTHON).parent), os.environ.get("PATH", "")])
 
+sys.path.insert(0, str(Path(workflow.basedir, "workflow", "lib")))
 
-import ast
+from modgraph import ModuleGraph
+from wfconfig import resolve_config
 
-_SRC = Path(workflow.basedir, "src", "gearrep")
+from gearrep.replications import REGISTRY
+from gearrep.replications import load as load_study
+from gearrep.replications._face import table_paths
 
+# Every setting of every study resolved and checked (unknown keys, ranges, NaN, cross-field limits)
+# before any job runs; a bad value stops here, naming its key.
+RESOLVED = resolve_config(config, workflow.basedir)
+PUBLISHED_DIR = RESOLVED["published_dir"]
+SETTINGS = {key: RESOLVED[key] for key in REGISTRY}
 
-def _module_file(parts):
-    """The file of gearrep module `parts` (list of names), or None if there is none."""
-    f = _SRC.joinpath(*parts).with_suffix(".py") if parts else _SRC / "__init__.py"
-    if f.is_file():
-        return f
-    f = _SRC.joinpath(*parts, "__init__.py")
-    return f if f.is_file() else None
-
-
-_IMPORTS = {}
-
-
-def _gearrep_imports(parts):
-    """gearrep modules imported by module `parts` (absolute and relative imports); parsed once."""
-    key = tuple(parts)
-    if key not in _IMPORTS:
-        _IMPORTS[key] = _parse_gearrep_imports(list(parts))
-    return _IMPORTS[key]
-
-
-def _parse_gearrep_imports(parts):
-    f = _module_file(parts)
-    is_pkg = f.name == "__init__.py"
-    package = list(parts) if is_pkg else list(parts[:-1])
-    found = []
-    text = f.read_text()
-    if "import" not in text:
-        return []
-    for node in ast.walk(ast.parse(text, str(f))):
-        if isinstance(node, ast.Import):
-            found += [a.name.split(".")[1:] for a in node.names if a.name.split(".")[0] == "gearrep"]
-        elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package[:len(package) - (node.level - 1)] + (node.module.split(".") if node.module else [])
-            elif node.module and node.module.split(".")[0] == "gearrep":
-                base = node.module.split(".")[1:]
-            else:
-                continue
-            found.append(base)
-            found += [base + [a.name] for a in node.names if _module_file(base + [a.name])]
-    return [m for m in found if _module_file(m)]
+_GRAPH = ModuleGraph(Path(workflow.basedir, "src"), workflow.basedir)
 
 
 def lib(*modules):
-    """Paths of the gearrep modules a rule imports AND of everything they import in turn (plus the
-    package __init__ files Python runs on the way), declared as inputs so that a library change
-    reruns exactly the jobs that use it (Snakemake does not track imported code)."""
-    seen, todo = set(), [m.split(".") for m in modules]
-    while todo:
-        parts = todo.pop()
-        if _module_file(parts) is None:
-            raise ValueError(f"lib(): no module gearrep.{'.'.join(parts)} under {_SRC}")
-        key = tuple(parts)
-        if key in seen:
-            continue
-        seen.add(key)
-        todo += [parts[:i] for i in range(len(parts))] + _gearrep_imports(parts)
-    return sorted(str(_module_file(list(k)).relative_to(workflow.basedir)) for k in seen)
+    """Files of the gearrep modules a rule imports AND of everything they import in turn, declared
+    as inputs so that a library change reruns exactly the jobs that use it."""
+    return _GRAPH.closure(*modules)
 
 
-#: I/O helpers the replications' run and check scripts import (declared as their input)
+def script_lib(path, *extra):
+    """lib() of what a script or notebook (path relative to the workflow) imports."""
+    return _GRAPH.source_closure(Path(workflow.basedir, path), *extra)
+
+
+#: I/O helpers the generic run and check scripts import (declared as their input)
 REPLICATION_IO = "workflow/scripts/replication_io.py"
 
 
-def published_files(pattern="*.csv"):
-    return sorted(str(p) for p in Path(PUBLISHED_DIR).glob(pattern))
+def published_files(*patterns):
+    """Published-data files matching any of ``patterns`` (globs in the published-data directory)."""
+    d = Path(workflow.basedir, PUBLISHED_DIR)
+    return sorted({str(Path(PUBLISHED_DIR, p.name)) for pat in (patterns or ("*.csv",)) for p in d.glob(pat)})
 
 
 def figure(path, replication):

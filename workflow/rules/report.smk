@@ -13,7 +13,7 @@ rule render_notebook:
     conda:
         "../envs/gearrep.yaml"
     shell:
-        "jupyter nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
+        "{PYTHON:q} -m nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
         "results/notebooks/{wildcards.name}.ipynb > {log} 2>&1"
 
 
@@ -24,7 +24,7 @@ rule report:
         figures=REPORT_FIGURES,
         errata="data/errata.csv",
         config="config/config.yaml",
-        code=lib("report", "checks", "published"),
+        code=script_lib("workflow/scripts/report.py"),
     output:
         "results/report.html",
     log:

@@ -6,7 +6,7 @@ rule scorecard:
     input:
         checks=CHECK_FILES,
         published=published_files(),
-        code=lib("checks", "published", "units"),
+        code=script_lib("workflow/scripts/scorecard.py"),
     output:
         csv=report("results/scorecard.csv", caption="../report/scorecard.rst", category="scorecard"),
         md="results/scorecard.md",

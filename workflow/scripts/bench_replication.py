@@ -1,6 +1,6 @@
 """Run time against error for one replication (Snakemake script of the `bench` target).
 
-The replication module defines ``bench_cases(params) -> dict[case, dict]``, each case with
+The study's package defines ``bench_cases(settings, design) -> dict[case, dict]``, each case with
 ``run`` (setting -> result), ``settings`` (list of knob dicts), ``reference`` (the most accurate
 setting, computed in the same run), ``error`` ((result, reference_result) -> float, in
 ``error_unit``), ``error_unit`` and optionally ``error_target`` (e.g. a tenth of the tightest
@@ -8,7 +8,6 @@ published tolerance; the default is then the fastest setting meeting it) and ``c
 setting in config/config.yaml). Writes the sweep table, one figure and the chosen defaults.
 """
 
-import importlib
 from pathlib import Path
 
 import matplotlib
@@ -18,15 +17,14 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from gearrep import benchmark, plotting  # noqa: E402
+from gearrep import benchmark, plotting, published  # noqa: E402
+from gearrep.replications import load  # noqa: E402
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 name = smk.wildcards.name
-mod = importlib.import_module(f"gearrep.replications.{name}")
-if not hasattr(mod, "bench_cases"):
-    raise RuntimeError(f"gearrep.replications.{name} defines no bench_cases(params)")
-cases = mod.bench_cases(dict(smk.config.get(name, {})))
-repeats = int(smk.config["bench"]["repeats"])
+mod = load(name)
+cases = mod.bench_cases(dict(smk.params.settings), mod.params_from_published(published.load(smk.params.published_dir)))
+repeats = int(smk.params.repeats)
 
 frames, chosen = [], []
 for case, c in cases.items():

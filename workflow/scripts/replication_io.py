@@ -2,11 +2,40 @@
 scripts' directory on sys.path): write a run's tables to the rule's outputs, read tables back,
 write a validated check table. The numerics stay in gearrep.replications.<name>."""
 
+import contextlib
+import time
+import traceback
 from pathlib import Path
 
 import pandas as pd
 
 from gearrep import checks
+
+
+@contextlib.contextmanager
+def logged(log: str):
+    """Run the block; on failure write the traceback to the job's log (Snakemake points the user
+    there) before re-raising."""
+    Path(log).parent.mkdir(parents=True, exist_ok=True)
+    try:
+        yield
+    except BaseException:
+        with open(log, "a") as f:
+            f.write(traceback.format_exc())
+        raise
+
+
+def timed(fn, *args):
+    """(seconds, fn(*args))."""
+    t0 = time.perf_counter()
+    out = fn(*args)
+    return time.perf_counter() - t0, out
+
+
+def write_table(table: pd.DataFrame, path: str, float_format=None) -> None:
+    """One table as CSV (directories made as needed)."""
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    table.to_csv(path, index=False, float_format=float_format)
 
 
 def write_tables(tables: dict, outputs, log: str, label: str, seconds: float, float_format=None) -> None:
@@ -15,9 +44,11 @@ def write_tables(tables: dict, outputs, log: str, label: str, seconds: float, fl
     missing = sorted(set(expected) - set(tables))
     if missing:
         raise RuntimeError(f"{label} did not return tables {missing}")
+    extra = sorted(set(tables) - set(expected))
+    if extra:
+        raise RuntimeError(f"{label} returned tables {extra} that are not its outputs")
     for name, path in expected.items():
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        tables[name].to_csv(path, index=False, float_format=float_format)
+        write_table(tables[name], path, float_format)
     Path(log).write_text(f"{label}: {seconds:.2f} s; tables: {sorted(expected)}\n")
 
 

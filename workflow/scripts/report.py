@@ -35,7 +35,7 @@ for pkg in ("numpy", "scipy", "pandas", "matplotlib", "snakemake", "papermill", 
     env[pkg] = version(pkg)
 
 runtime = 0.0
-for tsv in Path("results/benchmarks").glob("*.tsv"):
+for tsv in Path("results/benchmarks").rglob("*.tsv"):
     b = pd.read_csv(tsv, sep="\t")
     runtime += float(b["s"].iloc[-1])
 

@@ -1,0 +1,40 @@
+"""Every registered study is a package with the same face (gearrep.replications._face)."""
+
+import pytest
+
+from gearrep import settings as S
+from gearrep.replications import REGISTRY, _face, load
+
+from conftest import study_settings
+
+
+@pytest.mark.parametrize("key", sorted(REGISTRY))
+def test_face(key, published):
+    mod = load(key)
+    _face.check_face(mod)
+    assert mod.SEED == REGISTRY[key].seed
+    assert mod.__file__.endswith("__init__.py"), "a study is a package"
+    for name, s in mod.SETTINGS.items():
+        assert isinstance(s, S.Setting) and (s.kind == "group" or s.reason), name
+    settings = study_settings(key)
+    design = mod.params_from_published(published)
+    mod.validate(settings, design)
+    assert all(p.startswith(("checks/", "")) for p in mod.CHECK_OUTPUTS.values())
+    assert set(mod.REPORT_FIGURES) <= set(mod.FIGURES)
+
+
+def test_jobs_write_disjoint_tables():
+    seen = {}
+    for key in REGISTRY:
+        for name, path in _face.table_paths(load(key).JOBS).items():
+            assert path not in seen, f"{path} written by {key} and {seen[path]}"
+            seen[path] = key
+
+
+def test_face_checker_refuses_incomplete_packages():
+    import types
+
+    with pytest.raises(TypeError, match="lacks"):
+        _face.check_face(types.ModuleType("gearrep.replications.empty"))
+    with pytest.raises(ValueError, match="must end in"):
+        _face.Job(lambda s, d: {}, {"a": "x/b.csv"})

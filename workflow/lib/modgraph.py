@@ -1,0 +1,95 @@
+"""Which gearrep source files a workflow step imports, directly or in turn.
+
+Snakemake does not track Python code imported by a script, so every rule declares the files of
+the gearrep modules its script or notebook imports as inputs; a library change then reruns exactly
+the jobs that use it. :class:`ModuleGraph` finds them by parsing import statements (``ast``):
+absolute ``gearrep...`` imports and relative imports inside the package, plus the package
+``__init__`` files Python runs on the way. Each module is parsed once per graph.
+"""
+
+from __future__ import annotations
+
+import ast
+import json
+from pathlib import Path
+
+__all__ = ["ModuleGraph"]
+
+
+class ModuleGraph:
+    """Import graph of the package ``package`` under ``src`` (paths reported relative to ``root``)."""
+
+    def __init__(self, src: Path | str, root: Path | str, package: str = "gearrep"):
+        self.root = Path(root).resolve()
+        self.package = package
+        self.pkg_dir = Path(src).resolve() / package
+        self._imports: dict[tuple, list] = {}
+
+    # -- modules -------------------------------------------------------------------------------
+    def module_file(self, parts) -> Path | None:
+        """The file of module ``package.<parts>`` (a list of names), or None if there is none."""
+        f = self.pkg_dir.joinpath(*parts).with_suffix(".py") if parts else self.pkg_dir / "__init__.py"
+        if f.is_file():
+            return f
+        f = self.pkg_dir.joinpath(*parts, "__init__.py")
+        return f if f.is_file() else None
+
+    def _parse(self, text: str, filename: str, package: list[str] | None) -> list[list[str]]:
+        """Modules of the package imported by source ``text``; ``package`` is the importing
+        module's package (for relative imports), None for a script outside the package."""
+        if "import" not in text:
+            return []
+        found = []
+        for node in ast.walk(ast.parse(text, filename)):
+            if isinstance(node, ast.Import):
+                found += [a.name.split(".")[1:] for a in node.names if a.name.split(".")[0] == self.package]
+            elif isinstance(node, ast.ImportFrom):
+                if node.level and package is not None:
+                    base = package[: len(package) - (node.level - 1)] + (node.module.split(".") if node.module else [])
+                elif not node.level and node.module and node.module.split(".")[0] == self.package:
+                    base = node.module.split(".")[1:]
+                else:
+                    continue
+                found.append(base)
+                found += [base + [a.name] for a in node.names if self.module_file(base + [a.name])]
+        return [m for m in found if self.module_file(m)]
+
+    def imports(self, parts) -> list[list[str]]:
+        """Modules directly imported by module ``parts``."""
+        key = tuple(parts)
+        if key not in self._imports:
+            f = self.module_file(list(parts))
+            package = list(parts) if f.name == "__init__.py" else list(parts[:-1])
+            self._imports[key] = self._parse(f.read_text(), str(f), package)
+        return self._imports[key]
+
+    def closure(self, *modules: str) -> list[str]:
+        """Files (relative to ``root``) of the dotted ``modules`` (without the package prefix),
+        of everything they import in turn, and of the package ``__init__`` files on the way."""
+        seen, todo = set(), [m.split(".") if m else [] for m in modules]
+        while todo:
+            parts = todo.pop()
+            if self.module_file(parts) is None:
+                raise ValueError(f"no module {self.package}.{'.'.join(parts)} under {self.pkg_dir.parent}")
+            key = tuple(parts)
+            if key in seen:
+                continue
+            seen.add(key)
+            todo += [parts[:i] for i in range(len(parts))] + self.imports(parts)
+        return sorted(str(self.module_file(list(k)).relative_to(self.root)) for k in seen)
+
+    # -- scripts and notebooks -----------------------------------------------------------------
+    def source_modules(self, path: Path | str) -> list[str]:
+        """Dotted names of the package modules a script (.py) or notebook (.ipynb) imports."""
+        path = Path(path)
+        text = path.read_text()
+        if path.suffix == ".ipynb":
+            cells = json.loads(text)["cells"]
+            text = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+            text = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith(("%", "!")))
+        return sorted({".".join(m) for m in self._parse(text, str(path), None)})
+
+    def source_closure(self, path: Path | str, *extra: str) -> list[str]:
+        """:meth:`closure` of what a script or notebook imports (plus ``extra`` modules it imports
+        dynamically)."""
+        return self.closure(*self.source_modules(path), *extra)

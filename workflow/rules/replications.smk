@@ -1,0 +1,106 @@
+# Every replication's rules, generated from the registry (gearrep.replications.REGISTRY) and each
+# study's package face (gearrep.replications._face): one rule per job (a published table or a
+# study: asking for one table runs that job alone), one checks rule, one figures rule and one
+# notebook rule per study. The rules only move data; the numerics are in the packages.
+
+for _key in REGISTRY:
+    _study = load_study(_key)
+    _code = lib(f"replications.{_key}", "published", "checks")
+    _tables = [f"results/{p}" for p in table_paths(_study.JOBS).values()]
+    _published = published_files(*_study.CHECK_DATA)
+    _benchmarks = [f"results/benchmarks/{_key}/{j}.tsv" for j in _study.JOBS]
+    _figures = {k: f"results/{p}" for k, p in _study.FIGURES.items()}
+
+    for _job, _spec in _study.JOBS.items():
+
+        rule:
+            name:
+                f"{_key}_{_job}"
+            input:
+                io=REPLICATION_IO,
+                code=_code,
+                design=published_files(*_study.DESIGN_DATA),
+            output:
+                **{t: f"results/{p}" for t, p in _spec.tables.items()},
+            params:
+                study=_key,
+                job=_job,
+                published_dir=PUBLISHED_DIR,
+                settings=SETTINGS[_key],  # a changed setting reruns the study's jobs
+            log:
+                f"results/logs/{_key}/{_job}.log",
+            benchmark:
+                f"results/benchmarks/{_key}/{_job}.tsv"
+            resources:
+                runtime=10,
+            conda:
+                "../envs/gearrep.yaml"
+            script:
+                "../scripts/run_job.py"
+
+    rule:
+        name:
+            f"{_key}_checks"
+        input:
+            io=REPLICATION_IO,
+            tables=_tables,
+            published=_published,
+            code=_code,
+        output:
+            **{n: f"results/{p}" for n, p in _study.CHECK_OUTPUTS.items()},
+        params:
+            study=_key,
+            published_dir=PUBLISHED_DIR,
+        log:
+            f"results/logs/{_key}/checks.log",
+        benchmark:
+            f"results/benchmarks/{_key}/checks.tsv"
+        conda:
+            "../envs/gearrep.yaml"
+        script:
+            "../scripts/run_checks.py"
+
+    if _figures:
+
+        rule:
+            name:
+                f"{_key}_figures"
+            input:
+                tables=_tables,
+                published=_published,
+                code=script_lib(f"workflow/scripts/{_key}_figures.py"),
+            output:
+                **{k: figure(p, _key) for k, p in _figures.items()},
+            log:
+                f"results/logs/{_key}/figures.log",
+            conda:
+                "../envs/gearrep.yaml"
+            script:
+                f"../scripts/{_key}_figures.py"
+
+    rule:
+        name:
+            f"{_key}_notebook"
+        input:
+            checks=f"results/{_study.CHECK_OUTPUTS['checks']}",
+            check_outputs=[f"results/{p}" for p in _study.CHECK_OUTPUTS.values()],
+            tables=_tables,
+            figures=list(_figures.values()),
+            published=_published,
+            benchmarks=_benchmarks,
+            code=script_lib(f"notebooks/{_key}.ipynb"),
+        output:
+            touch(f"results/notebooks/{_key}.executed"),
+        params:
+            settings=SETTINGS[_key],
+        log:
+            notebook=f"results/notebooks/{_key}.ipynb",
+        conda:
+            "../envs/gearrep.yaml"
+        notebook:
+            f"../../notebooks/{_key}.ipynb"
+
+    CHECK_FILES.append(f"results/{_study.CHECK_OUTPUTS['checks']}")
+    FINAL_OUTPUTS.extend(_tables + [f"results/{p}" for p in _study.CHECK_OUTPUTS.values()] + list(_figures.values()))
+    REPORT_FIGURES.extend(_figures[k] for k in _study.REPORT_FIGURES)
+    NOTEBOOKS.append(_key)

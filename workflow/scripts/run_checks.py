@@ -1,0 +1,22 @@
+"""Check records of a study (Snakemake script of the generic checks rules): compare every table of
+the study with the published values and claims of its seed, write the checks and their extra tables."""
+
+import replication_io
+
+from gearrep import published
+from gearrep.replications import load
+
+smk = snakemake  # noqa: F821  (provided by Snakemake)
+
+with replication_io.logged(smk.log[0]):
+    study = load(smk.params.study)
+    tables = replication_io.read_tables(smk.input.tables)
+    out = study.checks(tables, published.load(smk.params.published_dir))
+    missing = sorted(set(study.CHECK_OUTPUTS) - set(out))
+    if missing:
+        raise RuntimeError(f"{smk.params.study}.checks returned no {missing}")
+    for name in study.CHECK_OUTPUTS:
+        if name == "checks":
+            replication_io.write_checks(out[name], smk.output[name], smk.log[0])
+        else:
+            replication_io.write_table(out[name], smk.output[name])
