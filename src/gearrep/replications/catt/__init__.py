@@ -72,7 +72,9 @@ SETTINGS = _s.declare(
         "exact <= delta separation region against the ellipse at a few TCA points",
         design=_s.text("sec4_3d_model", "the design checked: the sec 4 model pair (validate: must be a design)"),
         phi_deg=_s.array([-10.0, 0.0, 10.0], "deg", "paper abscissae (reading R1) of the checked points", _deg),
-        n_dirs=_s.integer(96, "1", "rays of the tangent plane per point", ge=8, le=2000),
+        n_dirs=_s.integer(96, "1", "rays of the tangent plane per point: resolve the region's centroid (the claim's "
+                          "criterion); its area is not resolved (sec 4 pair: +14..26 % over pi a b with 96 rays, "
+                          "+1..3 % with 192, within 0.3 % with 384 and 768)", ge=8, le=2000),
     ),
 )
 

@@ -91,9 +91,10 @@ def _centred(t):
     return bool(off < 0.1 and g["all_solved"].all()), (
         f"Exact separation region (surfaces solved along {len(g)} x n_dirs rays, gap <= delta) around TCA points "
         f"phi={sorted(set(np.round(g['phi_paper_deg'], 2)))} deg of the sec 4 pair: centroid offset from the contact "
-        f"point <= {off:.2e} x 2b (criterion < 0.1). The exact region's area exceeds pi a b by "
-        f"{100 * g['area_rel_diff'].min():.0f}..{100 * g['area_rel_diff'].max():.0f}% (with a semi-major axis "
-        f"a = {a_semi:.1f} mm at the pitch point, higher-order terms of the separation matter); no loaded-contact model.")
+        f"point <= {off:.2e} x 2b (criterion < 0.1). The exact region's area differs from pi a b by "
+        f"{100 * g['area_rel_diff'].min():.0f}..{100 * g['area_rel_diff'].max():.0f}%, a ray quadrature of a slender "
+        f"region (semi-major axis a = {a_semi:.1f} mm at the pitch point) that depends on the number of rays "
+        f"(gap_check.n_dirs; not the claim's criterion); no loaded-contact model.")
 
 
 def _eq20(t):
