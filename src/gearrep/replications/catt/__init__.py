@@ -29,6 +29,11 @@ from .claims import checks, claim_verdicts  # noqa: F401
 from .contact import contact_geometry  # noqa: F401
 from .design import Design, params_from_published, validate  # noqa: F401
 
+__all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
+           "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "claim_verdicts",
+           "contact_geometry", "PAIRS", "PAIR_NAMES", "READINGS", "PRIMARY", "Mesh", "assemble", "path_limits",
+           "contact_radii", "reading_to_mesh", "solve_cycle", "starts"]
+
 SEED = "004"
 
 _deg = _s.number(None, "deg", "", ge=-90, le=90)
@@ -83,7 +88,7 @@ CHECK_DATA = ["claims_004.csv"]
 
 
 def _job(fn, *names):
-    return Job(fn, {n: f"catt/{n}.csv" for n in names}, fn.__doc__.split("\n")[0])
+    return Job(fn, {n: f"catt/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()))
 
 
 JOBS = {
