@@ -1,4 +1,5 @@
-"""Replication of seed 004 (Ma et al. 2021, CATT gears) in the fast setting.
+"""Replication of seed 004 (Ma et al. 2021, CATT gears) with the test settings (study_settings:
+declared values, config/config.yaml, config/test.yaml).
 
 Every claim of claims_004.csv keeps the status on file in expected_catt.csv (with its reason), and
 our own numbers are pinned: the pitch-point ellipse against the closed form (acceptance 1e-6,
@@ -6,6 +7,7 @@ actually ~1e-13), the TCA path (middle section, zero TE), and regression values 
 
 from __future__ import annotations
 
+import dataclasses
 import io
 from pathlib import Path
 
@@ -13,8 +15,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import study_settings
 from gearrep import checks as C
-from gearrep import published
+from gearrep import settings as S
 from gearrep.replications import catt
 
 ROOT = Path(__file__).parents[2]
@@ -22,22 +25,33 @@ EXPECTED = pd.read_csv(Path(__file__).with_name("expected_catt.csv"))
 
 
 @pytest.fixture(scope="module")
-def pub():
-    return published.load(ROOT / "data" / "published")
+def pub(published):
+    return published
 
 
 @pytest.fixture(scope="module")
-def tables(pub):
-    prm = {**catt.FAST_PARAMS, **catt.common_from_published(pub.params),
-           "designs": catt.designs_from_published(pub.params)}
-    t = catt.run(prm)
-    # through CSV, as in the workflow
-    return {k: pd.read_csv(io.StringIO(v.to_csv(index=False))) for k, v in t.items()}
+def design(pub):
+    return catt.params_from_published(pub)
+
+
+def _through_csv(tables):
+    """Tables as the workflow's checks read them (written with to_csv(index=False), read back)."""
+    return {k: pd.read_csv(io.StringIO(v.to_csv(index=False))) for k, v in tables.items()}
 
 
 @pytest.fixture(scope="module")
-def records(tables, pub):
-    return C.validate_checks(catt.checks(tables, pub))
+def tables(design):
+    return _through_csv(catt.run(study_settings("catt"), design))
+
+
+@pytest.fixture(scope="module")
+def outputs(tables, pub):
+    return catt.checks(tables, pub)
+
+
+@pytest.fixture(scope="module")
+def records(outputs):
+    return C.validate_checks(outputs["checks"])
 
 
 def test_every_claim_has_a_record(records, pub):
@@ -106,27 +120,52 @@ def test_regression_values(tables):
     assert th[(800.0, 0.0)] == pytest.approx(4 * np.pi, abs=1e-10)
 
 
-def test_verdicts_reported_for_every_reading(tables):
-    v = catt.claim_verdicts(tables)
+def test_verdicts_reported_for_every_reading(outputs):
+    v = outputs["claim_readings"]
     per = v.groupby("id").size()
     assert (per == 4).all()
     assert v.groupby("id")["primary"].sum().eq(1).all()
+    assert set(catt.CHECK_OUTPUTS) == set(outputs)
 
 
-def test_validate_params_errors():
-    with pytest.raises(ValueError, match="designs"):
-        catt.validate_params({})
-    with pytest.raises(ValueError, match="delta_mm"):
-        catt.validate_params({"delta_mm": -1.0, "designs": [{"name": "x", "group": "g", "z1": 19, "z2": 31,
-                                                                "module": 8, "R_T": 500, "face_width": 80}]})
-    with pytest.raises(ValueError, match="unknown"):
-        catt.validate_params({"bogus": 1})
+def test_every_job_writes_only_its_tables(tables):
+    """One job per table: each job's tables are the declared ones (run_jobs checks it) and
+    together they are every table the checks and figures read."""
+    assert set(tables) == {n for j in catt.JOBS.values() for n in j.tables}
+    assert {p for j in catt.JOBS.values() for p in j.tables.values()} == {f"catt/{n}.csv" for n in tables}
 
 
-def test_bench_cases_contract():
+def _with_param(pub, example, parameter, value):
+    p = pub.params.copy()
+    p.loc[(p["seed"] == "004") & (p["example"] == example) & (p["parameter"] == parameter), "value"] = value
+    return dataclasses.replace(pub, params=p)
+
+
+def test_bad_design_data_and_settings_are_refused(pub, design):
+    with pytest.raises(ValueError, match="elastic_approach"):
+        catt.params_from_published(_with_param(pub, "figs12-15_common", "elastic_approach", -1.0))
+    with pytest.raises(ValueError, match="tooth_line_radius"):
+        catt.params_from_published(_with_param(pub, "sec4_3d_model", "tooth_line_radius", 10.0))
+    with pytest.raises(S.SettingError, match="catt.bogus"):
+        S.resolve(catt.SETTINGS, {"bogus": 1}, where="catt")
+    with pytest.raises(S.SettingError, match="catt.maxiter"):
+        S.resolve(catt.SETTINGS, {"maxiter": 0}, where="catt")
+    good = study_settings("catt")
+    catt.validate(good, design)
+    bad = [({"section_check": {**good["section_check"], "design": "nope"}}, "catt.section_check.design"),
+           ({"gap_check": {**good["gap_check"], "design": "nope"}}, "catt.gap_check.design"),
+           ({"thickness": {**good["thickness"], "sections_mm": [0.0, 150.0]}}, "catt.thickness.sections_mm"),
+           ({"near_top_eval_deg": 20.0}, "catt.near_top_eval_deg"),
+           ({"near_top_deg": 40.0}, "catt.near_top_deg")]
+    for change, key in bad:
+        with pytest.raises(S.SettingError, match=key):
+            catt.run({**good, **change}, design, jobs=["settings"])
+
+
+def test_bench_cases_contract(design):
     """bench_cases follows workflow/scripts/bench_replication.py: knob settings, a reference, an error
     that is 0 for the reference itself and small for the configured setting."""
-    cases = catt.bench_cases({})
+    cases = catt.bench_cases(study_settings("catt"), design)
     assert set(cases) == {"tca_S", "truncation"}
     for c in cases.values():
         assert {"run", "settings", "reference", "error", "error_unit", "error_target", "current"} <= set(c)
@@ -139,13 +178,12 @@ def test_bench_cases_contract():
     assert c["error"](c["run"](c["current"]), ref) < c["error_target"]
 
 
-def test_workflow_setting_keeps_expected_statuses(pub):
+def test_workflow_setting_keeps_expected_statuses(pub, design):
     """The settings of config/config.yaml (what the workflow runs) give the statuses on file too."""
     import yaml
 
     cfg = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["catt"]
-    prm = {**cfg, **catt.common_from_published(pub.params), "designs": catt.designs_from_published(pub.params)}
-    t = {k: pd.read_csv(io.StringIO(v.to_csv(index=False))) for k, v in catt.run(prm).items()}
-    got = C.validate_checks(catt.checks(t, pub)).set_index("id")["status"]
+    t = _through_csv(catt.run(S.resolve(catt.SETTINGS, cfg, where="catt"), design))
+    got = C.validate_checks(catt.checks(t, pub)["checks"]).set_index("id")["status"]
     exp = EXPECTED.set_index("id")["status"]
     assert got.sort_index().equals(exp.sort_index()), (got[got != exp.reindex(got.index)]).to_dict()

@@ -37,7 +37,7 @@ KNOWN = {int(s) for s in Status}
 RC_SWEEP_MM = [float(r) for r in tc.DEFAULTS["rc_sweep_mm"]]  # 50 .. 50 000 mm (tseng_curvature config)
 L_END_MM = tc.DEFAULTS["l1_end_mm"]  # last row of Tables 4.2-4.5
 CATT_PRM = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
-CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA (catt DEFAULTS "tol")
+CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA here (tighter than the workflow's catt.tol 1e-8)
 
 
 def _full(request) -> bool:
@@ -317,7 +317,7 @@ def test_catt_tca_random_starts(pair_id, record_conditions):
         lim = catt_rep.path_limits(mesh)
         for phi in np.linspace(lim["phi1_lo"], lim["phi1_hi"], 5)[1:-1]:
             phi1 = np.full(n, phi)
-            start = catt_rep._starts(mesh, phi1, 0.0)
+            start = catt_rep.starts(mesh, phi1, 0.0)
             start[:, 0] += rng.uniform(-15, 15, n) / mesh.f1.rho0
             start[:, 2] += rng.uniform(-15, 15, n) / mesh.f2.rho0
             start[:, [1, 3]] += rng.uniform(-0.02, 0.02, (n, 2))

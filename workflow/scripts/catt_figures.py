@@ -1,4 +1,5 @@
-"""Seed 004 (CATT gears): figures like the paper's Figs 12-15 from results/catt/ (Snakemake script).
+"""Seed 004 (CATT gears): figures like the paper's Figs 12-15 from results/catt/ (Snakemake script:
+input.tables = every table of the study, output.<key> for each key of catt.FIGURES).
 
 The paper prints no numbers for Figs 12-15 (only curves), so there are no published markers:
 computed S = pi a b (eq 27) as solid lines, the ellipse truncated by the flank edges as dashed
@@ -18,8 +19,9 @@ from gearrep import plotting  # noqa: E402
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 inp, out = smk.input, smk.output
-cyc = pd.read_csv(inp.cycle)
-st = pd.read_csv(inp.settings).iloc[0]
+TABLES = {Path(f).stem: f for f in inp.tables}
+cyc = pd.read_csv(TABLES["cycle"])
+st = pd.read_csv(TABLES["settings"]).iloc[0]
 WLO, WHI = float(st["window_lo_deg"]), float(st["window_hi_deg"])
 PAIR = str(st["primary_pair"])
 XLAB = {"R1": "phi1 = pinion angle, root -> top [deg]", "R2": "phi1 read as gear angle, root -> top [deg]"}
@@ -74,7 +76,7 @@ for ax, rd in zip(axes, ("R1", "R2")):
 fig.suptitle(note, fontsize=9)
 save(fig, out.fig15)
 
-th = pd.read_csv(inp.thickness)
+th = pd.read_csv(TABLES["thickness"])
 fig, ax = plt.subplots()
 for sec, g in th.groupby("section_mm"):
     g = g.sort_values("R_T_mm")
