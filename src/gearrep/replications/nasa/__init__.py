@@ -78,7 +78,8 @@ def _job(fn, *names) -> Job:
         return out if isinstance(out, dict) else {names[0]: out}
 
     compute.__name__, compute.__doc__ = fn.__name__, fn.__doc__
-    return Job(compute, {n: f"nasa/{n}.csv" for n in names}, doc=(fn.__doc__ or "").strip().split("\n")[0])
+    doc = " ".join((fn.__doc__ or "").strip().split("\n\n")[0].split())  # first paragraph
+    return Job(compute, {n: f"nasa/{n}.csv" for n in names}, doc=doc)
 
 
 #: one job per table or study; output paths under results/
