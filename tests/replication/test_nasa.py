@@ -1,9 +1,10 @@
-"""Seed 002 (NASA CR-2000-209415, Novikov-Wildhaber gears): the replication in its fast setting.
+"""Seed 002 (NASA CR-2000-209415, Novikov-Wildhaber gears): the replication with the test settings.
 
-Runs :func:`gearrep.replications.nasa.run` once with ``FAST_PARAMS`` and checks the issue's
-acceptance items (curvatures by two methods agree to 1e-8, aligned TE zero to 1e-6 arcsec),
-regression values of our own numbers, and the expected status of every published seed-002
-value and claim (tests/replication/expected_nasa.csv, with the reason)."""
+Runs every job of :mod:`gearrep.replications.nasa` once with ``study_settings("nasa")`` (declared
+values, config/config.yaml, config/test.yaml) and checks the issue's acceptance items (curvatures
+by two methods agree to 1e-8, aligned TE zero to 1e-6 arcsec), the report's printed equations
+against the library route, regression values of our own numbers, and the expected status of
+every published seed-002 value and claim (tests/replication/expected_nasa.csv, with the reason)."""
 
 from pathlib import Path
 
@@ -11,19 +12,37 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from gearrep.replications import nasa
+from conftest import study_settings
+from gearrep import settings as gs
+from gearrep.replications import _face, nasa
 
 EXPECTED = Path(__file__).with_name("expected_nasa.csv")
 
 
 @pytest.fixture(scope="module")
-def tables(published):
-    return nasa.run({"design": nasa.design_from_published(published), **nasa.FAST_PARAMS})
+def settings():
+    return study_settings("nasa")
+
+
+@pytest.fixture(scope="module")
+def design(published):
+    return nasa.params_from_published(published)
+
+
+@pytest.fixture(scope="module")
+def tables(settings, design):
+    return nasa.run(settings, design)
 
 
 @pytest.fixture(scope="module")
 def records(tables, published):
-    return nasa.checks(tables, published)
+    return nasa.checks(tables, published)["checks"]
+
+
+def test_face_and_jobs(tables):
+    _face.check_face(nasa)
+    assert set(tables) == set(_face.table_paths(nasa.JOBS))
+    assert all(p == f"nasa/{n}.csv" for n, p in _face.table_paths(nasa.JOBS).items())
 
 
 def test_every_published_item_has_its_expected_status(records, published):
@@ -38,10 +57,39 @@ def test_every_published_item_has_its_expected_status(records, published):
     assert not wrong, f"status changed (expected, got): {wrong}"
 
 
+def test_check_tables_name_only_published_ids(published):
+    from gearrep.replications.nasa.claims import CLAIMS
+    from gearrep.replications.nasa.values import VALUES
+
+    assert set(VALUES) <= set(published.values.loc[published.values["seed"] == "002", "id"])
+    assert set(CLAIMS) <= set(published.claims.loc[published.claims["seed"] == "002", "id"])
+
+
+def test_a_missing_table_is_reported_not_computed(tables, published):
+    rec = nasa.checks({k: v for k, v in tables.items() if k != "worm_summary"}, published)["checks"].set_index("id")
+    assert rec.loc["002-S5.5-crowning=worm;misalignment=none-TE_max", "status"] == "not-computed"
+    assert "worm_summary" in rec.loc["002-S5.4-lead_correction", "note"]
+
+
 def test_curvatures_two_methods_agree(tables):
     cur = tables["curvatures"]
     assert (cur["max_rel_diff"] < 1e-8).all()
     assert (tables["path_curvatures"].groupby("member")[["kappa_I_per_in", "kappa_II_per_in"]].agg(np.ptp) < 1e-10).all().all()
+
+
+def test_printed_equations_against_the_library_route(tables):
+    ts = tables["transverse_section"].iloc[0]
+    assert abs(ts["rel_diff"]) < 1e-9  # eq 2.4.1 vs the curvature of the section of the rack surface
+    assert abs(tables["concavity"].iloc[0]["rel_diff"]) < 0.01  # eq 2.7.1 vs the sign change of the curvature
+    sens = tables["sensitivity"].set_index(["version", "step", "method"])
+    for v in (2, 3):  # eq 2.8.7 vs TCA with dE = 0.001 in
+        eq, tca = sens.loc[(v, "0.001in", "eq2.8.7_decrease")], sens.loc[(v, "0.001in", "tca")]
+        assert eq["delta_alpha_deg"] == pytest.approx(tca["delta_alpha_deg"], rel=0.05)
+        assert eq["delta_1"] == pytest.approx(tca["delta_1"], rel=0.05)  # eq 2.8.6
+    w = tables["worm_summary"].set_index("case")
+    dl = tables["parabola_relations"].set_index("equation").loc["5.4.7", "delta_l_in"]
+    for case in ("worm_dlambda_plus", "worm_dlambda_minus"):  # eq 5.4.7 vs the worm TCA
+        assert abs(w.loc[case, "vertex_z_in"] - w.loc["worm_aligned", "vertex_z_in"]) == pytest.approx(dl, rel=0.10)
 
 
 def test_aligned_pair_has_zero_te(tables):
@@ -84,22 +132,28 @@ def test_worm_ground_pinion(tables):
     assert abs(al.loc[al["phi1_rad"].abs().idxmin(), "te_arcsec"]) < 1e-6
 
 
-def test_bench_case_runs(published):
-    case = nasa.bench_cases({"design": nasa.design_from_published(published)})["te_max"]
+def test_bench_case_runs(settings, design):
+    case = nasa.bench_cases(settings, design)["te_max"]
     assert case["error_unit"] == "arcsec" and case["error_target"] == pytest.approx(5e-4)
     res = case["run"]({"te_points_per_cycle": 8, "tol": 1e-10})
     assert res == pytest.approx(40.4813, abs=1e-3)
 
 
-def test_params_are_validated(published):
-    d = nasa.design_from_published(published)
-    with pytest.raises(ValueError, match="design"):
-        nasa.validate_params({})
-    with pytest.raises(ValueError, match="unknown key"):
-        nasa.validate_params({"design": d, "te_points": 5})
-    with pytest.raises(ValueError, match="face_width_over_axial_pitch"):
-        nasa.validate_params({"design": d, "face_width_over_axial_pitch": 0.5})
-    with pytest.raises(ValueError, match="pinion_hand"):
-        nasa.validate_params({"design": d, "pinion_hand": "up"})
-    with pytest.raises(ValueError, match="tol"):
-        nasa.validate_params({"design": d, "tol": 1e-3})
+@pytest.mark.parametrize("override, key", [
+    ({"te_points": 5}, "te_points"),
+    ({"face_width_over_axial_pitch": 0.5}, "face_width_over_axial_pitch"),
+    ({"pinion_hand": "up"}, "pinion_hand"),
+    ({"tol": 1e-3}, "tol"),
+    ({"rho_t_sweep_times_Pn": [8.0]}, "rho_t_sweep_times_Pn"),
+])
+def test_settings_are_checked(override, key):
+    with pytest.raises(gs.SettingError, match=f"nasa.{key}"):
+        gs.resolve(nasa.SETTINGS, override, where="nasa")
+
+
+def test_cross_field_settings_are_validated(settings, design):
+    bad = {**settings, "rho_t_sweep_times_Pn": [5.5, 8.0]}  # 5.5 < rho_c P_n = 5.88
+    with pytest.raises(gs.SettingError, match="nasa.rho_t_sweep_times_Pn"):
+        nasa.validate(bad, design)
+    with pytest.raises(gs.SettingError, match="rho_t_sweep_times_Pn"):
+        nasa.JOBS["rho_sweep"].compute(bad, design)

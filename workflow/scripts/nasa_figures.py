@@ -3,7 +3,11 @@
 Computed values are lines, published values open markers (gearrep.plotting):
 TE functions of the profile-crowned pair under 3 arcmin errors (figs 2.8.3-2.8.4, 5.5.1-2,
 5.5.6-7) with TE_max against sec. 5.5; contact ellipses of Table 6.2.4 in their principal axes;
-sensitivity to dE (Table 6.2.3); contact paths on the pinion (fig. 1.10)."""
+sensitivity to dE (Table 6.2.3); contact paths on the pinion (fig. 1.10).
+
+Inputs (generic figures rule): ``snakemake.input.tables`` (every table of the study, named by
+file stem), ``snakemake.input.published`` (the CHECK_DATA files of gearrep.replications.nasa;
+the values files are read); outputs ``snakemake.output.<key>`` for each key of nasa.FIGURES."""
 
 from pathlib import Path
 
@@ -19,7 +23,9 @@ from gearrep import plotting  # noqa: E402
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 inp, out = smk.input, smk.output
-pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in inp.published], ignore_index=True).set_index("id")
+T = {Path(f).stem: f for f in inp.tables}
+pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in inp.published if Path(f).name.startswith("values_")],
+                ignore_index=True).set_index("id")
 LABEL = {"dgamma_plus": "dgamma = +3'", "dgamma_minus": "dgamma = -3'", "dlambda_helix_plus": "dlambda = +3' (lead)",
          "dlambda_helix_minus": "dlambda = -3' (lead)", "aligned": "aligned", "dE_0.001in": "dE = 0.001 in",
          "dgamma_intersecting": "3' in the plane of the axes"}
@@ -32,8 +38,8 @@ def save(fig, path):
 
 
 # TE functions and TE_max
-cyc = pd.read_csv(inp.te_cycle)
-summ = pd.read_csv(inp.te_summary).set_index("case")
+cyc = pd.read_csv(T["te_cycle"])
+summ = pd.read_csv(T["te_summary"]).set_index("case")
 fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.2))
 for case in ("dgamma_plus", "dlambda_helix_plus", "aligned"):
     c = cyc[cyc["case"] == case]
@@ -51,8 +57,8 @@ ax2.set_xticks(x, [LABEL[c] for c in cases], rotation=15)
 plotting.label_axes(ax2, "misalignment case [-]", "TE_max [arcsec]", "Maximal TE per cycle")
 plotting.finish(ax2)
 # worm-ground (plunged) pinion: TE over the cycle (figs 5.5.8-5.5.10)
-wc = pd.read_csv(inp.worm_cycle)
-ws = pd.read_csv(inp.worm_summary).set_index("case")
+wc = pd.read_csv(T["worm_cycle"])
+ws = pd.read_csv(T["worm_summary"]).set_index("case")
 fig_w, (ax, ax2w) = plt.subplots(1, 2, figsize=(12, 4.2))
 for case, col in (("worm_aligned", "C2"), ("worm_dgamma_plus", "C0"), ("worm_dlambda_plus", "C1")):
     g = wc[wc["case"] == case].sort_values("phi1_rad")
@@ -72,7 +78,7 @@ save(fig_w, out.worm)
 save(fig, out.te)
 
 # contact ellipses (principal axes, major along x)
-ell = pd.read_csv(inp.ellipse)
+ell = pd.read_csv(T["ellipse"])
 fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
 t = np.linspace(0, 2 * np.pi, 200)
 for ax, (v, zone) in zip(axes, ((1, "single"), (2, "pinion_addendum"), (3, "single"))):
@@ -88,7 +94,7 @@ for ax, (v, zone) in zip(axes, ((1, "single"), (2, "pinion_addendum"), (3, "sing
 save(fig, out.ellipses)
 
 # sensitivity to dE (Table 6.2.3)
-sens = pd.read_csv(inp.sensitivity)
+sens = pd.read_csv(T["sensitivity"])
 fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4))
 for method, style in (("tca", {}), ("eq2.8.7_decrease", {"linestyle": "--"})):
     s = sens[(sens["method"] == method) & (sens["step"] == "0.001in")].sort_values("version")
@@ -106,7 +112,7 @@ plotting.finish(ax2)
 save(fig, out.sensitivity)
 
 # contact paths on the pinion (rack profile parameter vs axial position), fig. 1.10
-sg = pd.read_csv(inp.te_single)
+sg = pd.read_csv(T["te_single"])
 fig, ax = plt.subplots()
 for case in ("aligned", "dE_0.001in", "dgamma_plus", "dlambda_helix_plus"):
     s = sg[(sg["case"] == case) & sg["on_face"].astype(bool)]
@@ -115,3 +121,5 @@ plotting.label_axes(ax, "axial position of the contact point [in]", "pinion rack
                     "Contact paths on the pinion (u = 0: helix through Q)")
 plotting.finish(ax)
 save(fig, out.paths)
+Path(smk.log[0]).parent.mkdir(parents=True, exist_ok=True)
+Path(smk.log[0]).write_text("nasa figures: " + ", ".join(str(f) for f in out) + "\n")

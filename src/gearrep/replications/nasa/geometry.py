@@ -1,0 +1,228 @@
+"""Flanks, curvatures at Q and gear pairs of seed 002 (lengths in inches, curvatures in 1/in).
+
+Report convention: the unit normal is the one for which the convex pinion has positive
+curvatures (minus the rack-cutter normal of :mod:`gearrep.surfaces.rack`); kappa_I is the
+curvature along the principal direction closest to the rack generatrix (fig. 2.5.1:
+kappa_I^(c) = 0 along the generatrix, eq 2.5.1), kappa_II the other. Curvatures two ways:
+Litvin's generating/generated relations (:func:`gearrep.curvature_relations.generated_curvatures`)
+and differential geometry of the generated surface (:mod:`gearrep.curvature`). TCA frames:
+:mod:`gearrep.surfaces.novikov`."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ... import frames
+from ...curvature import PrincipalCurvatures, principal_curvatures
+from ...curvature_relations import generated_curvatures
+from ...ellipse import elastic_ellipse_at
+from ...surfaces.novikov import RackGeneratedFlank, WormGeneratedPinion, pitch_radius
+from ...surfaces.rack import nasa_l
+from ...tca import GearPair, solve_contact
+from ...units import DEG
+from .design import design_beta
+
+__all__ = ["basics", "make_flank", "point_curvatures", "report_principal", "line_angle", "pair_at_Q", "make_pair",
+           "aligned_start", "contact", "make_worm_pair", "solve_with_retries", "worm_start"]
+
+
+def basics(d: dict):
+    """(P_n, alpha_n, beta, l) of the sec. 2.5 design: l = |QP| = cos(alpha_n)/P_n."""
+    Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
+    return Pn, an, beta, nasa_l(an, Pn)
+
+
+def make_flank(d, a, alpha_n, l, beta, member, tol=1e-13, beta_rack=None) -> RackGeneratedFlank:
+    """Pinion (``member='pinion'``, member_side -1) or gear (+1) flank; outward normal chosen so
+    that the pinion's is the rack normal (its curvatures are then negative in gearrep's
+    convention: a convex surface) and the gear's the opposite."""
+    N = d["N1"] if member == "pinion" else d["N2"]
+    side = -1 if member == "pinion" else 1
+    r_p = pitch_radius(N, d["P_n_per_in"], beta)
+    f = RackGeneratedFlank(a, alpha_n, l, beta if beta_rack is None else beta_rack, r_p, side, tol=tol)
+    rec = f.solve(0.0, 0.0)
+    s = int(np.sign(np.dot(f.evaluate(np.array([0.0]), np.array([0.0])).normal[0], rec.normal[0])))
+    f.outward_sign = s if member == "pinion" else -s
+    return f
+
+
+def _report_curvatures(k1, k2, e1, e2, generatrix):
+    """(kappa_I, kappa_II, e_I, e_II) in the report convention (normal -n): kappa_I along the
+    principal direction closest to the rack generatrix."""
+    kI_is_1 = np.abs(np.sum(e1 * generatrix, -1)) >= np.abs(np.sum(e2 * generatrix, -1))
+    kI = np.where(kI_is_1, -k1, -k2)
+    kII = np.where(kI_is_1, -k2, -k1)
+    eI = np.where(kI_is_1[..., None], e1, e2)
+    eII = np.where(kI_is_1[..., None], e2, e1)
+    return kI, kII, eI, eII
+
+
+def point_curvatures(flank: RackGeneratedFlank, u=0.0, theta=0.0) -> dict:
+    """Curvatures of a generated surface at rack parameters (u, theta) by both methods."""
+    u = np.atleast_1d(np.asarray(u, float))
+    theta = np.broadcast_to(np.asarray(theta, float), u.shape)
+    rec = flank.solve(u, theta)
+    if not np.all(rec.converged):
+        raise RuntimeError(f"envelope solve did not converge: {rec.solve.status_name}")
+    gc = generated_curvatures(flank.envelope, rec.params)
+    pc = principal_curvatures(flank.evaluate(u, theta))
+    # direct curvatures w.r.t. the tool normal (the common normal)
+    flip = np.sum(pc.normal * gc.normal, -1) < 0
+    dk1 = np.where(flip, -pc.k2, pc.k1)
+    dk2 = np.where(flip, -pc.k1, pc.k2)
+    gen = frames.transform_vectors(flank.envelope.local(rec.params).M, flank.rack.t)  # rack generatrix
+    kI, kII, eI, eII = _report_curvatures(gc.k1, gc.k2, gc.e1, gc.e2, gen)
+    dI, dII, _, _ = _report_curvatures(dk1, dk2, np.where(flip[:, None], pc.e2, pc.e1),
+                                       np.where(flip[:, None], pc.e1, pc.e2), gen)
+    sig = np.degrees(np.arccos(np.clip(np.abs(np.sum(eI * gen, -1)), 0, 1)))
+    return dict(rec=rec, gc=gc, kI=kI, kII=kII, eI=eI, eII=eII, kI_dg=dI, kII_dg=dII, normal=-gc.normal,
+                sigma_rack_deg=sig, path_tangent=rec.tangents[:, 1])
+
+
+def report_principal(cv, i=0) -> PrincipalCurvatures:
+    """PrincipalCurvatures (report normal) of point ``i`` of a :func:`point_curvatures` record."""
+    kI, kII = cv["kI"][i], cv["kII"][i]
+    eI, eII, n = cv["eI"][i], cv["eII"][i], cv["normal"][i]
+    if np.dot(np.cross(eI, eII), n) < 0:
+        eII = -eII
+    if kI >= kII:
+        return PrincipalCurvatures(np.array(kI), np.array(kII), eI, eII, n)
+    return PrincipalCurvatures(np.array(kII), np.array(kI), eII, -eI, n)
+
+
+def _signed_angle(a, b, n):
+    return float(np.degrees(np.arctan2(np.dot(n, np.cross(a, b)), np.dot(a, b))))
+
+
+def line_angle(a, b, n):
+    """Angle from line a to line b about n, wrapped to (-90, 90] deg."""
+    x = _signed_angle(a, b, n)
+    return 90.0 - np.mod(90.0 - x, 180.0)
+
+
+def pair_at_Q(d, rho_c, rho_t, alpha_n, l, beta, delta, tol=1e-13) -> dict:
+    """Curvatures of pinion and gear at Q and the contact ellipse of elastic approach ``delta`` (one row)."""
+    c1 = point_curvatures(make_flank(d, 1 / (2 * rho_c), alpha_n, l, beta, "pinion", tol))
+    c2 = point_curvatures(make_flank(d, 1 / (2 * rho_t), alpha_n, l, beta, "gear", tol))
+    p1, p2 = report_principal(c1), report_principal(c2)
+    el = elastic_ellipse_at(p1, p2, delta)
+    n = p1.normal
+    major = np.asarray(el.major_axis)
+    t1 = c1["path_tangent"][0]
+    t2 = c2["path_tangent"][0]
+    return dict(
+        kappa_I_1_per_in=c1["kI"][0], kappa_II_1_per_in=c1["kII"][0],
+        kappa_I_2_per_in=c2["kI"][0], kappa_II_2_per_in=c2["kII"][0],
+        kappa_I_1_dg_per_in=c1["kI_dg"][0], kappa_II_1_dg_per_in=c1["kII_dg"][0],
+        kappa_I_2_dg_per_in=c2["kI_dg"][0], kappa_II_2_dg_per_in=c2["kII_dg"][0],
+        sigma_deg=line_angle(c1["eI"][0], c2["eI"][0], n),
+        sigma_1c_deg=c1["sigma_rack_deg"][0], sigma_2t_deg=c2["sigma_rack_deg"][0],
+        major_2a_in=2 * float(el.a), minor_2b_in=2 * float(el.b), area_in2=float(el.area),
+        alpha1_deg=float(np.degrees(el.alpha)), elliptic=bool(el.elliptic),
+        mu1_deg=line_angle(t1, major, n), mu2_deg=line_angle(t2, major, n),
+        path_tangent_angle_deg=abs(line_angle(t1, t2, n)),
+    )
+
+
+def make_pair(d, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=0.0, tol=1e-13, hand="left"):
+    """Profile-crowned pair in :class:`gearrep.tca.GearPair` frames. ``hand`` of the pinion:
+    "left" as in the report (sec. 2.1) uses the rack helix angle -beta (with member_side -1 a
+    positive rack helix angle generates a right-hand member, :mod:`gearrep.surfaces.rack`).
+    ``d_lambda`` > 0 increases the pinion's lead angle (decreases its helix angle) while its
+    pitch cylinder is kept."""
+    if hand not in ("left", "right"):
+        raise ValueError(f"hand must be 'left' or 'right', got {hand!r}")
+    h = -1.0 if hand == "left" else 1.0
+    pin = make_flank(d, 1 / (2 * rho_c), alpha_n, l, h * beta, "pinion", tol, beta_rack=h * (beta - d_lambda))
+    gear = make_flank(d, 1 / (2 * rho_t), alpha_n, l, h * beta, "gear", tol)
+    E = pin.r_p + gear.r_p
+    return GearPair(pin, gear, d["N1"], d["N2"], E, misalignment=misalignment, phase2=0.0)
+
+
+def aligned_start(pair, phi1):
+    """Start (u1, theta1, u2, theta2, phi2) of the conventional TCA: the aligned contact on the
+    helices u = 0 (both rolling angles are -phi1 and -(N1/N2) phi1: module doc of
+    :mod:`gearrep.surfaces.novikov`), solved for theta from the closed-form rolling angle."""
+    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    out = []
+    for f, ang in ((pair.flank1, -phi1), (pair.flank2, -pair.ratio * phi1)):
+        ph0, _, _, ph_t = f.rolling_angle(np.zeros_like(phi1), np.zeros_like(phi1))
+        out.append((ang - ph0) / ph_t)
+    z = np.zeros_like(phi1)
+    return np.column_stack([z, out[0], z, out[1], pair.ratio * phi1])
+
+
+def contact(pair, phi1, s: dict, start=None):
+    """Conventional TCA at ``phi1`` (default start: :func:`aligned_start`); ``s``: the settings."""
+    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    if start is None:
+        start = aligned_start(pair, phi1)
+    return solve_contact(pair, phi1, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+
+
+def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
+    """Pinion ground by the plunging worm of sec. 5.4 (r_pw, a_pl, N_w = 1) with the profile-
+    crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
+    default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda)."""
+    Pn, an, beta, l = basics(d)
+    h = -1.0 if s["pinion_hand"] == "left" else 1.0
+    r_p1 = pitch_radius(d["N1"], Pn, beta)
+    worm = WormGeneratedPinion(Pn / (2 * d["rho_c_times_Pn"]), an, l, h * (beta - d_lambda), r_p1, Pn, d["r_pw_in"],
+                               d["a_pl_per_in"] if a_pl is None else a_pl, N_w=int(d["N_w"]), tol=s["tol"])
+    rec = worm.solve(np.array([0.0]), np.array([0.0]))
+    nrm = worm.evaluate(np.array([0.0]), np.array([0.0])).normal[0]
+    worm.outward_sign = int(np.sign(np.dot(nrm, rec.normal[0])))
+    gear = make_flank(d, Pn / (2 * d["rho_t_times_Pn"]), an, l, h * beta, "gear", s["tol"])
+    pair = GearPair(worm.light(), gear, d["N1"], d["N2"], r_p1 + gear.r_p, misalignment=misalignment, phase2=0.0)
+    # z of the pinion point generated at (psi = 0, l): linear in l (for the TCA starts)
+    ls = np.array([-1.0, 1.0])
+    zs = worm.solve(np.zeros(2), ls).point[:, 2]
+    pair.l_of_z = lambda z: (np.asarray(z) - zs[0]) / (zs[1] - zs[0]) * 2.0 - 1.0
+    return pair
+
+
+def solve_with_retries(pair, phi, start, s, passes=3):
+    """Conventional TCA at all phi from ``start``; points that fail are restarted from the nearest
+    converged neighbour (linear predictor from two neighbours when available)."""
+    c = solve_contact(pair, phi, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    for _ in range(passes):
+        bad = np.nonzero(~c.converged)[0]
+        good = np.nonzero(c.converged)[0]
+        if len(bad) == 0 or len(good) == 0:
+            break
+        X = c.unknowns("conventional")
+        st = []
+        for i in bad:
+            j = good[np.argsort(np.abs(good - i))[:2]]
+            if len(j) == 2 and phi[j[0]] != phi[j[1]]:
+                st.append(X[j[0]] + (X[j[0]] - X[j[1]]) * (phi[i] - phi[j[0]]) / (phi[j[0]] - phi[j[1]]))
+            else:
+                st.append(X[j[0]])
+        c2 = solve_contact(pair, phi[bad], np.array(st), formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+        fixed = c2.converged
+        if not fixed.any():
+            break
+        idx = bad[fixed]
+        parts = {f: getattr(c, f).copy() for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te",
+                                                   "residual", "iterations", "status")}
+        for f in parts:
+            parts[f][idx] = getattr(c2, f)[fixed]
+        c = type(c)(formulation=c.formulation, **parts)
+    return c
+
+
+class _RackView:
+    """Duck-typed pair for :func:`aligned_start` using only the gear flank (its theta start)."""
+
+    def __init__(self, pair):
+        self.flank1, self.flank2, self.ratio = pair.flank2, pair.flank2, pair.ratio
+
+
+def worm_start(pair, phi1):
+    """TCA start for the worm-ground pinion: the aligned profile-crowned contact (u = 0 helices),
+    mapped to the pinion's generating parameters (psi = 0, l from the axial position)."""
+    rack_like = aligned_start(_RackView(pair), phi1)
+    th2 = rack_like[:, 3]
+    g = pair.flank2.evaluate(np.zeros_like(th2), th2).r
+    z = g[:, 2]
+    return np.column_stack([np.zeros_like(z), pair.l_of_z(z), np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])

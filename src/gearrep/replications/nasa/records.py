@@ -1,0 +1,82 @@
+"""Check records of seed 002: every published value and claim against the tables of the jobs
+(gearrep.checks; tolerances from the printed precision only). The tables of what is compared
+are :data:`.values.VALUES` and :data:`.claims.CLAIMS`: id -> :class:`Rule` or a not-computed reason."""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+import pandas as pd
+
+from ... import checks as ck
+
+__all__ = ["Rule", "one", "evaluate", "check_records", "NOT_COMPUTED_DISK", "NOT_COMPUTED_HEIGHTS",
+           "NOT_COMPUTED_INPUT_RADII", "NOT_COMPUTED_SEC3"]
+
+
+class Rule:
+    """``fn(tables) -> (value or holds, note)`` evaluated only if the tables in ``needs`` exist."""
+
+    __slots__ = ("needs", "fn")
+
+    def __init__(self, needs: tuple[str, ...], fn: Callable[[dict], tuple]):
+        self.needs, self.fn = tuple(needs), fn
+
+
+
+NOT_COMPUTED_DISK = (
+    "the disk-ground pinion (sec. 4, appendices A-B) is not computed: the report gives no grinding-disk radius or "
+    "profile for the example (only the equivalent plunging coefficient a_d ~ a_pl sin(alpha_t)/sin(alpha_t + pi/N1), "
+    "eq 5.4.13); the worm case is computed")
+NOT_COMPUTED_HEIGHTS = (
+    "tooth heights follow from the undercutting and pointing limits of sec. 2.4 / 3.3, which need the rack "
+    "tooth thickness at the pitch line and the minimum top-land width used by the report: neither is printed "
+    "(sec. 2.4 only says a minimal top-land width was kept); the printed totals equal ha + hd")
+NOT_COMPUTED_INPUT_RADII = (
+    "versions 1 and 2 radii are design inputs of the circular-arc rack-cutters (refs. 1-4 of the report), not "
+    "results of a computation in the report; they are used here as inputs of Table 6.2.4 and 6.2.3")
+NOT_COMPUTED_SEC3 = ("the tooth height of the pinion concave-gear convex design (sec. 3.3) is not computed: it needs "
+                     "the undercutting and pointing analysis of the convex gear with the top land t_a = 0.3/P_n and "
+                     "the rack tooth thickness (not printed), which this replication does not implement")
+
+
+def one(df, **sel):
+    """The one row of ``df`` whose columns equal ``sel`` (compared as strings); KeyError otherwise."""
+    m = np.ones(len(df), bool)
+    for k, v in sel.items():
+        m &= (df[k].astype(str) == str(v)).to_numpy()
+    if m.sum() != 1:
+        raise KeyError(f"no unique row for {sel} ({m.sum()} rows)")
+    return df[m].iloc[0]
+
+
+def evaluate(entry, tables: dict):
+    """(value or holds, note) of a :class:`Rule`, or the not-computed reason (a string)."""
+    if isinstance(entry, str):
+        return entry
+    missing = [n for n in entry.needs if n not in tables]
+    if missing:
+        return f"not computed in this run: tables {missing} are missing"
+    return entry.fn(tables)
+
+
+def check_records(tables: dict, published, seed: str, values: dict, claims: dict) -> pd.DataFrame:
+    """One check record per published value and claim of ``seed``: ``values`` / ``claims`` map
+    ids to a :class:`Rule` or a reason; ids not in them are 'not computed' with a generic reason."""
+    recs = []
+    vals = published.values[published.values["seed"] == seed]
+    for _, r in vals.iterrows():
+        got = evaluate(values.get(r["id"], "no computed counterpart in this replication"), tables)
+        if isinstance(got, str):
+            recs.append(ck.not_computed(r.to_frame().T, got).iloc[0].to_dict())
+        else:
+            recs.append(ck.compare_value(r, float(got[0]), note=got[1]))
+    cl = published.claims[published.claims["seed"] == seed]
+    for _, c in cl.iterrows():
+        got = evaluate(claims.get(c["id"], "claim not evaluated by this replication"), tables)
+        if isinstance(got, str):
+            recs.append(ck.not_computed(c.to_frame().T, got).iloc[0].to_dict())
+        else:
+            recs.append(ck.qualitative(c, bool(got[0]), got[1]))
+    return ck.validate_checks(pd.DataFrame(recs, columns=ck.CHECK_COLUMNS))

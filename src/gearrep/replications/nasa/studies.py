@@ -1,0 +1,257 @@
+"""Studies at the design point Q and of the centre-distance sensitivity (seed 002): one function
+per table, each ``f(settings, design) -> DataFrame`` callable alone (lengths in inches).
+
+* :func:`curvatures` (sec. 2.5) and :func:`ellipse` (sec. 2.6, Table 6.2.4): versions 1-2 have
+  circular-arc rack profiles whose centre (pinion addendum) lies on the pitch line (sec. 6.2),
+  so |QP| = rho_pinion; the curvatures at Q depend only on the rack profile curvature there, so
+  the arc is represented by its osculating parabola a = 1/(2 rho).
+* :func:`sensitivity` (Table 6.2.3): eq 2.8.6-2.8.7 and TCA (contact point on the pinion at
+  phi1 = 0 with dE: d alpha = atan(2 a_c u_c), the turn of the rack profile tangent).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import brentq
+
+from ... import frames
+from ...solve import Status
+from ...surfaces.rack import nasa_l
+from ...tca import Misalignment
+from ...units import ARCMIN, ARCSEC, DEG, MM_PER_IN
+from . import model
+from .design import design_beta
+from .geometry import basics, contact, make_flank, make_pair, pair_at_Q, point_curvatures, report_principal
+
+__all__ = ["curvatures", "ellipse", "path_curvatures", "concavity", "transverse_section", "concave_pinion",
+           "sensitivity", "shifts", "rho_sweep", "parabola_relations"]
+
+
+def _q_variants(d):
+    """(case, beta, rho_c, rho_t) at Q: the design, the printed helix angle, the printed a_c, a_t."""
+    Pn, _, beta, _ = basics(d)
+    rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
+    return [("design", beta, rho_c, rho_t),
+            ("beta_printed", d["beta_printed_deg"] * DEG, rho_c, rho_t),
+            ("a_printed", beta, 1 / (2 * d["a_c_printed_per_in"]), 1 / (2 * d["a_t_printed_per_in"]))]
+
+
+def curvatures(s: dict, d: dict) -> pd.DataFrame:
+    """Sec. 2.5: principal curvatures at Q of pinion and gear by the curvature relations and by
+    differential geometry (``_dg``), for the design and the printed beta / a_c, a_t variants."""
+    _, an, _, l = basics(d)
+    rows = []
+    for name, b, rc, rt in _q_variants(d):
+        for m, rho in (("pinion", rc), ("gear", rt)):
+            cv = point_curvatures(make_flank(d, 1 / (2 * rho), an, l, b, m, s["tol"]))
+            a_rel = np.array([cv["kI"][0], cv["kII"][0]])
+            a_dg = np.array([cv["kI_dg"][0], cv["kII_dg"][0]])
+            rows.append(dict(case=name, member=m, beta_deg=np.degrees(b), rho_rack_in=rho,
+                             kappa_I_per_in=a_rel[0], kappa_II_per_in=a_rel[1],
+                             kappa_I_dg_per_in=a_dg[0], kappa_II_dg_per_in=a_dg[1],
+                             max_rel_diff=float(np.max(np.abs(a_rel - a_dg)) / np.max(np.abs(a_rel))),
+                             gaussian_per_in2=a_rel[0] * a_rel[1], sigma_to_rack_deg=cv["sigma_rack_deg"][0]))
+    return pd.DataFrame(rows)
+
+
+def ellipse(s: dict, d: dict) -> pd.DataFrame:
+    """Table 6.2.4 and sec. 2.6: contact ellipse at Q of versions 1-3 (version 3 also with the
+    printed beta, the printed a_c, a_t and the sec. 2.6 elastic approach)."""
+    _, an, _, l = basics(d)
+    rows = []
+    for name, b, rc, rt in _q_variants(d):
+        cases = [(name, d["delta_in"])] + ([("delta_sec2.6", d["delta_s26_in"])] if name == "design" else [])
+        for case, delta in cases:
+            r = pair_at_Q(d, rc, rt, an, l, b, delta, s["tol"])
+            rows.append(dict(version=3, zone="single", case=case, alpha_n_deg=np.degrees(an), beta_deg=np.degrees(b),
+                             l_in=l, rho_pinion_in=rc, rho_gear_in=rt, delta_in=delta, **r))
+    # versions 1 and 2 (circular arcs, centre of the pinion-addendum arc on the pitch line: l = rho)
+    an12 = d["alpha_n_v12_deg"] * DEG
+    for version, zone, (rc, rt) in ((1, "single", d["rho_v1"]), (2, "pinion_addendum", d["rho_v2_add"]),
+                                    (2, "pinion_dedendum", d["rho_v2_ded"])):
+        for name, b in (("design", design_beta(d)), ("beta_printed", d["beta_printed_deg"] * DEG)):
+            r = pair_at_Q(d, rc, rt, an12, rc, b, d["delta_in"], s["tol"])
+            rows.append(dict(version=version, zone=zone, case=name, alpha_n_deg=np.degrees(an12),
+                             beta_deg=np.degrees(b), l_in=rc, rho_pinion_in=rc, rho_gear_in=rt,
+                             delta_in=d["delta_in"], **r))
+    return pd.DataFrame(rows)
+
+
+def path_curvatures(s: dict, d: dict) -> pd.DataFrame:
+    """Curvatures along the helix u = 0 traced by Q (claim: constant along the path)."""
+    Pn, an, beta, l = basics(d)
+    rows = []
+    th = np.linspace(-1.0, 1.0, int(s["n_path_points"]))
+    for m, rho in (("pinion", d["rho_c_times_Pn"] / Pn), ("gear", d["rho_t_times_Pn"] / Pn)):
+        cv = point_curvatures(make_flank(d, 1 / (2 * rho), an, l, beta, m, s["tol"]), np.zeros_like(th), th)
+        for i, t in enumerate(th):
+            rows.append(dict(member=m, theta_in=t, kappa_I_per_in=cv["kI"][i], kappa_II_per_in=cv["kII"][i]))
+    return pd.DataFrame(rows)
+
+
+def concavity(s: dict, d: dict) -> pd.DataFrame:
+    """Eq 2.7.1: the rho_t at which the gear's normal curvature along the rack profile
+    direction at Q changes sign, against the printed bound N2 sin(alpha_n)/(2 P_n cos^3 beta) + l."""
+    Pn, an, beta, l = basics(d)
+
+    def k_profile(rho_t):
+        f = make_flank(d, 1 / (2 * rho_t), an, l, beta, "gear", s["tol"])
+        cv = point_curvatures(f)
+        r_u = f.rack.evaluate(0.0, 0.0).r_u
+        e_prof = frames.transform_vectors(f.envelope.local(cv["rec"].params).M[0], r_u / np.linalg.norm(r_u))
+        pc = report_principal(cv)
+        c = np.dot(e_prof, pc.e1)
+        sn = np.dot(e_prof, pc.e2)
+        return float(pc.k1 * c * c + pc.k2 * sn * sn)
+
+    bound = model.rho_t_bound_eq_2_7_1(d["N2"], an, Pn, beta, l)
+    k_design = k_profile(d["rho_t_times_Pn"] / Pn)
+    root = brentq(k_profile, 0.5 * bound, 2.0 * bound, xtol=1e-12)
+    pin = point_curvatures(make_flank(d, Pn / (2 * d["rho_c_times_Pn"]), an, l, beta, "pinion", s["tol"]))
+    return pd.DataFrame([dict(bound_eq271_in=bound, rho_t_sign_change_in=root, rel_diff=(root - bound) / bound,
+                              kappa_profile_design_per_in=k_design, kappa_profile_pinion_sign=np.sign(pin["kII"][0]))])
+
+
+def transverse_section(s: dict, d: dict) -> pd.DataFrame:
+    """Sec. 2.4, eq 2.4.1: the transverse section (plane z_c = 0) of the pinion rack cylinder is the
+    normal parabola stretched by 1/cos(beta) across the tooth (theta = y_b tan(beta) on the
+    plane), hence a parabola; its curvature at Q against 2 a_c* (eq 2.4.1), and the discriminant
+    of a conic fitted to the section (0 for a parabola). Q is not the vertex of the transverse
+    parabola (the stretch is not along its axis)."""
+    Pn, an, beta, l = basics(d)
+    a = d["a_c_printed_per_in"]
+    rack = make_flank(d, a, an, l, beta, "pinion", s["tol"]).rack
+    u = np.linspace(-0.3, 0.3, 61)
+    xb, yb = rack.profile(u)[:2]
+    X, Y = xb, yb / np.cos(beta)  # transverse coordinates (height, along the pitch line)
+    # points on the rack surface in the plane z = 0: theta = y_b tan(beta)
+    pts = rack.position(u, yb * np.tan(beta))
+    plane_err = float(np.max(np.abs(pts[:, 2])))
+    _, _, x1, y1, x2, y2 = (float(np.asarray(q)) for q in rack.profile(0.0))  # analytic derivatives at Q
+    Xd, Yd, Xdd, Ydd = x1, y1 / np.cos(beta), x2, y2 / np.cos(beta)
+    kappa = abs(Xd * Ydd - Yd * Xdd) / (Xd**2 + Yd**2) ** 1.5
+    alpha_t = np.arctan(np.tan(an) / np.cos(beta))
+    a_star = model.a_c_star_eq_2_4_1(a, an, beta)
+    # conic A X^2 + B XY + C Y^2 + D X + E Y + F = 0 through the section points (null vector)
+    Mtx = np.column_stack([X * X, X * Y, Y * Y, X, Y, np.ones_like(X)])
+    A, B, C = np.linalg.svd(Mtx)[2][-1][:3]
+    disc = (B * B - 4 * A * C) / (A * A + B * B + C * C)
+    return pd.DataFrame([dict(a_c_per_in=a, a_star_eq241_per_in=a_star, half_curvature_at_Q_per_in=kappa / 2,
+                              rel_diff=kappa / 2 / a_star - 1, conic_discriminant_rel=disc, plane_error_in=plane_err,
+                              alpha_t_deg=np.degrees(alpha_t))])
+
+
+_ELLIPSE_COLUMNS = ("kappa_I_1_per_in", "kappa_II_1_per_in", "kappa_I_2_per_in", "kappa_II_2_per_in", "major_2a_in",
+                    "minor_2b_in", "area_in2", "elliptic")
+
+
+def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
+    """Sec. 3.2-3.4: contact ellipse at Q of the pinion concave-gear convex design (rack data of
+    sec. 3.2: a_c = 1.25 P_n, a_t = 1.389 P_n, l_c = 0.906/P_n, alpha_n = 25 deg) with the sec. 2
+    gear data, against the sec. 2 design. Our reading of fig. 3.2.1 (not in the text): both
+    rack profiles bend away from P (convex pinion rack, a < 0 in :mod:`gearrep.surfaces.rack`);
+    of the four sign choices it is the only one with a concave pinion and an elliptic contact
+    (all four are listed)."""
+    Pn, an, beta, l = basics(d)
+    ac, at, lc = d["s3_a_c_over_Pn"] * Pn, d["s3_a_t_over_Pn"] * Pn, d["s3_l_c_times_Pn"] / Pn
+    rows = []
+    for sc in (1, -1):
+        for st in (1, -1):
+            r = pair_at_Q(d, sc / (2 * ac), st / (2 * at), an, lc, beta, d["delta_in"], s["tol"])
+            rows.append(dict(design="sec3", sign_a_c=sc, sign_a_t=st, pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
+                             **{k: r[k] for k in _ELLIPSE_COLUMNS}))
+    r = pair_at_Q(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, d["delta_in"], s["tol"])
+    rows.append(dict(design="sec2", sign_a_c=1, sign_a_t=1, pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
+                     **{k: r[k] for k in _ELLIPSE_COLUMNS}))
+    return pd.DataFrame(rows)
+
+
+def _sensitivity_tca(s, d, version, step, dE, r1, r2, an, l, beta, h) -> dict:
+    """TCA row of Table 6.2.3: contact on the pinion at phi1 = 0 with dE; d alpha = atan(2 a u)."""
+    pair = make_pair(d, r1, r2, an, l, beta, misalignment=Misalignment(d_E=dE), tol=s["tol"], hand=s["pinion_hand"])
+    c = contact(pair, [0.0], s)
+    u = float(c.u1[0])
+    a = pair.flank1.rack.a
+    arc = (u * np.sqrt(1 + 4 * a * a * u * u) / 2 + np.arcsinh(2 * a * u) / (4 * a))
+    da = np.degrees(abs(np.arctan(2 * a * u)))
+    ok = c.status[0] == Status.CONVERGED
+    return dict(version=version, step=step, delta_E_in=dE, method="tca", delta_alpha_deg=da if ok else np.nan,
+                shift_in=abs(arc) if ok else np.nan, h_active_in=h, delta_1=abs(arc) / h if ok else np.nan,
+                status=c.status_name[0], u1_in=u, alpha_sign=int(np.sign(u)))
+
+
+def sensitivity(s: dict, d: dict) -> pd.DataFrame:
+    """Table 6.2.3: pressure-angle change d alpha and delta_1 = shift / active height for a
+    centre-distance change dE, by eq 2.8.7 (both signs) and by TCA, for versions 1-3 and the
+    steps: printed 0.0001 mm (eq only), ``delta_E_table623_in``, 0.0001 in."""
+    Pn, an3, beta, l3 = basics(d)
+    an12 = d["alpha_n_v12_deg"] * DEG
+    versions = {1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
+                2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
+                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, nasa_l(an3, Pn), d["h_Pn"][3] / Pn)}
+    steps = {"printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN, "0.001in": s["delta_E_table623_in"],
+             "0.0001in": 0.0001}
+    rows = []
+    for v, ((r1, r2), an, l, h) in versions.items():
+        for sname, dE in steps.items():
+            for sign, label in ((-1, "eq2.8.7_decrease"), (1, "eq2.8.7_increase")):
+                da = model.delta_alpha_eq_2_8_7_deg(an, dE, r1, r2, sign)
+                rows.append(dict(version=v, step=sname, delta_E_in=dE, method=label, delta_alpha_deg=da,
+                                 shift_in=r1 * np.radians(da), h_active_in=h,
+                                 delta_1=model.delta_1_eq_2_8_6(r1, da, h),
+                                 status="formula" if np.isfinite(da) else "no_solution"))
+            if sname != "printed_0.0001mm":
+                rows.append(_sensitivity_tca(s, d, v, sname, dE, r1, r2, an, l, beta, h))
+    return pd.DataFrame(rows)
+
+
+def shifts(s: dict, d: dict) -> pd.DataFrame:
+    """Contact shift across the pinion profile (rack parameter u1 at phi1 = 0) for the error sizes
+    of fig. 1.10 (dE) and sec. 2.8 (3 arcmin dgamma, dlambda)."""
+    Pn, an, beta, l = basics(d)
+    mis = s["misalignment_arcmin"] * ARCMIN
+    rows = []
+    for name, kw in (("dE_fig1.10", dict(misalignment=Misalignment(d_E=s["delta_E_fig110_mm"] / MM_PER_IN))),
+                     ("dgamma_plus", dict(misalignment=Misalignment(d_gamma_out=mis))),
+                     ("dgamma_minus", dict(misalignment=Misalignment(d_gamma_out=-mis))),
+                     ("dlambda_helix_plus", dict(d_lambda=mis)),
+                     ("dlambda_helix_minus", dict(d_lambda=-mis)),
+                     ("dgamma_intersecting", dict(misalignment=Misalignment(d_gamma_in=mis)))):
+        pair = make_pair(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, tol=s["tol"],
+                         hand=s["pinion_hand"], **kw)
+        c = contact(pair, [0.0], s)
+        rows.append(dict(case=name, u1_in=float(c.u1[0]), status=c.status_name[0], profile_shift_in=abs(float(c.u1[0]))))
+    return pd.DataFrame(rows)
+
+
+def rho_sweep(s: dict, d: dict) -> pd.DataFrame:
+    """Sweep of the gear rack radius (claim: a larger rho_t - rho_c gives a smaller shift): eq 2.8.7
+    and the TCA contact shift for dE = ``delta_E_table623_in``."""
+    Pn, an, beta, l = basics(d)
+    rc = d["rho_c_times_Pn"] / Pn
+    dE = s["delta_E_table623_in"]
+    rows = []
+    for rt_pn in s["rho_t_sweep_times_Pn"]:
+        rt = rt_pn / Pn
+        pair = make_pair(d, rc, rt, an, l, beta, misalignment=Misalignment(d_E=dE), tol=s["tol"], hand=s["pinion_hand"])
+        c = contact(pair, [0.0], s)
+        rows.append(dict(rho_t_in=rt, rho_diff_in=rt - rc, delta_alpha_eq_deg=model.delta_alpha_eq_2_8_7_deg(an, dE, rc, rt),
+                         tca_shift_in=abs(float(c.u1[0])) if c.converged[0] else np.nan, status=c.status_name[0]))
+    return pd.DataFrame(rows)
+
+
+def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
+    """a_phi from a_pl by eq 5.4.3 and eq 5.4.12, and the contact shift of eq 5.4.7 for
+    ``misalignment_arcmin`` (sec. 5.4 data; beta = 19.95 deg as printed there)."""
+    Pn, an = d["P_n_per_in"], d["alpha_n_deg"] * DEG
+    b = d["beta_s54_deg"] * DEG
+    a_pl, r_pw = d["a_pl_per_in"], d["r_pw_in"]
+    a543 = model.a_phi_eq_5_4_3(d["a_c_printed_per_in"], d["a_t_printed_per_in"], a_pl, r_pw, an, b, Pn, d["N1"],
+                                d["N2"], nasa_l(an, Pn))
+    a5412 = model.a_phi_eq_5_4_12(a_pl, an, b, Pn, d["N1"], d["N2"])
+    phi_end = np.pi / d["N1"]
+    dl = model.delta_l_eq_5_4_7(s["misalignment_arcmin"] * ARCMIN, a_pl, r_pw, an, b)
+    return pd.DataFrame([dict(equation="5.4.3", a_phi_per_rad=a543, te_at_half_cycle_arcsec=a543 * phi_end**2 / ARCSEC),
+                         dict(equation="5.4.12", a_phi_per_rad=a5412, te_at_half_cycle_arcsec=a5412 * phi_end**2 / ARCSEC),
+                         dict(equation="5.4.7", a_phi_per_rad=np.nan, te_at_half_cycle_arcsec=np.nan, delta_l_in=dl)])
