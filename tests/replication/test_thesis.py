@@ -384,3 +384,27 @@ def test_expected_statuses_workflow_setting(published, design):
     e = _expected()
     diff = {i: (e.loc[i, "status"], rec[i]) for i in e.index if rec[i] != e.loc[i, "status"]}
     assert not diff, diff
+
+
+# ---------------------------------------------------------------------------------------------
+# the thesis's conventions and printed formulas (model.py) against the library route
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind, amount", [("parabolic", 0.0051), ("circular", 0.507), ("logarithmic", 0.537)])
+def test_crown_curvature_is_half_the_crown_second_derivative_at_mid_face(kind, amount):
+    """crown_curvature (delta ~ c w^2, used by the first-order TE estimate) equals half the second
+    derivative at mid-face of the crown the TCA uses (eq 10-12 via gearrep.surfaces.involute)."""
+    b, a2 = 20.0, 0.9
+    crown = T.crowning_object(kind, amount, b, a2)
+    _, d1, d2 = crown(np.array([0.0]))
+    assert abs(d1[0]) < 1e-15
+    assert T.crown_curvature(kind, amount, b, a2) == pytest.approx(0.5 * d2[0], rel=1e-12)
+
+
+def test_thesis_frame_round_trips(design):
+    for name in ("spur_25_25", "helical_25_77"):
+        fr = T.ThesisFrame.of(T.design_pair(design, name))
+        phi = np.array([0.3, 1.2, -0.7])
+        np.testing.assert_allclose(fr.phi1_to_thesis(fr.phi1_from_thesis(phi)), phi, atol=1e-15)
+        np.testing.assert_allclose(fr.phi2_to_thesis(fr.phi2_from_thesis(phi)), phi, atol=1e-14)
+        lo, hi = fr.window_from_thesis(-1.7, -1.0)
+        assert lo < hi and hi - lo == pytest.approx(0.7, abs=1e-14)

@@ -42,12 +42,11 @@ from .convergence import (
     rng,
     run_variant,
     study_reference,
-    timing_table,
 )
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37, params_from_published
 from .model import ThesisFrame, crown_curvature, crowning_object, profile_crowning, wrap
 from .records import errata_table, protocol_table
-from .te import crowning_areas_table, first_order_te, te_readings, te_sensitivity, te_study, te_tables
+from .te import crowning_areas_table, first_order_te, te_sensitivity, te_study, te_tables
 
 SEED = "003"
 
@@ -59,7 +58,7 @@ SETTINGS = st.declare(
     seed=st.integer(20231019, "1", "random starts: numpy default_rng([seed, stream])", ge=0),
     tol=st.number(1.0e-13, "mm", "Newton residual norm (mm / unit normals); 1e-13 keeps both formulations within "
                   "1e-9 mm (bench: fastest meeting the target); a converged point must be a contact", gt=0, le=1e-6),
-    maxiter=st.integer(50, "1", "Newton iteration limit", ge=1),
+    maxiter=st.integer(50, "1", "Newton iteration limit", ge=1, le=1000),
     match_tol_mm=st.number(1.0e-6, "mm", "a converged start is the reference contact if |du|, |dv| are below this",
                            gt=0),
     match_tol_rad=st.number(1.0e-8, "rad", "... and |dphi2| (mod 2 pi) below this", gt=0),
@@ -68,17 +67,19 @@ SETTINGS = st.declare(
     domain_margin=st.number(1.0e-6, "1", "domain-kept Newton: u limits moved in by this fraction of the flank height "
                             "(the involute cusp at u = r_b)", gt=0, lt=0.5),
     n_starts=st.integer(5000, "1", "Table 10 random starts (as in the thesis; bench: 2000 already meets the 0.18 pp "
-                        "target, 5000 costs 0.1 s)", ge=10),
-    n_starts_sec61=st.integer(1000, "1", "sec 6.1 and Table 9 studies (as in the thesis)", ge=10),
-    n_starts_window=st.integer(1000, "1", "phi2-window sweep (sampling error ~1 pp, enough for the curve)", ge=10),
+                        "target, 5000 costs 0.1 s)", ge=10, le=100000),
+    n_starts_sec61=st.integer(1000, "1", "sec 6.1 and Table 9 studies (as in the thesis)", ge=10,
+                                le=100000),
+    n_starts_window=st.integer(1000, "1", "phi2-window sweep (sampling error ~1 pp, enough for the curve)",
+                                 ge=10, le=100000),
     primary_phi2_window_rad=st.number(_TWO_PI, "rad", "Table 10: phi2 start over a full turn (not stated in the "
                                       "thesis)", gt=0, le=_TWO_PI),
     phi2_windows_rad=st.array([0.05, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 2.0, 2.5, np.pi, 4.0, 5.0], "rad",
                               "widths of the phi2-window sweep (a width equal to primary_phi2_window_rad is the "
                               "Table 10 row itself and is not rerun)", _WINDOW),
-    timing_loop_n=st.integer(25, "1", "one-start-per-call timing loop", ge=1),
+    timing_loop_n=st.integer(25, "1", "one-start-per-call timing loop", ge=1, le=10000),
     te_n_points=st.integer(61, "1", "TE grid points per mesh cycle (bench: no grid meets 5e-8 arcsec; knee at 41, 61 "
-                           "kept for the curves)", ge=5),
+                           "kept for the curves)", ge=5, le=2001),
     crowning_log_a2=st.number(0.9, "1", "eq (12) a2, not printed in the thesis", gt=0, lt=1),
     crowning_log_a2_sensitivity=st.array([0.5, 0.9, 0.99], "1", "a2 values of the logarithmic-crown sensitivity "
                                          "rows (te_sensitivity.csv)", _A2),
@@ -95,17 +96,14 @@ _DIR = "thesis"
 JOBS = {
     "convergence": Job(convergence_tables, {n: f"{_DIR}/{n}.csv" for n in (
         "convergence", "convergence_detail", "agreement", "references", "starts_table10", "starts_sec61",
-        "starts_helical")}, "every convergence study, its per-start tables and the verified references"),
-    "timing": Job(timing_table, {"timing": f"{_DIR}/timing.csv"},
-                  "seconds per solve, batch and one start per call (reruns the Table 10 starts of 4 variants)"),
-    "te": Job(te_tables, {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle")},
-              "TE and path of contact: spur sec 4.1 and helical Tables 3-4"),
+        "starts_helical", "timing")},
+        "every convergence study, its per-start tables, the verified references and the Table 10 timing"),
+    "te": Job(te_tables, {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
+              "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max"),
     "te_sensitivity": Job(te_sensitivity, {"te_sensitivity": f"{_DIR}/te_sensitivity.csv"},
                           "log-crown a2 and misalignment pivot sensitivity"),
     "crowning_areas": Job(crowning_areas_table, {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
-                          "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts)"),
-    "te_readings": Job(te_readings, {"te_readings": f"{_DIR}/te_readings.csv"},
-                       "candidate readings of the printed Delta phi_max (reruns the Tables 3-4 TE rows)"),
+                          "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)"),
     "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
     "protocol": Job(protocol_table, {"protocol": f"{_DIR}/protocol.csv", "run_info": f"{_DIR}/run_info.csv"},
                     "the convergence protocol as run and the settings used"),

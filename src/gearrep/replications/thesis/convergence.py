@@ -396,7 +396,8 @@ def starts_table(res: StudyResult, frame: ThesisFrame) -> pd.DataFrame:
 
 def convergence_tables(s: dict, design: Design) -> dict:
     """Job ``convergence``: every convergence study -> convergence (summary), convergence_detail,
-    agreement, references and the per-start tables of Table 10, sec 6.1 and Table 9."""
+    agreement, references, the per-start tables of Table 10, sec 6.1 and Table 9, and the timing of
+    the Table 10 study."""
     out = Collected(rows=[], agree=[], refs=[], details={})
     table10_studies(s, design, out)
     sec61_studies(s, design, out)
@@ -408,6 +409,7 @@ def convergence_tables(s: dict, design: Design) -> dict:
     for name, key in (("starts_table10", "table10"), ("starts_sec61", "sec61"), ("starts_helical", "helical")):
         res = out.details[key]
         tables[name] = starts_table(res, ThesisFrame.of(res.pair))
+    tables["timing"] = timing_table(s, out.details["table10"])
     return tables
 
 
@@ -416,14 +418,12 @@ THESIS_TABLE10_TOTAL_S = {"conventional": 839.62, "reduced": 232.09}
 TIMED_VARIANTS = ("plain", "robust", "reduced", "reduced_robust")
 
 
-def timing_table(s: dict, design: Design) -> dict:
-    """Job ``timing``: seconds per solve of both formulations on the Table 10 starts, as a
-    vectorised batch and as a loop of single-start calls (the way a per-point solver such as
+def timing_table(s: dict, res: StudyResult) -> pd.DataFrame:
+    """Seconds per solve of both formulations on the Table 10 starts: the vectorised batch of the
+    study ``res`` and a loop of single-start calls (the way a per-point solver such as
     Mathematica's FindRoot is used)."""
-    pair, _, ref, st_all = table10_starts(s, design)
-    res = convergence_study("spur_52_72", pair, ref, st_all, TIMED_VARIANTS, s,
-                            window=float(s["primary_phi2_window_rad"]), study="Table 10", start_rule=TABLE10_RULE)
-    st = st_all[:int(s["timing_loop_n"])]
+    pair, ref = res.pair, res.ref
+    st = res.starts[:int(s["timing_loop_n"])]
     rows = []
     for lab in TIMED_VARIANTS:
         batch = next(r for r in res.rows if r["variant"] == lab)
@@ -440,4 +440,4 @@ def timing_table(s: dict, design: Design) -> dict:
                          if ok else np.nan,
                          seconds_per_correct_solve_loop=loop * 100.0 / batch["correct_pct"] if ok else np.nan,
                          thesis_total_s_5000=thesis_total, thesis_seconds_per_correct_point=thesis_total / 5000))
-    return {"timing": pd.DataFrame(rows)}
+    return pd.DataFrame(rows)

@@ -275,11 +275,14 @@ def table34_te(s: dict, design: Design, select=None):
 
 
 def te_tables(s: dict, design: Design) -> dict:
-    """Job ``te``: te_summary, te_curves, te_cycle of the spur (sec 4.1) and helical (Tables 3-4) studies."""
+    """Job ``te``: te_summary, te_curves, te_cycle of the spur (sec 4.1) and helical (Tables 3-4)
+    studies, and te_readings (candidate readings of Delta phi_max, read from the same Tables 3-4
+    rows: computing them alone would rerun every Tables 3-4 TE study)."""
     s1, c1, y1 = spur_te(s, design)
     s2, c2, y2 = table34_te(s, design)
-    return dict(te_summary=pd.DataFrame(s1 + s2), te_curves=pd.concat(c1 + c2, ignore_index=True),
-                te_cycle=pd.concat(y1 + y2, ignore_index=True))
+    summary = pd.DataFrame(s1 + s2)
+    return dict(te_summary=summary, te_curves=pd.concat(c1 + c2, ignore_index=True),
+                te_cycle=pd.concat(y1 + y2, ignore_index=True), te_readings=readings_of(s, design, summary))
 
 
 def te_sensitivity(s: dict, design: Design) -> dict:
@@ -311,10 +314,3 @@ def crowning_areas_table(s: dict, design: Design) -> dict:
     """Job ``crowning_areas``: TE areas of the 0.2 deg, first-row amounts of Tables 3-4 only."""
     rows, _, _ = table34_te(s, design, select=lambda plane, ang, row: abs(ang) == 0.2 and row == 1)
     return dict(crowning_areas=crowning_areas(pd.DataFrame(rows)))
-
-
-def te_readings(s: dict, design: Design) -> dict:
-    """Job ``te_readings``: candidate readings of Delta phi_max for every computed row of Tables 3-4
-    (recomputes the Tables 3-4 TE rows it reads)."""
-    rows, _, _ = table34_te(s, design)
-    return dict(te_readings=readings_of(s, design, pd.DataFrame(rows)))
