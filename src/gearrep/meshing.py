@@ -330,7 +330,7 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
 # upper envelope of sampled per-tooth TE curves
 # ----------------------------------------------------------------------------------------------
 def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolation: str = "linear",
-                   tol: float = 1e-12) -> np.ndarray:
+                   tol: float = 1e-12, engaged=None) -> np.ndarray:
     """TE of neighbouring tooth pairs from one pair's TE sampled on a grid.
 
     Tooth pair k engages one angular pitch (``pitch`` = 2 pi / N1) after pair k - 1, so with
@@ -338,7 +338,9 @@ def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolat
     grid (NaN where that pair has no contact on the flanks); ``at``: the angles where the curves
     are wanted. Returns (len(pairs), len(at)): TE_k interpolated (``"linear"`` or ``"cubic"``
     spline) inside pair 0's engagement interval [min, max] of the finite samples (+- ``tol``),
-    -inf outside it (a pair that is not engaged cannot lead). Needs >= 2 finite samples.
+    -inf outside it (a pair that is not engaged cannot lead). ``engaged``: optional callable
+    q -> bool mask at pair-0 angles q (e.g. the contact point inside the face width) that further
+    restricts where a pair is in contact. Needs >= 2 finite samples.
     """
     phi1, te, at = (np.asarray(x, float) for x in (phi1, te, at))
     ok = np.isfinite(te) & np.isfinite(phi1)
@@ -363,7 +365,10 @@ def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolat
     out = []
     for k in pairs:
         q = at - k * pitch
-        out.append(np.where((q >= lo - tol) & (q <= hi + tol), f(q), -np.inf))
+        inside = (q >= lo - tol) & (q <= hi + tol)
+        if engaged is not None:
+            inside &= np.asarray(engaged(np.clip(q, lo, hi)), bool)
+        out.append(np.where(inside, f(q), -np.inf))
     return np.stack(out)
 
 

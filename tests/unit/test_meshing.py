@@ -166,6 +166,11 @@ def test_envelope_jumps_where_a_linear_curve_leaves_its_flank():
     short = np.where(np.abs(phi) <= 0.3 * p, s * phi, np.nan)  # engagement shorter than one pitch
     env_gap, _ = upper_envelope(pair_te_curves(phi, short, p, np.linspace(-0.5 * p, 0.5 * p, 51)))
     assert np.isnan(env_gap).any() and np.isfinite(env_gap).any()
+    # the same gap from an engagement mask (e.g. contact inside the face width) on the full samples
+    masked = pair_te_curves(phi, s * phi, p, np.linspace(-0.5 * p, 0.5 * p, 51),
+                            engaged=lambda q: np.abs(q) <= 0.3 * p + 1e-12)
+    env_mask, _ = upper_envelope(masked)
+    np.testing.assert_array_equal(np.isnan(env_mask), np.isnan(env_gap))
     with pytest.raises(ValueError, match="pitch"):
         pair_te_curves(phi, s * phi, -1.0, phi)
     with pytest.raises(ValueError, match="interpolation"):
