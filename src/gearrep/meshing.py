@@ -283,10 +283,9 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
     TE = _TEFunction(pair, path, v1, tol)
 
     def envelope(phi):
-        cand = np.stack([TE(phi + p1), TE(phi), TE(phi - p1)], axis=-1)  # pairs k = -1, 0, +1
-        cand = np.where(np.isnan(cand), -np.inf, cand)
-        k = np.argmax(cand, axis=-1)
-        return np.take_along_axis(cand, k[:, None], axis=-1)[:, 0], k - 1
+        cand = np.stack([TE(phi + p1), TE(phi), TE(phi - p1)])  # pairs k = -1, 0, +1
+        env, lead = upper_envelope(np.where(np.isnan(cand), -np.inf, cand))
+        return env, lead - 1
 
     kind, t_out = "indeterminate", np.nan
     if mc > 1.0:
@@ -321,7 +320,6 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
         t_in = np.nan
         phi = np.linspace(b.phi1, b.phi1 + p1, int(n_points))
     te, k = envelope(phi)
-    te = np.where(np.isfinite(te), te, np.nan)
     return MeshingCycle(begin=b, end=e, contact_ratio=mc, path=path, transfer_in=float(t_in),
                         transfer_out=float(t_out), transfer_kind=kind, phi1=phi, te=te, pair_index=k)
 
