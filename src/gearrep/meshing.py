@@ -39,6 +39,18 @@ from .solve import SolveResult, Status, newton
 from .tca import (ContactPoints, GearPair, _reduced_FJ, newton_rows, solve_contact,
                   trace_path)
 
+__all__ = [
+    "contact_ratio",
+    "contact_ratio_closed_form",
+    "EngagementLimit",
+    "engagement_limits",
+    "MeshingCycle",
+    "meshing_cycle",
+    "pair_te_curves",
+    "upper_envelope",
+    "handover_jump",
+]
+
 
 def contact_ratio(phi1_begin, phi1_end, n1):
     """Contact ratio from the engagement limits of one tooth pair, seed 000 eq (5.13) corrected:
@@ -271,10 +283,9 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
     TE = _TEFunction(pair, path, v1, tol)
 
     def envelope(phi):
-        cand = np.stack([TE(phi + p1), TE(phi), TE(phi - p1)], axis=-1)  # pairs k = -1, 0, +1
-        cand = np.where(np.isnan(cand), -np.inf, cand)
-        k = np.argmax(cand, axis=-1)
-        return np.take_along_axis(cand, k[:, None], axis=-1)[:, 0], k - 1
+        cand = np.stack([TE(phi + p1), TE(phi), TE(phi - p1)])  # pairs k = -1, 0, +1
+        env, lead = upper_envelope(np.where(np.isnan(cand), -np.inf, cand))
+        return env, lead - 1
 
     kind, t_out = "indeterminate", np.nan
     if mc > 1.0:
@@ -309,6 +320,79 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
         t_in = np.nan
         phi = np.linspace(b.phi1, b.phi1 + p1, int(n_points))
     te, k = envelope(phi)
-    te = np.where(np.isfinite(te), te, np.nan)
     return MeshingCycle(begin=b, end=e, contact_ratio=mc, path=path, transfer_in=float(t_in),
                         transfer_out=float(t_out), transfer_kind=kind, phi1=phi, te=te, pair_index=k)
+
+
+# ----------------------------------------------------------------------------------------------
+# upper envelope of sampled per-tooth TE curves
+# ----------------------------------------------------------------------------------------------
+def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolation: str = "linear",
+                   tol: float = 1e-12, engaged=None) -> np.ndarray:
+    """TE of neighbouring tooth pairs from one pair's TE sampled on a grid.
+
+    Tooth pair k engages one angular pitch (``pitch`` = 2 pi / N1) after pair k - 1, so with
+    identical teeth TE_k(phi1) = TE_0(phi1 - k pitch). ``phi1``, ``te``: pair 0's TE [rad] on a
+    grid (NaN where that pair has no contact on the flanks); ``at``: the angles where the curves
+    are wanted. Returns (len(pairs), len(at)): TE_k interpolated (``"linear"`` or ``"cubic"``
+    spline) inside pair 0's engagement interval [min, max] of the finite samples (+- ``tol``),
+    -inf outside it (a pair that is not engaged cannot lead). ``engaged``: optional callable
+    q -> bool mask at pair-0 angles q (e.g. the contact point inside the face width) that further
+    restricts where a pair is in contact. Needs >= 2 finite samples.
+    """
+    phi1, te, at = (np.asarray(x, float) for x in (phi1, te, at))
+    ok = np.isfinite(te) & np.isfinite(phi1)
+    if ok.sum() < 2:
+        raise ValueError(f"pair_te_curves needs >= 2 finite TE samples, got {int(ok.sum())}")
+    if not (np.isfinite(pitch) and pitch > 0):
+        raise ValueError(f"pitch must be > 0 rad, got {pitch!r}")
+    if interpolation not in ("linear", "cubic"):
+        raise ValueError(f"interpolation must be 'linear' or 'cubic', got {interpolation!r}")
+    x, y = phi1[ok], te[ok]
+    lo, hi = x.min(), x.max()
+    if interpolation == "cubic":
+        from scipy.interpolate import CubicSpline
+
+        spline = CubicSpline(x, y)
+
+        def f(q):
+            return spline(np.clip(q, lo, hi))
+    else:
+        def f(q):
+            return np.interp(q, x, y)
+    out = []
+    for k in pairs:
+        q = at - k * pitch
+        inside = (q >= lo - tol) & (q <= hi + tol)
+        if engaged is not None:
+            inside &= np.asarray(engaged(np.clip(q, lo, hi)), bool)
+        out.append(np.where(inside, f(q), -np.inf))
+    return np.stack(out)
+
+
+def upper_envelope(curves) -> tuple[np.ndarray, np.ndarray]:
+    """TE actually transmitted and the leading pair: (max over the rows of ``curves`` (pairs, n)
+    as given by :func:`pair_te_curves`, index of the leading row). Member 2 is driven, so it is
+    pushed to the most advanced position any engaged pair demands (for the opposite drive
+    direction pass ``-curves`` and negate the envelope). NaN where no pair is engaged."""
+    curves = np.asarray(curves, float)
+    lead = np.argmax(curves, axis=0)
+    env = curves[lead, np.arange(curves.shape[1])]
+    return np.where(np.isfinite(env), env, np.nan), lead
+
+
+def handover_jump(curves, lead, envelope) -> float:
+    """Largest TE jump [rad] where the leading pair changes between neighbouring grid angles.
+
+    A hand-over between angles i and i + 1 is a crossing when both pairs are engaged on one side
+    with (nearly) equal TE; otherwise the TE jumps (a pair leaves or enters its flank while the
+    other still leads): the jump is the smallest |TE_a - TE_b| where both are engaged, or the step
+    of the envelope if they never are. 0 without a hand-over."""
+    curves = np.asarray(curves, float)
+    jump = 0.0
+    for i in np.flatnonzero(lead[1:] != lead[:-1]):
+        a, b = lead[i], lead[i + 1]
+        both = [abs(curves[a, j] - curves[b, j]) for j in (i, i + 1)
+                if np.isfinite(curves[a, j]) and np.isfinite(curves[b, j])]
+        jump = max(jump, min(both) if both else abs(envelope[i + 1] - envelope[i]))
+    return jump

@@ -1,10 +1,12 @@
-"""Seed 003 (thesis, conventional vs reduced TCA): the replication in its fast setting.
+"""Seed 003 (thesis, conventional vs reduced TCA): the replication in its test setting.
 
-Runs :func:`gearrep.replications.thesis.run` once with ``FAST_PARAMS`` (same protocol, fewer
-starts) and checks: the interface of convergence.csv, the verified references against the
-thesis's printed numbers, the 1e-9 mm / 1e-10 rad agreement of the two formulations at every
-converged point, our own numbers (regression), and the status of every published seed-003 value
-(expected statuses kept below with the reason).
+Runs every job of :mod:`gearrep.replications.thesis` once with the test settings
+(``study_settings("thesis")``: declared values, config/config.yaml, then config/test.yaml: same
+protocol, fewer starts) and checks: the interface of convergence.csv, the verified references
+against the thesis's printed numbers, the 1e-9 mm / 1e-10 rad agreement of the two formulations
+at every converged point, our own numbers (regression), the design data read from
+data/published, and the status of every published seed-003 value (expected statuses kept below
+with the reason).
 """
 
 from pathlib import Path
@@ -14,18 +16,32 @@ import pandas as pd
 import pytest
 
 from gearrep import checks as ck
+from gearrep import settings as st
 from gearrep.replications import thesis as T
-from gearrep.solve import Status
+from gearrep.replications.thesis import facts as TC
+from gearrep.replications.thesis.te import TE_READINGS
+from gearrep.tca import draw_starts
+from conftest import study_settings
 
 
 @pytest.fixture(scope="module")
-def tables():
-    return T.run(T.FAST_PARAMS)
+def settings():
+    return study_settings("thesis")
+
+
+@pytest.fixture(scope="module")
+def design(published):
+    return T.params_from_published(published)
+
+
+@pytest.fixture(scope="module")
+def tables(settings, design):
+    return T.run(settings, design)
 
 
 @pytest.fixture(scope="module")
 def check_records(tables, published):
-    return T.checks(tables, published)
+    return T.checks(tables, published)["checks"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -51,25 +67,67 @@ def test_protocol_is_stated(tables):
         assert needed in items
 
 
-def test_params_are_validated():
-    with pytest.raises(ValueError, match="n_starts"):
-        T.validate_params({"n_starts": 0})
-    with pytest.raises(ValueError, match="unknown key"):
-        T.validate_params({"n_start": 10})
-    with pytest.raises(ValueError, match="tol"):
-        T.validate_params({"tol": 1e-3})
-    with pytest.raises(ValueError, match="phi2_windows_rad"):
-        T.validate_params({"phi2_windows_rad": [7.0]})
-    with pytest.raises(ValueError, match="te_pivot"):
-        T.validate_params({"te_pivot": "tip"})
+def test_settings_are_validated(settings, design):
+    def resolve(**kw):
+        return st.resolve(T.SETTINGS, kw, where="thesis")
+
+    with pytest.raises(st.SettingError, match="thesis.n_starts"):
+        resolve(n_starts=0)
+    with pytest.raises(st.SettingError, match="did you mean 'n_starts'"):
+        resolve(n_start=10)
+    with pytest.raises(st.SettingError, match="thesis.tol"):
+        resolve(tol=1e-3)
+    with pytest.raises(st.SettingError, match=r"thesis.phi2_windows_rad\[0\]"):
+        resolve(phi2_windows_rad=[7.0])
+    with pytest.raises(st.SettingError, match="thesis.te_pivot"):
+        resolve(te_pivot="tip")
+    with pytest.raises(st.SettingError, match="thesis.crowning_rows"):
+        T.validate(resolve(crowning_rows=[2, 3]), design)
+    T.validate(settings, design)
 
 
-def test_run_is_deterministic_in_its_starts():
-    p = T.validate_params(T.FAST_PARAMS)
-    pair = T.design_pair("spur_52_72")
-    a = T.draw_starts(pair, 50, T._rng(p, "table10"), phi2_window=(0.0, 1.0))
-    b = T.draw_starts(pair, 50, T._rng(p, "table10"), phi2_window=(0.0, 1.0))
+def test_run_is_deterministic_in_its_starts(settings, design):
+    pair = T.design_pair(design, "spur_52_72")
+    a = draw_starts(pair, 50, T.rng(settings, "table10"), phi2_window=(0.0, 1.0))
+    b = draw_starts(pair, 50, T.rng(settings, "table10"), phi2_window=(0.0, 1.0))
     np.testing.assert_array_equal(a, b)
+
+
+def test_jobs_write_their_declared_tables(tables):
+    """Every job's tables are returned by run (run_jobs checks each job returns exactly its own)."""
+    assert set(tables) == {n for job in T.JOBS.values() for n in job.tables}
+    assert T.JOBS["convergence"].tables["convergence"] == "thesis/convergence.csv"
+
+
+def test_design_from_published_equals_the_printed_numbers(design):
+    """The design read from data/published/params_003_*.csv is the one the replication used to
+    hard-code (numbers as printed; the readings the thesis leaves open are design.READINGS)."""
+    p = design.pairs
+    assert p["spur_52_72"] == dict(n1=52, n2=72, module=1.0, pressure_angle_deg=20.0, face_width=11.42,
+                                   crown1=0.002857, crown2=0.0, phi1_thesis=np.pi / 2)
+    assert p["spur_25_25"] == dict(n1=25, n2=25, module=2.5, pressure_angle_deg=20.0, face_width=25.0,
+                                   crown1=1.0e-4, crown2=1.0e-4, phi1_thesis=np.pi / 2)
+    assert p["helical_25_77"] == dict(n1=25, n2=77, module=5.0, pressure_angle_deg=27.5, helix_angle_deg=20.0,
+                                      face_width=40.0, profile_crown1=1.4e-3, profile_crown2=8.0e-5, hand1=-1,
+                                      phi1_thesis=np.pi / 2)
+    assert p["spur_25_25_m1"] == dict(n1=25, n2=25, module=1.0, pressure_angle_deg=20.0, face_width=10.0)
+    assert p["helical_40_37"] == dict(n1=40, n2=37, module=1.0, pressure_angle_deg=20.0, helix_angle_deg=14.0,
+                                      face_width=20.0, hand1=1)
+    assert design.sec61_phi2_guesses_thesis == (0.0, -1.1, -1.15, -1.2)
+    assert design.sec61_phi2_window_thesis == (-1.7, -1.0) and design.sec61_misalignment_deg == 0.1
+    assert design.helical_phi2_window_thesis == (-1.7, -1.3) and design.helical_misalignment_arcmin == -3.0
+    assert design.spur_te_crowns == (0.00125, 0.0025, 0.01675) and design.spur_te_misalignment_mrad == 17.5
+
+
+def test_table34_amounts_are_the_published_ones(published):
+    v = published.values[(published.values["seed"] == "003") & (published.values["quantity"] == "crown_amount")]
+    got = {}
+    for _, r in v.iterrows():
+        k = dict(x.split("=") for x in r["row"].split(";"))
+        got[(k["plane"], float(k["misalignment_deg"]), k["crown"], int(k["table_row"]))] = float(r["value"])
+    want = {(pl, ang, kind, i + 1): a for (pl, ang), kinds in T.TABLE34.items() for kind, am in kinds.items()
+            for i, a in enumerate(am)}
+    assert got == want
 
 
 # ---------------------------------------------------------------------------------------------
@@ -112,26 +170,26 @@ def test_formulations_agree_at_every_converged_point(tables):
     assert (ag["max_diff_rad"] <= 1e-10).all(), ag
 
 
-def test_agreement_directly_on_fresh_starts():
-    p = T.validate_params(T.FAST_PARAMS)
+def test_agreement_directly_on_fresh_starts(settings, design):
+    p = settings
     for name in ("spur_52_72", "helical_25_77"):
-        pair = T.design_pair(name)
+        pair = T.design_pair(design, name)
         fr = T.ThesisFrame.of(pair)
         ref = T.reference_contact(pair, fr.phi1_from_thesis(np.pi / 2), tol=p["tol"])
-        st = T.draw_starts(pair, 60, np.random.default_rng(7), phi2_window=(ref.x[4] - 0.3, ref.x[4] + 0.3))
-        oc, _, xc, _ = T.run_variant(pair, ref, st, "robust", p)
-        orr, _, xr, _ = T.run_variant(pair, ref, st, "reduced_robust", p)
+        starts = draw_starts(pair, 60, np.random.default_rng(7), phi2_window=(ref.x[4] - 0.3, ref.x[4] + 0.3))
+        oc, _, xc, _ = T.run_variant(pair, ref, starts, "robust", p)
+        orr, _, xr, _ = T.run_variant(pair, ref, starts, "reduced_robust", p)
         both = (oc == "correct") & (orr == "correct")
         assert both.all()
         assert np.max(np.abs(xc[:, :4] - xr[:, :4])) <= 1e-9
-        assert np.max(np.abs(T._wrap(xc[:, 4] - xr[:, 4]))) <= 1e-10
+        assert np.max(np.abs(T.wrap(xc[:, 4] - xr[:, 4]))) <= 1e-10
 
 
 # ---------------------------------------------------------------------------------------------
 # our numbers (regression) and the ablation's conclusion
 # ---------------------------------------------------------------------------------------------
 def _pct(tables, case, variant, window=None):
-    return float(T._row(tables["convergence"], case, variant, window)["correct_pct"])
+    return float(T.conv_row(tables["convergence"], case, variant, window)["correct_pct"])
 
 
 def test_robust_forms_converge_from_every_start(tables):
@@ -182,7 +240,7 @@ def test_iterations_and_timing_recorded(tables):
     t = tables["timing"]
     assert set(t["variant"]) == {"plain", "robust", "reduced", "reduced_robust"}
     assert (t["seconds_per_solve_loop"] > 0).all() and (t["seconds_per_solve_batch"] > 0).all()
-    red = T._row(tables["convergence"], "spur_52_72", "reduced")
+    red = T.conv_row(tables["convergence"], "spur_52_72", "reduced")
     assert 3.0 <= red["mean_iterations"] <= 4.5
 
 
@@ -221,7 +279,7 @@ def test_helical_crowning_rows(tables):
 
 def test_te_readings_table(tables, published):
     rd = tables["te_readings"]
-    assert set(rd["reading"]) == set(T.TE_READINGS) and len(rd) == 54 * len(T.TE_READINGS)
+    assert set(rd["reading"]) == set(TE_READINGS) and len(rd) == 54 * len(TE_READINGS)
     assert rd.loc[rd["reading"] != "axis_pivot_rigid_arcsec", "value_abs"].notna().all()
     w = rd.pivot_table(index=["plane", "misalignment_deg", "crown_kind", "table_row"], columns="reading",
                        values="value_abs")
@@ -237,7 +295,7 @@ def test_te_readings_table(tables, published):
     mean = 0.5 * (small["face_end_tca_plus_arcsec"] + small["face_end_tca_minus_arcsec"])
     np.testing.assert_allclose(mean, small["face_end_rigid_arcsec"], rtol=0.01)
     # comparison with the printed Delta phi_max (regression of the finding, not a pass criterion)
-    j, summ = T.readings_vs_printed(rd, T._t34_values(published.values[published.values["seed"] == T.SEED]))
+    j, summ = TC.readings_vs_printed(rd, TC._t34_values(published.values[published.values["seed"] == T.SEED]))
     assert len(j) == len(rd)
     sm = summ.set_index("reading")
     assert sm.loc["face_end_rigid_pinion_mrad", "median_ratio"] == pytest.approx(0.9965, abs=0.002)
@@ -303,9 +361,9 @@ def test_fact_keys_route_published_ids(published):
 
 def test_binomial_tolerance():
     # two standard errors of the difference of two rates: 2 * 100 * sqrt(q (1 - q) (1/n + 1/n_pub))
-    assert T._binomial_tol(50.0, 1000, 1000) == pytest.approx(200 * np.sqrt(0.25 * 2 / 1000))
-    assert T._binomial_tol(50.0, 1000) == pytest.approx(200 * np.sqrt(0.25 / 1000))
-    assert T._binomial_tol(0.0, 1000, 1000) > 0
+    assert TC._binomial_tol(50.0, 1000, 1000) == pytest.approx(200 * np.sqrt(0.25 * 2 / 1000))
+    assert TC._binomial_tol(50.0, 1000) == pytest.approx(200 * np.sqrt(0.25 / 1000))
+    assert TC._binomial_tol(0.0, 1000, 1000) > 0
 
 
 def test_helical_claim_studies(tables):
@@ -316,12 +374,37 @@ def test_helical_claim_studies(tables):
 
 
 @pytest.mark.slow
-def test_expected_statuses_workflow_setting(published):
-    """The default workflow settings (config/config.yaml) give the statuses of column ``status``."""
+def test_expected_statuses_workflow_setting(published, design):
+    """The workflow settings (declared values with config/config.yaml) give the statuses of column ``status``."""
     import yaml
 
     cfg = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["thesis"]
-    rec = T.checks(T.run(cfg), published).set_index("id")["status"]
+    s = st.resolve(T.SETTINGS, cfg, where="thesis")
+    rec = T.checks(T.run(s, design), published)["checks"].set_index("id")["status"]
     e = _expected()
     diff = {i: (e.loc[i, "status"], rec[i]) for i in e.index if rec[i] != e.loc[i, "status"]}
     assert not diff, diff
+
+
+# ---------------------------------------------------------------------------------------------
+# the thesis's conventions and printed formulas (model.py) against the library route
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind, amount", [("parabolic", 0.0051), ("circular", 0.507), ("logarithmic", 0.537)])
+def test_crown_curvature_is_half_the_crown_second_derivative_at_mid_face(kind, amount):
+    """crown_curvature (delta ~ c w^2, used by the first-order TE estimate) equals half the second
+    derivative at mid-face of the crown the TCA uses (eq 10-12 via gearrep.surfaces.involute)."""
+    b, a2 = 20.0, 0.9
+    crown = T.crowning_object(kind, amount, b, a2)
+    _, d1, d2 = crown(np.array([0.0]))
+    assert abs(d1[0]) < 1e-15
+    assert T.crown_curvature(kind, amount, b, a2) == pytest.approx(0.5 * d2[0], rel=1e-12)
+
+
+def test_thesis_frame_round_trips(design):
+    for name in ("spur_25_25", "helical_25_77"):
+        fr = T.ThesisFrame.of(T.design_pair(design, name))
+        phi = np.array([0.3, 1.2, -0.7])
+        np.testing.assert_allclose(fr.phi1_to_thesis(fr.phi1_from_thesis(phi)), phi, atol=1e-15)
+        np.testing.assert_allclose(fr.phi2_to_thesis(fr.phi2_from_thesis(phi)), phi, atol=1e-14)
+        lo, hi = fr.window_from_thesis(-1.7, -1.0)
+        assert lo < hi and hi - lo == pytest.approx(0.7, abs=1e-14)

@@ -127,3 +127,51 @@ def test_validation():
         engagement_limits(pair, v1=0.0, step=-1.0)
     with pytest.raises(ValueError, match="no contact"):
         engagement_limits(pair, 1.0, v1=0.0)
+
+
+# ---------------------------------------------------------------------------------------------
+# upper envelope of sampled per-tooth TE curves (pair_te_curves, upper_envelope, handover_jump)
+# ---------------------------------------------------------------------------------------------
+def test_envelope_of_parabolic_pair_curves_hands_over_at_the_crossing():
+    """Identical parabolic TE curves -c (phi - k p)^2 over an engagement longer than one pitch: the
+    envelope is the leading parabola, its hand-over at +-p/2 is a crossing (no jump) and its
+    minimum -c (p/2)^2 is reached there."""
+    from gearrep.meshing import handover_jump, pair_te_curves, upper_envelope
+
+    p, c = 2 * np.pi / 20, 3.0
+    phi = np.linspace(-0.8 * p, 0.8 * p, 401)
+    te = -c * phi**2
+    at = np.linspace(-0.5 * p, 0.5 * p, 101)
+    curves = pair_te_curves(phi, te, p, at)
+    assert curves.shape == (5, 101) and np.isneginf(curves[0]).all()  # pair k = -2 is never engaged here
+    env, lead = upper_envelope(curves)
+    np.testing.assert_allclose(env, -c * at**2, atol=c * (phi[1] - phi[0]) ** 2)
+    assert set(lead[1:-1]) == {2} and handover_jump(curves, lead, env) == 0.0
+    # cubic interpolation of the same samples is exact for a parabola
+    env3, _ = upper_envelope(pair_te_curves(phi, te, p, at, interpolation="cubic"))
+    np.testing.assert_allclose(env3, -c * at**2, atol=1e-14)
+
+
+def test_envelope_jumps_where_a_linear_curve_leaves_its_flank():
+    """A TE linear along the path (sawtooth): the envelope jumps by slope x pitch at the hand-over;
+    outside every engagement interval the envelope is NaN (a gap: no pair in contact)."""
+    from gearrep.meshing import handover_jump, pair_te_curves, upper_envelope
+
+    p, s = 0.1, 2e-4
+    phi = np.linspace(-0.6 * p, 0.6 * p, 121)
+    curves = pair_te_curves(phi, s * phi, p, np.linspace(-0.5 * p, 0.5 * p, 51))
+    env, lead = upper_envelope(curves)
+    assert np.all(np.isfinite(env))
+    assert handover_jump(curves, lead, env) == pytest.approx(s * p, rel=0.05)
+    short = np.where(np.abs(phi) <= 0.3 * p, s * phi, np.nan)  # engagement shorter than one pitch
+    env_gap, _ = upper_envelope(pair_te_curves(phi, short, p, np.linspace(-0.5 * p, 0.5 * p, 51)))
+    assert np.isnan(env_gap).any() and np.isfinite(env_gap).any()
+    # the same gap from an engagement mask (e.g. contact inside the face width) on the full samples
+    masked = pair_te_curves(phi, s * phi, p, np.linspace(-0.5 * p, 0.5 * p, 51),
+                            engaged=lambda q: np.abs(q) <= 0.3 * p + 1e-12)
+    env_mask, _ = upper_envelope(masked)
+    np.testing.assert_array_equal(np.isnan(env_mask), np.isnan(env_gap))
+    with pytest.raises(ValueError, match="pitch"):
+        pair_te_curves(phi, s * phi, -1.0, phi)
+    with pytest.raises(ValueError, match="interpolation"):
+        pair_te_curves(phi, s * phi, p, phi, interpolation="spline")

@@ -16,8 +16,10 @@ from gearrep import plotting, published  # noqa: E402
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
-inp = smk.input
-PUB = published.load(smk.config["published_dir"]).values.set_index("id")["value"].astype(float)
+#: {table name: path} of every table of the study (workflow contract: input.tables lists them all)
+TABLES = {Path(f).stem: f for f in smk.input.tables}
+#: the published data directory, found from the CHECK_DATA files (input.published)
+PUB = published.load(Path(smk.input.published[0]).parent).values.set_index("id")["value"].astype(float)
 T10_CONV = "003-T10-case=spur_52_72;method=conventional-convergence_rate"
 S61 = "003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad={g}-{q}"
 COLORS = {"correct": "tab:blue", "wrong_root": "tab:orange", "not_converged": "tab:red", "singular": "tab:purple",
@@ -40,7 +42,7 @@ def cloud(ax, df, x, y, variant, title):
 
 
 # --- convergence clouds, Table 10 -------------------------------------------------------------
-st = pd.read_csv(inp.starts_table10)
+st = pd.read_csv(TABLES["starts_table10"])
 fig, axes = plt.subplots(2, 3, figsize=(13, 7.5), sharex=True, sharey=True)
 for ax, v in zip(axes.flat, ["plain", "damped", "domain", "seeded", "reduced", "reduced_robust"]):
     cloud(ax, st, "u1_0_mm", "v1_0_thesis_mm", v, f"{v}")
@@ -62,7 +64,7 @@ fig.suptitle("Table 10: the outcome is decided by the phi2 start")
 save(fig, smk.output.clouds_phi2)
 
 # --- convergence against the phi2 window -------------------------------------------------------
-conv = pd.read_csv(inp.convergence)
+conv = pd.read_csv(TABLES["convergence"])
 c = conv[conv["case"] == "spur_52_72"]
 fig, ax = plt.subplots()
 for v, mk in (("plain", "o"), ("damped", "s"), ("domain", "^")):
@@ -80,10 +82,10 @@ ax.set_ylim(-2, 105)
 save(plotting.finish(ax, loc="lower left"), smk.output.window)
 
 # --- sec 6.1: fixed phi2 guesses ----------------------------------------------------------------
-det = pd.read_csv(inp.detail)
+det = pd.read_csv(TABLES["convergence_detail"])
 g = det[det["case"].str.startswith("spur_25_25_guess_")].copy()
 g["guess"] = g["case"].str.extract(r"guess_([+-][0-9.]+)rad").astype(float)
-ref = pd.read_csv(inp.references).set_index("case").loc["spur_25_25", "phi2_thesis_rad"]
+ref = pd.read_csv(TABLES["references"]).set_index("case").loc["spur_25_25", "phi2_thesis_rad"]
 fig, ax = plt.subplots()
 for v, mk in (("plain", "o"), ("damped", "s"), ("domain", "^")):
     d = g[g["variant"] == v].sort_values("guess")
@@ -98,8 +100,8 @@ plotting.label_axes(ax, "phi2 guess minus root (thesis frame) [rad]", "correct-r
 save(plotting.finish(ax), smk.output.guess)
 
 # --- TE curves -----------------------------------------------------------------------------------
-cur = pd.read_csv(inp.te_curves)
-cyc = pd.read_csv(inp.te_cycle)
+cur = pd.read_csv(TABLES["te_curves"])
+cyc = pd.read_csv(TABLES["te_cycle"])
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.2))
 s = cur[cur["case"] == "spur_25_25_m1"]
 for (crown, plane), d in s.groupby(["crown_amount", "plane"]):

@@ -1,0 +1,67 @@
+"""Curvatures and the contact ellipse at solved contact points."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._pair import ContactPoints, GearPair, _mv
+
+
+def _fixed_frame_point(flank, u, v, R, origin=None):
+    from ..surfaces.base import SurfacePoint
+
+    P = flank.evaluate(u, v)
+    vecs = [_mv(R, x) for x in (P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv)]
+    if origin is not None:
+        vecs[0] = vecs[0] + origin
+    return SurfacePoint(*vecs)
+
+
+def contact_curvatures(pair: GearPair, contact: ContactPoints):
+    """Principal curvatures of both members at the contact points, in S_f and both expressed with
+    the common unit normal ``contact.normal`` (outward from member 1, into member 2), ready for
+    :func:`gearrep.curvature.relative_curvature` and :func:`gearrep.ellipse.elastic_ellipse_at`.
+
+    Curvatures follow the convention of :mod:`gearrep.curvature` (positive where the surface bends
+    toward the normal): a convex member-1 flank has negative values, a convex member-2 flank
+    (seen from member 1) positive ones. Computed for every row; rows whose status is not
+    CONVERGED are NaN. Returns (PrincipalCurvatures of member 1, of member 2)."""
+    from ..curvature import principal_curvatures, with_opposite_normal
+
+    ok = contact.converged
+    idx = np.flatnonzero(ok)
+    nan = np.full(len(contact), np.nan)
+    nan3 = np.full((len(contact), 3), np.nan)
+    out = []
+    for flank, u, v, R, sign, origin, flip in (
+            (pair.flank1, contact.u1, contact.v1, pair.R1(contact.phi1), pair.sign1, None, False),
+            (pair.flank2, contact.u2, contact.v2, pair.R2(contact.phi2), pair.sign2, pair.O2, True)):
+        pc = principal_curvatures(_fixed_frame_point(flank, u[idx], v[idx], R[idx], origin))
+        # r_u x r_v -> outward normal of the member, then member 2 seen with member 1's normal
+        if (sign < 0) != flip:
+            pc = with_opposite_normal(pc)
+        full = [nan.copy(), nan.copy(), nan3.copy(), nan3.copy(), nan3.copy()]
+        for f, x in zip(full, pc):
+            f[idx] = x
+        out.append(type(pc)(*full))
+    return out[0], out[1]
+
+
+def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
+    """Litvin's elastic-approach contact ellipse at the contact points (seed 002 eq 2.6.1-2.6.6 =
+    seed 000 eq 5.14-5.17 = seed 004 eq 21-26) for an elastic approach ``delta`` (length unit of
+    the design data): semi-axes a >= b, area, major/minor axis unit vectors in S_f. Rows whose
+    status is not CONVERGED are NaN; a contact whose relative curvature is not definite (line
+    contact) has ``elliptic`` False."""
+    from ..ellipse import elastic_ellipse_at
+
+    c1, c2 = contact_curvatures(pair, contact)
+    ok = contact.converged
+    el = elastic_ellipse_at(type(c1)(*(x[ok] for x in c1)), type(c2)(*(x[ok] for x in c2)), delta)
+    full = []
+    for x in el:
+        x = np.asarray(x)
+        f = np.full((len(contact),) + x.shape[1:], np.nan if x.dtype != bool else False, dtype=x.dtype)
+        f[ok] = x
+        full.append(f)
+    return type(el)(*full)

@@ -1,0 +1,220 @@
+"""Gear pair on its axes (frames in :mod:`gearrep.tca`), transmission error and the contact record."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..frames import rot_x, rot_y, rot_z
+from ..solve import Status, status_names
+from ..units import ARCSEC
+
+
+def _mv(M, v):
+    return np.einsum("...ij,...j->...i", M, v)
+
+
+def _wrap(x):
+    """x - 2 pi round(x / 2 pi): exact when |x| < pi."""
+    return x - 2.0 * np.pi * np.round(x / (2.0 * np.pi))
+
+
+# ----------------------------------------------------------------------------------------------
+# pair geometry
+# ----------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Misalignment:
+    """Assembly errors of member 2 (see module docstring for the frames).
+
+    d_gamma_in : rotation [rad] about y_f, in the plane of the axes (axes intersect)
+    d_gamma_out : rotation [rad] about x_f, the centre line (axes cross)
+    d_E : centre-distance change; d_H : offset along y_f; d_Z : axial displacement along z_f
+
+    The angular errors pivot about O2 (member 2's axis at mid-face). A pivot at another point Q is
+    the same rotation plus the translation (I - R)(Q - O2), i.e. extra d_E, d_H, d_Z. The choice
+    matters for helical gears: turning member 2 about y_f through O2 by dg also shifts its pitch
+    point axially by about r_p2 dg, which turns its helix by dg tan(beta) (a constant TE offset of
+    ~45 arcsec for dg = 0.05 deg, beta = 14 deg) that a pivot at the pitch point would not produce.
+    """
+
+    d_gamma_in: float = 0.0
+    d_gamma_out: float = 0.0
+    d_E: float = 0.0
+    d_H: float = 0.0
+    d_Z: float = 0.0
+
+    def __post_init__(self):
+        for n in ("d_gamma_in", "d_gamma_out", "d_E", "d_H", "d_Z"):
+            v = getattr(self, n)
+            if not np.isfinite(float(v)):
+                raise ValueError(f"{n} must be finite, got {v!r}")
+        for n in ("d_gamma_in", "d_gamma_out"):
+            if abs(getattr(self, n)) >= 0.5:
+                raise ValueError(f"{n} must be a small angle, |{n}| < 0.5 rad, got {getattr(self, n)!r}")
+
+
+def _bounds(surface):
+    lo = getattr(surface, "lower", None)
+    hi = getattr(surface, "upper", None)
+    lo = np.full(2, -np.inf) if lo is None else np.asarray(lo, float)
+    hi = np.full(2, np.inf) if hi is None else np.asarray(hi, float)
+    return lo, hi
+
+
+class GearPair:
+    """Two tooth surfaces mounted on their axes (frames in the module docstring).
+
+    Parameters
+    ----------
+    flank1, flank2 : surfaces (``gearrep.surfaces.base.Surface``); optional attributes ``lower``,
+        ``upper`` (flank domain) and ``outward_sign``; the reduced formulation needs
+        ``flank2.cylindrical`` (u = radius, v = axial coordinate)
+    n1, n2 : numbers of teeth (ratio N1/N2 in the TE, angular pitches 2 pi / N)
+    centre_distance : a > 0 (shortest distance between the axes when aligned)
+    misalignment : :class:`Misalignment` or None
+    shaft_angle : nominal angle between the axes about x_f [rad], 0 for parallel axes
+    phase2 : fixed turn of member 2 in its frame; default pi - side pi / n2 (see module docstring)
+    """
+
+    def __init__(self, flank1, flank2, n1: int, n2: int, centre_distance: float, *, misalignment=None,
+                 shaft_angle: float = 0.0, phase2=None):
+        for name, n in (("n1", n1), ("n2", n2)):
+            if int(n) != n or n < 1:
+                raise ValueError(f"{name} must be a positive integer, got {n!r}")
+        a = float(centre_distance)
+        if not (np.isfinite(a) and a > 0):
+            raise ValueError(f"centre_distance must be > 0, got {centre_distance!r}")
+        if not np.isfinite(float(shaft_angle)) or abs(shaft_angle) > np.pi:
+            raise ValueError(f"shaft_angle must be in [-pi, pi] rad, got {shaft_angle!r}")
+        mis = Misalignment() if misalignment is None else misalignment
+        if not isinstance(mis, Misalignment):
+            raise ValueError("misalignment must be a Misalignment or None")
+        self.flank1, self.flank2 = flank1, flank2
+        self.n1, self.n2 = int(n1), int(n2)
+        self.ratio = self.n1 / self.n2
+        self.centre_distance = a
+        self.misalignment = mis
+        self.shaft_angle = float(shaft_angle)
+        if phase2 is None:
+            side = getattr(flank1, "side", 1)
+            phase2 = np.pi - side * np.pi / self.n2
+        self.phase2 = float(phase2)
+        self.A2 = rot_y(mis.d_gamma_in) @ rot_x(self.shaft_angle + mis.d_gamma_out)
+        self.O2 = np.array([a + mis.d_E, mis.d_H, mis.d_Z])
+        self.w2 = -self.A2[:, 2]  # axis of positive phi2
+        self._Q = rot_z(-self.phase2) @ self.A2.T  # S_f (relative to O2) -> member-2 axis frame
+        self.sign1 = int(getattr(flank1, "outward_sign", 1))
+        self.sign2 = int(getattr(flank2, "outward_sign", 1))
+        self.lower1, self.upper1 = _bounds(flank1)
+        self.lower2, self.upper2 = _bounds(flank2)
+
+    def with_misalignment(self, misalignment) -> "GearPair":
+        """Same pair with another misalignment."""
+        return GearPair(self.flank1, self.flank2, self.n1, self.n2, self.centre_distance,
+                        misalignment=misalignment, shaft_angle=self.shaft_angle, phase2=self.phase2)
+
+    def R1(self, phi1):
+        """Rotation of member 1, Rz(phi1)."""
+        return rot_z(phi1)
+
+    def R2(self, phi2):
+        """Rotation of member 2, A2 Rz(phase2 - phi2)."""
+        return self.A2 @ rot_z(self.phase2 - np.asarray(phi2, float))
+
+    def member1(self, u1, v1, phi1):
+        """Position and outward unit normal of member 1 in S_f."""
+        P = self.flank1.evaluate(u1, v1)
+        R = self.R1(phi1)
+        return _mv(R, P.r), self.sign1 * _mv(R, P.normal)
+
+    def member2(self, u2, v2, phi2):
+        """Position and outward unit normal of member 2 in S_f."""
+        P = self.flank2.evaluate(u2, v2)
+        R = self.R2(phi2)
+        return self.O2 + _mv(R, P.r), self.sign2 * _mv(R, P.normal)
+
+
+def transmission_error(phi1, phi2, n1, n2, phi10=0.0, phi20=0.0):
+    """Transmission error (thesis eq 14), radians: (phi2 - phi20) - (N1/N2)(phi1 - phi10).
+
+    phi2 must be measured in the driven sense (see module docstring); TE > 0: member 2 leads.
+    """
+    for name, n in (("n1", n1), ("n2", n2)):
+        if not (np.isfinite(n) and n > 0):
+            raise ValueError(f"{name} must be > 0, got {n!r}")
+    phi1 = np.asarray(phi1, float)
+    phi2 = np.asarray(phi2, float)
+    return (phi2 - phi20) - (n1 / n2) * (phi1 - phi10)
+
+
+# ----------------------------------------------------------------------------------------------
+# contact record
+# ----------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ContactPoints:
+    """Contact points of a batch of solves (all arrays of length n; position/normal (n, 3)).
+
+    u1, v1, u2, v2 : surface parameters of members 1 and 2
+    phi1, phi2 : rotation angles [rad]
+    position : contact point in S_f; normal : outward unit normal of member 1 in S_f
+    te : transmission error [rad] (eq 14 with the pair's nominal reference); ``te_arcsec``
+    residual, iterations, status : from :func:`gearrep.solve.newton`, with OFF_FLANK (member-2
+        parameters outside its flank, reduced form) and WRONG_ROOT (normals not opposite) added
+    formulation : "reduced" or "conventional"
+    condition : condition number of the Newton Jacobian at the last iteration (see
+        :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve
+    """
+
+    u1: np.ndarray
+    v1: np.ndarray
+    u2: np.ndarray
+    v2: np.ndarray
+    phi1: np.ndarray
+    phi2: np.ndarray
+    position: np.ndarray
+    normal: np.ndarray
+    te: np.ndarray
+    residual: np.ndarray
+    iterations: np.ndarray
+    status: np.ndarray
+    formulation: str = "reduced"
+    condition: np.ndarray | None = None
+
+    def __len__(self):
+        return len(self.status)
+
+    @property
+    def te_arcsec(self) -> np.ndarray:
+        return self.te / ARCSEC
+
+    @property
+    def converged(self) -> np.ndarray:
+        return self.status == Status.CONVERGED
+
+    @property
+    def status_name(self) -> np.ndarray:
+        return status_names(self.status)
+
+    def take(self, idx) -> "ContactPoints":
+        """Subset by index or boolean mask."""
+        kw = {f: getattr(self, f)[idx] for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal",
+                                                   "te", "residual", "iterations", "status")}
+        cond = None if self.condition is None else self.condition[idx]
+        return ContactPoints(formulation=self.formulation, condition=cond, **kw)
+
+    @staticmethod
+    def concatenate(items) -> "ContactPoints":
+        items = list(items)
+        kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in
+              ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te", "residual", "iterations", "status")}
+        conds = [c.condition for c in items]
+        cond = None if any(c is None for c in conds) else np.concatenate(conds)
+        return ContactPoints(formulation=items[0].formulation, condition=cond, **kw)
+
+    def unknowns(self, formulation=None) -> np.ndarray:
+        """Solution as a start array: (u1, v1) for reduced, (u1, v1, u2, v2, phi2) for conventional."""
+        f = formulation or self.formulation
+        if f == "reduced":
+            return np.stack([self.u1, self.v1], axis=-1)
+        return np.stack([self.u1, self.v1, self.u2, self.v2, self.phi2], axis=-1)

@@ -1,0 +1,242 @@
+"""Start strategies and solver variants of both TCA formulations (see :mod:`gearrep.tca`).
+
+Conventional variants (five unknowns u1, v1, u2, v2, phi2 at a given phi1):
+``plain`` full Newton steps, iterates free; ``damped`` Armijo backtracking; ``domain`` damped with
+every iterate projected onto the flank boxes; ``seeded`` plain Newton from (u1, v1) and the u2, v2,
+phi2 that the reduced relations (eq 39-44) give for them (:func:`seed_from_reduced`); ``robust``
+plain Newton from :func:`robust_start`, seeded likewise.
+
+Reduced variants (two unknowns u1, v1): ``reduced`` plain Newton, ``reduced_damped``,
+``reduced_robust`` plain Newton from :func:`robust_start`: a start whose explicit u2 would fall
+below flank 2 is moved down the profile (:func:`guard_reduced_starts`), then onto the
+instantaneous contact line by a 1-D solve (:func:`transverse_stage`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..solve import SolveResult, Status, newton
+from ..surfaces.base import cross
+from ._formulations import conventional_system, newton_rows, reduced_unknowns, solve_contact
+from ._pair import GearPair
+
+CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
+REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
+
+
+def flank_boxes(pair: GearPair, margin: float = 0.0):
+    """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
+    moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
+    lo = np.concatenate([pair.lower1, pair.lower2, [-np.inf]]).astype(float)
+    hi = np.concatenate([pair.upper1, pair.upper2, [np.inf]]).astype(float)
+    for j in (0, 2):
+        h = hi[j] - lo[j]
+        lo[j] += margin * h
+        hi[j] -= margin * h
+    return lo, hi
+
+
+def solve_conventional(pair: GearPair, phi1: float, x0, *, variant: str = "plain", equations: str = "five",
+                       drop: int = 0, tol: float = 1e-12, maxiter: int = 50, margin: float = 1e-6) -> SolveResult:
+    """Conventional TCA at a fixed ``phi1`` from starts ``x0`` (n, 5) with solver ``variant``
+    (:data:`CONVENTIONAL_VARIANTS`; ``seeded`` and ``robust`` expect x0 already prepared by
+    :func:`seed_from_reduced`, and run plain Newton).
+
+    ``equations``: ``"five"`` drops normal component ``drop``, ``"six"`` keeps all three (least
+    squares), ``"drop_nz"`` drops the axial component z (singular for spur gears). The status is
+    the solver's; roots outside the flank boxes are OFF_FLANK.
+    """
+    if variant not in CONVENTIONAL_VARIANTS:
+        raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS}, got {variant!r}")
+    if equations not in ("five", "six", "drop_nz"):
+        raise ValueError(f"equations must be 'five', 'six' or 'drop_nz', got {equations!r}")
+    if equations == "five" and drop not in (0, 1, 2):
+        raise ValueError(f"equations='five' needs drop in (0, 1, 2), got {drop!r}")
+    F, J = conventional_system(pair, phi1, {"five": drop, "six": None, "drop_nz": 2}[equations])
+    lo, hi = flank_boxes(pair, 0.0)
+    kw = dict(tol=tol, maxiter=maxiter, lower=lo, upper=hi)
+    if variant == "domain":
+        lo_m, hi_m = flank_boxes(pair, margin)
+        kw.update(damped=True, keep_inside=True, lower=lo_m, upper=hi_m)
+    else:
+        kw.update(damped=(variant == "damped"))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        return newton(F, np.asarray(x0, float), J, **kw)
+
+
+def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
+    """Conventional starts (u1, v1, u2, v2, phi2) with u2, v2, phi2 from the reduced relations
+    (eq 39-44) for the given (u1, v1)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u2, v2, phi2 = reduced_unknowns(pair, u1, v1, np.full(np.shape(u1), phi1))
+    return np.column_stack([u1, v1, u2, v2, phi2])
+
+
+def guard_reduced_starts(pair: GearPair, phi1, u1, v1, n_bisect: int = 40):
+    """Move starts whose explicit u2 (eq 40) is below flank 2 (or undefined) down the profile of
+    flank 1 (bisection in u1 towards u1_min) onto the part of flank 1 that maps onto flank 2.
+    ``phi1`` scalar or one angle per start. Returns (u1, moved mask)."""
+    u1 = np.array(u1, float)
+    v1 = np.asarray(v1, float)
+    ph = np.broadcast_to(np.asarray(phi1, float), u1.shape)
+    lo_u2 = pair.lower2[0]
+
+    def ok(u):
+        with np.errstate(invalid="ignore", divide="ignore"):
+            u2, _, phi2 = reduced_unknowns(pair, u, v1, ph)
+        return np.isfinite(phi2) & (u2 >= lo_u2)
+
+    bad = ~ok(u1)
+    if np.any(bad):
+        a = np.full(u1.shape, pair.lower1[0] + 1e-9 * (pair.upper1[0] - pair.lower1[0]))
+        fixable = bad & ok(a)
+        b = u1.copy()
+        for _ in range(n_bisect):
+            mid = 0.5 * (a + b)
+            good = ok(mid)
+            a = np.where(fixable & good, mid, a)
+            b = np.where(fixable & ~good, mid, b)
+        u1 = np.where(fixable, a, u1)
+    return u1, bad
+
+
+def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: int = 50):
+    """Move each start along the profile onto the instantaneous line of contact of the unmodified
+    pair: solve (n_f1 x n_f2) . z_f = 0 for u1 at the start's own v1 (reduced relations eq 39-44).
+
+    For involute spur and helical flanks this axial component is the transverse-plane mismatch of
+    the normals, which vanishes on the plane of action; the remaining (v1) direction is the nearly
+    flat valley along the contact line that crowning makes a point. ``phi1`` scalar or one angle
+    per start. Returns (u1, iterations); rows that fail keep their u1.
+    """
+    u1 = np.asarray(u1, float)
+    v1 = np.asarray(v1, float)
+    ph = np.broadcast_to(np.asarray(phi1, float), u1.shape)
+
+    def F(x, q):
+        uu, vv, pp = x[:, 0], q[:, 0], q[:, 1]
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            u2, v2, p2 = reduced_unknowns(pair, uu, vv, pp)
+            _, n1 = pair.member1(uu, vv, pp)
+            _, n2 = pair.member2(u2, v2, p2)
+        return cross(n1, n2)[:, 2:3]
+
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        r = newton_rows(F, None, u1[:, None], np.column_stack([v1, ph]), jacobian="numeric", tol=tol,
+                        maxiter=maxiter, damped=True)
+    ok = r.status == Status.CONVERGED
+    return np.where(ok, r.x[:, 0], u1), r.iterations
+
+
+def robust_start(pair: GearPair, phi1, u1, v1):
+    """Guarded start (:func:`guard_reduced_starts`) moved onto the contact line
+    (:func:`transverse_stage`). Returns (u1, iterations of the 1-D stage)."""
+    u1g, _ = guard_reduced_starts(pair, phi1, u1, v1)
+    return transverse_stage(pair, phi1, u1g, v1)
+
+
+def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduced", tol=1e-12, maxiter=50):
+    """Reduced TCA (:func:`solve_contact`) from (u1, v1) starts with solver ``variant``
+    (:data:`REDUCED_VARIANTS`). Returns (x (n, 5) = (u1, v1, u2, v2, phi2), status, iterations,
+    residual); the iterations of the transverse stage are included."""
+    if variant not in REDUCED_VARIANTS:
+        raise ValueError(f"variant must be one of {REDUCED_VARIANTS}, got {variant!r}")
+    u1 = np.asarray(u1, float)
+    v1 = np.asarray(v1, float)
+    extra = np.zeros(u1.shape, dtype=int)
+    if variant == "reduced_robust":
+        u1, extra = robust_start(pair, phi1, u1, v1)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        c = solve_contact(pair, phi1, np.column_stack([u1, v1]), formulation="reduced",
+                          damped=(variant == "reduced_damped"), tol=tol, maxiter=maxiter)
+    return c.unknowns("conventional"), c.status, c.iterations + extra, c.residual
+
+
+def solve_variant(pair: GearPair, phi1: float, starts, variant: str, *, equations: str = "five", drop: int = 0,
+                  tol: float = 1e-12, maxiter: int = 50, margin: float = 1e-6):
+    """Solve conventional starts ``starts`` (n, 5) with any variant of either formulation (the
+    reduced ones use only the (u1, v1) columns). Returns (x (n, 5), status, iterations); a seeded
+    or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED."""
+    starts = np.asarray(starts, float)
+    if variant in REDUCED_VARIANTS:
+        x, status, iters, _ = solve_reduced(pair, phi1, starts[:, 0], starts[:, 1], variant=variant, tol=tol,
+                                            maxiter=maxiter)
+        return x, status, np.asarray(iters)
+    x0, extra = starts, 0
+    if variant == "seeded":
+        x0 = seed_from_reduced(pair, phi1, starts[:, 0], starts[:, 1])
+    elif variant == "robust":
+        u1r, extra = robust_start(pair, phi1, starts[:, 0], starts[:, 1])
+        x0 = seed_from_reduced(pair, phi1, u1r, starts[:, 1])
+    r = solve_conventional(pair, phi1, x0, variant=variant, equations=equations, drop=drop, tol=tol,
+                           maxiter=maxiter, margin=margin)
+    status = r.status
+    if variant in ("seeded", "robust"):
+        status = np.where(np.all(np.isfinite(x0), axis=1), status, int(Status.DIVERGED))
+    return r.x, status, np.asarray(r.iterations + extra)
+
+
+def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
+    """(u1, v1) start at a fixed phi1: the contact of the aligned pair on mid-face to first order.
+
+    The aligned pair is in conjugate mesh at phi1 = 0 with contact at the pitch point; turning
+    member 1 by phi1 moves the contact along the line of action by r_b1 phi1 (direction by trial
+    solve: the one that converges in fewer iterations). Falls back to (r_p1, 0)."""
+    g1 = pair.flank1.gear
+    t_p = np.tan(g1.alpha_t)
+    best = None
+    for s in (1.0, -1.0):
+        t = t_p + s * phi1
+        if t < 0:
+            continue
+        u = g1.r_b * np.sqrt(1.0 + t * t)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = solve_contact(pair, phi1, np.array([[u, 0.0]]), formulation="reduced", tol=1e-12, maxiter=50)
+        if c.status[0] == Status.CONVERGED and (best is None or c.iterations[0] < best[1]):
+            best = (np.array([u, 0.0]), c.iterations[0])
+    if best is None:
+        return np.array([g1.r_p, 0.0])
+    return best[0]
+
+
+def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
+    """First-order (u1, v1 = 0) starts along the line of action for the angles ``phi1`` (array);
+    the direction in which the contact climbs member 1's flank is found by one trial solve."""
+    g1 = pair.flank1.gear
+    t_p = np.tan(g1.alpha_t)
+    s = 1.0
+    h = 0.25 * 2 * np.pi / pair.n1
+    with np.errstate(invalid="ignore", divide="ignore"):
+        c = solve_contact(pair, np.array([-h, h]), np.array([[g1.r_p, 0.0]]), formulation="reduced", tol=1e-10)
+    if np.all(np.isfinite(c.u1)) and c.u1[1] < c.u1[0]:
+        s = -1.0
+    t = np.maximum(t_p + s * np.asarray(phi1, float), 1e-3)
+    u = np.clip(g1.r_b * np.sqrt(1.0 + t * t), pair.lower1[0], pair.upper1[0])
+    return np.column_stack([u, np.zeros_like(u)])
+
+
+def draw_starts(pair: GearPair, n: int, rng: np.random.Generator, *, phi2_window=None, phi2_fixed=None,
+                uv2: str = "uniform") -> np.ndarray:
+    """Random conventional starts (n, 5), drawn in a fixed order from ``rng``: u1, v1 uniform on
+    flank 1, then u2, v2 uniform on flank 2 (``uv2="uniform"``) or its mid-point
+    (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``."""
+    if (phi2_window is None) == (phi2_fixed is None):
+        raise ValueError("give exactly one of phi2_window and phi2_fixed")
+    if uv2 not in ("uniform", "midpoint"):
+        raise ValueError(f"uv2 must be 'uniform' or 'midpoint', got {uv2!r}")
+    lo1, hi1, lo2, hi2 = pair.lower1, pair.upper1, pair.lower2, pair.upper2
+    u1 = rng.uniform(lo1[0], hi1[0], n)
+    v1 = rng.uniform(lo1[1], hi1[1], n)
+    if uv2 == "uniform":
+        u2 = rng.uniform(lo2[0], hi2[0], n)
+        v2 = rng.uniform(lo2[1], hi2[1], n)
+    else:
+        u2 = np.full(n, 0.5 * (lo2[0] + hi2[0]))
+        v2 = np.full(n, 0.5 * (lo2[1] + hi2[1]))
+    if phi2_fixed is not None:
+        phi2 = np.full(n, float(phi2_fixed))
+    else:
+        a, b = phi2_window
+        phi2 = rng.uniform(a, b, n)
+    return np.column_stack([u1, v1, u2, v2, phi2])
