@@ -71,12 +71,16 @@ for _key in REGISTRY:
                 code=script_lib(f"workflow/scripts/{_key}_figures.py"),
             output:
                 **{k: figure(p, _key) for k, p in _figures.items()},
+            params:
+                # script and notebook paths are formatted when the job runs: loop variables would
+                # then hold the last study, params hold this rule's own
+                study=_key,
             log:
                 f"results/logs/{_key}/figures.log",
             conda:
                 "../envs/gearrep.yaml"
             script:
-                f"../scripts/{_key}_figures.py"
+                "../scripts/{params.study}_figures.py"
 
     rule:
         name:
@@ -92,13 +96,14 @@ for _key in REGISTRY:
         output:
             touch(f"results/notebooks/{_key}.executed"),
         params:
+            study=_key,
             settings=SETTINGS[_key],
         log:
             notebook=f"results/notebooks/{_key}.ipynb",
         conda:
             "../envs/gearrep.yaml"
         notebook:
-            f"../../notebooks/{_key}.ipynb"
+            "../../notebooks/{params.study}.ipynb"
 
     CHECK_FILES.append(f"results/{_study.CHECK_OUTPUTS['checks']}")
     FINAL_OUTPUTS.extend(_tables + [f"results/{p}" for p in _study.CHECK_OUTPUTS.values()] + list(_figures.values()))
