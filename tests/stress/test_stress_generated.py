@@ -22,7 +22,8 @@ from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
 from gearrep.replications import tseng_curvature as tc
-from gearrep.replications import tseng_tca as tt
+from gearrep.replications.tseng_tca import contact as tt
+from gearrep.replications.tseng_tca import studies as ts
 from gearrep.solve import Status
 from gearrep.surfaces.catt import (
     CATTFlank, CATTGearData, middle_section_curvatures, pitch_thickness_closed_form, tooth_thickness,
@@ -502,7 +503,7 @@ def test_line_contact_110_110_along_the_path(record_conditions):
     case = {"R_cp_mm": 110.0, "R_cg_mm": 110.0, "dgamma_h_arcmin": 0.0, "dgamma_v_arcmin": 0.0,
             "dC_mm": 0.0, "dZ_mm": 0.0}
     phi1 = np.radians(np.arange(-10.0, 10.1, 2.0))
-    pair, path = tt.compute_case(case, phi1)
+    pair, path = ts.compute_case(case, phi1)
     ok = _assert_honest_ke(path)
     assert np.all(ok)
     record_conditions(path.cond, "110/110 path -10..10 deg")
