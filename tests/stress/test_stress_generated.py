@@ -17,7 +17,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import assert_honest
+from conftest import PUBLISHED_DIR, assert_honest
+from gearrep import published
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
@@ -35,8 +36,8 @@ from gearrep.units import ARCSEC
 pytestmark = pytest.mark.stress
 
 KNOWN = {int(s) for s in Status}
-RC_SWEEP_MM = [float(r) for r in tc.DEFAULTS["rc_sweep_mm"]]  # 50 .. 50 000 mm (tseng_curvature config)
-L_END_MM = tc.DEFAULTS["l1_end_mm"]  # last row of Tables 4.2-4.5
+RC_SWEEP_MM = [float(r) for r in tc.SETTINGS["rc_sweep_mm"].value]  # 50 .. 50 000 mm (tseng_curvature setting)
+L_END_MM = tc.params_from_published(published.load(PUBLISHED_DIR)).l1_end_mm  # last row of Tables 4.2-4.5
 CATT_PRM = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
 CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA (catt DEFAULTS "tol")
 
