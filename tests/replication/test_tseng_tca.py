@@ -18,8 +18,8 @@ import pytest
 from conftest import study_settings
 from gearrep import checks as C
 from gearrep import frames, published
+from gearrep import tca_envelope as TE
 from gearrep.replications import tseng_tca as T
-from gearrep.replications.tseng_tca import contact as TC
 from gearrep.replications.tseng_tca import model
 from gearrep.settings import SettingError, resolve
 from gearrep.solve import newton
@@ -143,16 +143,16 @@ def test_jacobian_matches_central_differences(cases):
     pair, sol = T.compute_case(cases["5.9"], np.radians([-6.0, 4.0]))
     drop = np.argmax(np.abs(sol.n_p), axis=1)
     x = sol.x + 1e-4  # off the root as well
-    _, J, Fphi = TC._system(pair, x, sol.phi1, drop)
+    _, J, Fphi = TE.tangency_system(pair, x, sol.phi1, drop)
     h = 1e-6
     for j in range(9):
         e = np.zeros(9)
         e[j] = h
-        Fp = TC._system(pair, x + e, sol.phi1, drop, derivs=False)[0]
-        Fm = TC._system(pair, x - e, sol.phi1, drop, derivs=False)[0]
+        Fp = TE.tangency_system(pair, x + e, sol.phi1, drop, derivs=False)[0]
+        Fm = TE.tangency_system(pair, x - e, sol.phi1, drop, derivs=False)[0]
         np.testing.assert_allclose(J[:, :, j], (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
-    Fp = TC._system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
-    Fm = TC._system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
+    Fp = TE.tangency_system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
+    Fm = TE.tangency_system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
     np.testing.assert_allclose(Fphi, (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
 
 
@@ -216,6 +216,10 @@ def test_bad_input_raises(design):
         T.Assembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
         T.make_pair(110.0, 5.0)
+    pair = T.make_pair(110.0, 113.0)
+    start = T.continue_to(110.0, 113.0, T.Assembly())[1]
+    with pytest.raises(ValueError, match="face_width_mm"):
+        TE.physical_contact(pair, start, face_width_mm=0.0)
 
 
 def test_one_job_writes_only_its_table(settings, design):
@@ -295,7 +299,7 @@ def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
     pair, s0 = T.continue_to(110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
     clean = T.trace_path(pair, s0, phi1)
-    real_predict = TC.predict
+    real_predict = TE.predict
     calls = {"n": 0}
 
     def bad_predict(pair_, x, p0, p1):
@@ -307,7 +311,7 @@ def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
             out[1, 8] += 2 * np.pi / 40
         return out
 
-    monkeypatch.setattr(TC, "predict", bad_predict)
+    monkeypatch.setattr(TE, "predict", bad_predict)
     sol = T.trace_path(pair, s0, phi1)
     assert sol.converged.all(), sol.status_name
     np.testing.assert_allclose(sol.x, clean.x, atol=1e-9)

@@ -25,15 +25,15 @@ from ... import settings as _s
 from .._face import Job, run_jobs
 from . import contact
 from .checks import CHECK_PREFIXES, SURVIVING, check_records
-from .contact import (KE_COLUMNS, Assembly, KEResult, Pair, continue_to, ke_table, make_pair, physical_contact,
-                      predict, solve_points, trace_path)
+from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
+from .contact import KE_COLUMNS, Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
 from . import studies
 
 __all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
            "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "TABLE_EXAMPLE",
-           "KE_COLUMNS", "SURVIVING", "CHECK_PREFIXES", "Assembly", "Pair", "KEResult", "make_pair", "solve_points",
+           "KE_COLUMNS", "SURVIVING", "CHECK_PREFIXES", "Assembly", "Pair", "ContactPath", "make_pair", "solve_points",
            "predict", "continue_to", "trace_path", "physical_contact", "ke_table", "compute_case", "phi1_grid",
            "contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
@@ -198,7 +198,7 @@ def bench_cases(settings: dict, design: Design) -> dict[str, dict]:
     def run_one(setting):
         contact._START_CACHE.clear()
         pair, sol = compute_case(case, phi1, tol=setting["tol"], steps=setting["continuation_steps"])
-        contact.require(sol, f"bench {setting}")
+        require(sol, f"bench {setting}")
         return ke_table(sol, pair.ratio)
 
     current = {"tol": settings["tol"], "continuation_steps": settings["continuation_steps"]}

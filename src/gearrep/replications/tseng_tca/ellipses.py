@@ -12,7 +12,8 @@ from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
 from ...solve import newton
 from ...surfaces.hob import ZAHob
-from .contact import Assembly, Flank, KEResult, Pair, continue_to, l_pitch, predict, require, solve_points
+from ...tca_envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
+from .contact import Assembly, Pair, continue_to
 
 __all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
@@ -26,7 +27,7 @@ def _principal_in_fixed(flank: Flank, q, R):
     return PrincipalCurvatures(gc.k1, gc.k2, rot(gc.e1), rot(gc.e2), rot(gc.normal))
 
 
-def contact_ellipses(pair: Pair, sol: KEResult, delta_mm: float) -> pd.DataFrame:
+def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFrame:
     """Elastic-approach ellipse (eq 5.14-5.17; :func:`gearrep.ellipse.elastic_ellipse_at`) at
     every contact point of ``sol``: the chapter-4 curvatures of both flanks (two-parameter
     relations, :func:`gearrep.curvature_relations.generated_curvatures`) at the TCA point,
@@ -53,7 +54,7 @@ def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1
     point it uses: the pitch point is our choice)."""
     hob = ZAHob(pressure_angle_rad=float(np.radians(alpha_deg)))
     pair, s0 = continue_to(R_cp_mm, R_cg_mm, Assembly(), hob=hob, steps=2, tol=tol)
-    lp = l_pitch(hob)
+    lp = hob_pitch_l(hob)
     # dl_p/dphi1 from the predictor, then Newton on l_p(phi1) = l_pitch (secant, converged TCA points)
     a, cur = 0.0, s0
     for _ in range(20):
@@ -100,7 +101,7 @@ def _height(flank: Flank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30)
     return np.where(ok, (P - O) @ n, np.nan), ok
 
 
-def topology_pattern(pair: Pair, sol: KEResult, i: int, delta_mm: float, n_dirs: int = 24) -> pd.DataFrame:
+def topology_pattern(pair: Pair, sol: ContactPath, i: int, delta_mm: float, n_dirs: int = 24) -> pd.DataFrame:
     """Boundary of the contact pattern at contact point i of ``sol``: in each of ``n_dirs``
     directions of the common tangent plane, the distance rho at which the normal separation of
     the two flanks equals delta (eq 5.18-5.20: the paint-thickness criterion), found by the

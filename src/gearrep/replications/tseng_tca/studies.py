@@ -11,11 +11,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ...units import ARCSEC
 from ...surfaces.hob import ZAHob
 from . import model
-from .contact import (Assembly, KEResult, Pair, _drop, _member, _system, continue_to, ke_table, make_pair,
-                      physical_contact, predict, require, solve_points, trace_path)
+from ...tca_envelope import (ContactPath, dropped_component, member_geometry, predict, require, solve_points,
+                             tangency_system, trace_path)
+from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
 __all__ = ["Design", "TABLE_EXAMPLE", "phi1_grid", "assembly_of", "compute_case", "solved", "ke_table_of",
@@ -55,14 +55,14 @@ def assembly_of(case: dict) -> Assembly:
     return Assembly(case["dgamma_h_arcmin"] * am, case["dgamma_v_arcmin"] * am, case["dC_mm"], case["dZ_mm"])
 
 
-def compute_case(case: dict, phi1_rad, *, tol=1e-11, steps=4, hob=None) -> tuple[Pair, KEResult]:
+def compute_case(case: dict, phi1_rad, *, tol=1e-11, steps=4, hob=None) -> tuple[Pair, ContactPath]:
     """(pair, path) of one Example: continuation at phi1' = 0, then the path, and at every
     phi1' the physical contact among the tangencies found (:func:`.contact.physical_contact`)."""
     pair, s0 = continue_to(case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), hob=hob, steps=steps, tol=tol)
     return pair, physical_contact(pair, trace_path(pair, s0, phi1_rad, tol=tol), tol=tol)
 
 
-def solved(settings: dict, design: Design, example: str, hob=None) -> tuple[Pair, KEResult]:
+def solved(settings: dict, design: Design, example: str, hob=None) -> tuple[Pair, ContactPath]:
     """The path of an Example on the settings' phi1' grid."""
     return compute_case(design.cases[example], phi1_grid(settings), tol=settings["tol"],
                         steps=settings["continuation_steps"], hob=hob)
@@ -94,9 +94,9 @@ def _sensitivity_of(case, pair, sol, settings) -> pd.DataFrame:
     loose = solve_points(pair, sol.phi1, sol.x + 1e-5, tol=1e-6)
     # how far Z_p can move along the weakest direction of the 9 x 9 Jacobian while the residual
     # stays below 1e-6 (a solver stopping there could report any Z_p in this band)
-    _, J, _ = _system(pair, sol.x, sol.phi1, _drop(pair, sol.x, sol.phi1))
+    _, J, _ = tangency_system(pair, sol.x, sol.phi1, dropped_component(pair, sol.x, sol.phi1))
     _, sv, Vt = np.linalg.svd(J)
-    Tp = _member(pair.pinion, sol.x[:, 0:4])[1]  # d r_p / d q_p, z unchanged by the placement
+    Tp = member_geometry(pair.pinion, sol.x[:, 0:4])[1]  # d r_p / d q_p, z unchanged by the placement
     band = np.abs(np.einsum("nq,nq->n", Tp[:, :, 2], Vt[:, -1, 0:4])) / sv[:, -1] * 1e-6
     ke = {k: [ke_table(s, pair.ratio)["KE_arcsec"].to_numpy() for s in v] for k, v in out.items()}
     g, p = out["R_cg_mm"], out["R_cp_mm"]
@@ -126,7 +126,7 @@ def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)
 
 
-def _tip_crossing(pair: Pair, path: KEResult, member: str, ra: float, window_deg: float, tol: float) -> dict:
+def _tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_deg: float, tol: float) -> dict:
     """Where the contact reaches the tip circle r = ``ra`` of ``member``: secant method on the
     TCA path (every evaluation a converged physical contact)."""
     rad = path.radius_p if member == "pinion" else path.radius_g
