@@ -3,9 +3,9 @@ hob, the kinematic-error (KE) tables 5.2-5.9 and the claims of sections 5.4-5.6.
 
 Tooth surfaces: :class:`gearrep.surfaces.hob.GeneratedGear` (the two-parameter envelope of ch. 4,
 set-up verified by ``tseng_curvature`` on Tables 4.3/4.4). TCA: the 9-unknown tangency system of
-eq 5.1-5.11 (:mod:`.contact`, matrices of :mod:`.model`); each Example is reached from the ideal
-110/113 pair by continuation in the assembly errors (and in R_cg for 110/110), then traced along
-phi1'. KE (eq 5.12) is re-zeroed at phi1' = 0 like the printed tables, in arc-seconds. Contact
+eq 5.1-5.11 (:mod:`gearrep.tca_envelope`; the pair of Table 5.1 in :mod:`.contact`, matrices
+of :mod:`.model`); each Example is reached from the ideal 110/113 pair by continuation in the
+assembly errors (and in R_cg for 110/110), then traced along phi1'. KE (eq 5.12) is re-zeroed at phi1' = 0 like the printed tables, in arc-seconds. Contact
 ellipses by curvature analysis and by surface topology (:mod:`.ellipses`). The findings
 (ill-conditioned Z, several tangencies of the 110/110 pair, the Z_g sign erratum) are told in
 ``notebooks/tseng_tca.ipynb``.
