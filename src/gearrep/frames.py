@@ -33,6 +33,7 @@ __all__ = [
     "rot_x",
     "rot_y",
     "rot_z",
+    "drot_z",
     "rotation",
     "rotation_about_axis",
     "homogeneous",
@@ -241,3 +242,16 @@ def gear_mounting(center_distance, *, d_center=0.0, d_axial=0.0, gamma_in_plane=
     dz = np.asarray(d_axial, dtype=float)
     axial = np.stack(np.broadcast_arrays(np.zeros_like(dz), np.zeros_like(dz), dz), -1)
     return compose(translation(origin), homogeneous(R), translation(axial))
+
+
+def drot_z(a) -> np.ndarray:
+    """Derivative of :func:`rot_z` with respect to the angle: [[-s, -c, 0], [c, -s, 0], [0, 0, 0]];
+    batched like ``rot_z``: (...) -> (..., 3, 3)."""
+    a = np.asarray(a, dtype=float)
+    c, s = np.cos(a), np.sin(a)
+    D = np.zeros(a.shape + (3, 3))
+    D[..., 0, 0] = -s
+    D[..., 0, 1] = -c
+    D[..., 1, 0] = c
+    D[..., 1, 1] = -s
+    return D

@@ -1,5 +1,5 @@
 """Replication of seed 000 ch. 4 (curvature Tables 4.2-4.5 of the curvilinear gear cut by a ZA hob)
-in the fast setting.
+with the test settings (study_settings: declared values, config/config.yaml, config/test.yaml).
 
 Every printed value of Tables 4.3/4.4 and every chapter-4 claim keeps the status on file in
 expected_tseng_curvature.csv (with its reason); a value dropping from reproduced fails. Our own
@@ -16,9 +16,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import study_settings
 from gearrep import checks as C
 from gearrep import published
 from gearrep.replications import tseng_curvature as tc
+from gearrep.settings import SettingError, resolve
 
 ROOT = Path(__file__).parents[2]
 EXPECTED = pd.read_csv(Path(__file__).with_name("expected_tseng_curvature.csv"))
@@ -32,20 +34,30 @@ def pub():
 
 
 @pytest.fixture(scope="module")
-def params(pub):
-    return {**tc.FAST_PARAMS, **tc.design_from_published(pub.params)}
+def settings():
+    return study_settings("tseng_curvature")
 
 
 @pytest.fixture(scope="module")
-def tables(params):
-    t = tc.run(params)
+def design(pub):
+    return tc.params_from_published(pub)
+
+
+@pytest.fixture(scope="module")
+def params(settings, design):
+    return tc.merged(settings, design)
+
+
+@pytest.fixture(scope="module")
+def tables(settings, design):
+    t = tc.run(settings, design)
     # through CSV, as in the workflow
-    return {k: pd.read_csv(io.StringIO(v.to_csv(index=False, float_format="%.15g"))) for k, v in t.items()}
+    return {k: pd.read_csv(io.StringIO(v.to_csv(index=False))) for k, v in t.items()}
 
 
 @pytest.fixture(scope="module")
 def records(tables, pub):
-    return C.validate_checks(tc.checks(tables, pub))
+    return C.validate_checks(tc.checks(tables, pub)["checks"])
 
 
 def test_every_value_and_claim_has_a_record(records, pub):
@@ -68,7 +80,7 @@ def test_expected_status(records, vid):
 def test_k_s_and_directions_without_allowance(tables, pub):
     """Acceptance: k_s and directions within the printed precision at the reconstructed l grid,
     with no rounded-l1 allowance (only k_q gets one)."""
-    d = tc._normalise(tables)["curvature_detail"]
+    d = tc.normalise(tables)["curvature_detail"]
     v = pub.values
     n = 0
     for tab in ("4.3", "4.4"):
@@ -91,7 +103,7 @@ def test_k_q_allowance_is_derived_and_small(records, tables):
     tip = kq[kq["id"] == "000-T4.3-l1=4.381-k_q"].iloc[0]
     assert 0.5e-6 < tip["tolerance"] < 2e-5
     # at the reconstructed grid only the 6.173 row misses the half-unit, by ~3e-11
-    d = tc._normalise(tables)["curvature_detail"]
+    d = tc.normalise(tables)["curvature_detail"]
     r = d[(d["table"] == "4.3") & np.isclose(d["l1_printed_mm"], 6.173)].iloc[0]
     assert abs(abs(r["k_q_grid"] - 0.081965) - 0.5e-6) < 1e-9
 
@@ -108,7 +120,7 @@ def test_two_methods_agree(tables):
 
 def test_four_tables_fast(params):
     """Issue 10 target: the four curvature tables in < 2 s (median of 3, loaded machine)."""
-    p = tc.validate_params(params)
+    p = params
     times = []
     for _ in range(3):
         t0 = time.perf_counter()
@@ -152,12 +164,30 @@ def test_extras(tables):
     assert (e.loc[(e["R_cp_mm"] == e["R_cg_mm"]), "contact"].str.startswith("line")).all()
 
 
-def test_validation():
-    with pytest.raises(ValueError, match="unknown"):
-        tc.validate_params({"bogus": 1})
-    with pytest.raises(ValueError, match="n_rows"):
-        tc.validate_params({"n_rows": 1})
-    with pytest.raises(ValueError, match="rc_sweep_mm"):
-        tc.validate_params({"rc_sweep_mm": [0.0]})
-    with pytest.raises(ValueError, match="parts"):
-        tc.run({}, parts=["nope"])
+def test_validation(design):
+    with pytest.raises(SettingError, match="unknown setting"):
+        resolve(tc.SETTINGS, {"bogus": 1}, where="tseng_curvature")
+    with pytest.raises(SettingError, match="tseng_curvature.rc_sweep_mm"):
+        resolve(tc.SETTINGS, {"rc_sweep_mm": [0.0]}, where="tseng_curvature")
+    with pytest.raises(SettingError, match=r"tseng_curvature.ellipse_pairs\[0\]"):
+        resolve(tc.SETTINGS, {"ellipse_pairs": [[110.0]]}, where="tseng_curvature")
+    with pytest.raises(SettingError, match="tseng_curvature.rc_sweep_mm"):
+        tc.validate(resolve(tc.SETTINGS, {"rc_sweep_mm": [110.0, 110.0]}), design)
+    with pytest.raises(KeyError, match="no job"):
+        tc.run(resolve(tc.SETTINGS), design, jobs=["nope"])
+
+
+def test_design_from_published(design):
+    """The Table 5.1 pinion and hob, R_c of Examples 4.1/4.2 and the printed rows (11, l1 to 3
+    decimals) come from data/published."""
+    assert (design.n_teeth, design.module_mm, design.tip_radius_mm) == (20, 3.0, 33.0)
+    assert (design.R_c_small_mm, design.R_c_large_mm, design.l1_end_mm) == (110.0, 5000.0, 10.354)
+    assert (design.n_rows, design.l1_printed_decimals) == (11, 3)
+
+
+def test_one_job_per_curvature_table(settings, design):
+    """A curvature table is its own job and equals the table of the four computed together."""
+    assert tc.JOBS["curvature_table_4_3"].tables == {"curvature_table_4_3": "tseng/curvature_table_4_3.csv"}
+    one = tc.run(settings, design, jobs=["curvature_table_4_3"])
+    assert set(one) == {"curvature_table_4_3"}
+    pd.testing.assert_frame_equal(one["curvature_table_4_3"], tc.curvature_tables(tc.merged(settings, design))["4.3"])

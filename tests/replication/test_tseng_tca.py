@@ -1,5 +1,5 @@
-"""Replication of seed 000 chapter 5 (TCA of curvilinear-tooth gears, KE tables 5.2-5.9) in the
-fast setting.
+"""Replication of seed 000 chapter 5 (TCA of curvilinear-tooth gears, KE tables 5.2-5.9) with the
+test settings (study_settings: declared values, config/config.yaml, config/test.yaml).
 
 Every chapter-5 value and claim keeps the status on file in expected_tseng_tca.csv (with its
 reason); our own numbers are pinned by regression values; the 9 x 9 Jacobian is checked against
@@ -15,9 +15,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import study_settings
 from gearrep import checks as C
-from gearrep import published
+from gearrep import frames, published
+from gearrep import tca_envelope as TE
 from gearrep.replications import tseng_tca as T
+from gearrep.replications.tseng_tca import model
+from gearrep.settings import SettingError, resolve
 from gearrep.solve import newton
 
 ROOT = Path(__file__).parents[2]
@@ -30,19 +34,29 @@ def pub():
 
 
 @pytest.fixture(scope="module")
-def cases(pub):
-    return T.cases_from_published(pub.params)
+def settings():
+    return study_settings("tseng_tca")
 
 
 @pytest.fixture(scope="module")
-def tables(cases, pub):
-    t = T.run({**T.FAST_PARAMS, "cases": cases, **T.ellipse_data_from_published(pub.params)})
+def design(pub):
+    return T.params_from_published(pub)
+
+
+@pytest.fixture(scope="module")
+def cases(design):
+    return design.cases
+
+
+@pytest.fixture(scope="module")
+def tables(settings, design):
+    t = T.run(settings, design)
     return {k: pd.read_csv(io.StringIO(v.to_csv(index=False))) for k, v in t.items()}  # as in the workflow
 
 
 @pytest.fixture(scope="module")
 def records(tables, pub):
-    return C.validate_checks(T.checks(tables, pub))
+    return C.validate_checks(T.checks(tables, pub)["checks"])
 
 
 def test_every_chapter5_value_and_claim_has_a_record(records, pub):
@@ -129,16 +143,16 @@ def test_jacobian_matches_central_differences(cases):
     pair, sol = T.compute_case(cases["5.9"], np.radians([-6.0, 4.0]))
     drop = np.argmax(np.abs(sol.n_p), axis=1)
     x = sol.x + 1e-4  # off the root as well
-    _, J, Fphi = T._system(pair, x, sol.phi1, drop)
+    _, J, Fphi = TE.tangency_system(pair, x, sol.phi1, drop)
     h = 1e-6
     for j in range(9):
         e = np.zeros(9)
         e[j] = h
-        Fp = T._system(pair, x + e, sol.phi1, drop, derivs=False)[0]
-        Fm = T._system(pair, x - e, sol.phi1, drop, derivs=False)[0]
+        Fp = TE.tangency_system(pair, x + e, sol.phi1, drop, derivs=False)[0]
+        Fm = TE.tangency_system(pair, x - e, sol.phi1, drop, derivs=False)[0]
         np.testing.assert_allclose(J[:, :, j], (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
-    Fp = T._system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
-    Fm = T._system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
+    Fp = TE.tangency_system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
+    Fm = TE.tangency_system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
     np.testing.assert_allclose(Fphi, (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
 
 
@@ -185,22 +199,54 @@ def test_pair_is_physical_no_interference():
         assert gap == pytest.approx(expect, rel=0.1)
 
 
-def test_bad_input_raises():
-    with pytest.raises(ValueError, match="tol"):
-        T.validate_params({"tol": 1.0})
-    with pytest.raises(ValueError, match="unknown key"):
-        T.validate_params({"nope": 1})
-    with pytest.raises(ValueError, match="phi1_step_deg"):
-        T.validate_params({"phi1_step_deg": 3.0, "phi1_start_deg": -10.0})
+def test_bad_input_raises(design):
+    with pytest.raises(SettingError, match="tseng_tca.tol"):
+        resolve(T.SETTINGS, {"tol": 1.0}, where="tseng_tca")
+    with pytest.raises(SettingError, match="unknown setting"):
+        resolve(T.SETTINGS, {"nope": 1}, where="tseng_tca")
+    with pytest.raises(SettingError, match="tseng_tca.phi1_step_deg"):
+        T.validate(resolve(T.SETTINGS, {"phi1_step_deg": 3.0, "phi1_start_deg": -10.0}), design)
+    with pytest.raises(SettingError, match="tseng_tca.topology_phi1_deg"):
+        T.validate(resolve(T.SETTINGS, {"topology_phi1_deg": [1.0]}), design)
+    with pytest.raises(SettingError, match="tseng_tca.topology_n_dirs"):
+        T.validate(resolve(T.SETTINGS, {"topology_n_dirs": 10}), design)
+    with pytest.raises(ValueError, match="lack examples"):
+        T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0)))
     with pytest.raises(ValueError, match="dgamma_h"):
         T.Assembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
         T.make_pair(110.0, 5.0)
-    with pytest.raises(ValueError, match="cases is required"):
-        T.run({})
+    pair = T.make_pair(110.0, 113.0)
+    start = T.continue_to(110.0, 113.0, T.Assembly())[1]
+    with pytest.raises(ValueError, match="face_width_mm"):
+        TE.physical_contact(pair, start, face_width_mm=0.0)
 
 
-def test_cases_from_published(cases):
+def test_one_job_writes_only_its_table(settings, design):
+    """Each KE table is its own job and computes only its Example; its table equals the one of
+    the run of every job (the workflow writes it alone)."""
+    assert T.JOBS["ke_table_5_4"].tables == {"ke_table_5_4": "tseng/ke_table_5_4.csv"}
+    got = T.run(settings, design, jobs=["ke_table_5_4"])
+    assert set(got) == {"ke_table_5_4"}
+    assert len({p for j in T.JOBS.values() for p in j.tables.values()}) == len(T.JOBS)
+
+
+def test_printed_matrices_against_the_library_route(tables):
+    """Eq 5.1-5.4 read as active rotations equal the frames route (seed 000's misalignment:
+    about X_h by -dgamma_h, then Y_h by dgamma_v); eq 5.12 re-zeroed gives the KE column; eq
+    5.13 gives the contact-ratio column."""
+    gh, gv, phi = 3e-3, -2e-3, np.array([0.3, -0.7])
+    np.testing.assert_allclose(model.M_fh(gh) @ model.M_hv(gv), frames.misalignment_rotation(-gh, gv), atol=1e-15)
+    np.testing.assert_allclose(model.dM_vp(phi), (model.M_vp(phi + 1e-6) - model.M_vp(phi - 1e-6)) / 2e-6, atol=1e-9)
+    t = tables["ke_table_5_4"]
+    phi1, phi2 = np.radians(t["phi1_deg"]), np.radians(t["phi2_deg"])
+    ke = model.kinematic_error(phi1, phi2, 20, 40)
+    np.testing.assert_allclose(ke / np.radians(1 / 3600), t["KE_arcsec"], atol=1e-9)
+    cr = tables["contact_ratio"]
+    assert model.contact_ratio(*cr["phi1_deg"], 20) == pytest.approx(cr["contact_ratio"].iloc[0], rel=1e-15)
+
+
+def test_design_from_published(cases):
     assert cases["5.4"] == {"R_cp_mm": 110.0, "R_cg_mm": 113.0, "dgamma_h_arcmin": 3.0, "dgamma_v_arcmin": 0.0,
                             "dC_mm": 0.0, "dZ_mm": 0.0}
     assert cases["5.2"]["R_cg_mm"] == 110.0 and cases["5.9"]["dZ_mm"] == 0.1
@@ -212,7 +258,7 @@ def test_one_ke_table_is_fast(cases):
     ideal start cached as in the workflow)."""
     import time
 
-    phi1 = T._phi1_grid(T.validate_params())
+    phi1 = T.phi1_grid(study_settings("tseng_tca"))
     T.compute_case(cases["5.4"], phi1)  # warm (ideal start cached)
     times = []
     for _ in range(3):  # best of 3: the machine is shared, the best run measures the code
@@ -253,7 +299,7 @@ def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
     pair, s0 = T.continue_to(110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
     clean = T.trace_path(pair, s0, phi1)
-    real_predict = T.predict
+    real_predict = TE.predict
     calls = {"n": 0}
 
     def bad_predict(pair_, x, p0, p1):
@@ -265,7 +311,7 @@ def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
             out[1, 8] += 2 * np.pi / 40
         return out
 
-    monkeypatch.setattr(T, "predict", bad_predict)
+    monkeypatch.setattr(TE, "predict", bad_predict)
     sol = T.trace_path(pair, s0, phi1)
     assert sol.converged.all(), sol.status_name
     np.testing.assert_allclose(sol.x, clean.x, atol=1e-9)

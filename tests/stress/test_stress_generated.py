@@ -17,12 +17,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import assert_honest
+from conftest import PUBLISHED_DIR, assert_honest
+from gearrep import published
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
 from gearrep.replications import tseng_curvature as tc
-from gearrep.replications import tseng_tca as tt
+from gearrep.replications.tseng_tca import contact as tt
+from gearrep.replications.tseng_tca import studies as ts
+from gearrep import tca_envelope as te
 from gearrep.solve import Status
 from gearrep.surfaces.catt import (
     CATTFlank, CATTGearData, middle_section_curvatures, pitch_thickness_closed_form, tooth_thickness,
@@ -34,8 +37,8 @@ from gearrep.units import ARCSEC
 pytestmark = pytest.mark.stress
 
 KNOWN = {int(s) for s in Status}
-RC_SWEEP_MM = [float(r) for r in tc.DEFAULTS["rc_sweep_mm"]]  # 50 .. 50 000 mm (tseng_curvature config)
-L_END_MM = tc.DEFAULTS["l1_end_mm"]  # last row of Tables 4.2-4.5
+RC_SWEEP_MM = [float(r) for r in tc.SETTINGS["rc_sweep_mm"].value]  # 50 .. 50 000 mm (tseng_curvature setting)
+L_END_MM = tc.params_from_published(published.load(PUBLISHED_DIR)).l1_end_mm  # last row of Tables 4.2-4.5
 CATT_PRM = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
 CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA here (tighter than the workflow's catt.tol 1e-8)
 
@@ -409,9 +412,9 @@ def test_envelope_limiting_line_near_face_ends(flank, record_conditions):
 # ---------------------------------------------------------------------------------------------
 # 3b. the almost-line contact of the ideal R_cp = R_cg = 110 mm pair (seed 000 Table 5.2/5.3)
 # ---------------------------------------------------------------------------------------------
-def _outward_f(flank: tt.Flank, rot, x4):
+def _outward_f(flank: te.Flank, rot, x4):
     """Outward (out of the tooth) unit normal in S_f of a member at its parameters x4 (n, 4)."""
-    r, _, n, _, _, _ = tt._member(flank, x4)
+    r, _, n, _, _, _ = te.member_geometry(flank, x4)
     R = flank.gear.to_thesis  # thesis frame: the tooth centred on X (GeneratedGear.outward)
     rm, nm = r @ R.T, n @ R.T
     s = np.sign(np.sum(GeneratedGear.outward(rm, nm) * nm, -1))
@@ -440,11 +443,11 @@ def line_contact_roots():
     x0[:, 7] += rng.uniform(-0.05, 0.05, n)
     x0[:, 0] += rng.normal(0.0, 0.3, n)
     x0[:, 4] += rng.normal(0.0, 0.3, n)
-    roots = tt.solve_points(pair, np.zeros(n), x0)
+    roots = te.solve_points(pair, np.zeros(n), x0)
     return pair, sol, roots
 
 
-def _assert_honest_ke(r: tt.KEResult, tol=1e-11):
+def _assert_honest_ke(r: te.ContactPath, tol=1e-11):
     assert set(np.unique(r.solve.status)) <= KNOWN
     ok = r.converged
     for name in ("x", "r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond"):
@@ -502,7 +505,7 @@ def test_line_contact_110_110_along_the_path(record_conditions):
     case = {"R_cp_mm": 110.0, "R_cg_mm": 110.0, "dgamma_h_arcmin": 0.0, "dgamma_v_arcmin": 0.0,
             "dC_mm": 0.0, "dZ_mm": 0.0}
     phi1 = np.radians(np.arange(-10.0, 10.1, 2.0))
-    pair, path = tt.compute_case(case, phi1)
+    pair, path = ts.compute_case(case, phi1)
     ok = _assert_honest_ke(path)
     assert np.all(ok)
     record_conditions(path.cond, "110/110 path -10..10 deg")
@@ -511,6 +514,6 @@ def test_line_contact_110_110_along_the_path(record_conditions):
     x0 = np.repeat(path.x, n, 0)
     x0[:, 3] += rng.uniform(-0.1, 0.1, len(x0))
     x0[:, 7] += rng.uniform(-0.05, 0.05, len(x0))
-    r = tt.solve_points(pair, np.repeat(phi1, n), x0)
+    r = te.solve_points(pair, np.repeat(phi1, n), x0)
     _assert_honest_ke(r)
     record_conditions(r.cond, "110/110 path, 50 starts per point")

@@ -170,3 +170,12 @@ def test_gear_mounting_vectorised():
     M = fr.gear_mounting(50.0, gamma_in_plane=g, d_center=np.zeros(4))
     assert M.shape == (4, 4, 4)
     np.testing.assert_allclose(M[2], fr.gear_mounting(50.0, gamma_in_plane=g[2]))
+
+
+def test_drot_z_is_the_derivative_of_rot_z_batched():
+    from gearrep.frames import drot_z
+
+    a = np.array([[0.3, -1.2], [2.0, 0.0]])
+    h = 1e-6
+    assert drot_z(a).shape == (2, 2, 3, 3)
+    np.testing.assert_allclose(drot_z(a), (fr.rot_z(a + h) - fr.rot_z(a - h)) / (2 * h), atol=1e-9)

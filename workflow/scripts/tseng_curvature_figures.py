@@ -1,5 +1,7 @@
 """Seed 000 ch. 4: figures of the curvature tables (computed lines, printed Tables 4.3/4.4 as
-markers), curvature across the face and against R_c (Snakemake script)."""
+markers), curvature across the face and against R_c (Snakemake script of the generic figures
+rule). Inputs: ``tables`` (every table of the study), ``published`` (the study's CHECK_DATA
+files); one output per key of tseng_curvature.FIGURES."""
 
 from pathlib import Path
 
@@ -14,8 +16,11 @@ from gearrep import plotting  # noqa: E402
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
-tabs = {Path(f).stem.replace("curvature_table_", "").replace("_", "."): pd.read_csv(f) for f in smk.input.tables}
-pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in smk.input.published], ignore_index=True)
+tables = {Path(f).stem: f for f in smk.input.tables}
+tabs = {name.replace("curvature_table_", "").replace("_", "."): pd.read_csv(f) for name, f in tables.items()
+        if name.startswith("curvature_table_")}
+pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in smk.input.published if Path(f).name.startswith("values_")],
+                ignore_index=True)
 pub["l1_mm"] = pub["row"].str.split("=").str[1].astype(float)
 NAMES = {"4.2": "Sigma_2L, R_c=110", "4.3": "Sigma_2R, R_c=110", "4.4": "Sigma_2L, R_c=5000", "4.5": "Sigma_2R, R_c=5000"}
 
@@ -47,7 +52,7 @@ for ax, (a, b, pt) in zip(axes[1:], (("4.2", "4.3", "4.3"), ("4.4", "4.5", "4.4"
     plotting.finish(ax)
 save(fig, smk.output.tables)
 
-face = pd.read_csv(smk.input.face)
+face = pd.read_csv(tables["face"])
 fig, axes = plt.subplots(2, 2, figsize=(12, 7.5))
 for i, fl in enumerate(("Sigma_2R", "Sigma_2L")):
     f = face[face["flank"] == fl]
@@ -70,7 +75,7 @@ fig.suptitle("x = beyond the envelope's limiting line (undercut region, not join
 fig.tight_layout()
 save(fig, smk.output.face)
 
-rc = pd.read_csv(smk.input.rc_sweep)
+rc = pd.read_csv(tables["rc_sweep"])
 spur = rc[~np.isfinite(rc["R_c_mm"])]
 rc = rc[np.isfinite(rc["R_c_mm"])]
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.2))
@@ -89,3 +94,4 @@ plotting.finish(axes[0], loc="lower right")
 plotting.finish(axes[1], loc="center right")
 fig.tight_layout()
 save(fig, smk.output.rc)
+Path(smk.log[0]).write_text("figures: " + ", ".join(str(f) for f in smk.output) + "\n")

@@ -1,8 +1,9 @@
-"""Seed 000 ch. 5 (tseng_tca): figures from results/tseng_tca (Snakemake script).
+"""Seed 000 ch. 5 (tseng_tca): figures (Snakemake script of the generic figures rule).
 
 KE against phi1' for the five surviving tables (computed lines, printed values as markers),
-the contact position Z_p along the path, and the KE of the ideal pair against the hob pitch
-radius (Fig 5.5)."""
+the contact position Z_p along the path, the KE of the ideal pair against the hob pitch radius
+(Fig 5.5) and a/b against R_c (Fig 5.7). Inputs: ``tables`` (every table of the study),
+``published`` (the study's CHECK_DATA files); one output per key of tseng_tca.FIGURES."""
 
 from pathlib import Path
 
@@ -12,12 +13,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from gearrep import plotting, published  # noqa: E402
+from gearrep import plotting  # noqa: E402
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 tables = {Path(f).stem: pd.read_csv(f) for f in smk.input.tables}
-values = published.load(smk.config["published_dir"]).values
+values = pd.concat([pd.read_csv(f, dtype=str, keep_default_na=False) for f in smk.input.published
+                    if Path(f).name.startswith("values_")], ignore_index=True)
+values["value"] = pd.to_numeric(values["value"], errors="coerce")
 SURVIVING = ["5.3", "5.4", "5.7", "5.8", "5.9"]
 
 

@@ -1,0 +1,204 @@
+"""What seed 000 ch. 5 computes, one function per job (each callable alone with the resolved
+settings and the design of :func:`gearrep.replications.tseng_tca.params_from_published`).
+
+A job that needs a solved Example (sensitivity, contact ratio, ellipses, topology) solves it
+itself: one KE path costs < 0.5 s, and solving it again gives the same numbers bit for bit."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from ...surfaces.hob import ZAHob
+from . import model
+from ...tca_envelope import (ContactPath, dropped_component, member_geometry, predict, require, solve_points,
+                             tangency_system, trace_path)
+from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
+from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
+
+__all__ = ["Design", "TABLE_EXAMPLE", "phi1_grid", "assembly_of", "compute_case", "solved", "ke_table_of",
+           "sensitivity", "contact_ratio", "ke_vs_hob_radius", "ellipses_example_5_3", "ellipse_ratio",
+           "topology_example_5_3", "SENSITIVITY_TABLES"]
+
+#: KE table (seed 000 Table 5.x) -> the Example (sec 5.5) whose assembly it lists
+TABLE_EXAMPLE = {"5.2": "5.1", "5.3": "5.2", "5.4": "5.4", "5.5": "5.5", "5.6": "5.6",
+                 "5.7": "5.7", "5.8": "5.8", "5.9": "5.9"}
+#: the tables whose sensitivity to R_c is reported (the surviving ones)
+SENSITIVITY_TABLES = ("5.3", "5.4", "5.7", "5.8", "5.9")
+
+
+@dataclass(frozen=True)
+class Design:
+    """Published design data of ch. 5: ``cases`` {example: {R_cp_mm, R_cg_mm, dgamma_h_arcmin,
+    dgamma_v_arcmin, dC_mm, dZ_mm}}, the paint thickness ``delta_mm`` (sec 5.4.2) and the Fig 5.7
+    pressure angles ``ellipse_alpha_deg``."""
+
+    cases: dict
+    delta_mm: float
+    ellipse_alpha_deg: tuple
+
+
+def phi1_grid(settings: dict) -> np.ndarray:
+    """phi1' [rad] from phi1_start_deg to phi1_end_deg in phi1_step_deg steps (0 exactly on it)."""
+    s = settings
+    n = int(round((s["phi1_end_deg"] - s["phi1_start_deg"]) / s["phi1_step_deg"]))
+    g = s["phi1_start_deg"] + s["phi1_step_deg"] * np.arange(n + 1)
+    g[np.abs(g) < 1e-9] = 0.0
+    return np.radians(g)
+
+
+def assembly_of(case: dict) -> Assembly:
+    """The assembly errors of a case (angles printed in arc-minutes)."""
+    am = np.radians(1.0 / 60.0)
+    return Assembly(case["dgamma_h_arcmin"] * am, case["dgamma_v_arcmin"] * am, case["dC_mm"], case["dZ_mm"])
+
+
+def compute_case(case: dict, phi1_rad, *, tol=1e-11, steps=4, hob=None) -> tuple[Pair, ContactPath]:
+    """(pair, path) of one Example: continuation at phi1' = 0, then the path, and at every
+    phi1' the physical contact among the tangencies found (:func:`.contact.physical_contact`)."""
+    pair, s0 = continue_to(case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), hob=hob, steps=steps, tol=tol)
+    return pair, physical_contact(pair, trace_path(pair, s0, phi1_rad, tol=tol), tol=tol)
+
+
+def solved(settings: dict, design: Design, example: str, hob=None) -> tuple[Pair, ContactPath]:
+    """The path of an Example on the settings' phi1' grid."""
+    return compute_case(design.cases[example], phi1_grid(settings), tol=settings["tol"],
+                        steps=settings["continuation_steps"], hob=hob)
+
+
+def ke_table_of(settings: dict, design: Design, example: str) -> pd.DataFrame:
+    """The KE table (eq 5.12, re-zeroed at phi1' = 0) of one Example."""
+    pair, sol = solved(settings, design, example)
+    return ke_table(sol, pair.ratio)
+
+
+def _shifted(case, pair, sol, which, h, tol):
+    out = []
+    for sgn in (1, -1):
+        c = dict(case)
+        c[which] = case[which] + sgn * h
+        pr = make_pair(c["R_cp_mm"], c["R_cg_mm"], pair.assembly, pair.pinion.gear.hob)
+        s = solve_points(pr, sol.phi1, sol.x, tol=tol)
+        require(s, f"sensitivity {which}")
+        out.append(s)
+    return out
+
+
+def _sensitivity_of(case, pair, sol, settings) -> pd.DataFrame:
+    """dZ/dR_c and dKE/dR_c at every row by central differences in R_cg and R_cp (warm
+    started from the path), and Z at a loose solver tolerance (1e-6)."""
+    h = float(settings["sensitivity_step_mm"])
+    out = {which: _shifted(case, pair, sol, which, h, settings["tol"]) for which in ("R_cg_mm", "R_cp_mm")}
+    loose = solve_points(pair, sol.phi1, sol.x + 1e-5, tol=1e-6)
+    # how far Z_p can move along the weakest direction of the 9 x 9 Jacobian while the residual
+    # stays below 1e-6 (a solver stopping there could report any Z_p in this band)
+    _, J, _ = tangency_system(pair, sol.x, sol.phi1, dropped_component(pair, sol.x, sol.phi1))
+    _, sv, Vt = np.linalg.svd(J)
+    Tp = member_geometry(pair.pinion, sol.x[:, 0:4])[1]  # d r_p / d q_p, z unchanged by the placement
+    band = np.abs(np.einsum("nq,nq->n", Tp[:, :, 2], Vt[:, -1, 0:4])) / sv[:, -1] * 1e-6
+    ke = {k: [ke_table(s, pair.ratio)["KE_arcsec"].to_numpy() for s in v] for k, v in out.items()}
+    g, p = out["R_cg_mm"], out["R_cp_mm"]
+    return pd.DataFrame({
+        "phi1_deg": np.degrees(sol.phi1),
+        "dZ_p_dR_cg": (g[0].Z_p - g[1].Z_p) / (2 * h),
+        "dZ_g_dR_cg": (g[0].Z_g - g[1].Z_g) / (2 * h),
+        "dZ_p_dR_cp": (p[0].Z_p - p[1].Z_p) / (2 * h),
+        "dl_p_dR_cg": (g[0].x[:, 0] - g[1].x[:, 0]) / (2 * h),
+        "dKE_dR_cg_arcsec_per_mm": (ke["R_cg_mm"][0] - ke["R_cg_mm"][1]) / (2 * h),
+        "Z_p_tol_1e-6_minus_Z_p": loose.Z_p - sol.Z_p,
+        "Z_p_band_at_residual_1e-6_mm": band,
+        "loose_status": loose.status_name,
+        "jacobian_cond": sol.cond,
+    })
+
+
+def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
+    """Sensitivity of the surviving tables' contact to R_c (each Example solved again)."""
+    frames = []
+    for table in SENSITIVITY_TABLES:
+        ex = TABLE_EXAMPLE[table]
+        pair, sol = solved(settings, design, ex)
+        s = _sensitivity_of(design.cases[ex], pair, sol, settings)
+        s.insert(0, "table", table)
+        frames.append(s)
+    return pd.concat(frames, ignore_index=True)
+
+
+def _tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_deg: float, tol: float) -> dict:
+    """Where the contact reaches the tip circle r = ``ra`` of ``member``: secant method on the
+    TCA path (every evaluation a converged physical contact)."""
+    rad = path.radius_p if member == "pinion" else path.radius_g
+    g = rad - ra
+    k = np.flatnonzero(np.sign(g[:-1]) != np.sign(g[1:]))
+    if k.size != 1:
+        raise RuntimeError(f"contact ratio: the {member} tip is not crossed once in +-{window_deg} deg")
+    a, b = path.phi1[k[0]], path.phi1[k[0] + 1]
+    ga, gb = g[k[0]], g[k[0] + 1]
+    cur = path.take([k[0]])
+    for _ in range(30):
+        c = b - gb * (b - a) / (gb - ga)
+        s = physical_contact(pair, solve_points(pair, [c], predict(pair, cur.x, cur.phi1, [c]), tol=tol), tol=tol)
+        require(s, "contact-ratio secant")
+        gc = (s.radius_p if member == "pinion" else s.radius_g)[0] - ra
+        a, ga, b, gb, cur = b, gb, c, gc, s
+        if abs(gc) < 1e-10:
+            break
+    return {"edge": f"{member}_tip", "radius_mm": ra, "phi1_deg": np.degrees(b),
+            "l_p_mm": cur.x[0, 0], "l_g_mm": cur.x[0, 4], "radius_error_mm": gb}
+
+
+def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
+    """Contact ratio of the ideal 110/110 pair (Example 5.1), eq 5.13 with the angular pitch
+    (:func:`.model.contact_ratio`): phi1_B, phi1_E where the contact reaches the gear tip and the
+    pinion tip. The start is the physical contact at phi1' = 0 of the Example's path."""
+    pair, sol = solved(settings, design, "5.1")
+    start = sol.take([int(np.argmin(np.abs(sol.phi1)))])
+    tol, window = settings["tol"], settings["contact_ratio_window_deg"]
+    w = np.radians(window)
+    path = physical_contact(pair, trace_path(pair, start, np.linspace(-w, w, 31), tol=tol), tol=tol)
+    require(path, "contact-ratio path")
+    d = pd.DataFrame([_tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
+                      _tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol)])
+    d["contact_ratio"] = model.contact_ratio(d["phi1_deg"].iloc[0], d["phi1_deg"].iloc[1], pair.pinion.n_teeth)
+    return d
+
+
+def ke_vs_hob_radius(settings: dict, design: Design) -> pd.DataFrame:
+    """Fig 5.5: KE of Example 5.1 for each hob pitch radius of ``hob_radii_mm``."""
+    rows = []
+    for r_h in settings["hob_radii_mm"]:
+        hob = ZAHob(pitch_radius_mm=float(r_h))
+        pair, sol = solved(settings, design, "5.1", hob=hob)
+        require(sol, f"hob sweep r_h={r_h}")
+        t = ke_table(sol, pair.ratio)
+        rows += [{"hob_pitch_radius_mm": float(r_h), "lead_angle_deg": np.degrees(hob.lead_angle_rad),
+                  "phi1_deg": a, "KE_arcsec": k} for a, k in zip(t["phi1_deg"], t["KE_arcsec"])]
+    return pd.DataFrame(rows)
+
+
+def ellipses_example_5_3(settings: dict, design: Design) -> pd.DataFrame:
+    """Curvature-method contact ellipses along the Example 5.3 path."""
+    pair, sol = solved(settings, design, "5.3")
+    return contact_ellipses(pair, sol, float(design.delta_mm))
+
+
+def ellipse_ratio(settings: dict, design: Design) -> pd.DataFrame:
+    """Fig 5.7: a/b at the pitch point of the ideal pair R_cg = R_cp + ellipse_R_gap_mm."""
+    rows = [pitch_point_ratio(float(rc), float(rc) + float(settings["ellipse_R_gap_mm"]), float(a), tol=settings["tol"])
+            for a in design.ellipse_alpha_deg for rc in settings["ellipse_R_cp_mm"]]
+    return pd.DataFrame(rows)
+
+
+def topology_example_5_3(settings: dict, design: Design) -> pd.DataFrame:
+    """Fig 5.8: surface-topology pattern at the topology_phi1_deg points of the Example 5.3 path."""
+    pair, sol = solved(settings, design, "5.3")
+    topo = []
+    for a in settings["topology_phi1_deg"]:
+        i = int(np.argmin(np.abs(np.degrees(sol.phi1) - a)))
+        t = topology_pattern(pair, sol, i, float(design.delta_mm), int(settings["topology_n_dirs"]))
+        if not t["converged"].all():
+            raise RuntimeError(f"topology pattern at phi1' = {a} deg: separation solve did not converge")
+        topo.append(t)
+    return pd.concat(topo, ignore_index=True)
