@@ -43,7 +43,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .surfaces.base import SurfacePoint, cross, unit
+from .surface import SurfacePoint, cross, unit
 
 __all__ = [
     "FundamentalForms",

@@ -64,7 +64,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .envelope import Envelope
-from .surfaces.base import SurfacePoint, cross
+from .surface import SurfacePoint, cross
 
 try:  # the contract's principal curvatures (gearrep.curvature), when present
     from .curvature import principal_curvatures as _contract_principal

@@ -75,7 +75,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .solve import SolveResult, Status, newton
-from .surfaces.base import Surface, SurfacePoint, cross
+from .surface import Surface, SurfacePoint, cross
 
 __all__ = [
     "Motion",
@@ -134,7 +134,7 @@ class Motion:
         return m
 
 
-# fourth-order central differences (same weights as surfaces.base)
+# fourth-order central differences (same weights as gearrep.surface)
 _D1 = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0
 _D1_OFF = np.array([-2.0, -1.0, 1.0, 2.0])
 _D2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0
@@ -524,7 +524,7 @@ class Envelope:
 
     Parameters
     ----------
-    tool : the generating surface (a :class:`gearrep.surfaces.base.Surface` in S_1)
+    tool : the generating surface (a :class:`gearrep.surface.Surface` in S_1)
     motion : a :class:`Motion` with k = 1 or 2 parameters
     free : the two parameters (names or indices into ("u", "v") + motion.names) that
         parameterise the generated surface; the other k are solved from the meshing equations
@@ -537,7 +537,7 @@ class Envelope:
     def __init__(self, tool: Surface, motion: Motion, free=("u", "v"), *, lower=None, upper=None,
                  tol: float = 1e-12, maxiter: int = 50, singular_tol: float = 1e-6):
         if not isinstance(tool, Surface):
-            raise ValueError("tool must be a gearrep.surfaces.base.Surface")
+            raise ValueError("tool must be a gearrep.surface.Surface")
         if not isinstance(motion, Motion) or motion.n_params not in (1, 2):
             raise ValueError("motion must be a gearrep.envelope.Motion with 1 or 2 parameters")
         self.tool, self.motion = tool, motion
@@ -711,7 +711,7 @@ class Envelope:
         return self._record(q, res)
 
     def surface(self, guess, fd_step=(1e-3, 1e-3)) -> "EnvelopeSurface":
-        """The generated surface as a :class:`gearrep.surfaces.base.Surface` of the two free
+        """The generated surface as a :class:`gearrep.surface.Surface` of the two free
         parameters (see :class:`EnvelopeSurface`)."""
         return EnvelopeSurface(self, guess, fd_step)
 

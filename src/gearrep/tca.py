@@ -85,7 +85,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solve import SolveResult, Status, newton, status_names
-from .surfaces.base import cross
+from .surface import cross
 from .units import ARCSEC
 
 try:  # rotation matrices from gearrep.frames (active rotations, (..., 3, 3))
@@ -192,7 +192,7 @@ class GearPair:
 
     Parameters
     ----------
-    flank1, flank2 : surfaces (``gearrep.surfaces.base.Surface``); optional attributes ``lower``,
+    flank1, flank2 : surfaces (``gearrep.surface.Surface``); optional attributes ``lower``,
         ``upper`` (flank domain) and ``outward_sign``; the reduced formulation needs
         ``flank2.cylindrical`` (u = radius, v = axial coordinate)
     n1, n2 : numbers of teeth (ratio N1/N2 in the TE, angular pitches 2 pi / N)
@@ -349,7 +349,7 @@ class ContactPoints:
 # geometry kernels with analytic derivatives
 # ----------------------------------------------------------------------------------------------
 def normal_derivatives(P, sign):
-    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surfaces.base.SurfacePoint` and its u- and
+    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surface.SurfacePoint` and its u- and
     v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v)."""
     N = cross(P.r_u, P.r_v)
     L = np.linalg.norm(N, axis=-1, keepdims=True)
@@ -675,7 +675,7 @@ def trace_path(pair: GearPair, phi1, start=None, *, formulation: str = "reduced"
 # curvatures and contact ellipse at solved contact points
 # ----------------------------------------------------------------------------------------------
 def _fixed_frame_point(flank, u, v, R, origin=None):
-    from .surfaces.base import SurfacePoint
+    from .surface import SurfacePoint
 
     P = flank.evaluate(u, v)
     vecs = [_mv(R, x) for x in (P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv)]

@@ -1,5 +1,5 @@
 """gearrep.curvature against closed forms (plane, sphere, cylinder, torus, helicoid, involute
-helicoid), with analytic derivatives and with the finite-difference default of surfaces.base.
+helicoid), with analytic derivatives and with the finite-difference default of gearrep.surface.
 
 Accuracy achieved (documented here and asserted below):
 * analytic derivatives: principal curvatures to ~1e-15 relative (asserted 1e-12);
@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from gearrep import curvature as cv
 from gearrep.surfaces.analytic import (Cylinder, Helicoid, InvoluteHelicoid, Plane, Sphere,
                                        Torus, finite_difference_version)
-from gearrep.surfaces.base import SurfacePoint, unit
+from gearrep.surface import SurfacePoint, unit
 
 TOL = {"analytic": 1e-12, "fd": 1e-8}
 
@@ -180,7 +180,7 @@ def test_gaussian_mean_match_principal_generic_param():
         def position(self, u, v):
             return s.position(u - 0.7 * v, v)
 
-    from gearrep.surfaces.base import fd_derivatives
+    from gearrep.surface import fd_derivatives
     u, v = np.array([0.1, 2.0]), np.array([0.5, 2.5])
     p = fd_derivatives(Skew(2.0, 0.5).position, u, v)
     pc = cv.principal_curvatures(p)

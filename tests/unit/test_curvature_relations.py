@@ -23,7 +23,7 @@ from gearrep.curvature_relations import (
     seed000_system,
 )
 from gearrep.envelope import Envelope, rack_generation_motion, singular_points
-from gearrep.surfaces.base import Surface
+from gearrep.surface import Surface
 from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, nasa_l
 from gearrep.units import DEG
 

@@ -8,7 +8,7 @@ from _envelope_cases import HOB, ArchimedeanThread, hob_case
 from gearrep.curvature import principal_curvatures
 from gearrep.curvature_relations import generated_curvatures
 from gearrep.envelope import Envelope
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.hob import FLANK_SIDE, GeneratedGear, HobThread, RotatedSurface, ZAHob
 
 L_GRID = np.linspace(4.3814841, 10.354, 5)

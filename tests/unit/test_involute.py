@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.involute import (
     CircularCrowning, InvoluteFlank, InvoluteGearData, LogarithmicCrowning, ParabolicCrowning, RootRelief,
     TipRelief, involute_polar_angle, mating_flanks, standard_centre_distance, thesis_involute_xy,

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from _envelope_cases import principal
 
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, nasa_l
 from gearrep.units import DEG
 

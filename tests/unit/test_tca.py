@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from gearrep.solve import Status
-from gearrep.surfaces.base import Surface
+from gearrep.surface import Surface
 from gearrep.surfaces.involute import (
     InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance,
 )

@@ -9,7 +9,7 @@ BENCH_DIR = "results/bench"
 rule bench_core:
     input:
         published_dir=config["published_dir"],
-        code=lib("benchmark", "plotting", "published", "solve", "tca", "surfaces.involute", "surfaces.base", "units"),
+        code=lib("benchmark", "plotting", "published", "solve", "tca", "surfaces.involute", "surface", "units"),
     output:
         throughput=f"{BENCH_DIR}/throughput.csv",
         sweep=f"{BENCH_DIR}/core_tca.csv",

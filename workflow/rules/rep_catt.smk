@@ -10,7 +10,7 @@ CATT_FIGURES = {
     "fig15": "fig15_area_vs_z2.png",
     "sec4": "sec4_example_ellipse.png",
 }
-CATT_LIB = lib("replications.catt", "surfaces.catt", "surfaces.base", "checks", "published", "solve", "tca",
+CATT_LIB = lib("replications.catt", "surfaces.catt", "surface", "checks", "published", "solve", "tca",
                "curvature", "ellipse", "units")
 
 

@@ -12,7 +12,7 @@ NASA_FIGURES = {
     "paths": "contact_paths.png",
     "worm": "te_worm.png",
 }
-NASA_LIB = lib("replications.nasa", "surfaces.novikov", "surfaces.rack", "surfaces.base", "envelope",
+NASA_LIB = lib("replications.nasa", "surfaces.novikov", "surfaces.rack", "surface", "envelope",
                "curvature", "curvature_relations", "ellipse", "tca", "solve", "checks", "published", "units")
 
 

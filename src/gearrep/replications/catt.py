@@ -81,7 +81,7 @@ from .. import checks as _checks
 from ..solve import Status, newton, status_names
 from .. import curvature as _curv
 from .. import ellipse as _ellipse
-from ..surfaces.base import SurfacePoint, fd_derivatives
+from ..surface import SurfacePoint, fd_derivatives
 from ..surfaces.catt import (
     CATTFlank, CATTGearData, RotatedSurface, eq28_profile, eq29_profile, middle_section_curvatures,
     pitch_thickness_closed_form, rot_z, tooth_thickness, turn_over,

@@ -148,7 +148,7 @@ from ..surfaces.involute import (
     TipRelief,
     mating_flanks,
 )
-from ..surfaces.base import cross
+from ..surface import cross
 from ..tca import GearPair, Misalignment, newton_rows, normal_derivatives, reduced_unknowns, solve_contact
 from ..units import ARCMIN, ARCSEC, DEG
 

@@ -1,5 +1,2 @@
-"""Tooth and tool surfaces: one module per family, all following :mod:`gearrep.surfaces.base`."""
-
-from .base import Surface, SurfacePoint, cross, fd_derivatives, unit
-
-__all__ = ["Surface", "SurfacePoint", "cross", "fd_derivatives", "unit"]
+"""Tooth and tool surfaces: one module per family, each following the protocol of
+:mod:`gearrep.surface`."""

@@ -89,7 +89,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solve import SolveResult, Status, newton
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
 __all__ = [
     "CATTGearData", "CATTFlank", "RotatedSurface", "turn_over", "tooth_thickness",

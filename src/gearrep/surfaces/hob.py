@@ -64,7 +64,7 @@ from ..curvature_relations import (
 )
 from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
 from ..solve import SolveResult, Status, newton
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
 __all__ = [
     "HOB_VARIANTS",
@@ -453,7 +453,7 @@ class GeneratedGear:
         return normal * np.where(s == 0, 1.0, s)[..., None]
 
     def surface(self, frame: str = "thesis", fd_step=(1e-3, 1e-4)) -> Surface:
-        """The generated flank as a :class:`gearrep.surfaces.base.Surface` of (l, psi) (for
+        """The generated flank as a :class:`gearrep.surface.Surface` of (l, psi) (for
         direct differential geometry and TCA): analytic first derivatives, second derivatives
         with analytic normal components (:class:`gearrep.envelope.EnvelopeSurface`). ``frame``
         "thesis" (S_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""

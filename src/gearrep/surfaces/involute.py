@@ -75,7 +75,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
 
 def _check_finite(name: str, value, *, positive=False, nonneg=False):

@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..envelope import Envelope, rack_generation_motion
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 from .rack import ParabolicRackCutter
 
 __all__ = ["RackGeneratedFlank", "pitch_radius"]

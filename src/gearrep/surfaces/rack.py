@@ -49,7 +49,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
 __all__ = ["RackCutter", "StraightRackCutter", "ParabolicRackCutter", "nasa_l"]
 

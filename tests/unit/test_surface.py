@@ -1,8 +1,8 @@
-"""Finite-difference derivatives of surfaces.base against a sphere's closed forms."""
+"""Finite-difference derivatives of gearrep.surface against a sphere's closed forms."""
 
 import numpy as np
 
-from gearrep.surfaces.base import Surface, fd_derivatives, unit
+from gearrep.surface import Surface, fd_derivatives, unit
 
 R = 7.0
 
@@ -40,7 +40,7 @@ def test_normal_orientation_and_flip():
 
 
 def test_cross_matches_numpy_with_broadcasting():
-    from gearrep.surfaces.base import cross
+    from gearrep.surface import cross
 
     rng = np.random.default_rng(0)
     a, b = rng.normal(size=(4, 1, 3)), rng.normal(size=(5, 3))
