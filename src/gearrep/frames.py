@@ -33,8 +33,12 @@ __all__ = [
     "rot_x",
     "rot_y",
     "rot_z",
+    "drot_x",
+    "drot_y",
+    "drot_z",
     "rotation",
     "rotation_about_axis",
+    "drotation_about_axis",
     "homogeneous",
     "translation",
     "compose",
@@ -76,6 +80,43 @@ def rot_z(a) -> np.ndarray:
     return _rot(a, 0, 1)
 
 
+def _drot(a, i, j, order):
+    if order not in (1, 2):
+        raise ValueError(f"order must be 1 or 2, got {order!r}")
+    a = np.asarray(a, dtype=float)
+    c, s = np.cos(a), np.sin(a)
+    R = np.zeros(a.shape + (3, 3))
+    if order == 1:  # d/da [[c, -s], [s, c]] = [[-s, -c], [c, -s]]
+        R[..., i, i] = -s
+        R[..., j, j] = -s
+        R[..., i, j] = -c
+        R[..., j, i] = c
+    else:  # d2/da2 = [[-c, s], [-s, -c]]
+        R[..., i, i] = -c
+        R[..., j, j] = -c
+        R[..., i, j] = s
+        R[..., j, i] = -s
+    return R
+
+
+def drot_x(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_x(a) / da^order (order 1 or 2), batched like :func:`rot_x`:
+    order 1 [[0, 0, 0], [0, -s, -c], [0, c, -s]]."""
+    return _drot(a, 1, 2, order)
+
+
+def drot_y(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_y(a) / da^order (order 1 or 2), batched like :func:`rot_y`:
+    order 1 [[-s, 0, c], [0, 0, 0], [-c, 0, -s]]."""
+    return _drot(a, 2, 0, order)
+
+
+def drot_z(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_z(a) / da^order (order 1 or 2), batched like :func:`rot_z`:
+    order 1 [[-s, -c, 0], [c, -s, 0], [0, 0, 0]]."""
+    return _drot(a, 0, 1, order)
+
+
 def rotation(axis: str, a) -> np.ndarray:
     """``rot_x``/``rot_y``/``rot_z`` selected by ``axis`` in {'x', 'y', 'z'}."""
     try:
@@ -84,23 +125,41 @@ def rotation(axis: str, a) -> np.ndarray:
         raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}") from None
 
 
-def rotation_about_axis(axis, a) -> np.ndarray:
-    """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
-    R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis)."""
+def _axis_generator(axis):
+    """Cross-product matrix K of the unit direction of ``axis`` (..., 3): K x = unit(axis) x x."""
     k = np.asarray(axis, dtype=float)
     nrm = np.linalg.norm(k, axis=-1, keepdims=True)
     if np.any(nrm == 0):
         raise ValueError("axis must be a non-zero vector")
     k = k / nrm
-    a = np.asarray(a, dtype=float)
-    k, a = np.broadcast_arrays(k, a[..., None])
-    a = a[..., 0]
     K = np.zeros(k.shape[:-1] + (3, 3))
     K[..., 0, 1], K[..., 0, 2] = -k[..., 2], k[..., 1]
     K[..., 1, 0], K[..., 1, 2] = k[..., 2], -k[..., 0]
     K[..., 2, 0], K[..., 2, 1] = -k[..., 1], k[..., 0]
+    return K
+
+
+def rotation_about_axis(axis, a) -> np.ndarray:
+    """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
+    R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis). Batch
+    dimensions of ``axis`` (without its last) and ``a`` broadcast."""
+    K = _axis_generator(axis)
+    a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
     return np.eye(3) + s * K + (1.0 - c) * (K @ K)
+
+
+def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
+    """Derivative d^order R / da^order (order 1 or 2) of :func:`rotation_about_axis`:
+    dR/da = cos a K + sin a K^2, d2R/da2 = -sin a K + cos a K^2."""
+    if order not in (1, 2):
+        raise ValueError(f"order must be 1 or 2, got {order!r}")
+    K = _axis_generator(axis)
+    a = np.asarray(a, dtype=float)
+    s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
+    if order == 1:
+        return c * K + s * (K @ K)
+    return -s * K + c * (K @ K)
 
 
 def homogeneous(R=None, t=None) -> np.ndarray:
