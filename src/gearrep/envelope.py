@@ -74,6 +74,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from . import frames
 from .solve import SolveResult, Status, newton
 from .surface import Surface, SurfacePoint, cross
 
@@ -218,13 +219,9 @@ class _Factor:
             F[:, :3, 3] = s[:, None] * self.vector
             dF[:, :3, 3] = self.vector
             return F, dF, d2F
-        a = self.vector
-        K = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
-        K2 = K @ K
-        c, sn = np.cos(s)[:, None, None], np.sin(s)[:, None, None]
-        R = np.eye(3) + sn * K + (1.0 - c) * K2  # Rodrigues' rotation formula
-        dR = c * K + sn * K2
-        d2R = -sn * K + c * K2
+        R = frames.rotation_about_axis(self.vector, s)
+        dR = frames.drotation_about_axis(self.vector, s)
+        d2R = frames.drotation_about_axis(self.vector, s, order=2)
         p = self.point
         F[:, :3, :3] = R
         F[:, :3, 3] = p - R @ p
@@ -373,16 +370,6 @@ class LocalGeometry:
     H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
 
 
-def _inv_rigid(M):
-    R = M[..., :3, :3]
-    t = M[..., :3, 3]
-    Mi = np.zeros_like(M)
-    Mi[..., :3, :3] = np.swapaxes(R, -1, -2)
-    Mi[..., :3, 3] = -np.einsum("...ji,...j->...i", R, t)
-    Mi[..., 3, 3] = 1.0
-    return Mi
-
-
 def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     """:meth:`Envelope.local` without input validation, for use inside a solver's iterations: a
     non-finite row of ``q`` (n, 2+k) gives non-finite outputs in that row (which
@@ -395,7 +382,7 @@ def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     u, v, m = q[:, 0], q[:, 1], q[:, 2:]
     p = tool.evaluate(u, v)
     M, dM, d2M = motion.matrices(m)
-    Mi = _inv_rigid(M)
+    Mi = frames.inverse(M, check=False)  # rigid by construction; NaN rows pass through
     W = Mi[:, None] @ dM  # (n,k,4,4)
     X = Mi[:, None, None] @ d2M  # (n,k,k,4,4)
     Om = W[..., :3, :3]
