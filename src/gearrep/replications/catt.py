@@ -81,10 +81,11 @@ from .. import checks as _checks
 from ..solve import Status, newton, status_names
 from .. import curvature as _curv
 from .. import ellipse as _ellipse
-from ..surface import SurfacePoint, fd_derivatives
+from ..frames import rot_z
+from ..surface import RotatedSurface, SurfacePoint, fd_derivatives
 from ..surfaces.catt import (
-    CATTFlank, CATTGearData, RotatedSurface, eq28_profile, eq29_profile, middle_section_curvatures,
-    pitch_thickness_closed_form, rot_z, tooth_thickness, turn_over,
+    CATTFlank, CATTGearData, eq28_profile, eq29_profile, middle_section_curvatures,
+    pitch_thickness_closed_form, tooth_thickness, turn_over,
 )
 from ..units import ARCSEC
 

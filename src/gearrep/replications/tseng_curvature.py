@@ -228,7 +228,7 @@ def direct_curvatures(p: dict, flank: str, R_c: float, l, psi=0.0):
     the hob normal; returns (k_along_Z_nearest, k_other) paired like k_s, k_q."""
     g = gear(p, flank, R_c)
     l, psi = np.broadcast_arrays(np.asarray(l, float), np.asarray(psi, float))
-    surf = g.surface("thesis", fd_step=(p["fd_step_l_mm"], p["fd_step_psi_rad"]))
+    surf = g.surface("tooth", fd_step=(p["fd_step_l_mm"], p["fd_step_psi_rad"]))
     pc = principal_curvatures(surf.evaluate(l.reshape(-1), psi.reshape(-1)))
     _, n_hob, _ = g.points(l.reshape(-1), psi.reshape(-1))
     s = np.sign(np.sum(pc.normal * n_hob, -1))

@@ -35,7 +35,7 @@ KE (eq 5.12): KE = phi2'(phi1') - (T_p / T_g) phi1', re-zeroed at phi1' = 0 like
 tables (phi2' and KE print 0.000 there), in arc-seconds.
 
 Frames and signs (verified against the printed tables, see the notebook): each member's frame is
-the "thesis frame" of :mod:`gearrep.surfaces.hob` (tooth centred on X, i.e. the generation frame
+the "tooth frame" of :mod:`gearrep.surfaces.hob` (tooth centred on X, i.e. the generation frame
 turned by pi/N about Z); the gear's frame is turned by a further pi so that its tooth faces the
 pinion (any turn by a multiple of its pitch only shifts phi2' by a constant, removed by the
 re-zeroing). With these frames and the printed M_vp, M_fg, the thesis's phi1' = 0 is the pinion
@@ -142,7 +142,7 @@ def make_flank(gear: GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
     if not np.isfinite(extra_turn_rad):
         raise ValueError(f"extra_turn_rad must be finite, got {extra_turn_rad!r}")
     env = gear.envelope()
-    return Flank(gear, _rz(extra_turn_rad) @ gear.to_thesis, env.tool, env.motion)
+    return Flank(gear, _rz(extra_turn_rad) @ gear.to_tooth_frame, env.tool, env.motion)
 
 
 @dataclass(frozen=True)
@@ -502,7 +502,7 @@ def _pinion_outward(pair: Pair, sol: KEResult) -> np.ndarray:
     angle fails past the tip, where the extended flank crosses the tooth's centre line)."""
     q0 = pair.pinion.gear.solve(_l_pitch(pair.pinion.gear.hob), 0.0).params[0]
     r0, _, n0, _, _, _ = _member(pair.pinion, np.asarray(q0, float)[None])
-    R = pair.pinion.gear.to_thesis
+    R = pair.pinion.gear.to_tooth_frame
     s = float(np.sign(np.sum(GeneratedGear.outward(r0 @ R.T, n0 @ R.T) * (n0 @ R.T))))
     _, _, n, _, _, _ = _member(pair.pinion, sol.x[:, :4])
     return s * np.einsum("nab,nb->na", pair.pinion_rotation(sol.phi1), n)

@@ -37,7 +37,7 @@ Sources
   - ``"printed"``: eq 4.40 exactly as printed, with beta = the hob lead angle: the profile line
     is tilted out of the axial section (a straight line in the normal section).
 
-Gear frame of the tables ("thesis frame" S_f): Z_f = gear axis, X_f along the centre line of
+Gear frame of the tables (the "tooth frame" S_f): Z_f = gear axis, X_f along the centre line of
 the tooth whose flanks are generated at theta ~ pi (tooth symmetric about X_f: the flank of the
 upper sign lies on +Y_f, the lower-sign flank on -Y_f); it is the generation frame S_2 turned
 by +pi/N about Z (``GeneratedGear.frame_rotation_rad``). The mid-face Z_f = 0 is psi = 0.
@@ -62,9 +62,10 @@ from ..curvature_relations import (
     seed000_principal_curvatures,
     seed000_system,
 )
+from .. import frames
 from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
 from ..solve import SolveResult, Status, newton
-from ..surface import Surface, SurfacePoint
+from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
     "HOB_VARIANTS",
@@ -73,7 +74,6 @@ __all__ = [
     "HobThread",
     "GeneratedGear",
     "SeedCurvatures",
-    "RotatedSurface",
 ]
 
 HOB_VARIANTS = ("axial", "printed")
@@ -187,29 +187,9 @@ class HobThread(Surface):
         return principal_curvatures(self.evaluate(l, p))
 
 
-class RotatedSurface(Surface):
-    """A surface turned by the rigid rotation R (3 x 3): r'(u, v) = R r(u, v)."""
-
-    def __init__(self, surface: Surface, R):
-        R = np.asarray(R, float)
-        if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-12):
-            raise ValueError("R must be a 3 x 3 rotation matrix")
-        self.surface, self.R = surface, R
-
-    def _rot(self, x):
-        return x @ self.R.T
-
-    def position(self, u, v):
-        return self._rot(self.surface.position(u, v))
-
-    def evaluate(self, u, v) -> SurfacePoint:
-        p = self.surface.evaluate(u, v)
-        return SurfacePoint(*(self._rot(x) for x in (p.r, p.r_u, p.r_v, p.r_uu, p.r_uv, p.r_vv)))
-
-
 class SeedCurvatures(NamedTuple):
     """Principal curvatures of the generated flank labelled as in seed 000 Tables 4.2-4.5, in
-    the thesis frame S_f.
+    the tooth frame S_f.
 
     k_s, e_s : the principal direction nearest the gear axis Z_f (along Z_f at mid-face), with
         e_s . Z_f >= 0
@@ -295,15 +275,13 @@ class GeneratedGear:
 
     @property
     def frame_rotation_rad(self) -> float:
-        """Angle (about Z) from the generation frame S_2 to the thesis frame S_f: pi / N."""
+        """Angle (about Z) from the generation frame S_2 to the tooth frame S_f: pi / N."""
         return float(np.pi / self.n_teeth)
 
     @property
-    def to_thesis(self) -> np.ndarray:
-        """3 x 3 rotation S_2 -> S_f."""
-        a = self.frame_rotation_rad
-        c, s = np.cos(a), np.sin(a)
-        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    def to_tooth_frame(self) -> np.ndarray:
+        """3 x 3 rotation L_f2 (generation frame S_2 -> tooth frame S_f): rot_z(pi / N)."""
+        return frames.rot_z(self.frame_rotation_rad)
 
     def thread(self) -> HobThread:
         return self.hob.thread(self.side)
@@ -379,7 +357,7 @@ class GeneratedGear:
 
     def verify(self, rec: EnvelopeResult) -> EnvelopeResult:
         """Mark converged roots outside the generated tooth as WRONG_ROOT (see :meth:`solve`)."""
-        pt = rec.point @ self.to_thesis.T
+        pt = rec.point @ self.to_tooth_frame.T
         r = np.hypot(pt[:, 0], pt[:, 1])
         ang = np.arctan2(pt[:, 1], pt[:, 0])
         m = self.hob.module_mm
@@ -393,9 +371,9 @@ class GeneratedGear:
         return rec
 
     def points(self, l_mm, psi_rad, guess=None):
-        """(point, hob normal, EnvelopeResult) with point and normal in the thesis frame S_f."""
+        """(point, hob normal, EnvelopeResult) with point and normal in the tooth frame S_f."""
         rec = self.solve(l_mm, psi_rad, guess)
-        R = self.to_thesis
+        R = self.to_tooth_frame
         return rec.point @ R.T, rec.normal @ R.T, rec
 
     def l_at_radius(self, radius_mm, psi_rad=0.0, l0_mm=6.0) -> SolveResult:
@@ -425,7 +403,7 @@ class GeneratedGear:
         rec = self.solve(l_mm, psi_rad, guess)
         env = self.envelope()
         gc = generated_curvatures(env, rec.params)
-        R = self.to_thesis
+        R = self.to_tooth_frame
         e1, e2, n = gc.e1 @ R.T, gc.e2 @ R.T, gc.normal @ R.T
         pt = rec.point @ R.T
         # e_s: the principal direction nearest Z_f
@@ -444,7 +422,7 @@ class GeneratedGear:
 
     @staticmethod
     def outward(point, normal) -> np.ndarray:
-        """+-normal pointing out of the tooth (away from its centre line X_f) at thesis-frame
+        """+-normal pointing out of the tooth (away from its centre line X_f) at tooth-frame
         points: the sign of (polar angle of the point) * (normal . e_theta)."""
         point, normal = np.asarray(point, float), np.asarray(normal, float)
         ang = np.arctan2(point[..., 1], point[..., 0])
@@ -452,14 +430,14 @@ class GeneratedGear:
         s = np.sign(ang * np.sum(normal * e_th, -1))
         return normal * np.where(s == 0, 1.0, s)[..., None]
 
-    def surface(self, frame: str = "thesis", fd_step=(1e-3, 1e-4)) -> Surface:
+    def surface(self, frame: str = "tooth", fd_step=(1e-3, 1e-4)) -> Surface:
         """The generated flank as a :class:`gearrep.surface.Surface` of (l, psi) (for
         direct differential geometry and TCA): analytic first derivatives, second derivatives
         with analytic normal components (:class:`gearrep.envelope.EnvelopeSurface`). ``frame``
-        "thesis" (S_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
+        "tooth" (S_f, the tooth centred on X_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
         s = EnvelopeSurface(self.envelope(), self.DEFAULT_GUESS, fd_step)
         if frame == "generation":
             return s
-        if frame == "thesis":
-            return RotatedSurface(s, self.to_thesis)
-        raise ValueError(f"frame must be 'thesis' or 'generation', got {frame!r}")
+        if frame == "tooth":
+            return RotatedSurface(s, self.to_tooth_frame)
+        raise ValueError(f"frame must be 'tooth' or 'generation', got {frame!r}")
