@@ -63,13 +63,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .curvature import principal_curvatures, sym2_eig
 from .envelope import Envelope
-from .surface import SurfacePoint, cross
-
-try:  # the contract's principal curvatures (gearrep.curvature), when present
-    from .curvature import principal_curvatures as _contract_principal
-except ImportError:  # pragma: no cover - until gearrep.curvature exists
-    _contract_principal = None
+from .surface import cross
 
 __all__ = [
     "GeneratedCurvatures",
@@ -79,43 +75,6 @@ __all__ = [
     "seed000_b_coefficients",
     "seed000_principal_curvatures",
 ]
-
-
-def _sym2_eig(a, b, c):
-    """Eigen-decomposition of [[a, b], [b, c]]: (k1 >= k2, angle of the k1 eigenvector from
-    the first basis vector in (-pi/2, pi/2])."""
-    half = 0.5 * (a - c)
-    rad = np.hypot(half, b)
-    mean = 0.5 * (a + c)
-    ang = 0.5 * np.arctan2(b, half)
-    return mean + rad, mean - rad, ang
-
-
-def _principal(p: SurfacePoint):
-    """Principal curvatures and directions (k1 >= k2, e1, e2 with e1 x e2 = n, umbilic: e1 =
-    unit(r_u)) in the contract's convention: gearrep.curvature when present, else the same
-    computation from the fundamental forms (shape operator in the basis t1 = unit(r_u),
-    t2 = n x t1)."""
-    if _contract_principal is not None:
-        pc = _contract_principal(p)
-        return pc.k1, pc.k2, pc.e1, pc.e2, pc.normal
-    n = p.normal
-    t1 = p.r_u / np.linalg.norm(p.r_u, axis=-1, keepdims=True)
-    t2 = cross(n, t1)
-    L = np.sum(p.r_uu * n, -1)
-    M = np.sum(p.r_uv * n, -1)
-    N = np.sum(p.r_vv * n, -1)
-    a11 = np.linalg.norm(p.r_u, axis=-1)
-    a12 = np.sum(p.r_v * t1, -1)
-    a22 = np.sum(p.r_v * t2, -1)
-    # II in orthonormal coords: S = P^-T [[L, M], [M, N]] P^-1, P = [[a11, a12], [0, a22]]
-    i11, i12, i22 = 1.0 / a11, -a12 / (a11 * a22), 1.0 / a22
-    s11 = i11 * i11 * L
-    s12 = i11 * (i12 * L + i22 * M)
-    s22 = i12 * i12 * L + 2 * i12 * i22 * M + i22 * i22 * N
-    k1, k2, ang = _sym2_eig(s11, s12, s22)
-    e1 = np.cos(ang)[..., None] * t1 + np.sin(ang)[..., None] * t2
-    return k1, k2, e1, cross(n, e1), n
 
 
 @dataclass(frozen=True)
@@ -160,7 +119,8 @@ class GeneratedCurvatures:
 def _coefficients(envelope: Envelope, q):
     """Tool principal data and the C, E coefficients (module doc) at flat q, in S_1."""
     loc = envelope.local(q)
-    k1, k2, e1, e2, _ = _principal(loc.tool)
+    pc = principal_curvatures(loc.tool)
+    k1, k2, e1, e2 = pc.k1, pc.k2, pc.e1, pc.e2
     n = loc.n
     w, om = loc.w, loc.omega  # (n,k,3)
     wf = np.einsum("nka,na->nk", w, e1)
@@ -195,7 +155,7 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     b11 = B[:, 0, 0] + k_f
     b12 = B[:, 0, 1]
     b22 = B[:, 1, 1] + k_h
-    k1, k2, sigma = _sym2_eig(b11, b12, b22)
+    k1, k2, sigma = sym2_eig(b11, b12, b22)
     R = loc.M[:, :3, :3]
 
     def rot(v):
@@ -224,7 +184,7 @@ def litvin_one_parameter(k_f, k_h, a13, a23, a33):
     if np.any(a33 == 0):
         raise ValueError("a33 must be nonzero (a33 = 0 is a singular point of the generated surface)")
     # K_2 = K_1 + c c^T / a33 in (e_f, e_h)
-    return _sym2_eig(k_f + a13**2 / a33, a13 * a23 / a33, k_h + a23**2 / a33)
+    return sym2_eig(k_f + a13**2 / a33, a13 * a23 / a33, k_h + a23**2 / a33)
 
 
 def seed000_system(envelope: Envelope, q) -> np.ndarray:
