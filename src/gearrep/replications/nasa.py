@@ -58,7 +58,7 @@ from ..curvature_relations import generated_curvatures
 from ..ellipse import elastic_ellipse_at
 from ..solve import Status
 from ..surfaces.novikov import RackGeneratedFlank, WormGeneratedPinion, pitch_radius
-from ..surfaces.rack import nasa_l
+from ..surfaces.rack import vertex_pitch_distance
 from ..tca import GearPair, Misalignment, solve_contact
 from ..units import ARCMIN, ARCSEC, DEG, MM_PER_IN
 
@@ -292,7 +292,7 @@ def curvature_tables(p) -> dict[str, pd.DataFrame]:
     Pn = d["P_n_per_in"]
     an = d["alpha_n_deg"] * DEG
     an12 = d["alpha_n_v12_deg"] * DEG
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     beta = design_beta(d)
     rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
     rows_c, rows_e = [], []
@@ -337,7 +337,7 @@ def path_curvatures(p) -> pd.DataFrame:
     """Curvatures along the helix u = 0 traced by Q (claim: constant along the path)."""
     d = p["design"]
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     rows = []
     th = np.linspace(-1.0, 1.0, int(p["n_path_points"]))
     for m, rho in (("pinion", d["rho_c_times_Pn"] / Pn), ("gear", d["rho_t_times_Pn"] / Pn)):
@@ -353,7 +353,7 @@ def concavity_bound(p) -> pd.DataFrame:
     direction at Q changes sign, against the printed bound N2 sin(alpha_n)/(2 P_n cos^3 beta) + l."""
     d = p["design"]
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
 
     def k_profile(rho_t):
         f = make_flank(d, 1 / (2 * rho_t), an, l, beta, "gear", p["tol"])
@@ -522,7 +522,7 @@ def te_envelope(phi, te, z, per, face_width, drive, n_fine=400):
 def tca_tables(p) -> dict[str, pd.DataFrame]:
     d = p["design"]
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
     mis = p["misalignment_arcmin"] * ARCMIN
     P_t = Pn * np.cos(beta)
@@ -572,7 +572,7 @@ def make_worm_pair(d, p, *, misalignment=None, d_lambda=0.0, a_pl=None):
     crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
     default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda)."""
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     h = -1.0 if p["pinion_hand"] == "left" else 1.0
     r_p1 = pitch_radius(d["N1"], Pn, beta)
     worm = WormGeneratedPinion(Pn / (2 * d["rho_c_times_Pn"]), an, l, h * (beta - d_lambda), r_p1, Pn, d["r_pw_in"],
@@ -711,7 +711,7 @@ def sensitivity_tables(p) -> dict[str, pd.DataFrame]:
     an3, an12 = d["alpha_n_deg"] * DEG, d["alpha_n_v12_deg"] * DEG
     versions = {1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
                 2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
-                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, nasa_l(an3, Pn), d["h_Pn"][3] / Pn)}
+                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, vertex_pitch_distance(an3, Pn), d["h_Pn"][3] / Pn)}
     steps = {"printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN, "0.001in": p["delta_E_table623_in"],
              "0.0001in": 0.0001}
     rows = []
@@ -738,7 +738,7 @@ def sensitivity_tables(p) -> dict[str, pd.DataFrame]:
                              u1_in=u, alpha_sign=int(np.sign(u))))
     sens = pd.DataFrame(rows)
     # contact shift across the profile (fig. 1.10 error sizes) and the rho_t sweep of the claims
-    l3 = nasa_l(an3, Pn)
+    l3 = vertex_pitch_distance(an3, Pn)
     rc = d["rho_c_times_Pn"] / Pn
     mis = p["misalignment_arcmin"] * ARCMIN
     shift_rows = []
@@ -772,7 +772,7 @@ def parabola_relations(p) -> pd.DataFrame:
     b = d["beta_s54_deg"] * DEG
     a_c, a_t, a_pl, r_pw = d["a_c_printed_per_in"], d["a_t_printed_per_in"], d["a_pl_per_in"], d["r_pw_in"]
     N1, N2 = d["N1"], d["N2"]
-    l_t = nasa_l(an, Pn)
+    l_t = vertex_pitch_distance(an, Pn)
     a_pr = a_c - a_t
     m_t = 1 - 2 * a_t * l_t
     m_w = 1 - 2 * a_pl * r_pw
@@ -796,7 +796,7 @@ def transverse_section(p) -> pd.DataFrame:
     d = p["design"]
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
     a = d["a_c_printed_per_in"]
-    rack = make_flank(d, a, an, nasa_l(an, Pn), beta, "pinion", p["tol"]).rack
+    rack = make_flank(d, a, an, vertex_pitch_distance(an, Pn), beta, "pinion", p["tol"]).rack
     u = np.linspace(-0.3, 0.3, 61)
     xb, yb = rack.profile(u)[:2]
     X, Y = xb, yb / np.cos(beta)  # transverse coordinates (height, along the pitch line)
@@ -836,7 +836,7 @@ def concave_pinion_ellipse(p) -> pd.DataFrame:
                              **{k: r[k] for k in ("kappa_I_1_per_in", "kappa_II_1_per_in", "kappa_I_2_per_in",
                                                   "kappa_II_2_per_in", "major_2a_in", "minor_2b_in", "area_in2",
                                                   "elliptic")}))
-    r, _, _ = pair_at_Q(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, nasa_l(an, Pn), beta, d["delta_in"], p["tol"])
+    r, _, _ = pair_at_Q(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, vertex_pitch_distance(an, Pn), beta, d["delta_in"], p["tol"])
     rows.append(dict(design="sec2", sign_a_c=1, sign_a_t=1, pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
                      **{k: r[k] for k in ("kappa_I_1_per_in", "kappa_II_1_per_in", "kappa_I_2_per_in", "kappa_II_2_per_in",
                                           "major_2a_in", "minor_2b_in", "area_in2", "elliptic")}))
@@ -1250,7 +1250,7 @@ def bench_cases(params: dict) -> dict:
     prm = validate_params({**p, "design": design})
     d = prm["design"]
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     B = prm["face_width_over_axial_pitch"] * np.pi / (Pn * np.cos(beta) * np.tan(beta))
 
     def run_te(setting):

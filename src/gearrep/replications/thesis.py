@@ -905,7 +905,7 @@ def helical_sensitivity(p: dict) -> list:
     rows = []
     jobs = [("uv2_uniform", 1.0, "true", "uniform", "five"), ("equations_six", 1.0, "true", "midpoint", "six"),
             ("equations_drop_nz", 1.0, "true", "midpoint", "drop_nz"), ("crown_x10", 10.0, "true", "midpoint", "five"),
-            ("crown_x0.1", 0.1, "true", "midpoint", "five"), ("helix_eq58", 1.0, "thesis", "midpoint", "five")]
+            ("crown_x0.1", 0.1, "true", "midpoint", "five"), ("helix_eq58", 1.0, "asin", "midpoint", "five")]
     for lab, scale, form, uv2, eq in jobs:
         g1 = InvoluteGearData(d["n1"], d["module"], d["pressure_angle_deg"] * DEG, d["face_width"], d["helix_angle_deg"] * DEG)
         g2 = InvoluteGearData(d["n2"], d["module"], d["pressure_angle_deg"] * DEG, d["face_width"], d["helix_angle_deg"] * DEG)

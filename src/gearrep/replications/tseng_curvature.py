@@ -213,12 +213,12 @@ def l1_grid(p: dict, variant: str = "axial") -> tuple[np.ndarray, object]:
 
 
 def _oriented(c):
-    """Table columns from a SeedCurvatures record."""
+    """Table columns from a FlankCurvatures record."""
     return np.column_stack([c.k_s, c.e_s, c.k_q, c.e_q])
 
 
 def evaluate_rows(p: dict, flank: str, R_c: float, l: np.ndarray, variant: str = "axial"):
-    """(columns (n, 8): k_s, e_s, k_q, e_q; SeedCurvatures) at mid-face rows l."""
+    """(columns (n, 8): k_s, e_s, k_q, e_q; FlankCurvatures) at mid-face rows l."""
     c = gear(p, flank, R_c, variant).curvatures(l, 0.0)
     return _oriented(c), c
 
@@ -269,6 +269,8 @@ def _detail(p: dict, grid: np.ndarray) -> pd.DataFrame:
         ks_a, kq_a = direct_curvatures(p, flank, Rc, grid)
         r = np.hypot(c.point[:, 0], c.point[:, 1])
         for i in range(len(grid)):
+            ks2, kq2 = c.k_s_two_parameter[i], c.k_q_two_parameter[i]
+            same = abs(ks2 - c.k_s[i]) <= abs(kq2 - c.k_s[i])
             rec = {"table": tab, "flank": f"Sigma_2{flank}", "R_c_mm": Rc, "row": i,
                    "l1_grid_mm": grid[i], "l1_printed_mm": l_pr[i],
                    "x_mm": c.point[i, 0], "y_mm": c.point[i, 1], "z_mm": c.point[i, 2], "radius_mm": r[i],
@@ -277,11 +279,9 @@ def _detail(p: dict, grid: np.ndarray) -> pd.DataFrame:
                    "status": status_names(c.result.status)[i], "residual": c.result.residual[i],
                    "singular_measure": c.result.singular_measure[i],
                    "k_s_direct_per_mm": ks_a[i], "k_q_direct_per_mm": kq_a[i],
-                   "k_s_seed_method_per_mm": float(c.k_s_seed[i] if abs(c.k_s_seed[i] - c.k_s[i]) <= abs(c.k_q_seed[i] - c.k_s[i])
-                                                   else c.k_q_seed[i]),
-                   "k_q_seed_method_per_mm": float(c.k_q_seed[i] if abs(c.k_s_seed[i] - c.k_s[i]) <= abs(c.k_q_seed[i] - c.k_s[i])
-                                                   else c.k_s_seed[i]),
-                   "sigma_seed_deg": np.degrees(c.sigma_seed[i]),
+                   "k_s_seed_method_per_mm": float(ks2 if same else kq2),
+                   "k_q_seed_method_per_mm": float(kq2 if same else ks2),
+                   "sigma_seed_deg": np.degrees(c.sigma_two_parameter[i]),
                    "k_f_hob_per_mm": c.generated.k_f[i], "k_h_hob_per_mm": c.generated.k_h[i]}
             for j, q in enumerate(("k_s", "e_s_x", "e_s_y", "e_s_z", "k_q", "e_q_x", "e_q_y", "e_q_z")):
                 rec[f"{q}_grid"] = cg[i, j]

@@ -58,9 +58,9 @@ from ..curvature import PrincipalCurvatures, principal_curvatures
 from ..curvature_relations import (
     GeneratedCurvatures,
     generated_curvatures,
-    seed000_b_coefficients,
-    seed000_principal_curvatures,
-    seed000_system,
+    two_parameter_b_coefficients,
+    two_parameter_principal_curvatures,
+    two_parameter_system,
 )
 from .. import frames
 from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
@@ -73,7 +73,7 @@ __all__ = [
     "ZAHob",
     "HobThread",
     "GeneratedGear",
-    "SeedCurvatures",
+    "FlankCurvatures",
 ]
 
 HOB_VARIANTS = ("axial", "printed")
@@ -187,7 +187,7 @@ class HobThread(Surface):
         return principal_curvatures(self.evaluate(l, p))
 
 
-class SeedCurvatures(NamedTuple):
+class FlankCurvatures(NamedTuple):
     """Principal curvatures of the generated flank labelled as in seed 000 Tables 4.2-4.5, in
     the tooth frame S_f.
 
@@ -198,8 +198,9 @@ class SeedCurvatures(NamedTuple):
     Curvatures are signed w.r.t. ``normal`` = the hob normal unit(r_l x r_phi) of eq 4.41
     carried into S_f (the tables' convention: k > 0 where the flank bends toward it).
     normal_out : n_out; point : the flank point (mm) in S_f
-    k_s_seed, k_q_seed, sigma_seed : the same pair from the chapter's method (eq 4.33-4.39 with
-        the corrected signs, then 4.24-4.26; e_s nearest the hob direction e_f)
+    k_s_two_parameter, k_q_two_parameter, sigma_two_parameter : the same pair from the
+        two-parameter-envelope system of seed 000 (eq 4.33-4.39 with the corrected signs, then
+        4.24-4.26; e_s nearest the hob direction e_f)
     result : the :class:`gearrep.envelope.EnvelopeResult` (generation frame) with the statuses
     """
 
@@ -210,9 +211,9 @@ class SeedCurvatures(NamedTuple):
     normal: np.ndarray
     normal_out: np.ndarray
     point: np.ndarray
-    k_s_seed: np.ndarray
-    k_q_seed: np.ndarray
-    sigma_seed: np.ndarray
+    k_s_two_parameter: np.ndarray
+    k_q_two_parameter: np.ndarray
+    sigma_two_parameter: np.ndarray
     generated: GeneratedCurvatures
     result: EnvelopeResult
 
@@ -395,9 +396,9 @@ class GeneratedGear:
         return newton(fun, np.full((r_target.size, 1), float(l0_mm)), tol=1e-11, rows=True)
 
     # ---- curvatures -----------------------------------------------------------------------
-    def curvatures(self, l_mm, psi_rad=0.0, guess=None) -> SeedCurvatures:
+    def curvatures(self, l_mm, psi_rad=0.0, guess=None) -> FlankCurvatures:
         """Principal curvatures and directions of the generated flank at (l, psi), labelled
-        and oriented as in seed 000 Tables 4.2-4.5 (see :class:`SeedCurvatures`), from
+        and oriented as in seed 000 Tables 4.2-4.5 (see :class:`FlankCurvatures`), from
         K_2 = K_1 + C E^-1 C^T (:func:`gearrep.curvature_relations.generated_curvatures`) and,
         independently, from the chapter's eq 4.33-4.39 (corrected) and 4.24-4.26."""
         rec = self.solve(l_mm, psi_rad, guess)
@@ -415,10 +416,10 @@ class GeneratedGear:
         n_out = self.outward(pt, n)
         e_q = np.cross(n_out, e_s)
         # the chapter's method (eq 4.33-4.39 corrected, 4.24-4.26)
-        b = seed000_system(env, rec.params)
-        b11, b12, b22 = seed000_b_coefficients(b)
-        ks_b, kq_b, sig_b = seed000_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
-        return SeedCurvatures(k_s, k_q, e_s, e_q, n, n_out, pt, ks_b, kq_b, sig_b, gc, rec)
+        b = two_parameter_system(env, rec.params)
+        b11, b12, b22 = two_parameter_b_coefficients(b)
+        ks_b, kq_b, sig_b = two_parameter_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
+        return FlankCurvatures(k_s, k_q, e_s, e_q, n, n_out, pt, ks_b, kq_b, sig_b, gc, rec)
 
     @staticmethod
     def outward(point, normal) -> np.ndarray:
