@@ -46,6 +46,7 @@ import numpy as np
 from .surface import SurfacePoint, cross, unit
 
 __all__ = [
+    "DEFAULT_UMBILIC_TOL",
     "FundamentalForms",
     "PrincipalCurvatures",
     "RelativeCurvature",

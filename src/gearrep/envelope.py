@@ -91,6 +91,8 @@ __all__ = [
     "EnvelopeSurface",
     "singular_points",
     "LocalGeometry",
+    "local_geometry",
+    "TOOL_NAMES",
 ]
 
 TOOL_NAMES = ("u", "v")

@@ -77,6 +77,12 @@ import numpy as np
 
 from ..surface import Surface, SurfacePoint
 
+__all__ = [
+    "involute_polar_angle", "involute_xy", "ParabolicCrowning", "CircularCrowning",
+    "LogarithmicCrowning", "TipRelief", "RootRelief", "InvoluteGearData", "InvoluteFlank",
+    "mating_flanks", "standard_centre_distance",
+]
+
 
 def _check_finite(name: str, value, *, positive=False, nonneg=False):
     v = float(value)

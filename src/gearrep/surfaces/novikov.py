@@ -30,7 +30,7 @@ from ..envelope import Envelope, rack_generation_motion
 from ..surface import Surface, SurfacePoint
 from .rack import ParabolicRackCutter
 
-__all__ = ["RackGeneratedFlank", "pitch_radius"]
+__all__ = ["RackGeneratedFlank", "WormGeneratedPinion", "NormalPartSurface", "pitch_radius"]
 
 
 def pitch_radius(N: int, P_n: float, beta: float) -> float:
