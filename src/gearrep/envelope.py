@@ -221,9 +221,7 @@ class _Factor:
             F[:, :3, 3] = s[:, None] * self.vector
             dF[:, :3, 3] = self.vector
             return F, dF, d2F
-        R = frames.rotation_about_axis(self.vector, s)
-        dR = frames.drotation_about_axis(self.vector, s)
-        d2R = frames.drotation_about_axis(self.vector, s, order=2)
+        R, dR, d2R = frames.rotation_about_axis_with_derivatives(self.vector, s)
         p = self.point
         F[:, :3, :3] = R
         F[:, :3, 3] = p - R @ p

@@ -27,6 +27,8 @@ Conventions
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = [
@@ -39,6 +41,7 @@ __all__ = [
     "rotation",
     "rotation_about_axis",
     "drotation_about_axis",
+    "rotation_about_axis_with_derivatives",
     "homogeneous",
     "translation",
     "compose",
@@ -128,6 +131,12 @@ def rotation(axis: str, a) -> np.ndarray:
 def _axis_generator(axis):
     """Cross-product matrix K of the unit direction of ``axis`` (..., 3): K x = unit(axis) x x."""
     k = np.asarray(axis, dtype=float)
+    if k.ndim == 1:  # one axis (the common case, e.g. every factor of a motion chain): scalar work
+        nrm = math.sqrt(float(k @ k)) if k.shape == (3,) else 0.0
+        if nrm == 0.0:
+            raise ValueError(f"axis must be a non-zero 3-vector, got {axis!r}")
+        x, y, z = (float(e) / nrm for e in k)
+        return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
     nrm = np.linalg.norm(k, axis=-1, keepdims=True)
     if np.any(nrm == 0):
         raise ValueError("axis must be a non-zero vector")
@@ -154,12 +163,18 @@ def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
     dR/da = cos a K + sin a K^2, d2R/da2 = -sin a K + cos a K^2."""
     if order not in (1, 2):
         raise ValueError(f"order must be 1 or 2, got {order!r}")
+    return rotation_about_axis_with_derivatives(axis, a)[order]
+
+
+def rotation_about_axis_with_derivatives(axis, a):
+    """(R, dR/da, d2R/da2) of :func:`rotation_about_axis` in one evaluation (one generator K,
+    one K^2, one sine and cosine): what a chain of rotations differentiated by the product rule
+    needs at every step."""
     K = _axis_generator(axis)
+    K2 = K @ K
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
-    if order == 1:
-        return c * K + s * (K @ K)
-    return -s * K + c * (K @ K)
+    return np.eye(3) + s * K + (1.0 - c) * K2, c * K + s * K2, -s * K + c * K2
 
 
 def homogeneous(R=None, t=None) -> np.ndarray:

@@ -206,6 +206,10 @@ def test_rotation_about_axis_derivatives_match_finite_differences():
     # about a coordinate axis they are drot_x / drot_z
     np.testing.assert_allclose(fr.drotation_about_axis([1, 0, 0], a), fr.drot_x(a), atol=1e-15)
     np.testing.assert_allclose(fr.drotation_about_axis([0, 0, 2], a, 2), fr.drot_z(a, 2), atol=1e-15)
+    R, dR, d2R = fr.rotation_about_axis_with_derivatives(k, a)
+    np.testing.assert_array_equal(R, fr.rotation_about_axis(k, a))
+    np.testing.assert_array_equal(dR, fr.drotation_about_axis(k, a))
+    np.testing.assert_array_equal(d2R, fr.drotation_about_axis(k, a, 2))
     with pytest.raises(ValueError, match="order"):
         fr.drotation_about_axis(k, 0.1, order=0)
     with pytest.raises(ValueError):
