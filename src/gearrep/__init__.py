@@ -7,3 +7,5 @@ conversions happen at the edges with :mod:`gearrep.units`.
 """
 
 __version__ = "0.1.0"
+
+__all__ = ["__version__"]

@@ -28,6 +28,10 @@ from typing import Any, Callable
 import numpy as np
 import pandas as pd
 
+__all__ = [
+    "ERROR_FLOOR", "Timing", "load_average", "time_call", "sweep", "pareto_front", "knee",
+]
+
 #: error floor used in log coordinates (an exact result has error 0)
 ERROR_FLOOR = 1e-300
 

@@ -26,6 +26,11 @@ import pandas as pd
 
 from .published import printed_precision
 
+__all__ = [
+    "STATUSES", "CHECK_COLUMNS", "TEXT_COLUMNS", "printed_interval", "compare_value",
+    "check_values", "qualitative", "not_computed", "validate_checks", "scorecard", "summary",
+]
+
 STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
 
 CHECK_COLUMNS = [

@@ -43,9 +43,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .surfaces.base import SurfacePoint, cross, unit
+from .surface import SurfacePoint, cross, unit
 
 __all__ = [
+    "DEFAULT_UMBILIC_TOL",
     "FundamentalForms",
     "PrincipalCurvatures",
     "RelativeCurvature",
@@ -61,6 +62,7 @@ __all__ = [
     "relative_principal_curvatures",
     "relative_curvature",
     "sym2_eig",
+    "second_form_in_basis",
 ]
 
 DEFAULT_UMBILIC_TOL = 1e-8
@@ -187,6 +189,32 @@ def sym2_eig(a, b, c, umbilic_tol: float = DEFAULT_UMBILIC_TOL):
     return lam1, lam2, theta
 
 
+def second_form_in_basis(p: SurfacePoint, n, e1, e2) -> np.ndarray:
+    """Second fundamental form II(e_i, e_j) of surface point(s) ``p`` with respect to the unit
+    normal ``n``, in the orthonormal tangent basis (e1, e2): shapes (..., 3) -> (..., 2, 2).
+
+    Each basis vector is written as e = x r_u + y r_v (x, y from the first fundamental form),
+    then II(e_i, e_j) = L x_i x_j + M (x_i y_j + y_i x_j) + N y_i y_j with L = r_uu . n,
+    M = r_uv . n, N = r_vv . n (Litvin ch. 7). ``n`` may be either unit normal (the form
+    changes sign with it), so two surfaces in tangency can be written in one common basis;
+    with n = unit(r_u x r_v) and (e1, e2) = (t1, t2) of :func:`shape_matrix` this is that
+    shape matrix. Eigenvalues: the principal curvatures w.r.t. ``n``."""
+    E, F, G = _dot(p.r_u, p.r_u), _dot(p.r_u, p.r_v), _dot(p.r_v, p.r_v)
+    L, M, N = _dot(p.r_uu, n), _dot(p.r_uv, n), _dot(p.r_vv, n)
+    det = E * G - F * F
+    coef = []
+    for e in (e1, e2):
+        bu, bv = _dot(p.r_u, e), _dot(p.r_v, e)
+        coef.append(((G * bu - F * bv) / det, (E * bv - F * bu) / det))  # e = x r_u + y r_v
+    out = np.empty(E.shape + (2, 2))
+    for i in range(2):
+        for j in range(2):
+            xi, yi = coef[i]
+            xj, yj = coef[j]
+            out[..., i, j] = L * xi * xj + M * (xi * yj + yi * xj) + N * yi * yj
+    return out
+
+
 def principal_curvatures(p: SurfacePoint, umbilic_tol: float = DEFAULT_UMBILIC_TOL) -> PrincipalCurvatures:
     """Principal curvatures k1 >= k2 and unit principal directions e1, e2 (e1 x e2 = n).
 
@@ -304,32 +332,3 @@ def relative_curvature(c1: PrincipalCurvatures, c2: PrincipalCurvatures, *,
     e1 = ca * c1.e1 + sa * c1.e2
     e2 = cross(n, e1)
     return RelativeCurvature(k1, k2, alpha, sigma, e1, e2, n)
-
-
-def second_form_in_basis(p: SurfacePoint, n, e1, e2) -> np.ndarray:
-    """Second fundamental form II(e_i, e_j) of surface point(s) ``p`` with respect to the unit
-    normal ``n``, in the orthonormal tangent basis (e1, e2): shapes (..., 3) -> (..., 2, 2).
-
-    Each basis vector is written as e = x r_u + y r_v (x, y from the first fundamental form),
-    then II(e_i, e_j) = L x_i x_j + M (x_i y_j + y_i x_j) + N y_i y_j with L = r_uu . n,
-    M = r_uv . n, N = r_vv . n (Litvin ch. 7). ``n`` may be either unit normal (the form
-    changes sign with it), so two surfaces in tangency can be written in one common basis;
-    with n = unit(r_u x r_v) and (e1, e2) = (t1, t2) of :func:`shape_matrix` this is that
-    shape matrix. Eigenvalues: the principal curvatures w.r.t. ``n``."""
-    E, F, G = _dot(p.r_u, p.r_u), _dot(p.r_u, p.r_v), _dot(p.r_v, p.r_v)
-    L, M, N = _dot(p.r_uu, n), _dot(p.r_uv, n), _dot(p.r_vv, n)
-    det = E * G - F * F
-    coef = []
-    for e in (e1, e2):
-        bu, bv = _dot(p.r_u, e), _dot(p.r_v, e)
-        coef.append(((G * bu - F * bv) / det, (E * bv - F * bu) / det))  # e = x r_u + y r_v
-    out = np.empty(E.shape + (2, 2))
-    for i in range(2):
-        for j in range(2):
-            xi, yi = coef[i]
-            xj, yj = coef[j]
-            out[..., i, j] = L * xi * xj + M * (xi * yj + yi * xj) + N * yi * yj
-    return out
-
-
-__all__ += ["second_form_in_basis"]

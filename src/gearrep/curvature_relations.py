@@ -52,7 +52,7 @@ the tests in tests/unit/test_curvature_relations.py):
 * eq 4.36 as printed repeats the row (b_32, b_33, b_34); it must be the determinant of
   [[b_12, b_13, b_14], [b_32, b_33, b_34], [b_42, b_43, b_44]] (OCR).
 * eq 4.24 prints "= 2 b_12 / b_12" after the correct first form (OCR).
-* eq 4.25-4.26 are right but divide by sin 2 sigma; :func:`seed000_principal_curvatures` uses
+* eq 4.25-4.26 are right but divide by sin 2 sigma; :func:`two_parameter_principal_curvatures` uses
   the equivalent k_s - k_q = 2 b_12 / sin 2 sigma = sign * hypot(2 b_12, D), exact also at
   b_12 = 0.
 """
@@ -63,59 +63,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .curvature import principal_curvatures, sym2_eig
 from .envelope import Envelope
-from .surfaces.base import SurfacePoint, cross
-
-try:  # the contract's principal curvatures (gearrep.curvature), when present
-    from .curvature import principal_curvatures as _contract_principal
-except ImportError:  # pragma: no cover - until gearrep.curvature exists
-    _contract_principal = None
+from .surface import cross
 
 __all__ = [
     "GeneratedCurvatures",
     "generated_curvatures",
     "litvin_one_parameter",
-    "seed000_system",
-    "seed000_b_coefficients",
-    "seed000_principal_curvatures",
+    "two_parameter_system",
+    "two_parameter_b_coefficients",
+    "two_parameter_principal_curvatures",
 ]
-
-
-def _sym2_eig(a, b, c):
-    """Eigen-decomposition of [[a, b], [b, c]]: (k1 >= k2, angle of the k1 eigenvector from
-    the first basis vector in (-pi/2, pi/2])."""
-    half = 0.5 * (a - c)
-    rad = np.hypot(half, b)
-    mean = 0.5 * (a + c)
-    ang = 0.5 * np.arctan2(b, half)
-    return mean + rad, mean - rad, ang
-
-
-def _principal(p: SurfacePoint):
-    """Principal curvatures and directions (k1 >= k2, e1, e2 with e1 x e2 = n, umbilic: e1 =
-    unit(r_u)) in the contract's convention: gearrep.curvature when present, else the same
-    computation from the fundamental forms (shape operator in the basis t1 = unit(r_u),
-    t2 = n x t1)."""
-    if _contract_principal is not None:
-        pc = _contract_principal(p)
-        return pc.k1, pc.k2, pc.e1, pc.e2, pc.normal
-    n = p.normal
-    t1 = p.r_u / np.linalg.norm(p.r_u, axis=-1, keepdims=True)
-    t2 = cross(n, t1)
-    L = np.sum(p.r_uu * n, -1)
-    M = np.sum(p.r_uv * n, -1)
-    N = np.sum(p.r_vv * n, -1)
-    a11 = np.linalg.norm(p.r_u, axis=-1)
-    a12 = np.sum(p.r_v * t1, -1)
-    a22 = np.sum(p.r_v * t2, -1)
-    # II in orthonormal coords: S = P^-T [[L, M], [M, N]] P^-1, P = [[a11, a12], [0, a22]]
-    i11, i12, i22 = 1.0 / a11, -a12 / (a11 * a22), 1.0 / a22
-    s11 = i11 * i11 * L
-    s12 = i11 * (i12 * L + i22 * M)
-    s22 = i12 * i12 * L + 2 * i12 * i22 * M + i22 * i22 * N
-    k1, k2, ang = _sym2_eig(s11, s12, s22)
-    e1 = np.cos(ang)[..., None] * t1 + np.sin(ang)[..., None] * t2
-    return k1, k2, e1, cross(n, e1), n
 
 
 @dataclass(frozen=True)
@@ -126,7 +85,7 @@ class GeneratedCurvatures:
     ``normal`` (the tool normal n_1 = unit(r_u x r_v) carried into S_2).
 
     k1, k2 : principal curvatures of the generated surface, k1 >= k2 (k_s, k_q of seed 000
-        in the algebraic order; see :func:`seed000_principal_curvatures` for the seed's labels)
+        in the algebraic order; see :func:`two_parameter_principal_curvatures` for the seed's labels)
     e1, e2 : its principal directions (unit, e1 x e2 = normal)
     k_f, k_h, e_f, e_h : tool principal curvatures (k_f >= k_h) and directions
     sigma : angle from e_f to e1 about ``normal``, in (-pi/2, pi/2]
@@ -160,7 +119,8 @@ class GeneratedCurvatures:
 def _coefficients(envelope: Envelope, q):
     """Tool principal data and the C, E coefficients (module doc) at flat q, in S_1."""
     loc = envelope.local(q)
-    k1, k2, e1, e2, _ = _principal(loc.tool)
+    pc = principal_curvatures(loc.tool)
+    k1, k2, e1, e2 = pc.k1, pc.k2, pc.e1, pc.e2
     n = loc.n
     w, om = loc.w, loc.omega  # (n,k,3)
     wf = np.einsum("nka,na->nk", w, e1)
@@ -195,7 +155,7 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     b11 = B[:, 0, 0] + k_f
     b12 = B[:, 0, 1]
     b22 = B[:, 1, 1] + k_h
-    k1, k2, sigma = _sym2_eig(b11, b12, b22)
+    k1, k2, sigma = sym2_eig(b11, b12, b22)
     R = loc.M[:, :3, :3]
 
     def rot(v):
@@ -224,14 +184,14 @@ def litvin_one_parameter(k_f, k_h, a13, a23, a33):
     if np.any(a33 == 0):
         raise ValueError("a33 must be nonzero (a33 = 0 is a singular point of the generated surface)")
     # K_2 = K_1 + c c^T / a33 in (e_f, e_h)
-    return _sym2_eig(k_f + a13**2 / a33, a13 * a23 / a33, k_h + a23**2 / a33)
+    return sym2_eig(k_f + a13**2 / a33, a13 * a23 / a33, k_h + a23**2 / a33)
 
 
-def seed000_system(envelope: Envelope, q) -> np.ndarray:
+def two_parameter_system(envelope: Envelope, q) -> np.ndarray:
     """The 4 x 4 matrix of seed 000 eq 4.33 in the seed's arrangement (rows 4.18, 4.27, 4.30;
     unknowns (v_f^(2), v_h^(2), dtheta/dt, dpsi/dt)) at contact points q (n, 4) of a
     two-parameter envelope: [[B, -C], [C^T, -E]] with the unknown block B = (b_11, b_12; b_21,
-    b_22) returned as NaN (it follows from :func:`seed000_b_coefficients`)."""
+    b_22) returned as NaN (it follows from :func:`two_parameter_b_coefficients`)."""
     if envelope.k != 2:
         raise ValueError(f"envelope must be a two-parameter envelope (k = 2), got k = {envelope.k}")
     q = np.atleast_2d(np.asarray(q, dtype=float))
@@ -243,7 +203,7 @@ def seed000_system(envelope: Envelope, q) -> np.ndarray:
     return b
 
 
-def seed000_b_coefficients(b) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def two_parameter_b_coefficients(b) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """b_11, b_12, b_22 from the rank-2 condition of seed 000 eq 4.34-4.36, with the sign of
     the printed eq 4.37-4.39 CORRECTED (module doc): B = R Q^{-1} P with R = (b_13 b_14; b_23
     b_24), Q = (b_33 b_34; b_43 b_44), P = (b_31 b_32; b_41 b_42), e.g.
@@ -268,7 +228,7 @@ def seed000_b_coefficients(b) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return b11, b12, b22
 
 
-def _seed000_b_coefficients_printed(b):
+def _two_parameter_b_coefficients_printed(b):
     """Seed 000 eq 4.37-4.39 exactly as printed (wrong sign; kept to document the error)."""
     b = np.asarray(b, dtype=float)
     g = lambda i, j: b[..., i - 1, j - 1]  # noqa: E731
@@ -282,7 +242,7 @@ def _seed000_b_coefficients_printed(b):
     return b11, b12, b22
 
 
-def seed000_principal_curvatures(b11, b12, b22, k_f, k_h):
+def two_parameter_principal_curvatures(b11, b12, b22, k_f, k_h):
     """k_s, k_q and sigma from seed 000 eq 4.24-4.26 (sigma from e_f to e_s about n).
 
     tan 2 sigma = 2 b_12 / (b_11 - b_22 + k_f - k_h) on the principal branch, sigma in

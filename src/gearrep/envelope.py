@@ -74,8 +74,9 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from . import frames
 from .solve import SolveResult, Status, newton
-from .surfaces.base import Surface, SurfacePoint, cross
+from .surface import Surface, SurfacePoint, cross
 
 __all__ = [
     "Motion",
@@ -90,6 +91,8 @@ __all__ = [
     "EnvelopeSurface",
     "singular_points",
     "LocalGeometry",
+    "local_geometry",
+    "TOOL_NAMES",
 ]
 
 TOOL_NAMES = ("u", "v")
@@ -134,7 +137,7 @@ class Motion:
         return m
 
 
-# fourth-order central differences (same weights as surfaces.base)
+# fourth-order central differences (same weights as gearrep.surface)
 _D1 = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0
 _D1_OFF = np.array([-2.0, -1.0, 1.0, 2.0])
 _D2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0
@@ -218,13 +221,7 @@ class _Factor:
             F[:, :3, 3] = s[:, None] * self.vector
             dF[:, :3, 3] = self.vector
             return F, dF, d2F
-        a = self.vector
-        K = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
-        K2 = K @ K
-        c, sn = np.cos(s)[:, None, None], np.sin(s)[:, None, None]
-        R = np.eye(3) + sn * K + (1.0 - c) * K2  # Rodrigues' rotation formula
-        dR = c * K + sn * K2
-        d2R = -sn * K + c * K2
+        R, dR, d2R = frames.rotation_about_axis_with_derivatives(self.vector, s)
         p = self.point
         F[:, :3, :3] = R
         F[:, :3, 3] = p - R @ p
@@ -373,16 +370,6 @@ class LocalGeometry:
     H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
 
 
-def _inv_rigid(M):
-    R = M[..., :3, :3]
-    t = M[..., :3, 3]
-    Mi = np.zeros_like(M)
-    Mi[..., :3, :3] = np.swapaxes(R, -1, -2)
-    Mi[..., :3, 3] = -np.einsum("...ji,...j->...i", R, t)
-    Mi[..., 3, 3] = 1.0
-    return Mi
-
-
 def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     """:meth:`Envelope.local` without input validation, for use inside a solver's iterations: a
     non-finite row of ``q`` (n, 2+k) gives non-finite outputs in that row (which
@@ -395,7 +382,7 @@ def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     u, v, m = q[:, 0], q[:, 1], q[:, 2:]
     p = tool.evaluate(u, v)
     M, dM, d2M = motion.matrices(m)
-    Mi = _inv_rigid(M)
+    Mi = frames.inverse(M, check=False)  # rigid by construction; NaN rows pass through
     W = Mi[:, None] @ dM  # (n,k,4,4)
     X = Mi[:, None, None] @ d2M  # (n,k,k,4,4)
     Om = W[..., :3, :3]
@@ -524,7 +511,7 @@ class Envelope:
 
     Parameters
     ----------
-    tool : the generating surface (a :class:`gearrep.surfaces.base.Surface` in S_1)
+    tool : the generating surface (a :class:`gearrep.surface.Surface` in S_1)
     motion : a :class:`Motion` with k = 1 or 2 parameters
     free : the two parameters (names or indices into ("u", "v") + motion.names) that
         parameterise the generated surface; the other k are solved from the meshing equations
@@ -537,7 +524,7 @@ class Envelope:
     def __init__(self, tool: Surface, motion: Motion, free=("u", "v"), *, lower=None, upper=None,
                  tol: float = 1e-12, maxiter: int = 50, singular_tol: float = 1e-6):
         if not isinstance(tool, Surface):
-            raise ValueError("tool must be a gearrep.surfaces.base.Surface")
+            raise ValueError("tool must be a gearrep.surface.Surface")
         if not isinstance(motion, Motion) or motion.n_params not in (1, 2):
             raise ValueError("motion must be a gearrep.envelope.Motion with 1 or 2 parameters")
         self.tool, self.motion = tool, motion
@@ -711,7 +698,7 @@ class Envelope:
         return self._record(q, res)
 
     def surface(self, guess, fd_step=(1e-3, 1e-3)) -> "EnvelopeSurface":
-        """The generated surface as a :class:`gearrep.surfaces.base.Surface` of the two free
+        """The generated surface as a :class:`gearrep.surface.Surface` of the two free
         parameters (see :class:`EnvelopeSurface`)."""
         return EnvelopeSurface(self, guess, fd_step)
 

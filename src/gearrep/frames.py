@@ -27,15 +27,21 @@ Conventions
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = [
     "rot_x",
     "rot_y",
     "rot_z",
+    "drot_x",
+    "drot_y",
     "drot_z",
     "rotation",
     "rotation_about_axis",
+    "drotation_about_axis",
+    "rotation_about_axis_with_derivatives",
     "homogeneous",
     "translation",
     "compose",
@@ -77,6 +83,43 @@ def rot_z(a) -> np.ndarray:
     return _rot(a, 0, 1)
 
 
+def _drot(a, i, j, order):
+    if order not in (1, 2):
+        raise ValueError(f"order must be 1 or 2, got {order!r}")
+    a = np.asarray(a, dtype=float)
+    c, s = np.cos(a), np.sin(a)
+    R = np.zeros(a.shape + (3, 3))
+    if order == 1:  # d/da [[c, -s], [s, c]] = [[-s, -c], [c, -s]]
+        R[..., i, i] = -s
+        R[..., j, j] = -s
+        R[..., i, j] = -c
+        R[..., j, i] = c
+    else:  # d2/da2 = [[-c, s], [-s, -c]]
+        R[..., i, i] = -c
+        R[..., j, j] = -c
+        R[..., i, j] = s
+        R[..., j, i] = -s
+    return R
+
+
+def drot_x(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_x(a) / da^order (order 1 or 2), batched like :func:`rot_x`:
+    order 1 [[0, 0, 0], [0, -s, -c], [0, c, -s]]."""
+    return _drot(a, 1, 2, order)
+
+
+def drot_y(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_y(a) / da^order (order 1 or 2), batched like :func:`rot_y`:
+    order 1 [[-s, 0, c], [0, 0, 0], [-c, 0, -s]]."""
+    return _drot(a, 2, 0, order)
+
+
+def drot_z(a, order: int = 1) -> np.ndarray:
+    """Derivative d^order rot_z(a) / da^order (order 1 or 2), batched like :func:`rot_z`:
+    order 1 [[-s, -c, 0], [c, -s, 0], [0, 0, 0]]."""
+    return _drot(a, 0, 1, order)
+
+
 def rotation(axis: str, a) -> np.ndarray:
     """``rot_x``/``rot_y``/``rot_z`` selected by ``axis`` in {'x', 'y', 'z'}."""
     try:
@@ -85,23 +128,53 @@ def rotation(axis: str, a) -> np.ndarray:
         raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}") from None
 
 
-def rotation_about_axis(axis, a) -> np.ndarray:
-    """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
-    R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis)."""
+def _axis_generator(axis):
+    """Cross-product matrix K of the unit direction of ``axis`` (..., 3): K x = unit(axis) x x."""
     k = np.asarray(axis, dtype=float)
+    if k.ndim == 1:  # one axis (the common case, e.g. every factor of a motion chain): scalar work
+        nrm = math.sqrt(float(k @ k)) if k.shape == (3,) else 0.0
+        if nrm == 0.0:
+            raise ValueError(f"axis must be a non-zero 3-vector, got {axis!r}")
+        x, y, z = (float(e) / nrm for e in k)
+        return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
     nrm = np.linalg.norm(k, axis=-1, keepdims=True)
     if np.any(nrm == 0):
         raise ValueError("axis must be a non-zero vector")
     k = k / nrm
-    a = np.asarray(a, dtype=float)
-    k, a = np.broadcast_arrays(k, a[..., None])
-    a = a[..., 0]
     K = np.zeros(k.shape[:-1] + (3, 3))
     K[..., 0, 1], K[..., 0, 2] = -k[..., 2], k[..., 1]
     K[..., 1, 0], K[..., 1, 2] = k[..., 2], -k[..., 0]
     K[..., 2, 0], K[..., 2, 1] = -k[..., 1], k[..., 0]
+    return K
+
+
+def rotation_about_axis(axis, a) -> np.ndarray:
+    """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
+    R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis). Batch
+    dimensions of ``axis`` (without its last) and ``a`` broadcast."""
+    K = _axis_generator(axis)
+    a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
     return np.eye(3) + s * K + (1.0 - c) * (K @ K)
+
+
+def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
+    """Derivative d^order R / da^order (order 1 or 2) of :func:`rotation_about_axis`:
+    dR/da = cos a K + sin a K^2, d2R/da2 = -sin a K + cos a K^2."""
+    if order not in (1, 2):
+        raise ValueError(f"order must be 1 or 2, got {order!r}")
+    return rotation_about_axis_with_derivatives(axis, a)[order]
+
+
+def rotation_about_axis_with_derivatives(axis, a):
+    """(R, dR/da, d2R/da2) of :func:`rotation_about_axis` in one evaluation (one generator K,
+    one K^2, one sine and cosine): what a chain of rotations differentiated by the product rule
+    needs at every step."""
+    K = _axis_generator(axis)
+    K2 = K @ K
+    a = np.asarray(a, dtype=float)
+    s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
+    return np.eye(3) + s * K + (1.0 - c) * K2, c * K + s * K2, -s * K + c * K2
 
 
 def homogeneous(R=None, t=None) -> np.ndarray:
@@ -242,16 +315,3 @@ def gear_mounting(center_distance, *, d_center=0.0, d_axial=0.0, gamma_in_plane=
     dz = np.asarray(d_axial, dtype=float)
     axial = np.stack(np.broadcast_arrays(np.zeros_like(dz), np.zeros_like(dz), dz), -1)
     return compose(translation(origin), homogeneous(R), translation(axial))
-
-
-def drot_z(a) -> np.ndarray:
-    """Derivative of :func:`rot_z` with respect to the angle: [[-s, -c, 0], [c, -s, 0], [0, 0, 0]];
-    batched like ``rot_z``: (...) -> (..., 3, 3)."""
-    a = np.asarray(a, dtype=float)
-    c, s = np.cos(a), np.sin(a)
-    D = np.zeros(a.shape + (3, 3))
-    D[..., 0, 0] = -s
-    D[..., 0, 1] = -c
-    D[..., 1, 0] = c
-    D[..., 1, 1] = -s
-    return D

@@ -11,6 +11,10 @@ import re
 
 import matplotlib as mpl
 
+__all__ = [
+    "STYLE", "use_style", "label_axes", "computed", "published", "finish",
+]
+
 STYLE = {
     "figure.figsize": (6.4, 4.2),
     "figure.dpi": 110,

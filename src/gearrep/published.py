@@ -19,6 +19,12 @@ import pandas as pd
 
 from .units import KNOWN_UNITS
 
+__all__ = [
+    "VALUE_COLUMNS", "PARAM_COLUMNS", "CLAIM_COLUMNS", "SEEDS", "PRECISION_KINDS", "ROUNDINGS",
+    "CLAIM_KINDS", "PAPERS", "PublishedDataError", "Published", "printed_precision",
+    "validate_values", "validate_params", "validate_claims", "load", "parse_row", "param_table",
+]
+
 VALUE_COLUMNS = [
     "id", "seed", "source", "line", "row", "quantity", "printed", "value", "unit",
     "precision_kind", "precision", "rounding", "notes",

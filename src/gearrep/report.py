@@ -17,6 +17,10 @@ import pandas as pd
 from .checks import STATUSES, summary
 from .published import PAPERS
 
+__all__ = [
+    "anchor", "render",
+]
+
 _STATUS_COLOURS = {
     "reproduced": "#1a7f37",
     "deviates": "#cf222e",

@@ -19,6 +19,10 @@ from typing import Callable
 
 import numpy as np
 
+__all__ = [
+    "Status", "STATUS_NAMES", "status_names", "SolveResult", "numeric_jacobian", "newton",
+]
+
 
 class Status(IntEnum):
     """Outcome of one solve."""

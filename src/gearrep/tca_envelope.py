@@ -39,7 +39,7 @@ class Flank:
     """A member's working flank for the TCA: the generated surface ``gear``
     (:class:`gearrep.surfaces.hob.GeneratedGear`, a two-parameter envelope with free (l, psi)
     and solved (phi, theta)) and ``placement``, the 3 x 3 rotation from its generation frame S_2
-    into the member frame (the tooth-centred frame ``GeneratedGear.to_thesis``, turned by
+    into the member frame (the tooth-centred frame ``GeneratedGear.to_tooth_frame``, turned by
     ``extra_turn_rad`` about Z to face the other member)."""
 
     gear: GeneratedGear
@@ -63,12 +63,12 @@ class Flank:
 
 def make_flank(gear: GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
     """Wrap a generated flank (a :class:`gearrep.surfaces.hob.GeneratedGear`) for the TCA."""
-    if not all(hasattr(gear, a) for a in ("envelope", "to_thesis", "solve", "outward", "hob")):
+    if not all(hasattr(gear, a) for a in ("envelope", "to_tooth_frame", "solve", "outward", "hob")):
         raise ValueError("gear must be a two-parameter generated flank (gearrep.surfaces.hob.GeneratedGear)")
     if not np.isfinite(extra_turn_rad):
         raise ValueError(f"extra_turn_rad must be finite, got {extra_turn_rad!r}")
     env = gear.envelope()
-    return Flank(gear, rot_z(extra_turn_rad) @ gear.to_thesis, env.tool, env.motion)
+    return Flank(gear, rot_z(extra_turn_rad) @ gear.to_tooth_frame, env.tool, env.motion)
 
 
 def member_geometry(flank: Flank, q):
@@ -293,7 +293,7 @@ def _pinion_outward(pair, sol: ContactPath) -> np.ndarray:
     angle fails past the tip, where the extended flank crosses the tooth's centre line)."""
     q0 = pair.pinion.gear.solve(hob_pitch_l(pair.pinion.gear.hob), 0.0).params[0]
     r0, _, n0, _, _, _ = member_geometry(pair.pinion, np.asarray(q0, float)[None])
-    R = pair.pinion.gear.to_thesis
+    R = pair.pinion.gear.to_tooth_frame
     s = float(np.sign(np.sum(pair.pinion.gear.outward(r0 @ R.T, n0 @ R.T) * (n0 @ R.T))))
     _, _, n, _, _, _ = member_geometry(pair.pinion, sol.x[:, :4])
     return s * np.einsum("nab,nb->na", pair.pinion_rotation(sol.phi1), n)

@@ -8,6 +8,11 @@ from __future__ import annotations
 
 import numpy as np
 
+__all__ = [
+    "DEG", "ARCMIN", "ARCSEC", "MM_PER_IN", "deg2rad", "rad2deg", "arcsec2rad", "rad2arcsec",
+    "arcmin2rad", "rad2arcmin", "in2mm", "mm2in", "TO_INTERNAL", "KNOWN_UNITS",
+]
+
 DEG = np.pi / 180.0  #: one degree in radians
 ARCMIN = DEG / 60.0  #: one arc-minute in radians
 ARCSEC = DEG / 3600.0  #: one arc-second in radians

@@ -378,7 +378,7 @@ def test_expected_statuses_workflow_setting(published, design):
     """The workflow settings (declared values with config/config.yaml) give the statuses of column ``status``."""
     import yaml
 
-    cfg = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["thesis"]
+    cfg = (yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text()) or {}).get("thesis")
     s = st.resolve(T.SETTINGS, cfg, where="thesis")
     rec = T.checks(T.run(s, design), published)["checks"].set_index("id")["status"]
     e = _expected()

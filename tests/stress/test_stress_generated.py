@@ -415,7 +415,7 @@ def test_envelope_limiting_line_near_face_ends(flank, record_conditions):
 def _outward_f(flank: te.Flank, rot, x4):
     """Outward (out of the tooth) unit normal in S_f of a member at its parameters x4 (n, 4)."""
     r, _, n, _, _, _ = te.member_geometry(flank, x4)
-    R = flank.gear.to_thesis  # thesis frame: the tooth centred on X (GeneratedGear.outward)
+    R = flank.gear.to_tooth_frame  # tooth frame: the tooth centred on X (GeneratedGear.outward)
     rm, nm = r @ R.T, n @ R.T
     s = np.sign(np.sum(GeneratedGear.outward(rm, nm) * nm, -1))
     return s[:, None] * np.einsum("nab,nb->na", rot, n)

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from gearrep.envelope import ChainMotion, FunctionMotion, fixed, rotation, translation
-from gearrep.surfaces.base import Surface, SurfacePoint
+from gearrep.surface import Surface, SurfacePoint
 
 try:
     from gearrep.curvature import principal_curvatures as _pc

@@ -19,7 +19,7 @@ import pytest
 
 from gearrep import curvature
 from gearrep.solve import newton
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.catt import (
     CATTFlank, CATTGearData, eq28_profile, eq29_profile, middle_section_curvatures, pitch_thickness_closed_form,
     tooth_thickness,

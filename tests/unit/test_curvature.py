@@ -1,5 +1,5 @@
 """gearrep.curvature against closed forms (plane, sphere, cylinder, torus, helicoid, involute
-helicoid), with analytic derivatives and with the finite-difference default of surfaces.base.
+helicoid), with analytic derivatives and with the finite-difference default of gearrep.surface.
 
 Accuracy achieved (documented here and asserted below):
 * analytic derivatives: principal curvatures to ~1e-15 relative (asserted 1e-12);
@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from gearrep import curvature as cv
 from gearrep.surfaces.analytic import (Cylinder, Helicoid, InvoluteHelicoid, Plane, Sphere,
                                        Torus, finite_difference_version)
-from gearrep.surfaces.base import SurfacePoint, unit
+from gearrep.surface import SurfacePoint, unit
 
 TOL = {"analytic": 1e-12, "fd": 1e-8}
 
@@ -180,7 +180,7 @@ def test_gaussian_mean_match_principal_generic_param():
         def position(self, u, v):
             return s.position(u - 0.7 * v, v)
 
-    from gearrep.surfaces.base import fd_derivatives
+    from gearrep.surface import fd_derivatives
     u, v = np.array([0.1, 2.0]), np.array([0.5, 2.5])
     p = fd_derivatives(Skew(2.0, 0.5).position, u, v)
     pc = cv.principal_curvatures(p)
@@ -325,3 +325,33 @@ def test_relative_small_difference_accuracy():
     k1, k2, alpha = cv.relative_principal_curvatures(kI1, kII1, kI2, kII2, 0.0)
     assert k1 == pytest.approx(1e-3, rel=1e-12)
     assert k2 == pytest.approx(1e-9, rel=1e-6)
+
+
+def test_second_form_in_basis_is_shape_matrix_and_rotates_with_the_basis():
+    # skewed torus parametrisation (F != 0), analytic derivatives via the chain rule
+    s = Torus(3.0, 1.2)
+    u, v = np.array([0.4, 1.3, -2.0]), np.array([0.9, -0.3, 2.2])
+    q = s.evaluate(u, v)
+    p = SurfacePoint(q.r, q.r_u, q.r_u * 0.6 + q.r_v, q.r_uu, q.r_uu * 0.6 + q.r_uv,
+                     q.r_uu * 0.36 + 2 * 0.6 * q.r_uv + q.r_vv)  # v' = v, u = u' + 0.6 v'
+    t1, t2, n, S11, S12, S22 = cv.shape_matrix(p)
+    K = cv.second_form_in_basis(p, n, t1, t2)
+    assert K.shape == (3, 2, 2)
+    np.testing.assert_allclose(K[..., 0, 0], S11, rtol=1e-13, atol=1e-15)
+    np.testing.assert_allclose(K[..., 0, 1], S12, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(K[..., 1, 0], S12, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(K[..., 1, 1], S22, rtol=1e-13, atol=1e-15)
+    # any orthonormal basis: II(e, e) is the normal curvature, eigenvalues the principal curvatures
+    a = np.array([0.2, -1.0, 2.5])[:, None]
+    e1, e2 = np.cos(a) * t1 + np.sin(a) * t2, -np.sin(a) * t1 + np.cos(a) * t2
+    K = cv.second_form_in_basis(p, n, e1, e2)
+    np.testing.assert_allclose(K[..., 0, 0], cv.normal_curvature(p, e1), rtol=1e-12)
+    np.testing.assert_allclose(K[..., 1, 1], cv.normal_curvature(p, e2), rtol=1e-12)
+    pc = cv.principal_curvatures(p)
+    w = np.linalg.eigvalsh(K)
+    np.testing.assert_allclose(w[:, 1], pc.k1, rtol=1e-12)
+    np.testing.assert_allclose(w[:, 0], pc.k2, rtol=1e-12)
+    k1, k2, _, _ = s.exact_principal(u, v)
+    np.testing.assert_allclose(np.sort(w, axis=1), np.sort(np.stack([k1, k2], -1), axis=1), rtol=1e-12)
+    # the opposite normal flips the form
+    np.testing.assert_allclose(cv.second_form_in_basis(p, -n, e1, e2), -K, rtol=0, atol=0)

@@ -15,16 +15,16 @@ from _envelope_cases import (
 )
 
 from gearrep.curvature_relations import (
-    _seed000_b_coefficients_printed,
+    _two_parameter_b_coefficients_printed,
     generated_curvatures,
     litvin_one_parameter,
-    seed000_b_coefficients,
-    seed000_principal_curvatures,
-    seed000_system,
+    two_parameter_b_coefficients,
+    two_parameter_principal_curvatures,
+    two_parameter_system,
 )
 from gearrep.envelope import Envelope, rack_generation_motion, singular_points
-from gearrep.surfaces.base import Surface
-from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, nasa_l
+from gearrep.surface import Surface
+from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, vertex_pitch_distance
 from gearrep.units import DEG
 
 
@@ -87,7 +87,7 @@ def test_involute_helicoid_closed_form():
 def test_parabolic_rack_relations_vs_direct(a, side, member_side):
     an, Pn, beta = 25 * DEG, 5.0, 19.948 * DEG
     r_p = 17 / (2 * Pn * np.cos(beta))
-    rack = ParabolicRackCutter(a, an, nasa_l(an, Pn), beta=beta, side=side)
+    rack = ParabolicRackCutter(a, an, vertex_pitch_distance(an, Pn), beta=beta, side=side)
     env = rack_envelope(rack, r_p, member_side)
     u, th = np.meshgrid(np.linspace(-0.15, 0.15, 3), np.linspace(-1.0, 1.0, 3))
     rec = env.solve(u, th, guess=0.0)
@@ -116,7 +116,7 @@ def test_seed002_sec_2_5_principal_curvatures():
     (centre distance 10 in), NOT the printed 19.548 deg. The pinion is elliptic and the gear
     hyperbolic (opposite signs: the printed "both positive" lost a sign)."""
     an, Pn = 25 * DEG, 5.0
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
 
     def curv(N, a, beta, member_side):
         r_p = N / (2 * Pn * np.cos(beta))
@@ -201,9 +201,9 @@ def test_seed000_equations_4_33_to_4_39():
     env = Envelope(tool, motion, free=("u", "psi"))
     rec = env.solve(np.linspace(4.4, 10.3, 4), np.array([-0.1, 0.0, 0.05, 0.1]), guess=[np.pi, 0.0])
     gc = generated_curvatures(env, rec.params)
-    b = seed000_system(env, rec.params)
+    b = two_parameter_system(env, rec.params)
     assert np.all(np.isnan(b[:, :2, :2])) and np.all(np.isfinite(b[:, 2:, :]))
-    b11, b12, b22 = seed000_b_coefficients(b)
+    b11, b12, b22 = two_parameter_b_coefficients(b)
     # B = K_2 - K_1 in (e_f, e_h)
     np.testing.assert_allclose(np.stack([b11, b12, b22], -1),
                                np.stack([gc.A[:, 0, 0], gc.A[:, 0, 1], gc.A[:, 1, 1]], -1), rtol=1e-12)
@@ -222,24 +222,24 @@ def test_seed000_equations_4_33_to_4_39():
     scale = np.abs(np.linalg.det(bb[:, 2:, 2:])) * np.abs(b11)
     assert np.all(np.abs(d434) < 1e-10 * scale)
     # printed 4.37-4.39: every numerator has the wrong sign -> B_printed = -B
-    p11, p12, p22 = _seed000_b_coefficients_printed(b)
+    p11, p12, p22 = _two_parameter_b_coefficients_printed(b)
     np.testing.assert_allclose([p11, p12, p22], [-b11, -b12, -b22], rtol=1e-12)
     assert np.all(np.abs(det3(p11, [0, 2, 3], [0, 2, 3])) > 1e-3 * scale)
     # k_s, k_q, sigma (4.24-4.26): same pair as the direct geometry, e_s the one nearest e_f
-    ks, kq, sig = seed000_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
+    ks, kq, sig = two_parameter_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
     np.testing.assert_allclose(np.sort(np.c_[ks, kq], axis=1), np.c_[gc.k2, gc.k1], rtol=1e-12)
     assert np.all(np.abs(sig) <= np.pi / 4 + 1e-15)
     np.testing.assert_allclose(np.abs(np.sin(sig)), np.abs(np.sin(np.where(ks >= kq, gc.sigma, gc.sigma - np.pi / 2))),
                                atol=1e-12)
     # with the printed signs the curvatures are wrong
-    ks_p, kq_p, _ = seed000_principal_curvatures(p11, p12, p22, gc.k_f, gc.k_h)
+    ks_p, kq_p, _ = two_parameter_principal_curvatures(p11, p12, p22, gc.k_f, gc.k_h)
     assert np.max(np.abs(np.sort(np.c_[ks_p, kq_p], axis=1) - np.c_[gc.k2, gc.k1])) > 1e-2
 
 
 def test_seed000_principal_curvatures_b12_zero_limit():
-    ks, kq, sig = seed000_principal_curvatures(0.3, 0.0, -0.2, 0.1, -0.5)
+    ks, kq, sig = two_parameter_principal_curvatures(0.3, 0.0, -0.2, 0.1, -0.5)
     assert sig == 0.0 and ks == pytest.approx(0.4) and kq == pytest.approx(-0.7)
-    ks, kq, sig = seed000_principal_curvatures(0.3, 1e-30, -0.2, 0.1, -0.5)
+    ks, kq, sig = two_parameter_principal_curvatures(0.3, 1e-30, -0.2, 0.1, -0.5)
     assert ks == pytest.approx(0.4) and kq == pytest.approx(-0.7)
 
 
@@ -248,10 +248,10 @@ def test_validation():
     with pytest.raises(ValueError, match="q must"):
         generated_curvatures(env, np.zeros((2, 4)))
     with pytest.raises(ValueError, match="k = 2"):
-        seed000_system(env, np.zeros((2, 3)))
+        two_parameter_system(env, np.zeros((2, 3)))
     with pytest.raises(ValueError, match="b must"):
-        seed000_b_coefficients(np.zeros((3, 3)))
+        two_parameter_b_coefficients(np.zeros((3, 3)))
     with pytest.raises(ValueError, match="b_33"):
-        seed000_b_coefficients(np.zeros((4, 4)))
+        two_parameter_b_coefficients(np.zeros((4, 4)))
     with pytest.raises(ValueError, match="a33"):
         litvin_one_parameter(0.0, 0.0, 1.0, 1.0, 0.0)

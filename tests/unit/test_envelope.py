@@ -24,7 +24,7 @@ from gearrep.envelope import (
     translation,
 )
 from gearrep.solve import Status, newton
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.rack import StraightRackCutter
 from gearrep.units import DEG
 

@@ -172,10 +172,45 @@ def test_gear_mounting_vectorised():
     np.testing.assert_allclose(M[2], fr.gear_mounting(50.0, gamma_in_plane=g[2]))
 
 
-def test_drot_z_is_the_derivative_of_rot_z_batched():
-    from gearrep.frames import drot_z
+@pytest.mark.parametrize("rot, drot", [(fr.rot_x, fr.drot_x), (fr.rot_y, fr.drot_y), (fr.rot_z, fr.drot_z)])
+def test_rotation_derivatives_match_finite_differences(rot, drot):
+    a = np.array([[-2.9, -0.4, 0.0], [0.3, 1.2, 5.0]])
+    h = 1e-4
+    # 4th-order central differences: error ~ h^4 / 30 + eps / h, about 1e-12 here
+    d1 = (rot(a - 2 * h) - 8 * rot(a - h) + 8 * rot(a + h) - rot(a + 2 * h)) / (12 * h)
+    d2 = (-rot(a - 2 * h) + 16 * rot(a - h) - 30 * rot(a) + 16 * rot(a + h) - rot(a + 2 * h)) / (12 * h * h)
+    assert drot(a).shape == (2, 3, 3, 3)
+    np.testing.assert_allclose(drot(a), d1, rtol=0, atol=1e-11)
+    np.testing.assert_allclose(drot(a, order=2), d2, rtol=0, atol=1e-7)
+    # closed forms: dR/da = R K and d2R/da2 = R K^2 with K the generator of the axis
+    K = drot(0.0)
+    np.testing.assert_allclose(drot(a), rot(a) @ K, atol=1e-15)
+    np.testing.assert_allclose(drot(a, 2), rot(a) @ K @ K, atol=1e-15)
+    np.testing.assert_array_equal(drot(0.7), drot(np.array([0.7]))[0])
+    with pytest.raises(ValueError, match="order"):
+        drot(0.1, order=3)
 
-    a = np.array([[0.3, -1.2], [2.0, 0.0]])
-    h = 1e-6
-    assert drot_z(a).shape == (2, 2, 3, 3)
-    np.testing.assert_allclose(drot_z(a), (fr.rot_z(a + h) - fr.rot_z(a - h)) / (2 * h), atol=1e-9)
+
+def test_rotation_about_axis_derivatives_match_finite_differences():
+    k = np.array([1.0, 2.0, -0.5])
+    a = np.array([-1.3, 0.2, 2.8])
+    h = 1e-4
+
+    def R(x):
+        return fr.rotation_about_axis(k, x)
+
+    d1 = (R(a - 2 * h) - 8 * R(a - h) + 8 * R(a + h) - R(a + 2 * h)) / (12 * h)
+    d2 = (-R(a - 2 * h) + 16 * R(a - h) - 30 * R(a) + 16 * R(a + h) - R(a + 2 * h)) / (12 * h * h)
+    np.testing.assert_allclose(fr.drotation_about_axis(k, a), d1, rtol=0, atol=1e-11)
+    np.testing.assert_allclose(fr.drotation_about_axis(k, a, order=2), d2, rtol=0, atol=1e-7)
+    # about a coordinate axis they are drot_x / drot_z
+    np.testing.assert_allclose(fr.drotation_about_axis([1, 0, 0], a), fr.drot_x(a), atol=1e-15)
+    np.testing.assert_allclose(fr.drotation_about_axis([0, 0, 2], a, 2), fr.drot_z(a, 2), atol=1e-15)
+    R, dR, d2R = fr.rotation_about_axis_with_derivatives(k, a)
+    np.testing.assert_array_equal(R, fr.rotation_about_axis(k, a))
+    np.testing.assert_array_equal(dR, fr.drotation_about_axis(k, a))
+    np.testing.assert_array_equal(d2R, fr.drotation_about_axis(k, a, 2))
+    with pytest.raises(ValueError, match="order"):
+        fr.drotation_about_axis(k, 0.1, order=0)
+    with pytest.raises(ValueError):
+        fr.drotation_about_axis([0, 0, 0], 0.1)

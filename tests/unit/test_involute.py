@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.involute import (
     CircularCrowning, InvoluteFlank, InvoluteGearData, LogarithmicCrowning, ParabolicCrowning, RootRelief,
-    TipRelief, involute_polar_angle, mating_flanks, standard_centre_distance, thesis_involute_xy,
+    TipRelief, involute_polar_angle, mating_flanks, standard_centre_distance, involute_xy,
 )
 
 D = np.radians
@@ -23,7 +23,7 @@ def helical(n=40, m=1.0, b=20.0, beta=14.0, **kw):
 # ---------------------------------------------------------------------------------------------
 # analytic derivatives
 # ---------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("form", ["true", "thesis"])
+@pytest.mark.parametrize("form", ["true", "asin"])
 @pytest.mark.parametrize("side", [1, -1])
 @pytest.mark.parametrize("crown", [None, "par", "circ", "log"])
 def test_analytic_derivatives_match_finite_differences(form, side, crown):
@@ -71,8 +71,8 @@ def test_thesis_eq_3_4_is_the_involute_polar_angle():
 def test_correction_1_y_component_of_eq_1():
     rb = 10.0
     t = np.linspace(0, 1.2, 13)
-    good = thesis_involute_xy(t, rb)
-    bad = thesis_involute_xy(t, rb, corrected=False)
+    good = involute_xy(t, rb)
+    bad = involute_xy(t, rb, corrected=False)
     # eq (2): the point at roll angle t has radius u = r_b sqrt(1 + t^2)
     assert np.allclose(np.hypot(*good.T), rb * np.sqrt(1 + t**2), atol=1e-12)
     assert np.isclose(np.hypot(*bad[0]), np.sqrt(2) * rb)  # printed form starts off the base circle
@@ -104,7 +104,7 @@ def test_correction_2_tip_diameter_of_table_1():
 def test_correction_3_eq_5_is_not_a_helicoid():
     g = helical()  # thesis Table 2 gear: 40 teeth, m = 1, 20 deg, 14 deg helix
     true = InvoluteFlank(g, 1, 1)
-    thes = InvoluteFlank(g, 1, 1, helix_form="thesis")
+    thes = InvoluteFlank(g, 1, 1, helix_form="asin")
     # helix angle at the pitch cylinder: true helicoid gives beta, eq (5) gives atan(sin b / cos a_t)
     assert np.isclose(true.helix_angle_at(g.r_p), D(14), atol=1e-15)
     bt = thes.helix_angle_at(g.r_p)

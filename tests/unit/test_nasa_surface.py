@@ -4,7 +4,7 @@ library's envelope solve and EnvelopeSurface derivatives."""
 import numpy as np
 import pytest
 
-from gearrep.surfaces.base import fd_derivatives
+from gearrep.surface import fd_derivatives
 from gearrep.surfaces.novikov import RackGeneratedFlank, pitch_radius
 from gearrep.units import DEG
 

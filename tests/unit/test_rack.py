@@ -4,14 +4,14 @@ import numpy as np
 import pytest
 from _envelope_cases import principal
 
-from gearrep.surfaces.base import fd_derivatives
-from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, nasa_l
+from gearrep.surface import fd_derivatives
+from gearrep.surfaces.rack import ParabolicRackCutter, StraightRackCutter, vertex_pitch_distance
 from gearrep.units import DEG
 
 RACKS = [
     StraightRackCutter(20 * DEG),
     StraightRackCutter(25 * DEG, beta=-15 * DEG, y0=0.4, side=-1),
-    ParabolicRackCutter(0.425, 25 * DEG, nasa_l(25 * DEG, 5.0), beta=19.948 * DEG),
+    ParabolicRackCutter(0.425, 25 * DEG, vertex_pitch_distance(25 * DEG, 5.0), beta=19.948 * DEG),
     ParabolicRackCutter(-0.3, 20 * DEG, 0.3, beta=10 * DEG, y0=-0.2, side=-1),
 ]
 
@@ -54,7 +54,7 @@ def test_parabolic_rack_seed002_construction():
     """seed 002 eq 2.2.1-2.2.5, 2.5.1-2.5.2, 2.7: vertex Q at |QP| = l on the normal through P,
     profile curvature 2a at Q, principal curvatures 0 (generatrix) and 2a (profile)."""
     an, Pn, a, beta, y0 = 25 * DEG, 5.0, 0.425, 19.948 * DEG, 0.1
-    l = nasa_l(an, Pn)
+    l = vertex_pitch_distance(an, Pn)
     assert l == pytest.approx(np.cos(an) / Pn, rel=1e-15)
     rack = ParabolicRackCutter(a, an, l, beta=beta, y0=y0)
     p = rack.evaluate(0.0, 0.0)
@@ -100,8 +100,8 @@ def test_vectorised_shapes():
         (lambda: StraightRackCutter(0.3, y0=np.nan), "y0"),
         (lambda: ParabolicRackCutter(np.inf, 0.3, 0.1), "a"),
         (lambda: ParabolicRackCutter(0.4, 0.3, -0.1), "l"),
-        (lambda: nasa_l(0.4, 0.0), "P_n"),
-        (lambda: nasa_l(2.0, 5.0), "alpha_n"),
+        (lambda: vertex_pitch_distance(0.4, 0.0), "P_n"),
+        (lambda: vertex_pitch_distance(2.0, 5.0), "alpha_n"),
     ],
 )
 def test_validation(make, match):

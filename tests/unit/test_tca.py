@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from gearrep.solve import Status
-from gearrep.surfaces.base import Surface
+from gearrep.surface import Surface
 from gearrep.surfaces.involute import (
     InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance,
 )
@@ -91,9 +91,9 @@ def test_aligned_helical_zero_te_in_plane_of_action():
             assert np.allclose(np.abs(c.normal[ok, 2]), np.sin(bb), atol=1e-12)  # tilted by beta_b
 
 
-def test_thesis_helix_form_is_not_conjugate_for_unequal_gears():
+def test_asin_helix_form_is_not_conjugate_for_unequal_gears():
     """Correction 3 in action: with eq (5)/(58) the aligned 40/37 pair has no line contact."""
-    pair, _, _ = helical_pair("thesis")
+    pair, _, _ = helical_pair("asin")
     true_pair, _, _ = helical_pair("true")
     for v1 in (-8.0, 8.0):
         phi = pitch_angle(true_pair, v1) + np.array([-0.02, 0.0, 0.02])

@@ -1,5 +1,4 @@
-"""Tooth and tool surfaces: one module per family, all following :mod:`gearrep.surfaces.base`."""
+"""Tooth and tool surfaces: one module per family, each following the protocol of
+:mod:`gearrep.surface`."""
 
-from .base import Surface, SurfacePoint, cross, fd_derivatives, unit
-
-__all__ = ["Surface", "SurfacePoint", "cross", "fd_derivatives", "unit"]
+__all__ = ["analytic", "catt", "hob", "involute", "novikov", "rack"]

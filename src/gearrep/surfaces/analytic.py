@@ -1,7 +1,7 @@
 """Closed-form test surfaces with analytic first and second derivatives.
 
 Plane, sphere, circular cylinder, torus, right helicoid and involute helicoid. Each class
-subclasses :class:`gearrep.surfaces.base.Surface`, overrides :meth:`evaluate` with exact
+subclasses :class:`gearrep.surface.Surface`, overrides :meth:`evaluate` with exact
 derivatives and offers :meth:`exact_principal` = (k1, k2, e1, e2) in the gearrep contract
 convention (normal n = unit(r_u x r_v), k > 0 where the surface bends toward n, k1 >= k2,
 e1 x e2 = n). Curvature closed forms: Litvin & Fuentes, *Gear Geometry and Applied Theory*,
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .base import Surface, SurfacePoint, unit
+from ..surface import Surface, SurfacePoint, unit
 
 __all__ = [
     "Plane",

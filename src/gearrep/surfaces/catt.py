@@ -88,11 +88,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import frames
 from ..solve import SolveResult, Status, newton
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
 __all__ = [
-    "CATTGearData", "CATTFlank", "RotatedSurface", "turn_over", "tooth_thickness",
+    "CATTGearData", "CATTFlank", "turn_over", "tooth_thickness",
     "pitch_thickness_closed_form", "middle_section_curvatures", "eq28_profile", "eq29_profile",
 ]
 
@@ -183,11 +184,6 @@ def _real_or_complex(x):
     differentiated by the complex step, to rounding, in the independent envelope test)."""
     x = np.asarray(x)
     return x.astype(complex) if np.iscomplexobj(x) else x.astype(float)
-
-
-def _rz_minus(phi):
-    """Rows of Rz(-phi) acting on (x, y): returns cos, sin."""
-    return np.cos(phi), np.sin(phi)
 
 
 class CATTFlank(Surface):
@@ -319,26 +315,23 @@ class CATTFlank(Surface):
     def position(self, theta, phi) -> np.ndarray:
         """r(theta, phi), closed form (C) (equal to eq (6))."""
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
-        P = self._P(theta, phi, order=0)
-        cp, sp = _rz_minus(phi)
-        return np.stack([cp * P[..., 0] + sp * P[..., 1], -sp * P[..., 0] + cp * P[..., 1], P[..., 2]], -1)
+        return frames.transform_vectors(frames.rot_z(-phi), self._P(theta, phi, order=0))
 
     def evaluate(self, theta, phi) -> SurfacePoint:
         """Position and analytic first and second partials with respect to (theta, phi)."""
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
         P, P_t, P_p, P_tt, P_tp = self._P(theta, phi)
-        cp, sp = _rz_minus(phi)
+        # Rz(-phi) and its first and second derivatives with respect to phi
+        Rz, dRz, d2Rz = frames.rot_z(-phi), -frames.drot_z(-phi), frames.drot_z(-phi, order=2)
 
-        def Q(V):  # Rz(-phi) on (x, y), z kept
-            return np.stack([cp * V[..., 0] + sp * V[..., 1], -sp * V[..., 0] + cp * V[..., 1], V[..., 2]], -1)
+        def Q(V):
+            return frames.transform_vectors(Rz, V)
 
-        def Q1(V):  # d/dphi Rz(-phi) on (x, y); z part 0
-            return np.stack([-sp * V[..., 0] + cp * V[..., 1], -cp * V[..., 0] - sp * V[..., 1],
-                             np.zeros_like(V[..., 2])], -1)
+        def Q1(V):
+            return frames.transform_vectors(dRz, V)
 
-        def Q2(V):  # second derivative: -Rz(-phi) on (x, y); z part 0
-            return np.stack([-(cp * V[..., 0] + sp * V[..., 1]), sp * V[..., 0] - cp * V[..., 1],
-                             np.zeros_like(V[..., 2])], -1)
+        def Q2(V):
+            return frames.transform_vectors(d2Rz, V)
 
         r = Q(P)
         r_t = Q(P_t)
@@ -411,45 +404,6 @@ class CATTFlank(Surface):
         z = np.atleast_1d(np.asarray(z, float))
         res = self.solve_point(z, np.full_like(z, self.gear.r_a))
         return self.position(res.x[:, 0], res.x[:, 1]), res
-
-
-class RotatedSurface(Surface):
-    """A surface carried by a fixed rotation Q (3x3, det +1) and translation t: r' = Q r + t.
-
-    Derivatives rotate with Q, so the normal unit(r_u x r_v) rotates too and curvatures are
-    unchanged. Attributes ``outward_sign``, ``lower``, ``upper``, ``contains`` pass through.
-    """
-
-    def __init__(self, surface: Surface, Q, t=(0.0, 0.0, 0.0)):
-        Q = np.asarray(Q, float)
-        if Q.shape != (3, 3) or not np.allclose(Q @ Q.T, np.eye(3), atol=1e-13) or np.linalg.det(Q) < 0:
-            raise ValueError("Q must be a 3x3 proper rotation matrix")
-        self.surface = surface
-        self.Q = Q
-        self.t = np.asarray(t, float).reshape(3)
-        self.outward_sign = getattr(surface, "outward_sign", 1)
-        for name in ("lower", "upper", "gear", "side", "fd_step"):
-            if hasattr(surface, name):
-                setattr(self, name, getattr(surface, name))
-
-    def _q(self, v):
-        return np.einsum("ij,...j->...i", self.Q, v)
-
-    def position(self, u, v):
-        return self._q(self.surface.position(u, v)) + self.t
-
-    def evaluate(self, u, v) -> SurfacePoint:
-        P = self.surface.evaluate(u, v)
-        return SurfacePoint(self._q(P.r) + self.t, self._q(P.r_u), self._q(P.r_v), self._q(P.r_uu),
-                            self._q(P.r_uv), self._q(P.r_vv))
-
-    def contains(self, u, v, tol: float = 1e-9):
-        return self.surface.contains(u, v, tol)
-
-
-def rot_z(a) -> np.ndarray:
-    c, s = np.cos(a), np.sin(a)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def turn_over() -> np.ndarray:

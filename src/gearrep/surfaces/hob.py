@@ -37,7 +37,7 @@ Sources
   - ``"printed"``: eq 4.40 exactly as printed, with beta = the hob lead angle: the profile line
     is tilted out of the axial section (a straight line in the normal section).
 
-Gear frame of the tables ("thesis frame" S_f): Z_f = gear axis, X_f along the centre line of
+Gear frame of the tables (the "tooth frame" S_f): Z_f = gear axis, X_f along the centre line of
 the tooth whose flanks are generated at theta ~ pi (tooth symmetric about X_f: the flank of the
 upper sign lies on +Y_f, the lower-sign flank on -Y_f); it is the generation frame S_2 turned
 by +pi/N about Z (``GeneratedGear.frame_rotation_rad``). The mid-face Z_f = 0 is psi = 0.
@@ -58,13 +58,14 @@ from ..curvature import PrincipalCurvatures, principal_curvatures
 from ..curvature_relations import (
     GeneratedCurvatures,
     generated_curvatures,
-    seed000_b_coefficients,
-    seed000_principal_curvatures,
-    seed000_system,
+    two_parameter_b_coefficients,
+    two_parameter_principal_curvatures,
+    two_parameter_system,
 )
+from .. import frames
 from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
 from ..solve import SolveResult, Status, newton
-from .base import Surface, SurfacePoint
+from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
     "HOB_VARIANTS",
@@ -72,8 +73,7 @@ __all__ = [
     "ZAHob",
     "HobThread",
     "GeneratedGear",
-    "SeedCurvatures",
-    "RotatedSurface",
+    "FlankCurvatures",
 ]
 
 HOB_VARIANTS = ("axial", "printed")
@@ -187,29 +187,9 @@ class HobThread(Surface):
         return principal_curvatures(self.evaluate(l, p))
 
 
-class RotatedSurface(Surface):
-    """A surface turned by the rigid rotation R (3 x 3): r'(u, v) = R r(u, v)."""
-
-    def __init__(self, surface: Surface, R):
-        R = np.asarray(R, float)
-        if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-12):
-            raise ValueError("R must be a 3 x 3 rotation matrix")
-        self.surface, self.R = surface, R
-
-    def _rot(self, x):
-        return x @ self.R.T
-
-    def position(self, u, v):
-        return self._rot(self.surface.position(u, v))
-
-    def evaluate(self, u, v) -> SurfacePoint:
-        p = self.surface.evaluate(u, v)
-        return SurfacePoint(*(self._rot(x) for x in (p.r, p.r_u, p.r_v, p.r_uu, p.r_uv, p.r_vv)))
-
-
-class SeedCurvatures(NamedTuple):
+class FlankCurvatures(NamedTuple):
     """Principal curvatures of the generated flank labelled as in seed 000 Tables 4.2-4.5, in
-    the thesis frame S_f.
+    the tooth frame S_f.
 
     k_s, e_s : the principal direction nearest the gear axis Z_f (along Z_f at mid-face), with
         e_s . Z_f >= 0
@@ -218,8 +198,9 @@ class SeedCurvatures(NamedTuple):
     Curvatures are signed w.r.t. ``normal`` = the hob normal unit(r_l x r_phi) of eq 4.41
     carried into S_f (the tables' convention: k > 0 where the flank bends toward it).
     normal_out : n_out; point : the flank point (mm) in S_f
-    k_s_seed, k_q_seed, sigma_seed : the same pair from the chapter's method (eq 4.33-4.39 with
-        the corrected signs, then 4.24-4.26; e_s nearest the hob direction e_f)
+    k_s_two_parameter, k_q_two_parameter, sigma_two_parameter : the same pair from the
+        two-parameter-envelope system of seed 000 (eq 4.33-4.39 with the corrected signs, then
+        4.24-4.26; e_s nearest the hob direction e_f)
     result : the :class:`gearrep.envelope.EnvelopeResult` (generation frame) with the statuses
     """
 
@@ -230,9 +211,9 @@ class SeedCurvatures(NamedTuple):
     normal: np.ndarray
     normal_out: np.ndarray
     point: np.ndarray
-    k_s_seed: np.ndarray
-    k_q_seed: np.ndarray
-    sigma_seed: np.ndarray
+    k_s_two_parameter: np.ndarray
+    k_q_two_parameter: np.ndarray
+    sigma_two_parameter: np.ndarray
     generated: GeneratedCurvatures
     result: EnvelopeResult
 
@@ -295,15 +276,13 @@ class GeneratedGear:
 
     @property
     def frame_rotation_rad(self) -> float:
-        """Angle (about Z) from the generation frame S_2 to the thesis frame S_f: pi / N."""
+        """Angle (about Z) from the generation frame S_2 to the tooth frame S_f: pi / N."""
         return float(np.pi / self.n_teeth)
 
     @property
-    def to_thesis(self) -> np.ndarray:
-        """3 x 3 rotation S_2 -> S_f."""
-        a = self.frame_rotation_rad
-        c, s = np.cos(a), np.sin(a)
-        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    def to_tooth_frame(self) -> np.ndarray:
+        """3 x 3 rotation L_f2 (generation frame S_2 -> tooth frame S_f): rot_z(pi / N)."""
+        return frames.rot_z(self.frame_rotation_rad)
 
     def thread(self) -> HobThread:
         return self.hob.thread(self.side)
@@ -379,7 +358,7 @@ class GeneratedGear:
 
     def verify(self, rec: EnvelopeResult) -> EnvelopeResult:
         """Mark converged roots outside the generated tooth as WRONG_ROOT (see :meth:`solve`)."""
-        pt = rec.point @ self.to_thesis.T
+        pt = rec.point @ self.to_tooth_frame.T
         r = np.hypot(pt[:, 0], pt[:, 1])
         ang = np.arctan2(pt[:, 1], pt[:, 0])
         m = self.hob.module_mm
@@ -393,9 +372,9 @@ class GeneratedGear:
         return rec
 
     def points(self, l_mm, psi_rad, guess=None):
-        """(point, hob normal, EnvelopeResult) with point and normal in the thesis frame S_f."""
+        """(point, hob normal, EnvelopeResult) with point and normal in the tooth frame S_f."""
         rec = self.solve(l_mm, psi_rad, guess)
-        R = self.to_thesis
+        R = self.to_tooth_frame
         return rec.point @ R.T, rec.normal @ R.T, rec
 
     def l_at_radius(self, radius_mm, psi_rad=0.0, l0_mm=6.0) -> SolveResult:
@@ -417,15 +396,15 @@ class GeneratedGear:
         return newton(fun, np.full((r_target.size, 1), float(l0_mm)), tol=1e-11, rows=True)
 
     # ---- curvatures -----------------------------------------------------------------------
-    def curvatures(self, l_mm, psi_rad=0.0, guess=None) -> SeedCurvatures:
+    def curvatures(self, l_mm, psi_rad=0.0, guess=None) -> FlankCurvatures:
         """Principal curvatures and directions of the generated flank at (l, psi), labelled
-        and oriented as in seed 000 Tables 4.2-4.5 (see :class:`SeedCurvatures`), from
+        and oriented as in seed 000 Tables 4.2-4.5 (see :class:`FlankCurvatures`), from
         K_2 = K_1 + C E^-1 C^T (:func:`gearrep.curvature_relations.generated_curvatures`) and,
         independently, from the chapter's eq 4.33-4.39 (corrected) and 4.24-4.26."""
         rec = self.solve(l_mm, psi_rad, guess)
         env = self.envelope()
         gc = generated_curvatures(env, rec.params)
-        R = self.to_thesis
+        R = self.to_tooth_frame
         e1, e2, n = gc.e1 @ R.T, gc.e2 @ R.T, gc.normal @ R.T
         pt = rec.point @ R.T
         # e_s: the principal direction nearest Z_f
@@ -437,14 +416,14 @@ class GeneratedGear:
         n_out = self.outward(pt, n)
         e_q = np.cross(n_out, e_s)
         # the chapter's method (eq 4.33-4.39 corrected, 4.24-4.26)
-        b = seed000_system(env, rec.params)
-        b11, b12, b22 = seed000_b_coefficients(b)
-        ks_b, kq_b, sig_b = seed000_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
-        return SeedCurvatures(k_s, k_q, e_s, e_q, n, n_out, pt, ks_b, kq_b, sig_b, gc, rec)
+        b = two_parameter_system(env, rec.params)
+        b11, b12, b22 = two_parameter_b_coefficients(b)
+        ks_b, kq_b, sig_b = two_parameter_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
+        return FlankCurvatures(k_s, k_q, e_s, e_q, n, n_out, pt, ks_b, kq_b, sig_b, gc, rec)
 
     @staticmethod
     def outward(point, normal) -> np.ndarray:
-        """+-normal pointing out of the tooth (away from its centre line X_f) at thesis-frame
+        """+-normal pointing out of the tooth (away from its centre line X_f) at tooth-frame
         points: the sign of (polar angle of the point) * (normal . e_theta)."""
         point, normal = np.asarray(point, float), np.asarray(normal, float)
         ang = np.arctan2(point[..., 1], point[..., 0])
@@ -452,14 +431,14 @@ class GeneratedGear:
         s = np.sign(ang * np.sum(normal * e_th, -1))
         return normal * np.where(s == 0, 1.0, s)[..., None]
 
-    def surface(self, frame: str = "thesis", fd_step=(1e-3, 1e-4)) -> Surface:
-        """The generated flank as a :class:`gearrep.surfaces.base.Surface` of (l, psi) (for
+    def surface(self, frame: str = "tooth", fd_step=(1e-3, 1e-4)) -> Surface:
+        """The generated flank as a :class:`gearrep.surface.Surface` of (l, psi) (for
         direct differential geometry and TCA): analytic first derivatives, second derivatives
         with analytic normal components (:class:`gearrep.envelope.EnvelopeSurface`). ``frame``
-        "thesis" (S_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
+        "tooth" (S_f, the tooth centred on X_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
         s = EnvelopeSurface(self.envelope(), self.DEFAULT_GUESS, fd_step)
         if frame == "generation":
             return s
-        if frame == "thesis":
-            return RotatedSurface(s, self.to_thesis)
-        raise ValueError(f"frame must be 'thesis' or 'generation', got {frame!r}")
+        if frame == "tooth":
+            return RotatedSurface(s, self.to_tooth_frame)
+        raise ValueError(f"frame must be 'tooth' or 'generation', got {frame!r}")

@@ -35,7 +35,7 @@ Helix (``helix_form``):
 * ``"true"`` (default): the involute helicoid, twist(v) = hand * v * tan(beta) / r_p, i.e. a
   constant lead 2 pi r_p / tan(beta) = 2 pi r_b / tan(beta_b). Two helicoids of opposite hands with
   equal normal module/pressure/helix angle are conjugate on parallel axes (line contact, TE = 0).
-* ``"thesis"``: eq (5)/(58) as printed, twist(v) = hand * asin(v sin(beta) / r_b). It is not a
+* ``"asin"``: eq (5)/(58) as printed, twist(v) = hand * asin(v sin(beta) / r_b). It is not a
   helicoid (see correction 3).
 
 Corrections to the thesis (evidence in tests/unit/test_involute.py)
@@ -56,7 +56,7 @@ Corrections to the thesis (evidence in tests/unit/test_involute.py)
    mid-face its helix angle at the pitch cylinder is atan(sin(beta) / cos(alpha_t)) (14.48 deg for
    the thesis's 14 deg example), not beta. Two such flanks with N1 != N2 are not conjugate (the
    aligned, unmodified pair has no line contact and a non-zero TE). ``helix_form="true"`` gives the
-   involute helicoid; ``"thesis"`` reproduces (5)/(58) for comparison.
+   involute helicoid; ``"asin"`` reproduces (5)/(58) for comparison.
 4. Eq (57)/(58) add the modification to the Cartesian x and y components. That displaces the
    profile in a fixed direction (not along its normal) and destroys the property that u is the
    distance from the axis, on which the reduced TCA (eq 35-40) depends. Here the modification is
@@ -75,7 +75,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
+
+__all__ = [
+    "involute_polar_angle", "involute_xy", "ParabolicCrowning", "CircularCrowning",
+    "LogarithmicCrowning", "TipRelief", "RootRelief", "InvoluteGearData", "InvoluteFlank",
+    "mating_flanks", "standard_centre_distance",
+]
 
 
 def _check_finite(name: str, value, *, positive=False, nonneg=False):
@@ -117,7 +123,7 @@ def _inv_derivs(u, r_b):
     return inv, d1, d2
 
 
-def thesis_involute_xy(theta, r_b, corrected: bool = True):
+def involute_xy(theta, r_b, corrected: bool = True):
     """Involute point of eq (1): x = r_b (cos t + t sin t), y = r_b (sin t - t cos t) (corrected).
 
     ``corrected=False`` returns the y component as printed in the thesis, r_b (cos t - t sin t),
@@ -357,7 +363,7 @@ class InvoluteFlank(Surface):
         gears have opposite hands
     crowning : ParabolicCrowning | CircularCrowning | LogarithmicCrowning | None (eq 10-12)
     relief : sequence of TipRelief / RootRelief (eq 13)
-    helix_form : "true" (involute helicoid) or "thesis" (eq 5/58 as printed)
+    helix_form : "true" (involute helicoid) or "asin" (eq 5/58 as printed: twist asin(v sin(beta) / r_b))
     u_min, u_max : flank limits in u (defaults: max(r_b, r_f) = start of the involute above the
         root or base circle, and r_a). Evaluation exactly at u = r_b is singular (cusp).
     """
@@ -372,8 +378,8 @@ class InvoluteFlank(Surface):
             raise ValueError(f"side must be +1 or -1, got {side!r}")
         if hand not in (1, -1):
             raise ValueError(f"hand must be +1 or -1, got {hand!r}")
-        if helix_form not in ("true", "thesis"):
-            raise ValueError(f"helix_form must be 'true' or 'thesis', got {helix_form!r}")
+        if helix_form not in ("true", "asin"):
+            raise ValueError(f"helix_form must be 'true' or 'asin', got {helix_form!r}")
         if crowning is not None and not callable(crowning):
             raise ValueError("crowning must be a crowning object (callable v -> (d, d', d'')) or None")
         relief = tuple(relief)

@@ -25,11 +25,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import frames
 from ..envelope import Envelope, rack_generation_motion
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 from .rack import ParabolicRackCutter
 
-__all__ = ["RackGeneratedFlank", "pitch_radius"]
+__all__ = ["RackGeneratedFlank", "WormGeneratedPinion", "NormalPartSurface", "pitch_radius"]
 
 
 def pitch_radius(N: int, P_n: float, beta: float) -> float:
@@ -136,11 +137,10 @@ class RackGeneratedFlank(Surface):
         r_uu = s * Kx(qu) * pu_ + dqu_u
         r_uv = s * Kx(qu) * pv_ + dqu_v
         r_vv = s * Kx(qv) * pv_ + dqv_v
-        a = s * phi
-        ca, sa = np.cos(a), np.sin(a)
+        Rz = frames.rot_z(s * phi)
 
         def A(w):
-            return np.stack([ca * w[..., 0] - sa * w[..., 1], sa * w[..., 0] + ca * w[..., 1], w[..., 2]], axis=-1)
+            return frames.transform_vectors(Rz, w)
 
         return SurfacePoint(A(q), A(qu), A(qv), A(r_uu), A(r_uv), A(r_vv))
 
@@ -215,16 +215,10 @@ class WormGeneratedPinion(Surface):
         psi, l = m[..., 0], m[..., 1]
         n = psi.shape
 
-        def rz(ang):
-            c, s = np.cos(ang), np.sin(ang)
-            R = np.zeros(n + (4, 4))
-            R[..., 0, 0], R[..., 0, 1], R[..., 1, 0], R[..., 1, 1] = c, -s, s, c
-            R[..., 2, 2] = R[..., 3, 3] = 1.0
-            dR = np.zeros(n + (4, 4))
-            dR[..., 0, 0], dR[..., 0, 1], dR[..., 1, 0], dR[..., 1, 1] = -s, -c, c, -s
-            d2R = np.zeros(n + (4, 4))
-            d2R[..., 0, 0], d2R[..., 0, 1], d2R[..., 1, 0], d2R[..., 1, 1] = -c, s, -s, -c
-            return R, dR, d2R
+        def rz(ang):  # 4x4 rotation about z and its first and second derivatives
+            dR, d2R = np.zeros(n + (4, 4)), np.zeros(n + (4, 4))
+            dR[..., :3, :3], d2R[..., :3, :3] = frames.drot_z(ang), frames.drot_z(ang, order=2)
+            return frames.homogeneous(frames.rot_z(ang)), dR, d2R
 
         A = rz(psi + self.kappa * l)
         D = rz(self.ratio_w * psi)
@@ -234,8 +228,7 @@ class WormGeneratedPinion(Surface):
         dB[..., 0, 3], dB[..., 2, 3] = -2.0 * self.a_pl * l, 1.0
         d2B = np.zeros(n + (4, 4))
         d2B[..., 0, 3] = -2.0 * self.a_pl
-        cd, sd = np.cos(self.delta), np.sin(self.delta)
-        C = np.array([[1.0, 0, 0, 0], [0, cd, -sd, 0], [0, sd, cd, 0], [0, 0, 0, 1.0]])
+        C = frames.homogeneous(frames.rot_x(self.delta))
         return A, (B, dB, d2B), C, D
 
     def _M(self, m):

@@ -32,8 +32,8 @@ Frames (the figures of seed 002 are not in the text, so they are fixed here and 
   has its vertex at the design point Q, x_a along the tangent of the straight profile above
   (inclined at alpha_n to the tooth height), and y_a along the profile normal at Q, oriented
   from Q towards the pitch point P = (0, y0); |QP| = l (seed 002 sec. 2.7: l = cos(alpha_n)/P_n,
-  see :func:`nasa_l`). So the common normal at Q passes through P, and for a > 0 the centre of
-  curvature C (|QC| = 1/(2a), seed 002 eq 2.7.4) lies on the same ray beyond or before P. The
+  see :func:`vertex_pitch_distance`). So the common normal at Q passes through P, and for
+  a > 0 the centre of curvature C (|QC| = 1/(2a), seed 002 eq 2.7.4) lies on the same ray beyond or before P. The
   placement reproduces the principal curvatures of seed 002 sec. 2.5 (tested) when the pinion
   is generated on the side x_c < 0 and the gear on x_c > 0
   (:func:`gearrep.envelope.rack_generation_motion`, ``member_side``): Q lies at
@@ -49,9 +49,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .base import Surface, SurfacePoint
+from ..surface import Surface, SurfacePoint
 
-__all__ = ["RackCutter", "StraightRackCutter", "ParabolicRackCutter", "nasa_l"]
+__all__ = ["RackCutter", "StraightRackCutter", "ParabolicRackCutter", "vertex_pitch_distance"]
 
 
 def _angle(x, name, lo, hi, lo_open=True, hi_open=True):
@@ -77,9 +77,10 @@ def _side(side):
     return int(side)
 
 
-def nasa_l(alpha_n: float, P_n: float) -> float:
-    """Distance l = |QP| = cos(alpha_n) / P_n of seed 002 sec. 2.7 item 2 (P_n normal
-    diametral pitch, 1/in; l in inches)."""
+def vertex_pitch_distance(alpha_n: float, P_n: float) -> float:
+    """Distance l = |QP| from the vertex Q of the parabolic profile to the pitch point P,
+    cos(alpha_n) / P_n (seed 002 sec. 2.7 item 2; P_n normal diametral pitch, 1/in; l in
+    inches)."""
     _angle(alpha_n, "alpha_n", 0.0, np.pi / 2)
     if not (np.isfinite(P_n) and P_n > 0):
         raise ValueError(f"P_n (normal diametral pitch) must be finite and > 0, got {P_n!r}")
@@ -169,7 +170,8 @@ class ParabolicRackCutter(RackCutter):
         eq 2.5.2, 2.7.4); a > 0 bends the profile towards P; any finite value (a = 0 gives a
         straight profile offset by l from P)
     alpha_n : normal pressure angle, in (0, pi/2) rad
-    l : |QP| (length, finite, >= 0); seed 002 uses l = cos(alpha_n)/P_n (:func:`nasa_l`)
+    l : |QP| (length, finite, >= 0); seed 002 uses l = cos(alpha_n)/P_n
+        (:func:`vertex_pitch_distance`)
     beta, y0, side : as for :class:`StraightRackCutter`
     """
 

@@ -8,7 +8,7 @@ from ._pair import ContactPoints, GearPair, _mv
 
 
 def _fixed_frame_point(flank, u, v, R, origin=None):
-    from ..surfaces.base import SurfacePoint
+    from ..surface import SurfacePoint
 
     P = flank.evaluate(u, v)
     vecs = [_mv(R, x) for x in (P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv)]

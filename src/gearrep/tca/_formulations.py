@@ -6,12 +6,12 @@ from __future__ import annotations
 import numpy as np
 
 from ..solve import SolveResult, Status, newton
-from ..surfaces.base import cross
+from ..surface import cross
 from ._pair import ContactPoints, GearPair, _mv, _wrap, transmission_error
 
 
 def normal_derivatives(P, sign):
-    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surfaces.base.SurfacePoint` and its u- and
+    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surface.SurfacePoint` and its u- and
     v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v)."""
     N = cross(P.r_u, P.r_v)
     L = np.linalg.norm(N, axis=-1, keepdims=True)

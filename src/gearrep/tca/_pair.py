@@ -67,7 +67,7 @@ class GearPair:
 
     Parameters
     ----------
-    flank1, flank2 : surfaces (``gearrep.surfaces.base.Surface``); optional attributes ``lower``,
+    flank1, flank2 : surfaces (``gearrep.surface.Surface``); optional attributes ``lower``,
         ``upper`` (flank domain) and ``outward_sign``; the reduced formulation needs
         ``flank2.cylindrical`` (u = radius, v = axial coordinate)
     n1, n2 : numbers of teeth (ratio N1/N2 in the TE, angular pitches 2 pi / N)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..solve import SolveResult, Status, newton
-from ..surfaces.base import cross
+from ..surface import cross
 from ._formulations import conventional_system, newton_rows, reduced_unknowns, solve_contact
 from ._pair import GearPair
 

@@ -22,7 +22,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...frames import rot_z
-from ...surfaces.catt import CATTFlank, CATTGearData, RotatedSurface, middle_section_curvatures, turn_over
+from ...surface import RotatedSurface
+from ...surfaces.catt import CATTFlank, CATTGearData, middle_section_curvatures, turn_over
 
 __all__ = ["PAIRS", "PAIR_NAMES", "READINGS", "PRIMARY", "Mesh", "gear_data", "assemble", "path_limits",
            "contact_radii", "reading_to_mesh", "mesh_to_reading", "closed_form_ellipse", "pitch_point_closed_form",

@@ -34,7 +34,7 @@ from ... import curvature as _curv
 from ... import ellipse as _ellipse
 from ...frames import rot_z
 from ...solve import Status, status_names
-from ...surfaces.base import SurfacePoint
+from ...surface import SurfacePoint
 from ...units import ARCSEC
 from .assembly import Mesh, closed_form_ellipse
 from .model import eq20_like_indexed

@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from ...surfaces.base import fd_derivatives
+from ...surface import fd_derivatives
 from ...surfaces.catt import middle_section_curvatures
 from .assembly import PAIRS, PRIMARY, READINGS, assemble, mesh_to_reading, path_limits, pitch_point_closed_form, \
     reading_to_mesh, solve_cycle

@@ -17,7 +17,7 @@ from ...curvature import PrincipalCurvatures, principal_curvatures
 from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
 from ...surfaces.novikov import RackGeneratedFlank, WormGeneratedPinion, pitch_radius
-from ...surfaces.rack import nasa_l
+from ...surfaces.rack import vertex_pitch_distance
 from ...tca import GearPair, solve_contact
 from ...units import DEG
 from .design import design_beta
@@ -29,7 +29,7 @@ __all__ = ["basics", "make_flank", "point_curvatures", "report_principal", "line
 def basics(d: dict):
     """(P_n, alpha_n, beta, l) of the sec. 2.5 design: l = |QP| = cos(alpha_n)/P_n."""
     Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
-    return Pn, an, beta, nasa_l(an, Pn)
+    return Pn, an, beta, vertex_pitch_distance(an, Pn)
 
 
 def make_flank(d, a, alpha_n, l, beta, member, tol=1e-13, beta_rack=None) -> RackGeneratedFlank:

@@ -17,7 +17,7 @@ from scipy.optimize import brentq
 
 from ... import frames
 from ...solve import Status
-from ...surfaces.rack import nasa_l
+from ...surfaces.rack import vertex_pitch_distance
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC, DEG, MM_PER_IN
 from . import model
@@ -189,7 +189,7 @@ def sensitivity(s: dict, d: dict) -> pd.DataFrame:
     an12 = d["alpha_n_v12_deg"] * DEG
     versions = {1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
                 2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
-                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, nasa_l(an3, Pn), d["h_Pn"][3] / Pn)}
+                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, vertex_pitch_distance(an3, Pn), d["h_Pn"][3] / Pn)}
     steps = {"printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN, "0.001in": s["delta_E_table623_in"],
              "0.0001in": 0.0001}
     rows = []
@@ -248,7 +248,7 @@ def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
     b = d["beta_s54_deg"] * DEG
     a_pl, r_pw = d["a_pl_per_in"], d["r_pw_in"]
     a543 = model.a_phi_eq_5_4_3(d["a_c_printed_per_in"], d["a_t_printed_per_in"], a_pl, r_pw, an, b, Pn, d["N1"],
-                                d["N2"], nasa_l(an, Pn))
+                                d["N2"], vertex_pitch_distance(an, Pn))
     a5412 = model.a_phi_eq_5_4_12(a_pl, an, b, Pn, d["N1"], d["N2"])
     phi_end = np.pi / d["N1"]
     dl = model.delta_l_eq_5_4_7(s["misalignment_arcmin"] * ARCMIN, a_pl, r_pw, an, b)

@@ -355,7 +355,7 @@ def helical_studies(s: dict, design: Design, out: Collected) -> None:
 HELICAL_READINGS = [("uv2_uniform", 1.0, "true", "uniform", "five"), ("equations_six", 1.0, "true", "midpoint", "six"),
                     ("equations_drop_nz", 1.0, "true", "midpoint", "drop_nz"),
                     ("crown_x10", 10.0, "true", "midpoint", "five"), ("crown_x0.1", 0.1, "true", "midpoint", "five"),
-                    ("helix_eq58", 1.0, "thesis", "midpoint", "five")]
+                    ("helix_eq58", 1.0, "asin", "midpoint", "five")]
 
 
 def helical_sensitivity(s: dict, design: Design) -> list:

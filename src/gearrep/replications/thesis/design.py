@@ -104,7 +104,7 @@ def spur_pair(n1, n2, module, pressure_angle, face_width, *, crowning1=None, cro
 def helical_pair(n1, n2, module, pressure_angle, helix_angle, face_width, *, hand1=1, crowning1=None,
                  profile_crown1=0.0, profile_crown2=0.0, misalignment=None, helix_form="true") -> GearPair:
     """Standard helical pair (normal module and pressure angle, opposite hands; ``helix_form``
-    "true" helicoids or "thesis" eq 58 as printed)."""
+    "true" helicoids or "asin", eq 58 as printed)."""
     g1 = InvoluteGearData(n1, module, pressure_angle, face_width, helix_angle)
     g2 = InvoluteGearData(n2, module, pressure_angle, face_width, helix_angle)
     f1, f2 = mating_flanks(g1, g2, side=-1, hand1=hand1, crowning1=crowning1,

@@ -60,12 +60,12 @@ def l1_grid(p: dict, variant: str = "axial") -> tuple[np.ndarray, object]:
 
 
 def _oriented(c):
-    """Table columns from a SeedCurvatures record."""
+    """Table columns from a FlankCurvatures record."""
     return np.column_stack([c.k_s, c.e_s, c.k_q, c.e_q])
 
 
 def evaluate_rows(p: dict, flank: str, R_c: float, l: np.ndarray, variant: str = "axial"):
-    """(columns (n, 8): k_s, e_s, k_q, e_q; SeedCurvatures) at mid-face rows l."""
+    """(columns (n, 8): k_s, e_s, k_q, e_q; FlankCurvatures) at mid-face rows l."""
     c = gear(p, flank, R_c, variant).curvatures(l, 0.0)
     return _oriented(c), c
 
@@ -75,7 +75,7 @@ def direct_curvatures(p: dict, flank: str, R_c: float, l, psi=0.0):
     the hob normal; returns (k_along_Z_nearest, k_other) paired like k_s, k_q."""
     g = gear(p, flank, R_c)
     l, psi = np.broadcast_arrays(np.asarray(l, float), np.asarray(psi, float))
-    surf = g.surface("thesis", fd_step=(p["fd_step_l_mm"], p["fd_step_psi_rad"]))
+    surf = g.surface("tooth", fd_step=(p["fd_step_l_mm"], p["fd_step_psi_rad"]))
     pc = principal_curvatures(surf.evaluate(l.reshape(-1), psi.reshape(-1)))
     _, n_hob, _ = g.points(l.reshape(-1), psi.reshape(-1))
     s = np.sign(np.sum(pc.normal * n_hob, -1))
@@ -130,11 +130,11 @@ def detail(p: dict) -> pd.DataFrame:
                    "status": status_names(c.result.status)[i], "residual": c.result.residual[i],
                    "singular_measure": c.result.singular_measure[i],
                    "k_s_direct_per_mm": ks_a[i], "k_q_direct_per_mm": kq_a[i],
-                   "k_s_seed_method_per_mm": float(c.k_s_seed[i] if abs(c.k_s_seed[i] - c.k_s[i]) <= abs(c.k_q_seed[i] - c.k_s[i])
-                                                   else c.k_q_seed[i]),
-                   "k_q_seed_method_per_mm": float(c.k_q_seed[i] if abs(c.k_s_seed[i] - c.k_s[i]) <= abs(c.k_q_seed[i] - c.k_s[i])
-                                                   else c.k_s_seed[i]),
-                   "sigma_seed_deg": np.degrees(c.sigma_seed[i]),
+                   "k_s_seed_method_per_mm": float(c.k_s_two_parameter[i] if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
+                                                   else c.k_q_two_parameter[i]),
+                   "k_q_seed_method_per_mm": float(c.k_q_two_parameter[i] if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
+                                                   else c.k_s_two_parameter[i]),
+                   "sigma_seed_deg": np.degrees(c.sigma_two_parameter[i]),
                    "k_f_hob_per_mm": c.generated.k_f[i], "k_h_hob_per_mm": c.generated.k_h[i]}
             for j, q in enumerate(("k_s", "e_s_x", "e_s_y", "e_s_z", "k_q", "e_q_x", "e_q_y", "e_q_z")):
                 rec[f"{q}_grid"] = cg[i, j]

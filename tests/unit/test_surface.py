@@ -1,8 +1,9 @@
-"""Finite-difference derivatives of surfaces.base against a sphere's closed forms."""
+"""Finite-difference derivatives of gearrep.surface against a sphere's closed forms."""
 
 import numpy as np
+import pytest
 
-from gearrep.surfaces.base import Surface, fd_derivatives, unit
+from gearrep.surface import Surface, fd_derivatives, unit
 
 R = 7.0
 
@@ -40,9 +41,34 @@ def test_normal_orientation_and_flip():
 
 
 def test_cross_matches_numpy_with_broadcasting():
-    from gearrep.surfaces.base import cross
+    from gearrep.surface import cross
 
     rng = np.random.default_rng(0)
     a, b = rng.normal(size=(4, 1, 3)), rng.normal(size=(5, 3))
     np.testing.assert_array_equal(cross(a, b), np.cross(a, b))
     np.testing.assert_array_equal(cross([1.0, 0, 0], [0, 1.0, 0]), [0, 0, 1.0])
+
+
+def test_rotated_surface_moves_points_keeps_curvatures_and_passes_attributes():
+    from gearrep.curvature import principal_curvatures
+    from gearrep.frames import rot_x, rot_z
+    from gearrep.surface import RotatedSurface
+    from gearrep.surfaces.analytic import Torus
+
+    base = Torus(3.0, 1.0)
+    base.lower, base.upper, base.outward_sign = np.array([0.0, 0.0]), np.array([1.0, 2.0]), -1
+    Q, t = rot_z(0.4) @ rot_x(-1.1), np.array([1.0, -2.0, 0.5])
+    s = RotatedSurface(base, Q, t)
+    u, v = np.array([0.2, 1.4]), np.array([0.3, -2.0])
+    p, q = base.evaluate(u, v), s.evaluate(u, v)
+    np.testing.assert_allclose(q.r, p.r @ Q.T + t, atol=1e-14)
+    np.testing.assert_allclose(s.position(u, v), q.r, atol=0)
+    for f in ("r_u", "r_v", "r_uu", "r_uv", "r_vv"):
+        np.testing.assert_allclose(getattr(q, f), getattr(p, f) @ Q.T, atol=1e-14)
+    pb, pq = principal_curvatures(p), principal_curvatures(q)
+    np.testing.assert_allclose(pq.k1, pb.k1, rtol=1e-13)
+    np.testing.assert_allclose(pq.k2, pb.k2, rtol=1e-13)
+    np.testing.assert_allclose(pq.normal, pb.normal @ Q.T, atol=1e-14)
+    assert s.outward_sign == -1 and s.upper[1] == 2.0 and not hasattr(s, "side")
+    with pytest.raises(ValueError, match="proper rotation"):
+        RotatedSurface(base, np.diag([1.0, 1.0, -1.0]))

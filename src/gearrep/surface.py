@@ -15,6 +15,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import frames
+
+__all__ = ["Surface", "SurfacePoint", "RotatedSurface", "cross", "fd_derivatives", "unit"]
+
 
 def unit(v: np.ndarray, axis: int = -1) -> np.ndarray:
     """Vectors scaled to unit length along ``axis``."""
@@ -70,7 +74,7 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3) -> Surf
     Truncation error is O(h^4) and rounding error O(eps/h) for first and O(eps/h^2) for second
     derivatives. For a surface whose parameters vary on a scale L (choose ``h ~ 1e-3 L``), the
     relative error is about 1e-12 for first and 1e-10 for second derivatives, which keeps
-    principal curvatures accurate to ~1e-9 relative (tested in tests/unit/test_surfaces_base.py).
+    principal curvatures accurate to ~1e-9 relative (tested in tests/unit/test_surface.py).
     """
     u = np.asarray(u, dtype=float)
     v = np.asarray(v, dtype=float)
@@ -114,3 +118,40 @@ class Surface:
     def normal(self, u, v) -> np.ndarray:
         """Unit normal (r_u x r_v)/|r_u x r_v| at (u, v)."""
         return self.evaluate(u, v).normal
+
+
+class RotatedSurface(Surface):
+    """A surface carried by a fixed rotation Q (3 x 3, proper) and translation t: r' = Q r + t.
+
+    Derivatives rotate with Q, so the normal unit(r_u x r_v) rotates too and curvatures are
+    unchanged. The attributes ``outward_sign``, ``lower``, ``upper``, ``gear``, ``side`` and
+    ``fd_step`` of the wrapped surface, where present, and :meth:`contains` pass through.
+    """
+
+    _PASSED = ("outward_sign", "lower", "upper", "gear", "side", "fd_step")
+
+    def __init__(self, surface: Surface, Q, t=(0.0, 0.0, 0.0)):
+        Q = np.asarray(Q, float)
+        if Q.shape != (3, 3) or not frames.is_rigid(Q, tol=1e-12):
+            raise ValueError("Q must be a 3x3 proper rotation matrix (Q Q^T = I, det Q = +1)")
+        self.surface = surface
+        self.Q = Q
+        self.t = np.asarray(t, float).reshape(3)
+        for name in self._PASSED:
+            if hasattr(surface, name):
+                setattr(self, name, getattr(surface, name))
+
+    def _q(self, v):
+        return np.einsum("ij,...j->...i", self.Q, v)
+
+    def position(self, u, v):
+        return self._q(self.surface.position(u, v)) + self.t
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        P = self.surface.evaluate(u, v)
+        return SurfacePoint(self._q(P.r) + self.t, self._q(P.r_u), self._q(P.r_v), self._q(P.r_uu),
+                            self._q(P.r_uv), self._q(P.r_vv))
+
+    def contains(self, u, v, tol: float = 1e-9):
+        """The wrapped surface's ``contains`` (parameters are unchanged by the motion)."""
+        return self.surface.contains(u, v, tol)
