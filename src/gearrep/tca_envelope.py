@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import copy
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Any
 
 import numpy as np
 
@@ -27,8 +27,10 @@ from .envelope import local_geometry
 from .frames import rot_z
 from .solve import SolveResult, Status, newton, status_names
 
-if TYPE_CHECKING:  # annotations only (no core module imports gearrep.surfaces)
-    from .surfaces.hob import GeneratedGear, ZAHob
+# The flanks are gearrep.surfaces.hob.GeneratedGear objects and the tool a ZAHob; the core does not
+# import the surface families (not even for annotations), so they are typed by what is used.
+_GeneratedGear = Any
+_ZAHob = Any
 
 __all__ = ["Flank", "make_flank", "member_geometry", "dropped_component", "tangency_system", "ContactPath",
            "solve_points", "predict", "hob_pitch_l", "require", "trace_path", "physical_contact"]
@@ -42,7 +44,7 @@ class Flank:
     into the member frame (the tooth-centred frame ``GeneratedGear.to_tooth_frame``, turned by
     ``extra_turn_rad`` about Z to face the other member)."""
 
-    gear: GeneratedGear
+    gear: _GeneratedGear
     placement: np.ndarray
     tool: object
     motion: object
@@ -61,7 +63,7 @@ class Flank:
         return float(self.gear.pitch_radius_mm + self.gear.hob.module_mm)
 
 
-def make_flank(gear: GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
+def make_flank(gear: _GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
     """Wrap a generated flank (a :class:`gearrep.surfaces.hob.GeneratedGear`) for the TCA."""
     if not all(hasattr(gear, a) for a in ("envelope", "to_tooth_frame", "solve", "outward", "hob")):
         raise ValueError("gear must be a two-parameter generated flank (gearrep.surfaces.hob.GeneratedGear)")
@@ -241,7 +243,7 @@ def predict(pair, x, phi1, phi1_new) -> np.ndarray:
     return x + dx * (np.asarray(phi1_new, float) - phi1)[:, None]
 
 
-def hob_pitch_l(hob: ZAHob) -> float:
+def hob_pitch_l(hob: _ZAHob) -> float:
     """Hob parameter l [mm] of the point on the hob's pitch line (axial-section profile)."""
     return (hob.pitch_radius_mm - hob.apex_radius_mm) / np.cos(hob.pressure_angle_rad)
 

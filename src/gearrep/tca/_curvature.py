@@ -6,6 +6,8 @@ import numpy as np
 
 from ._pair import ContactPoints, GearPair, _mv
 
+__all__ = ["contact_curvatures", "contact_ellipse"]
+
 
 def _fixed_frame_point(flank, u, v, R, origin=None):
     from ..surface import SurfacePoint

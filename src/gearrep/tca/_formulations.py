@@ -9,6 +9,8 @@ from ..solve import SolveResult, Status, newton
 from ..surface import cross
 from ._pair import ContactPoints, GearPair, _mv, _wrap, transmission_error
 
+__all__ = ["normal_derivatives", "conventional_system", "newton_rows", "default_start", "solve_contact", "reduced_unknowns", "trace_path"]
+
 
 def normal_derivatives(P, sign):
     """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surface.SurfacePoint` and its u- and

@@ -10,6 +10,8 @@ from ..frames import rot_x, rot_y, rot_z
 from ..solve import Status, status_names
 from ..units import ARCSEC
 
+__all__ = ["Misalignment", "GearPair", "transmission_error", "ContactPoints"]
+
 
 def _mv(M, v):
     return np.einsum("...ij,...j->...i", M, v)

@@ -21,6 +21,8 @@ from ..surface import cross
 from ._formulations import conventional_system, newton_rows, reduced_unknowns, solve_contact
 from ._pair import GearPair
 
+__all__ = ["CONVENTIONAL_VARIANTS", "REDUCED_VARIANTS", "flank_boxes", "solve_conventional", "seed_from_reduced", "guard_reduced_starts", "transverse_stage", "robust_start", "solve_reduced", "solve_variant", "line_of_action_start", "line_of_action_starts", "draw_starts"]
+
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
 REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
 
