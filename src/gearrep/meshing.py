@@ -188,10 +188,7 @@ def engagement_limits(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1
             # a different boundary was crossed first: try all, keep the one nearest the last inside point
             best = None
             for jj in range(8):
-                try:
-                    p2, c2, r2 = _boundary_solve(pair, last, jj, v1, tol=tol)
-                except Exception:  # pragma: no cover - defensive
-                    continue
+                p2, c2, r2 = _boundary_solve(pair, last, jj, v1, tol=tol)  # reports, never raises
                 lo_, hi_ = sorted((last.phi1[0], first_out.phi1[0]))
                 if r2.status[0] == Status.CONVERGED and lo_ - 1e-9 <= p2 <= hi_ + 1e-9:
                     if best is None or abs(p2 - last.phi1[0]) < abs(best[0] - last.phi1[0]):

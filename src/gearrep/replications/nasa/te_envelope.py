@@ -1,9 +1,7 @@
-"""Meshing-cycle TE upper envelope of the worm-ground pinion (seed 002, sec. 5.5).
-
-This duplicates the meshing-cycle envelope of :mod:`gearrep.meshing` (owned by the TCA core) and
-is kept apart so that it can be routed through ``gearrep.meshing`` once that module has a general
-upper-envelope function: inputs are tooth pair 0's TE and contact position sampled on a phi1
-grid, the cycle 2 pi / N1, the face width and the drive sign; nothing here is paper-specific."""
+"""Meshing-cycle TE of the worm-ground pinion (seed 002, sec. 5.5) from one tooth pair's sampled
+TE: the neighbouring pairs and their upper envelope come from :mod:`gearrep.meshing`
+(``pair_te_curves``, ``upper_envelope``); this module only adds the evaluation angles that
+matter here (the face-edge hand-overs and the crossings of neighbouring curves)."""
 
 from __future__ import annotations
 
@@ -11,6 +9,8 @@ import numpy as np
 import pandas as pd
 from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
+
+from ... import meshing
 
 __all__ = ["te_envelope"]
 
@@ -29,16 +29,6 @@ def te_envelope(phi, te, z, per, face_width, drive, n_fine=400):
     fte, fz = CubicSpline(phi[ok], te[ok]), CubicSpline(phi[ok], z[ok])
     lo_d, hi_d = phi[ok].min(), phi[ok].max()
     ks = range(-3, 4)
-
-    def cands(x):
-        out = np.full((len(ks), np.size(x)), np.nan)
-        for i, k in enumerate(ks):
-            y = np.atleast_1d(x) - k * per
-            inside = (y >= lo_d) & (y <= hi_d)
-            val = np.where(inside, fte(np.clip(y, lo_d, hi_d)), np.nan)
-            on = inside & (np.abs(fz(np.clip(y, lo_d, hi_d))) <= 0.5 * face_width + 1e-12)
-            out[i] = np.where(on, val, np.nan)
-        return out
 
     x = np.linspace(0.0, per, n_fine + 1)
     extra = []
@@ -64,13 +54,14 @@ def te_envelope(phi, te, z, per, face_width, drive, n_fine=400):
             if 0.0 <= y <= per:
                 extra.append(y)
     x = np.unique(np.concatenate([x, np.array(extra, float)]))
-    c = cands(x)
-    anyc = np.isfinite(c).any(axis=0)
-    with np.errstate(all="ignore"):
-        pick = np.nanargmax(np.where(np.isfinite(c), c, -np.inf), axis=0) if drive > 0 else \
-            np.nanargmin(np.where(np.isfinite(c), c, np.inf), axis=0)
-    val = np.where(anyc, c[pick, np.arange(len(x))], np.nan)
-    tooth = np.where(anyc, np.array(list(ks))[pick], -99)
+    # the pair in contact: the upper envelope of the pairs' TE (of -TE for the opposite drive)
+    sign = 1.0 if drive > 0 else -1.0
+    curves = meshing.pair_te_curves(phi[ok], sign * te[ok], per, x, pairs=ks, interpolation="cubic", tol=0.0,
+                                    engaged=lambda q: np.abs(fz(q)) <= 0.5 * face_width + 1e-12)
+    env, lead = meshing.upper_envelope(curves)
+    anyc = np.isfinite(env)
+    val = sign * env
+    tooth = np.where(anyc, np.array(list(ks))[lead], -99)
     df = pd.DataFrame(dict(phi1_rad=x, te_arcsec=val, tooth=tooth))
     gaps = int((~anyc).sum())
     return (float(np.nanmax(val) - np.nanmin(val)) if anyc.any() else np.nan), df, gaps
