@@ -281,7 +281,11 @@ def file_entry(path) -> dict:
             f"load() would ignore it"
         )
     raw = path.read_bytes()
-    records = list(csv.reader(io.StringIO(raw.decode("utf-8"), newline="")))
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise PublishedDataError(f"{path.name}: not UTF-8 text: {exc}") from None
+    records = [r for r in csv.reader(io.StringIO(text, newline="")) if r]  # blank lines are no rows
     header, rows = (records[0], records[1:]) if records else ([], [])
     if "seed" not in header:
         raise PublishedDataError(f"{path.name}: no 'seed' column in the header row {header}")
@@ -344,7 +348,7 @@ def _difference(listed: pd.Series, path: Path) -> str | None:
         return f"{name}: emptied (0 bytes; {MANIFEST_NAME} lists {rows} rows)"
     try:
         now = file_entry(path)
-    except (PublishedDataError, UnicodeDecodeError) as exc:
+    except PublishedDataError as exc:
         return f"{name}: unreadable ({exc})"
     if now["sha256"] == listed["sha256"]:
         return None

@@ -146,3 +146,15 @@ def test_command_line_writes_and_verifies(data):
     done = subprocess.run([*env_cmd, "--verify", str(data)], capture_output=True, text=True, env=env)
     assert done.returncode == 1
     assert VICTIM in done.stderr and "Traceback" not in done.stderr
+
+
+def test_blank_line_is_no_row_but_still_a_change(data):
+    path = data / VICTIM
+    path.write_text(path.read_text(encoding="utf-8") + "\n", encoding="utf-8")
+    assert pub.file_entry(path)["rows"] == pub.read_manifest(data).set_index("file").loc[VICTIM, "rows"]
+    _refused(data, VICTIM, "altered")
+
+
+def test_non_utf8_file_is_named(data):
+    (data / VICTIM).write_bytes((data / VICTIM).read_bytes() + b"\xff\n")
+    _refused(data, VICTIM, "unreadable", "UTF-8")
