@@ -7,12 +7,33 @@ CORES  ?= 2
 export PATH := $(abspath $(BIN)):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: setup reproduce test test-all stress bench screenshot clean
+# The pinned environment: exact versions and hashes of every dependency (core + test extras)
+# and of the build backend that installs gearrep itself (setuptools, wheel).
+LOCK   := requirements.lock
+# the tool that writes it (installed only into a throwaway venv by `make lock`)
+PIP_TOOLS := pip-tools==7.6.2
+# the Python the lock is made for (the project's target version)
+LOCK_PYTHON ?= python3.11
+PIP    := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-$(STAMP): pyproject.toml
+.PHONY: setup reproduce test test-all stress bench screenshot clean lock
+
+$(STAMP): $(LOCK) pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	$(PIP) --require-hashes -r $(LOCK)
+	$(PIP) --no-deps --no-build-isolation -e .
 	touch $(STAMP)
+
+# Regenerate the lock from pyproject.toml for $(LOCK_PYTHON) (the target version), with pip-tools
+# in a throwaway venv. Pins already in the lock are kept where pyproject.toml still allows them;
+# `make lock UPGRADE=1` moves every package to the newest version allowed.
+lock:
+	set -e; tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	$(LOCK_PYTHON) -m venv "$$tmp/venv"; \
+	"$$tmp/venv/bin/python" -m pip install --quiet --disable-pip-version-check $(PIP_TOOLS); \
+	"$$tmp/venv/bin/pip-compile" --quiet --generate-hashes --allow-unsafe --strip-extras \
+	    --extra test --build-deps-for editable --no-emit-index-url --no-emit-find-links $(if $(UPGRADE),--upgrade) \
+	    --output-file $(LOCK) pyproject.toml
 
 setup: $(STAMP)
 

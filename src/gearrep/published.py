@@ -10,8 +10,13 @@ from the printed string so that a mistyped precision field is caught by the test
 
 from __future__ import annotations
 
+import csv
+import fnmatch
+import hashlib
+import io
 import math
 import re
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -79,13 +84,27 @@ def printed_precision(printed: str) -> tuple[str, int]:
     return "decimals", len(mant.partition(".")[2])
 
 
+def _read_csv(path: Path) -> pd.DataFrame:
+    """One published CSV with every cell as its string; a file pandas cannot read, an empty file
+    and a header-only file are refused naming the file."""
+    try:
+        df = pd.read_csv(path, dtype=str, keep_default_na=False)
+    except pd.errors.EmptyDataError as exc:
+        raise PublishedDataError(f"{path.name}: the file is empty (not even a header row)") from exc
+    except (pd.errors.ParserError, UnicodeDecodeError) as exc:
+        raise PublishedDataError(f"{path.name}: not a readable UTF-8 CSV file: {exc}") from exc
+    if df.empty:
+        raise PublishedDataError(f"{path.name}: a header row but no data rows")
+    return df
+
+
 def _read(directory: Path, pattern: str, columns: list[str]) -> pd.DataFrame:
     frames = []
     for path in sorted(directory.glob(pattern)):
-        df = pd.read_csv(path, dtype=str, keep_default_na=False)
+        df = _read_csv(path)
         missing = [c for c in columns if c not in df.columns]
         if missing:
-            raise PublishedDataError(f"{path.name}: missing columns {missing}")
+            raise PublishedDataError(f"{path.name}: missing required column(s) {missing}")
         df = df[columns].copy()
         df.insert(0, "file", path.name)
         frames.append(df)
@@ -94,75 +113,106 @@ def _read(directory: Path, pattern: str, columns: list[str]) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)
 
 
-def _to_float(df: pd.DataFrame, col: str) -> pd.Series:
+def _where(row: pd.Series, n: int) -> str:
+    """``<file> id='<id>'`` of a data row (``<file> data row <n>`` when it has no id)."""
+    rid = str(row["id"]).strip() if "id" in row.index else ""
+    return f"{row['file']} id={rid!r}" if rid else f"{row['file']} data row {n}"
+
+
+def _number(where: str, column: str, text, kind=float):
+    """``kind(text)`` or a PublishedDataError naming the row and column."""
     try:
-        return df[col].astype(float)
-    except ValueError as exc:
-        raise PublishedDataError(f"column {col!r}: {exc}") from exc
+        return kind(text)
+    except (TypeError, ValueError):
+        what = "an integer" if kind is int else "a number"
+        raise PublishedDataError(f"{where} column {column!r}: {text!r} is not {what}") from None
+
+
+def _row_numbers(df: pd.DataFrame) -> pd.Series:
+    """1-based data-row number of each row within its file (the header is not counted)."""
+    return df.groupby("file", sort=False).cumcount() + 1
 
 
 def validate_values(values: pd.DataFrame) -> pd.DataFrame:
-    """Type and validate a values frame; raises PublishedDataError naming file, id and field."""
+    """Type and validate a values frame; raises PublishedDataError naming file, id and column."""
     v = values.copy()
-    for i, r in v.iterrows():
-        where = f"{r['file']} id={r['id']!r}"
+    for (_, r), n in zip(v.iterrows(), _row_numbers(v)):
+        where = _where(r, n)
+        if not str(r["id"]).strip():
+            raise PublishedDataError(f"{where} column 'id': empty id")
         if r["seed"] not in SEEDS:
-            raise PublishedDataError(f"{where}: seed {r['seed']!r} not in {SEEDS}")
+            raise PublishedDataError(f"{where} column 'seed': {r['seed']!r} not in {SEEDS}")
         if r["unit"] not in KNOWN_UNITS:
-            raise PublishedDataError(f"{where}: unit {r['unit']!r} not in {sorted(KNOWN_UNITS)}")
+            raise PublishedDataError(f"{where} column 'unit': {r['unit']!r} not in {sorted(KNOWN_UNITS)}")
         if r["precision_kind"] not in PRECISION_KINDS:
-            raise PublishedDataError(f"{where}: precision_kind {r['precision_kind']!r} not in {PRECISION_KINDS}")
+            raise PublishedDataError(
+                f"{where} column 'precision_kind': {r['precision_kind']!r} not in {PRECISION_KINDS}"
+            )
         if r["rounding"] not in ROUNDINGS:
-            raise PublishedDataError(f"{where}: rounding {r['rounding']!r} not in {ROUNDINGS}")
-        kind, prec = printed_precision(r["printed"])
-        if (kind, prec) != (r["precision_kind"], int(r["precision"])):
+            raise PublishedDataError(f"{where} column 'rounding': {r['rounding']!r} not in {ROUNDINGS}")
+        _number(where, "line", r["line"], int)
+        try:
+            kind, prec = printed_precision(r["printed"])
+        except PublishedDataError as exc:
+            raise PublishedDataError(f"{where} column 'printed': {exc}") from None
+        if (kind, prec) != (r["precision_kind"], _number(where, "precision", r["precision"], int)):
             raise PublishedDataError(
                 f"{where}: printed {r['printed']!r} implies {kind}={prec}, file says "
                 f"{r['precision_kind']}={r['precision']}"
             )
-        if not math.isclose(float(r["printed"]), float(r["value"]), rel_tol=1e-12, abs_tol=0.0):
-            raise PublishedDataError(f"{where}: value {r['value']} differs from printed {r['printed']}")
+        value = _number(where, "value", r["value"])
+        if not math.isclose(float(r["printed"]), value, rel_tol=1e-12, abs_tol=0.0):
+            raise PublishedDataError(f"{where} column 'value': {r['value']} differs from printed {r['printed']}")
         if not r["row"] and not r["quantity"]:
-            raise PublishedDataError(f"{where}: empty row and quantity")
+            raise PublishedDataError(f"{where} columns 'row', 'quantity': both empty")
     dup = v["id"][v["id"].duplicated()]
     if len(dup):
         raise PublishedDataError(f"duplicate ids: {sorted(set(dup))[:10]}")
-    v["value"] = _to_float(v, "value")
+    v["value"] = v["value"].astype(float)
     v["precision"] = v["precision"].astype(int)
     v["line"] = v["line"].astype(int)
     return v
 
 
 def validate_params(params: pd.DataFrame) -> pd.DataFrame:
+    """Type and validate a params frame; raises PublishedDataError naming file, example/parameter
+    and column."""
     p = params.copy()
-    for _, r in p.iterrows():
-        where = f"{r['file']} {r['example']}/{r['parameter']}"
+    blank = p["value"].str.strip() == ""
+    for (_, r), n in zip(p.iterrows(), _row_numbers(p)):
+        where = f"{r['file']} {r['example']}/{r['parameter']} (data row {n})"
         if r["seed"] not in SEEDS:
-            raise PublishedDataError(f"{where}: seed {r['seed']!r} not in {SEEDS}")
+            raise PublishedDataError(f"{where} column 'seed': {r['seed']!r} not in {SEEDS}")
         if r["unit"] not in KNOWN_UNITS:
-            raise PublishedDataError(f"{where}: unit {r['unit']!r} not in {sorted(KNOWN_UNITS)}")
+            raise PublishedDataError(f"{where} column 'unit': {r['unit']!r} not in {sorted(KNOWN_UNITS)}")
+        _number(where, "line", r["line"], int)
+        if str(r["value"]).strip():
+            _number(where, "value", r["value"])
+        elif not str(r["notes"]).strip():
+            # a parameter the text implies but does not print has an empty value (NaN) and a note
+            raise PublishedDataError(f"{where} column 'value': empty value needs a note")
     key = p[["file", "example", "parameter"]].apply(tuple, axis=1)
     if key.duplicated().any():
         raise PublishedDataError(f"duplicate parameters: {list(key[key.duplicated()])[:10]}")
-    blank = p["value"].str.strip() == ""
-    unexplained = p[blank & (p["notes"].str.strip() == "")]
-    if len(unexplained):
-        r = unexplained.iloc[0]
-        raise PublishedDataError(f"{r['file']} {r['example']}/{r['parameter']}: empty value needs a note")
-    # a parameter the text implies but does not print has an empty value (NaN) and a note
-    p["value"] = _to_float(p.assign(value=p["value"].where(~blank, "nan")), "value")
+    p["value"] = p["value"].where(~blank, "nan").astype(float)
     p["line"] = p["line"].astype(int)
     return p
 
 
 def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
+    """Type and validate a claims frame; raises PublishedDataError naming file, id and column."""
     c = claims.copy()
-    for _, r in c.iterrows():
-        where = f"{r['file']} id={r['id']!r}"
+    for (_, r), n in zip(c.iterrows(), _row_numbers(c)):
+        where = _where(r, n)
+        if not str(r["id"]).strip():
+            raise PublishedDataError(f"{where} column 'id': empty id")
+        if r["seed"] not in SEEDS:
+            raise PublishedDataError(f"{where} column 'seed': {r['seed']!r} not in {SEEDS}")
         if r["kind"] not in CLAIM_KINDS:
-            raise PublishedDataError(f"{where}: kind {r['kind']!r} not in {CLAIM_KINDS}")
+            raise PublishedDataError(f"{where} column 'kind': {r['kind']!r} not in {CLAIM_KINDS}")
         if not r["statement"].strip():
-            raise PublishedDataError(f"{where}: empty statement")
+            raise PublishedDataError(f"{where} column 'statement': empty statement")
+        _number(where, "line", r["line"], int)
     if c["id"].duplicated().any():
         raise PublishedDataError(f"duplicate claim ids: {sorted(set(c['id'][c['id'].duplicated()]))[:10]}")
     c["line"] = c["line"].astype(int)
@@ -203,3 +253,177 @@ def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> 
         raise KeyError(f"no parameters for file={file!r} example={example!r}")
     return dict(zip(sel["parameter"], sel["value"]))
 
+
+
+# ----------------------------------------------------------------------------- manifest
+
+#: The manifest of a published-data directory: one row per data file.
+MANIFEST_NAME = "MANIFEST.csv"
+#: The data files :func:`load` reads, by kind.
+DATA_PATTERNS = {"values": "values_*.csv", "params": "params_*.csv", "claims": "claims_*.csv"}
+MANIFEST_COLUMNS = ["file", "kind", "sha256", "bytes", "rows", *(f"rows_{s}" for s in SEEDS)]
+_COUNT_COLUMNS = ["bytes", "rows", *(f"rows_{s}" for s in SEEDS)]
+_REGENERATE = "python -m gearrep.published --write-manifest"
+
+
+def _kind(name: str) -> str | None:
+    return next((k for k, pat in DATA_PATTERNS.items() if fnmatch.fnmatchcase(name, pat)), None)
+
+
+def _data_files(directory: Path) -> list[Path]:
+    """Every CSV of ``directory`` but the manifest: the files a manifest must list."""
+    return sorted(p for p in directory.glob("*.csv") if p.name != MANIFEST_NAME)
+
+
+def file_entry(path) -> dict:
+    """The manifest row of one data file: kind, sha256 and size of its bytes, number of data rows
+    (the header not counted, quoted line breaks inside a field not splitting a row) and the
+    number of rows of each seed."""
+    path = Path(path)
+    kind = _kind(path.name)
+    if kind is None:
+        raise PublishedDataError(
+            f"{path.name}: not a published-data file name ({', '.join(DATA_PATTERNS.values())}); "
+            f"load() would ignore it"
+        )
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise PublishedDataError(f"{path.name}: not UTF-8 text: {exc}") from None
+    records = [r for r in csv.reader(io.StringIO(text, newline="")) if r]  # blank lines are no rows
+    header, rows = (records[0], records[1:]) if records else ([], [])
+    if "seed" not in header:
+        raise PublishedDataError(f"{path.name}: no 'seed' column in the header row {header}")
+    col = header.index("seed")
+    seeds = [r[col] if col < len(r) else "" for r in rows]
+    return {
+        "file": path.name,
+        "kind": kind,
+        "sha256": hashlib.sha256(raw).hexdigest(),
+        "bytes": len(raw),
+        "rows": len(rows),
+        **{f"rows_{s}": seeds.count(s) for s in SEEDS},
+    }
+
+
+def build_manifest(directory) -> pd.DataFrame:
+    """The manifest of a published-data directory (:data:`MANIFEST_COLUMNS`, one row per file,
+    sorted by file name)."""
+    d = Path(directory)
+    if not d.is_dir():
+        raise PublishedDataError(f"published-data directory {d} does not exist")
+    entries = [file_entry(p) for p in _data_files(d)]
+    if not entries:
+        raise PublishedDataError(f"{d}: no published-data files")
+    return pd.DataFrame(entries, columns=MANIFEST_COLUMNS)
+
+
+def write_manifest(directory) -> Path:
+    """(Re)write ``<directory>/MANIFEST.csv`` from the files as they are; returns its path."""
+    d = Path(directory)
+    manifest = build_manifest(d)
+    out = d / MANIFEST_NAME
+    manifest.to_csv(out, index=False, lineterminator="\n")
+    return out
+
+
+def read_manifest(directory) -> pd.DataFrame:
+    """``<directory>/MANIFEST.csv`` as a frame (counts as int)."""
+    path = Path(directory) / MANIFEST_NAME
+    if not path.is_file():
+        raise PublishedDataError(f"{path}: no manifest; write it with `{_REGENERATE} {directory}`")
+    m = _read_csv(path)
+    missing = [c for c in MANIFEST_COLUMNS if c not in m.columns]
+    if missing:
+        raise PublishedDataError(f"{path.name}: missing required column(s) {missing}")
+    for (_, r), n in zip(m.iterrows(), range(1, len(m) + 1)):
+        for c in _COUNT_COLUMNS:
+            _number(f"{path.name} file={r['file']!r} (data row {n})", c, r[c], int)
+    if m["file"].duplicated().any():
+        raise PublishedDataError(f"{path.name}: files listed twice: {sorted(set(m['file'][m['file'].duplicated()]))}")
+    return m.astype({c: int for c in _COUNT_COLUMNS})[MANIFEST_COLUMNS]
+
+
+def _difference(listed: pd.Series, path: Path) -> str | None:
+    """What is wrong with one listed file (None if it matches its manifest row)."""
+    name, rows = listed["file"], int(listed["rows"])
+    if not path.is_file():
+        return f"{name}: listed in {MANIFEST_NAME} ({rows} rows) but missing"
+    if path.stat().st_size == 0:
+        return f"{name}: emptied (0 bytes; {MANIFEST_NAME} lists {rows} rows)"
+    try:
+        now = file_entry(path)
+    except PublishedDataError as exc:
+        return f"{name}: unreadable ({exc})"
+    if now["sha256"] == listed["sha256"]:
+        return None
+    per_seed = ", ".join(
+        f"seed {s} {listed[f'rows_{s}']} -> {now[f'rows_{s}']}"
+        for s in SEEDS if now[f"rows_{s}"] != int(listed[f"rows_{s}"])
+    )
+    seeds = f" ({per_seed})" if per_seed else ""
+    if now["rows"] == 0:
+        return f"{name}: cut to its header row ({MANIFEST_NAME} lists {rows} rows)"
+    if now["rows"] < rows:
+        return f"{name}: shrunk from {rows} to {now['rows']} rows{seeds}"
+    if now["rows"] > rows:
+        return f"{name}: grown from {rows} to {now['rows']} rows{seeds}"
+    return f"{name}: altered (same {rows} rows{seeds}, sha256 {now['sha256'][:12]}... is not {listed['sha256'][:12]}...)"
+
+
+def verify_manifest(directory, manifest: pd.DataFrame | None = None) -> pd.DataFrame:
+    """Check a published-data directory against its manifest (``<directory>/MANIFEST.csv``
+    unless ``manifest`` is given): every listed file present with the listed checksum, and no
+    CSV that the manifest does not list. Raises one PublishedDataError naming every file that
+    is missing, emptied, cut to its header, shrunk, grown, altered or unlisted; returns the
+    manifest when all match."""
+    d = Path(directory)
+    if not d.is_dir():
+        raise PublishedDataError(f"published-data directory {d} does not exist")
+    m = read_manifest(d) if manifest is None else manifest
+    problems = [msg for _, r in m.iterrows() if (msg := _difference(r, d / r["file"]))]
+    listed = set(m["file"])
+    problems += [f"{p.name}: not listed in {MANIFEST_NAME}" for p in _data_files(d) if p.name not in listed]
+    if problems:
+        raise PublishedDataError(
+            f"published data in {d} differ from {MANIFEST_NAME}:\n  " + "\n  ".join(problems)
+            + f"\nIf the change is deliberate, run `{_REGENERATE} {d}` and commit the manifest "
+            "with the data."
+        )
+    return m
+
+
+def scored_rows_per_seed(manifest: pd.DataFrame) -> dict[str, int]:
+    """``{seed: rows}`` of the values and claims files: the scorecard has one row for each."""
+    scored = manifest[manifest["kind"].isin(["values", "claims"])]
+    return {s: int(scored[f"rows_{s}"].astype(int).sum()) for s in SEEDS}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m gearrep.published --write-manifest DIR`` / ``--verify DIR``."""
+    import argparse
+
+    ap = argparse.ArgumentParser(prog="python -m gearrep.published", description=main.__doc__)
+    group = ap.add_mutually_exclusive_group(required=True)
+    group.add_argument("--write-manifest", metavar="DIR", help=f"(re)write DIR/{MANIFEST_NAME}")
+    group.add_argument("--verify", metavar="DIR", help=f"check DIR against DIR/{MANIFEST_NAME} and load it")
+    args = ap.parse_args(argv)
+    try:
+        if args.write_manifest:
+            out = write_manifest(args.write_manifest)
+            m = read_manifest(args.write_manifest)
+            print(f"wrote {out}: {len(m)} files, {int(m['rows'].sum())} rows; scored rows per seed "
+                  f"{scored_rows_per_seed(m)}")
+        else:
+            m = verify_manifest(args.verify)
+            load(args.verify)
+            print(f"{args.verify}: {len(m)} files match {MANIFEST_NAME} and load")
+    except PublishedDataError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

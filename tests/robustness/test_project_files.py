@@ -1,0 +1,85 @@
+"""The files around the code: licence, citation metadata, changelog, the pinned environment and
+Snakemake's default workflow profile agree with pyproject.toml and with each other."""
+
+import re
+import tomllib
+
+import pytest
+import yaml
+from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
+
+from conftest import ROOT
+from gearrep import published as pub
+
+PYPROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+LOCK = ROOT / "requirements.lock"
+
+
+def _lock_pins() -> dict[str, tuple[str, int]]:
+    """{canonical name: (version, number of hashes)} of requirements.lock."""
+    pins, name = {}, None
+    for line in LOCK.read_text().splitlines():
+        m = re.match(r"^([A-Za-z0-9][A-Za-z0-9._-]*)==([^ \\]+)", line)
+        if m:
+            name = canonicalize_name(m.group(1))
+            pins[name] = (m.group(2), 0)
+        elif name and line.strip().startswith("--hash=sha256:"):
+            version, n = pins[name]
+            pins[name] = (version, n + 1)
+    return pins
+
+
+def test_license_is_the_mit_text_pyproject_names():
+    text = (ROOT / "LICENSE").read_text()
+    assert PYPROJECT["license"] == {"text": "MIT"}
+    assert text.startswith("MIT License\n\nCopyright (c) 2026 the gearrep developers\n")
+    assert 'THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND' in text
+
+
+def test_citation_names_this_version_and_the_four_documents():
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    assert cff["cff-version"] == "1.2.0"
+    assert cff["title"] == PYPROJECT["name"]
+    assert cff["version"] == PYPROJECT["version"]
+    assert cff["license"] == "MIT"
+    seeds = [re.search(r"Seed (\d{3}) of data/published", ref["notes"]).group(1) for ref in cff["references"]]
+    assert seeds == list(pub.SEEDS)
+    for ref in cff["references"]:
+        assert ref["title"].strip() and ref["authors"] and ref["type"], ref
+
+
+def test_changelog_has_an_unreleased_section():
+    text = (ROOT / "CHANGELOG.md").read_text()
+    assert re.search(r"^## \[Unreleased\]$", text, flags=re.M)
+
+
+def test_lock_pins_every_declared_dependency_within_its_range_with_hashes():
+    pins = _lock_pins()
+    declared = [Requirement(r) for r in [*PYPROJECT["dependencies"], *PYPROJECT["optional-dependencies"]["test"]]]
+    for req in declared:
+        name = canonicalize_name(req.name)
+        assert name in pins, f"{req.name} is not in requirements.lock: run `make lock`"
+        version, _ = pins[name]
+        assert req.specifier.contains(version, prereleases=True), f"{name}=={version} outside {req}"
+    unhashed = [n for n, (_, k) in pins.items() if k == 0]
+    assert not unhashed, f"pins without hashes: {unhashed}"
+    assert "Python 3.11" in LOCK.read_text().splitlines()[1]
+
+
+def test_makefile_installs_from_the_lock_and_rebuilds_when_it_changes():
+    make = (ROOT / "Makefile").read_text()
+    assert re.search(r"^\$\(STAMP\): \$\(LOCK\)", make, flags=re.M)
+    assert "--require-hashes -r $(LOCK)" in make
+    assert re.search(r"^lock:", make, flags=re.M)
+
+
+def test_default_workflow_profile_sets_valid_snakemake_options():
+    snakemake_cli = pytest.importorskip("snakemake.cli")
+    profile = yaml.safe_load((ROOT / "profiles" / "default" / "config.yaml").read_text())
+    assert profile == {"cores": 2, "rerun-incomplete": True, "printshellcmds": True}
+    args = []
+    for key, value in profile.items():
+        args += [f"--{key}"] if value is True else [f"--{key}", str(value)]
+    parsed = snakemake_cli.get_argument_parser().parse_args(args)
+    assert (parsed.cores, parsed.rerun_incomplete, parsed.printshellcmds) == (2, True, True)

@@ -1,0 +1,126 @@
+"""Bad published-data files stop the loader with a PublishedDataError naming the file, the row's
+id and the column (never a bare pandas or float() error)."""
+
+import csv
+import io
+import shutil
+
+import pytest
+
+from conftest import PUBLISHED_DIR
+from gearrep import published as pub
+
+VALUES = "values_000_T4.3.csv"
+PARAMS = "params_002_S2.5.csv"
+CLAIMS = "claims_003.csv"
+
+
+@pytest.fixture
+def data(tmp_path):
+    """A copy of three published files (one of each kind), so each test loads quickly."""
+    d = tmp_path / "published"
+    d.mkdir()
+    for name in (VALUES, PARAMS, CLAIMS):
+        shutil.copy(PUBLISHED_DIR / name, d / name)
+    return d
+
+
+def _rows(path):
+    with path.open(encoding="utf-8", newline="") as f:
+        return list(csv.reader(f))
+
+
+def _write(path, rows):
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerows(rows)
+    path.write_text(out.getvalue(), encoding="utf-8")
+
+
+def _set_cell(path, column, text, row=1):
+    """Set ``column`` of data row ``row`` (1-based) to ``text``; returns that row's first cell."""
+    rows = _rows(path)
+    rows[row][rows[0].index(column)] = text
+    _write(path, rows)
+    return rows[row][0]
+
+
+def _refused(directory, *parts):
+    with pytest.raises(pub.PublishedDataError) as err:
+        pub.load(directory)
+    msg = str(err.value)
+    for part in parts:
+        assert part in msg, msg
+    return msg
+
+
+def test_the_copies_load(data):
+    p = pub.load(data)
+    assert len(p.values) and len(p.params) and len(p.claims)
+
+
+def test_non_numeric_value_names_file_id_and_column(data):
+    rid = _set_cell(data / VALUES, "value", "27.3x")
+    msg = _refused(data, VALUES, f"id={rid!r}", "column 'value'", "'27.3x'")
+    assert "could not convert" not in msg
+
+
+def test_non_numeric_printed_names_file_id_and_column(data):
+    rid = _set_cell(data / VALUES, "printed", "0.01o", row=3)
+    _refused(data, VALUES, f"id={rid!r}", "column 'printed'", "'0.01o'")
+
+
+@pytest.mark.parametrize("column", ["precision", "line"])
+def test_non_integer_field_names_file_id_and_column(data, column):
+    rid = _set_cell(data / VALUES, column, "3x", row=2)
+    _refused(data, VALUES, f"id={rid!r}", f"column {column!r}", "'3x'", "integer")
+
+
+def test_non_numeric_parameter_names_file_parameter_and_column(data):
+    rows = _rows(data / PARAMS)
+    header = rows[0]
+    example, parameter = rows[1][header.index("example")], rows[1][header.index("parameter")]
+    _set_cell(data / PARAMS, "value", "twelve")
+    _refused(data, PARAMS, f"{example}/{parameter}", "column 'value'", "'twelve'")
+
+
+def test_non_integer_claim_line_names_file_id_and_column(data):
+    rid = _set_cell(data / CLAIMS, "line", "")
+    _refused(data, CLAIMS, f"id={rid!r}", "column 'line'")
+
+
+def test_empty_id_names_file_row_and_column(data):
+    _set_cell(data / VALUES, "id", "", row=4)
+    _refused(data, VALUES, "data row 4", "column 'id'")
+
+
+@pytest.mark.parametrize("name", [VALUES, PARAMS, CLAIMS])
+def test_empty_file_is_named(data, name):
+    (data / name).write_bytes(b"")
+    msg = _refused(data, name, "empty")
+    assert "No columns to parse" not in msg
+
+
+@pytest.mark.parametrize("name", [VALUES, PARAMS, CLAIMS])
+def test_header_only_file_is_named(data, name):
+    path = data / name
+    _write(path, _rows(path)[:1])
+    _refused(data, name, "header row but no data rows")
+
+
+@pytest.mark.parametrize("name, column", [(VALUES, "unit"), (PARAMS, "value"), (CLAIMS, "statement")])
+def test_missing_column_is_named(data, name, column):
+    path = data / name
+    rows = _rows(path)
+    i = rows[0].index(column)
+    _write(path, [r[:i] + r[i + 1:] for r in rows])
+    _refused(data, name, "missing required column", repr(column))
+
+
+def test_unknown_unit_names_file_id_and_column(data):
+    rid = _set_cell(data / VALUES, "unit", "furlong")
+    _refused(data, VALUES, f"id={rid!r}", "column 'unit'", "'furlong'")
+
+
+def test_unreadable_file_is_named(data):
+    (data / VALUES).write_bytes(b"id,seed\n\xff\xfe,000\n")
+    _refused(data, VALUES, "UTF-8")
