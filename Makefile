@@ -16,7 +16,7 @@ PIP_TOOLS := pip-tools==7.6.2
 LOCK_PYTHON ?= python3.11
 PIP    := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-.PHONY: setup reproduce test test-all stress bench screenshot clean lock
+.PHONY: setup reproduce test test-all lint format schema stress bench screenshot clean lock
 
 $(STAMP): $(LOCK) pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -40,8 +40,23 @@ setup: $(STAMP)
 reproduce: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
 
-test: $(STAMP)
+test: lint
 	$(BIN)/python -m pytest
+
+# Formatting and lint (configured in pyproject.toml): checked by `make test`, applied by `make format`.
+lint: $(STAMP)
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+	$(BIN)/snakefmt --check Snakefile workflow/rules
+
+format: $(STAMP)
+	$(BIN)/ruff check --fix .
+	$(BIN)/ruff format .
+	$(BIN)/snakefmt Snakefile workflow/rules
+
+# config/schema.yaml from the settings declarations (a test keeps them equal).
+schema: $(STAMP)
+	$(BIN)/python workflow/lib/wfconfig.py --write-schema config/schema.yaml
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -m ''

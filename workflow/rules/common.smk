@@ -14,6 +14,7 @@ sys.path.insert(0, str(Path(workflow.basedir, "workflow", "lib")))
 from modgraph import ModuleGraph
 from wfconfig import resolve_config
 
+from gearrep import published as _published
 from gearrep.replications import REGISTRY
 from gearrep.replications import load as load_study
 from gearrep.replications._face import table_paths
@@ -23,6 +24,9 @@ from gearrep.replications._face import table_paths
 RESOLVED = resolve_config(config, workflow.basedir)
 PUBLISHED_DIR = RESOLVED["published_dir"]
 SETTINGS = {key: RESOLVED[key] for key in REGISTRY}
+# The published data as committed (data/published/MANIFEST.csv: checksum, rows per seed of every
+# file): a missing, emptied, cut, altered or unlisted file stops here, naming the file.
+_published.verify_manifest(Path(workflow.basedir, PUBLISHED_DIR))
 
 _GRAPH = ModuleGraph(Path(workflow.basedir, "src"), workflow.basedir)
 
@@ -45,7 +49,8 @@ REPLICATION_IO = "workflow/scripts/replication_io.py"
 def published_files(*patterns):
     """Published-data files matching any of ``patterns`` (globs in the published-data directory)."""
     d = Path(workflow.basedir, PUBLISHED_DIR)
-    return sorted({str(Path(PUBLISHED_DIR, p.name)) for pat in (patterns or ("*.csv",)) for p in d.glob(pat)})
+    found = {p.name for pat in (patterns or ("*.csv",)) for p in d.glob(pat)} - {_published.MANIFEST_NAME}
+    return sorted(str(Path(PUBLISHED_DIR, name)) for name in found)
 
 
 def figure(path, replication):

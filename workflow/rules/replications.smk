@@ -7,7 +7,7 @@ for _key in REGISTRY:
     _study = load_study(_key)
     _code = lib(f"replications.{_key}", "published", "checks")
     _tables = [f"results/{p}" for p in table_paths(_study.JOBS).values()]
-    _published = published_files(*_study.CHECK_DATA)
+    _check_data = published_files(*_study.CHECK_DATA)
     _benchmarks = [f"results/benchmarks/{_key}/{j}.tsv" for j in _study.JOBS]
     _figures = {k: f"results/{p}" for k, p in _study.FIGURES.items()}
 
@@ -44,7 +44,7 @@ for _key in REGISTRY:
         input:
             io=REPLICATION_IO,
             tables=_tables,
-            published=_published,
+            published=_check_data,
             code=_code,
         output:
             **{n: f"results/{p}" for n, p in _study.CHECK_OUTPUTS.items()},
@@ -67,7 +67,7 @@ for _key in REGISTRY:
                 f"{_key}_figures"
             input:
                 tables=_tables,
-                published=_published,
+                published=_check_data,
                 code=script_lib(f"workflow/scripts/{_key}_figures.py"),
             output:
                 **{k: figure(p, _key) for k, p in _figures.items()},
@@ -90,7 +90,7 @@ for _key in REGISTRY:
             check_outputs=[f"results/{p}" for p in _study.CHECK_OUTPUTS.values()],
             tables=_tables,
             figures=list(_figures.values()),
-            published=_published,
+            published=_check_data,
             benchmarks=_benchmarks,
             code=script_lib(f"notebooks/{_key}.ipynb"),
         output:

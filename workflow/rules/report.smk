@@ -24,6 +24,7 @@ rule report:
         figures=REPORT_FIGURES,
         errata="data/errata.csv",
         config="config/config.yaml",
+        lock="requirements.lock",
         code=script_lib("workflow/scripts/report.py"),
     output:
         "results/report.html",

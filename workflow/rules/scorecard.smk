@@ -6,6 +6,7 @@ rule scorecard:
     input:
         checks=CHECK_FILES,
         published=published_files(),
+        manifest=f"{PUBLISHED_DIR}/MANIFEST.csv",
         code=script_lib("workflow/scripts/scorecard.py"),
     output:
         csv=report("results/scorecard.csv", caption="../report/scorecard.rst", category="scorecard"),

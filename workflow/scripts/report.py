@@ -30,6 +30,7 @@ except (OSError, subprocess.CalledProcessError):
 
 env = {"gearrep commit": commit,
        "config sha256": hashlib.sha256(Path(smk.input.config).read_bytes()).hexdigest()[:16],
+       "requirements.lock sha256": hashlib.sha256(Path(smk.input.lock).read_bytes()).hexdigest(),
        "python": platform.python_version(), "platform": platform.platform()}
 for pkg in ("numpy", "scipy", "pandas", "matplotlib", "snakemake", "papermill", "nbconvert"):
     env[pkg] = version(pkg)

@@ -8,10 +8,16 @@ from gearrep import checks, published
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
-pub = published.load(Path(smk.input.published[0]).parent)
+data_dir = Path(smk.input.manifest).parent
+pub = published.load(data_dir)
 tables = {Path(f).stem: pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""]) for f in smk.input.checks}
 card = checks.scorecard(tables, pub.values, pub.claims)
 card["paper"] = card["seed"].map(published.PAPERS)
+# every published value and claim of the manifest has its row: nothing dropped silently
+expected = published.scored_rows_per_seed(published.verify_manifest(data_dir))
+got = card.groupby("seed").size().to_dict()
+if {s: n for s, n in expected.items() if n} != got:
+    raise RuntimeError(f"scorecard rows per seed {got} differ from the manifest's {expected} ({smk.input.manifest})")
 
 
 def md_table(df: pd.DataFrame) -> str:
