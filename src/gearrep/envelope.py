@@ -69,8 +69,8 @@ tests/unit/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Sequence
 
 import numpy as np
 
@@ -697,7 +697,7 @@ class Envelope:
         res = SolveResult(q[:, list(self.solved)], r, np.zeros(len(r), int), st)
         return self._record(q, res)
 
-    def surface(self, guess, fd_step=(1e-3, 1e-3)) -> "EnvelopeSurface":
+    def surface(self, guess, fd_step=(1e-3, 1e-3)) -> EnvelopeSurface:
         """The generated surface as a :class:`gearrep.surface.Surface` of the two free
         parameters (see :class:`EnvelopeSurface`)."""
         return EnvelopeSurface(self, guess, fd_step)

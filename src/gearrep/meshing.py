@@ -36,8 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solve import SolveResult, Status, newton
-from .tca import (ContactPoints, GearPair, _reduced_FJ, newton_rows, solve_contact,
-                  trace_path)
+from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
+from .tca._formulations import _reduced_FJ
 
 __all__ = [
     "contact_ratio",

@@ -20,8 +20,9 @@ from __future__ import annotations
 import copy
 import difflib
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Mapping
+from typing import Any
 
 __all__ = [
     "Setting",
@@ -59,10 +60,10 @@ class Setting:
     gt: float | None = None
     lt: float | None = None
     choices: tuple | None = None
-    item: "Setting | None" = None
+    item: Setting | None = None
     min_items: int = 0
     max_items: int | None = None
-    fields: Mapping[str, "Setting"] | None = field(default=None)
+    fields: Mapping[str, Setting] | None = field(default=None)
 
     def allowed(self) -> str:
         """The allowed values in words (used in every error message)."""

@@ -13,9 +13,9 @@ singular values instead of being inverted.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import IntEnum
-from typing import Callable
 
 import numpy as np
 
@@ -76,7 +76,7 @@ class SolveResult:
     def status_name(self) -> np.ndarray:
         return status_names(self.status)
 
-    def with_status(self, mask, status: Status) -> "SolveResult":
+    def with_status(self, mask, status: Status) -> SolveResult:
         """Copy with ``status`` set where ``mask`` holds (e.g. WRONG_ROOT after verification)."""
         st = self.status.copy()
         st[np.asarray(mask, dtype=bool)] = int(status)

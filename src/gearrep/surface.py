@@ -56,7 +56,7 @@ class SurfacePoint:
         """Unit normal n = (r_u x r_v) / |r_u x r_v| (the orientation every curvature uses)."""
         return unit(cross(self.r_u, self.r_v))
 
-    def flipped(self) -> "SurfacePoint":
+    def flipped(self) -> SurfacePoint:
         """The same point with the parameters swapped (v, u): the normal changes sign."""
         return SurfacePoint(self.r, self.r_v, self.r_u, self.r_vv, self.r_uv, self.r_uu)
 

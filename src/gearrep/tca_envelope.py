@@ -172,7 +172,7 @@ class ContactPath:
     def status_name(self):
         return status_names(self.solve.status)
 
-    def take(self, idx) -> "ContactPath":
+    def take(self, idx) -> ContactPath:
         s = self.solve
         return ContactPath(self.phi1[idx], self.x[idx], SolveResult(s.x[idx], s.residual[idx], s.iterations[idx],
                         s.status[idx], None if s.condition is None else s.condition[idx]), *(getattr(self, f)[idx] for f in

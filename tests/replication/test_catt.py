@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-
 from conftest import study_settings
+
 from gearrep import checks as C
 from gearrep import settings as S
 from gearrep.replications import catt

@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-
 from conftest import study_settings
+
 from gearrep import settings as gs
 from gearrep.replications import _face, nasa
 

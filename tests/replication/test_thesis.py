@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import study_settings
 
 from gearrep import checks as ck
 from gearrep import settings as st
@@ -21,7 +22,6 @@ from gearrep.replications import thesis as T
 from gearrep.replications.thesis import facts as TC
 from gearrep.replications.thesis.te import TE_READINGS
 from gearrep.tca import draw_starts
-from conftest import study_settings
 
 
 @pytest.fixture(scope="module")

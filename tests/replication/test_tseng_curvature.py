@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-
 from conftest import study_settings
+
 from gearrep import checks as C
 from gearrep import published
 from gearrep.replications import tseng_curvature as tc

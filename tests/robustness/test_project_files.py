@@ -6,10 +6,10 @@ import tomllib
 
 import pytest
 import yaml
+from conftest import ROOT
 from packaging.requirements import Requirement
 from packaging.utils import canonicalize_name
 
-from conftest import ROOT
 from gearrep import published as pub
 
 PYPROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]

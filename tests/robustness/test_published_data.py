@@ -9,8 +9,8 @@ import sys
 
 import pandas as pd
 import pytest
-
 from conftest import PUBLISHED_DIR, ROOT
+
 from gearrep import published as pub
 
 #: the file the issue deleted by hand (scorecard 847 -> 781 rows without a word)

@@ -6,8 +6,8 @@ import io
 import shutil
 
 import pytest
-
 from conftest import PUBLISHED_DIR
+
 from gearrep import published as pub
 
 VALUES = "values_000_T4.3.csv"

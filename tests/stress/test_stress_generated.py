@@ -16,19 +16,23 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
 from conftest import PUBLISHED_DIR, assert_honest
+
 from gearrep import published
+from gearrep import tca_envelope as te
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
 from gearrep.replications import tseng_curvature as tc
 from gearrep.replications.tseng_tca import contact as tt
 from gearrep.replications.tseng_tca import studies as ts
-from gearrep import tca_envelope as te
 from gearrep.solve import Status
 from gearrep.surfaces.catt import (
-    CATTFlank, CATTGearData, middle_section_curvatures, pitch_thickness_closed_form, tooth_thickness,
+    CATTFlank,
+    CATTGearData,
+    middle_section_curvatures,
+    pitch_thickness_closed_form,
+    tooth_thickness,
 )
 from gearrep.surfaces.hob import GeneratedGear
 from gearrep.tca import solve_contact

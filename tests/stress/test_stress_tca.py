@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import assert_honest
 
 from gearrep.solve import Status
 from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance
-from conftest import assert_honest
 from gearrep.tca import GearPair, Misalignment, solve_contact, trace_path
 
 pytestmark = pytest.mark.stress

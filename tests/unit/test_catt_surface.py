@@ -21,7 +21,12 @@ from gearrep import curvature
 from gearrep.solve import newton
 from gearrep.surface import fd_derivatives
 from gearrep.surfaces.catt import (
-    CATTFlank, CATTGearData, eq28_profile, eq29_profile, middle_section_curvatures, pitch_thickness_closed_form,
+    CATTFlank,
+    CATTGearData,
+    eq28_profile,
+    eq29_profile,
+    middle_section_curvatures,
+    pitch_thickness_closed_form,
     tooth_thickness,
 )
 from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData, involute_polar_angle

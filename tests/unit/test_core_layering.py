@@ -10,7 +10,6 @@ import ast
 import importlib
 
 import pytest
-
 from conftest import ROOT
 
 PKG = ROOT / "src" / "gearrep"

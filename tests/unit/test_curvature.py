@@ -16,9 +16,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gearrep import curvature as cv
-from gearrep.surfaces.analytic import (Cylinder, Helicoid, InvoluteHelicoid, Plane, Sphere,
-                                       Torus, finite_difference_version)
 from gearrep.surface import SurfacePoint, unit
+from gearrep.surfaces.analytic import (
+    Cylinder,
+    Helicoid,
+    InvoluteHelicoid,
+    Plane,
+    Sphere,
+    Torus,
+    finite_difference_version,
+)
 
 TOL = {"analytic": 1e-12, "fd": 1e-8}
 

@@ -10,7 +10,6 @@ from gearrep import ellipse as el
 from gearrep.solve import Status
 from gearrep.surfaces.analytic import Sphere
 
-
 # ----------------------------------------------------------------- Litvin's formulas
 
 
@@ -148,8 +147,8 @@ def test_crossed_cylinders_at_angle_against_exact_separation(gamma):
 
 
 def test_elastic_ellipse_at_vectors_crossed_cylinders():
-    from gearrep.surfaces.analytic import Cylinder
     from gearrep.surface import SurfacePoint
+    from gearrep.surfaces.analytic import Cylinder
 
     R1, R2, gamma, d = 30.0, 12.0, 0.7, 1e-6
     p1 = Cylinder(R1).evaluate(0.0, 0.0)  # (R1, 0, 0), outward normal +x, axis z

@@ -17,11 +17,9 @@ import re
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import pandas as pd
 import pytest
-
 from conftest import ROOT, copy_workflow, tool_env
 
 

@@ -5,8 +5,17 @@ import pytest
 
 from gearrep.surface import fd_derivatives
 from gearrep.surfaces.involute import (
-    CircularCrowning, InvoluteFlank, InvoluteGearData, LogarithmicCrowning, ParabolicCrowning, RootRelief,
-    TipRelief, involute_polar_angle, mating_flanks, standard_centre_distance, involute_xy,
+    CircularCrowning,
+    InvoluteFlank,
+    InvoluteGearData,
+    LogarithmicCrowning,
+    ParabolicCrowning,
+    RootRelief,
+    TipRelief,
+    involute_polar_angle,
+    involute_xy,
+    mating_flanks,
+    standard_centre_distance,
 )
 
 D = np.radians

@@ -4,11 +4,18 @@ import numpy as np
 import pytest
 
 from gearrep.meshing import (
-    contact_ratio, contact_ratio_closed_form, engagement_limits, meshing_cycle,
+    contact_ratio,
+    contact_ratio_closed_form,
+    engagement_limits,
+    meshing_cycle,
 )
 from gearrep.solve import Status
 from gearrep.surfaces.involute import (
-    InvoluteGearData, ParabolicCrowning, TipRelief, mating_flanks, standard_centre_distance,
+    InvoluteGearData,
+    ParabolicCrowning,
+    TipRelief,
+    mating_flanks,
+    standard_centre_distance,
 )
 from gearrep.tca import GearPair, Misalignment, solve_contact
 from gearrep.units import ARCSEC

@@ -14,12 +14,12 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from _published_format import printed_precision as _precision
+from _published_format import read_text_csv as _read
+from conftest import seeds_dir
 
 from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
 from gearrep.units import KNOWN_UNITS as UNITS
-
-from conftest import seeds_dir
-from _published_format import printed_precision as _precision, read_text_csv as _read
 
 PUB = Path(__file__).parents[2] / "data" / "published"
 SEED_DIR = seeds_dir()

@@ -1,11 +1,10 @@
 """Every registered study is a package with the same face (gearrep.replications._face)."""
 
 import pytest
+from conftest import study_settings
 
 from gearrep import settings as S
 from gearrep.replications import REGISTRY, _face, load
-
-from conftest import study_settings
 
 
 @pytest.mark.parametrize("key", sorted(REGISTRY))
@@ -26,7 +25,7 @@ def test_face(key, published):
 def test_jobs_write_disjoint_tables():
     seen = {}
     for key in REGISTRY:
-        for name, path in _face.table_paths(load(key).JOBS).items():
+        for path in _face.table_paths(load(key).JOBS).values():
             assert path not in seen, f"{path} written by {key} and {seen[path]}"
             seen[path] = key
 

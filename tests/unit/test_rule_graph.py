@@ -21,7 +21,6 @@ import tempfile
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT, copy_workflow, tool_env
 
 SRC = ROOT / "src"

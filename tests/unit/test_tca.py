@@ -8,10 +8,19 @@ import pytest
 from gearrep.solve import Status
 from gearrep.surface import Surface
 from gearrep.surfaces.involute import (
-    InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance,
+    InvoluteGearData,
+    ParabolicCrowning,
+    mating_flanks,
+    standard_centre_distance,
 )
 from gearrep.tca import (
-    GearPair, Misalignment, default_start, reduced_unknowns, solve_contact, trace_path, transmission_error,
+    GearPair,
+    Misalignment,
+    default_start,
+    reduced_unknowns,
+    solve_contact,
+    trace_path,
+    transmission_error,
 )
 from gearrep.units import ARCMIN, ARCSEC
 
@@ -280,7 +289,7 @@ def test_choice_of_normal_components_decides_conditioning():
     components of n1 + n2 (dropping the ~0 z component) leaves n_z fixed only through n_z^2, so the
     5x5 Jacobian is nearly singular and the sign-flipped false roots n1z = +n2z appear (flagged
     WRONG_ROOT). Dropping the largest component (default) is well conditioned."""
-    from gearrep.tca import _conventional_FJ
+    from gearrep.tca._formulations import _conventional_FJ
     pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
     ref = solve_contact(pair, 0.0)
     x = ref.unknowns("conventional")
@@ -456,8 +465,14 @@ def test_contact_curvatures_and_ellipse_of_a_crowned_spur_pair():
 def test_solver_variants_agree_from_seeded_and_robust_starts():
     """From starts near a crowned spur pair's contact, every variant of both formulations that does
     not need a phi2 guess finds the same contact; six equations (least squares) agree with five."""
-    from gearrep.tca import (CONVENTIONAL_VARIANTS, REDUCED_VARIANTS, draw_starts, seed_from_reduced,
-                             solve_conventional, solve_variant)
+    from gearrep.tca import (
+        CONVENTIONAL_VARIANTS,
+        REDUCED_VARIANTS,
+        draw_starts,
+        seed_from_reduced,
+        solve_conventional,
+        solve_variant,
+    )
 
     pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1))
     ref = solve_contact(pair, 0.01)

@@ -9,9 +9,7 @@ import subprocess
 import sys
 
 import pytest
-
-from conftest import ROOT, copy_workflow, tool_env
-
+from conftest import copy_workflow, tool_env
 
 
 @pytest.fixture()

@@ -3,11 +3,9 @@ configuration declaration that the schema, the config files and the test configu
 
 import copy
 import sys
-from pathlib import Path
 
 import pytest
 import yaml
-
 from conftest import ROOT
 
 sys.path.insert(0, str(ROOT / "workflow" / "lib"))

@@ -39,10 +39,10 @@ Paths are relative to ``results/``; table names are the file stems.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from types import ModuleType
-from typing import Callable, Mapping
 
 __all__ = ["Job", "run_jobs", "table_paths", "FACE", "check_face"]
 

@@ -54,6 +54,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .. import frames
 from ..curvature import PrincipalCurvatures, principal_curvatures
 from ..curvature_relations import (
     GeneratedCurvatures,
@@ -62,7 +63,6 @@ from ..curvature_relations import (
     two_parameter_principal_curvatures,
     two_parameter_system,
 )
-from .. import frames
 from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
 from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
@@ -136,7 +136,7 @@ class ZAHob:
         """beta of eq 4.40 (the lead angle in the printed variant, 0 in the axial variant)."""
         return self.lead_angle_rad if self.variant == "printed" else 0.0
 
-    def thread(self, side: int) -> "HobThread":
+    def thread(self, side: int) -> HobThread:
         """The thread surface of eq 4.40: side +1 = upper sign (right side), -1 = lower sign."""
         return HobThread(self, side)
 
@@ -258,7 +258,7 @@ class GeneratedGear:
             raise ValueError(f"maxiter must be >= 1, got {self.maxiter!r}")
 
     @classmethod
-    def flank(cls, name: str, **kw) -> "GeneratedGear":
+    def flank(cls, name: str, **kw) -> GeneratedGear:
         """Sigma_2R (``name="R"``) or Sigma_2L (``"L"``) of seed 000 with arc_centre = -1."""
         if name not in FLANK_SIDE:
             raise ValueError(f"name must be 'R' or 'L', got {name!r}")

@@ -288,7 +288,7 @@ class WormGeneratedPinion(Surface):
     def evaluate(self, u, v) -> SurfacePoint:
         return self._surface.evaluate(u, v)
 
-    def light(self) -> "NormalPartSurface":
+    def light(self) -> NormalPartSurface:
         """This surface with cheap second derivatives for TCA (:class:`NormalPartSurface`)."""
         return NormalPartSurface(self)
 

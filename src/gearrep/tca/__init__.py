@@ -84,8 +84,6 @@ component) are carried as extra unknowns frozen by identity rows with zero resid
 
 from ._curvature import contact_curvatures, contact_ellipse
 from ._formulations import (
-    _conventional_FJ,
-    _reduced_FJ,
     conventional_system,
     default_start,
     newton_rows,

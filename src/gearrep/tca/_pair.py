@@ -111,7 +111,7 @@ class GearPair:
         self.lower1, self.upper1 = _bounds(flank1)
         self.lower2, self.upper2 = _bounds(flank2)
 
-    def with_misalignment(self, misalignment) -> "GearPair":
+    def with_misalignment(self, misalignment) -> GearPair:
         """Same pair with another misalignment."""
         return GearPair(self.flank1, self.flank2, self.n1, self.n2, self.centre_distance,
                         misalignment=misalignment, shaft_angle=self.shaft_angle, phase2=self.phase2)
@@ -198,7 +198,7 @@ class ContactPoints:
     def status_name(self) -> np.ndarray:
         return status_names(self.status)
 
-    def take(self, idx) -> "ContactPoints":
+    def take(self, idx) -> ContactPoints:
         """Subset by index or boolean mask."""
         kw = {f: getattr(self, f)[idx] for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal",
                                                    "te", "residual", "iterations", "status")}
@@ -206,7 +206,7 @@ class ContactPoints:
         return ContactPoints(formulation=self.formulation, condition=cond, **kw)
 
     @staticmethod
-    def concatenate(items) -> "ContactPoints":
+    def concatenate(items) -> ContactPoints:
         items = list(items)
         kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in
               ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te", "residual", "iterations", "status")}

@@ -21,7 +21,16 @@ from ... import settings as _s
 from .._face import Job, run_jobs
 from . import studies as _studies
 from .assembly import (  # noqa: F401  (the names tests and the stress suite use)
-    PAIR_NAMES, PAIRS, PRIMARY, READINGS, Mesh, assemble, contact_radii, path_limits, reading_to_mesh, solve_cycle,
+    PAIR_NAMES,
+    PAIRS,
+    PRIMARY,
+    READINGS,
+    Mesh,
+    assemble,
+    contact_radii,
+    path_limits,
+    reading_to_mesh,
+    solve_cycle,
     starts,
 )
 from .bench import bench_cases

@@ -8,7 +8,8 @@ import pandas as pd
 
 from .assembly import PRIMARY, assemble, path_limits, solve_cycle
 from .contact import contact_geometry
-from .design import Design, prm as _prm
+from .design import Design
+from .design import prm as _prm
 
 __all__ = ["bench_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
 

@@ -7,7 +7,12 @@ import numpy as np
 import pandas as pd
 
 from ...surfaces.catt import (
-    CATTFlank, CATTGearData, eq28_profile, eq29_profile, pitch_thickness_closed_form, tooth_thickness,
+    CATTFlank,
+    CATTGearData,
+    eq28_profile,
+    eq29_profile,
+    pitch_thickness_closed_form,
+    tooth_thickness,
 )
 from .assembly import gear_data
 

@@ -14,10 +14,20 @@ import pandas as pd
 
 from ...surface import fd_derivatives
 from ...surfaces.catt import middle_section_curvatures
-from .assembly import PAIRS, PRIMARY, READINGS, assemble, mesh_to_reading, path_limits, pitch_point_closed_form, \
-    reading_to_mesh, solve_cycle
+from .assembly import (
+    PAIRS,
+    PRIMARY,
+    READINGS,
+    assemble,
+    mesh_to_reading,
+    path_limits,
+    pitch_point_closed_form,
+    reading_to_mesh,
+    solve_cycle,
+)
 from .contact import contact_geometry, tip_edges
-from .design import Design, prm as _prm
+from .design import Design
+from .design import prm as _prm
 from .gap import exact_contact_region
 from .profiles import equation_checks, section_shapes, thickness_table
 

@@ -42,14 +42,14 @@ def pinion_elliptic(t):
     pin = _cur(t)
     return (pin["kappa_I_per_in"] * pin["kappa_II_per_in"] > 0 and abs(pin["kappa_I_per_in"] - 0.0125) <= 5e-5
             and abs(pin["kappa_II_per_in"] - 1.5605) <= 5e-5,
-            "kappa_I(1), kappa_II(1) = %.5f, %.5f per in (report normal)" % _k(pin))
+            "kappa_I(1), kappa_II(1) = {:.5f}, {:.5f} per in (report normal)".format(*_k(pin)))
 
 
 def gear_hyperbolic_sign_lost(t):
     gear = _cur(t, member="gear")
     return (gear["kappa_I_per_in"] * gear["kappa_II_per_in"] < 0 and abs(abs(gear["kappa_I_per_in"]) - 0.0083) <= 1e-4
             and abs(abs(gear["kappa_II_per_in"]) - 0.5940) <= 1.5e-4,
-            "kappa_I(2), kappa_II(2) = %.5f, %.5f per in with the pinion's normal: opposite signs (K < 0)" % _k(gear)
+            "kappa_I(2), kappa_II(2) = {:.5f}, {:.5f} per in with the pinion's normal: opposite signs (K < 0)".format(*_k(gear))
             + "; |kappa_II(2)| is 1.1 units of the 4th decimal from 0.5940 (rack-radius rounding, see the value check)")
 
 
@@ -160,8 +160,8 @@ def version1_best_ellipse_but_sensitive(t):
     areas = _areas(t)
     da = {v: _sens(t, v, step="0.0001in")["delta_alpha_deg"] for v in (1, 2, 3)}
     return (areas[1] > areas[3] > areas[2] and da[1] > da[2] > da[3] and da[1] >= 5 * da[2],
-            "areas v1/v2/v3 = %.4f/%.4f/%.4f in2; TCA d alpha for dE = 0.0001 in (a step all three survive) = "
-            "%.3f/%.4f/%.4f deg" % (areas[1], areas[2], areas[3], da[1], da[2], da[3]))
+            f"areas v1/v2/v3 = {areas[1]:.4f}/{areas[2]:.4f}/{areas[3]:.4f} in2; TCA d alpha for dE = 0.0001 in (a step all three survive) = "
+            f"{da[1]:.3f}/{da[2]:.4f}/{da[3]:.4f} deg")
 
 
 def area_ratio_v1_v2(t):

@@ -4,7 +4,7 @@ are :data:`.values.VALUES` and :data:`.claims.CLAIMS`: id -> :class:`Rule` or a 
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 import pandas as pd

@@ -5,8 +5,7 @@ from __future__ import annotations
 
 from functools import partial
 
-from .records import (NOT_COMPUTED_DISK, NOT_COMPUTED_HEIGHTS, NOT_COMPUTED_INPUT_RADII, NOT_COMPUTED_SEC3, Rule,
-                      one)
+from .records import NOT_COMPUTED_DISK, NOT_COMPUTED_HEIGHTS, NOT_COMPUTED_INPUT_RADII, NOT_COMPUTED_SEC3, Rule, one
 
 __all__ = ["VALUES"]
 

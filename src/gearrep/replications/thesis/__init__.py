@@ -30,7 +30,6 @@ import numpy as np
 from ... import settings as st
 from .._face import Job, run_jobs
 from .bench import bench_cases
-from .facts import checks, fact_key
 from .claims import CLAIMS, claim_verdicts, conv_row
 from .convergence import (
     OUTCOMES,
@@ -44,6 +43,7 @@ from .convergence import (
     study_reference,
 )
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37, params_from_published
+from .facts import checks, fact_key
 from .model import ThesisFrame, crown_curvature, crowning_object, profile_crowning, wrap
 from .records import errata_table, protocol_table
 from .te import crowning_areas_table, first_order_te, te_sensitivity, te_study, te_tables

@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...tca import draw_starts
 from ...units import ARCSEC, DEG
 from .convergence import rng, run_variant, study_reference
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37
 from .model import crowning_object
 from .te import te_study
-from ...tca import draw_starts
 
 #: tightest tolerance of a convergence-rate check including sampling (Table 10 conventional, 5000 + 5000 starts)
 BENCH_RATE_TOL_PCT = 1.79

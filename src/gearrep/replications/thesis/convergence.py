@@ -23,8 +23,8 @@ from ...tca import (
     flank_boxes,
     line_of_action_start,
     seed_from_reduced,
-    solve_conventional,
     solve_contact,
+    solve_conventional,
     solve_variant,
 )
 from ...units import ARCMIN, DEG

@@ -61,7 +61,6 @@ def _t10_facts(tables: dict) -> dict:
     """Computed counterparts of the thesis's numbers: name -> dict(value, note, n) (n: starts, for
     a binomial tolerance)."""
     conv = tables["convergence"]
-    refs = tables["references"].set_index("case")
     f = {}
     w0 = float(conv.loc[(conv["case"] == "spur_52_72") & (conv["variant"] == "plain"), "phi2_window_rad"].max())
     plain = _row(conv, "spur_52_72", "plain", w0)
@@ -69,8 +68,8 @@ def _t10_facts(tables: dict) -> dict:
     sweep = conv[(conv["case"] == "spur_52_72") & (conv["variant"] == "plain")].sort_values("phi2_window_rad")
     half = sweep.iloc[int(np.argmin(np.abs(sweep["phi2_window_rad"] - np.pi)))]
     damped = _row(conv, "spur_52_72", "damped", w0)
-    common = (f"our protocol (protocol.csv): 5000 starts, u1,v1,u2,v2 uniform on the flanks, phi2 uniform on a "
-              f"full turn, plain Newton, correct root only; the thesis does not state how phi2 was started")
+    common = ("our protocol (protocol.csv): 5000 starts, u1,v1,u2,v2 uniform on the flanks, phi2 uniform on a "
+              "full turn, plain Newton, correct root only; the thesis does not state how phi2 was started")
     f["t10_conv_rate"] = dict(value=plain["correct_pct"], n=int(plain["n_starts"]), note=(
         f"{common}. The rate depends on the phi2 window (convergence_vs_phi2_window.png): plain Newton gives "
         f"{half['correct_pct']:.2f} % with a half-turn window (width {half['phi2_window_rad']:.3g} rad), damped Newton "

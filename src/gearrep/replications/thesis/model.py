@@ -45,7 +45,7 @@ class ThesisFrame:
     half_width: float
 
     @classmethod
-    def of(cls, pair) -> "ThesisFrame":
+    def of(cls, pair) -> ThesisFrame:
         f1, f2 = pair.flank1, pair.flank2
         hw = 0.5 * f1.gear.face_width
         off1 = f1.c - float(f1.twist(np.array(-hw))[0])

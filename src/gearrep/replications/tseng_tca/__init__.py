@@ -22,14 +22,13 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
-from .._face import Job, run_jobs
-from . import contact
-from .checks import CHECK_PREFIXES, SURVIVING, check_records
 from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
+from .._face import Job, run_jobs
+from . import contact, studies
+from .checks import CHECK_PREFIXES, SURVIVING, check_records
 from .contact import KE_COLUMNS, Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
-from . import studies
 
 __all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
            "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "TABLE_EXAMPLE",

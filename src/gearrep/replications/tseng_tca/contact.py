@@ -53,7 +53,7 @@ class Assembly:
             if not (np.isfinite(v) and abs(v) <= 2.0):
                 raise ValueError(f"{n} must be finite and in [-2, 2] mm, got {v!r}")
 
-    def scaled(self, t: float) -> "Assembly":
+    def scaled(self, t: float) -> Assembly:
         return Assembly(t * self.dgamma_h, t * self.dgamma_v, t * self.dC, t * self.dZ)
 
 

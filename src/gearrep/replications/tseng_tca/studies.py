@@ -12,9 +12,17 @@ import numpy as np
 import pandas as pd
 
 from ...surfaces.hob import ZAHob
+from ...tca_envelope import (
+    ContactPath,
+    dropped_component,
+    member_geometry,
+    predict,
+    require,
+    solve_points,
+    tangency_system,
+    trace_path,
+)
 from . import model
-from ...tca_envelope import (ContactPath, dropped_component, member_geometry, predict, require, solve_points,
-                             tangency_system, trace_path)
 from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
