@@ -30,7 +30,13 @@ import numpy as np
 import pandas as pd
 
 __all__ = [
-    "ERROR_FLOOR", "Timing", "load_average", "time_call", "sweep", "pareto_front", "knee",
+    "ERROR_FLOOR",
+    "Timing",
+    "load_average",
+    "time_call",
+    "sweep",
+    "pareto_front",
+    "knee",
 ]
 
 #: error floor used in log coordinates (an exact result has error 0)
@@ -73,8 +79,14 @@ def time_call(fn: Callable[[], Any], *, repeats: int = 5, warmup: int = 1) -> tu
     return result, Timing(float(np.median(times)), float(np.min(times)), int(repeats), load_average())
 
 
-def sweep(run: Callable[[dict], Any], settings: list[dict], reference: dict,
-          error: Callable[[Any, Any], float], *, repeats: int = 3) -> pd.DataFrame:
+def sweep(
+    run: Callable[[dict], Any],
+    settings: list[dict],
+    reference: dict,
+    error: Callable[[Any, Any], float],
+    *,
+    repeats: int = 3,
+) -> pd.DataFrame:
     """Time ``run(setting)`` for each setting and measure ``error(result, reference_result)``.
 
     run : computation of one setting (a dict of knob values)

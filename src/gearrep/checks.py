@@ -27,21 +27,43 @@ import pandas as pd
 from .published import printed_precision
 
 __all__ = [
-    "STATUSES", "CHECK_COLUMNS", "TEXT_COLUMNS", "printed_interval", "compare_value",
-    "check_values", "qualitative", "not_computed", "validate_checks", "scorecard", "summary",
+    "STATUSES",
+    "CHECK_COLUMNS",
+    "TEXT_COLUMNS",
+    "printed_interval",
+    "compare_value",
+    "check_values",
+    "qualitative",
+    "not_computed",
+    "validate_checks",
+    "scorecard",
+    "summary",
 ]
 
 STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
 
 CHECK_COLUMNS = [
-    "id", "seed", "source", "row", "quantity", "unit", "published", "computed", "abs_err",
-    "rel_err", "tolerance", "tolerance_basis", "status", "note",
+    "id",
+    "seed",
+    "source",
+    "row",
+    "quantity",
+    "unit",
+    "published",
+    "computed",
+    "abs_err",
+    "rel_err",
+    "tolerance",
+    "tolerance_basis",
+    "status",
+    "note",
 ]
 
 #: check-table columns that hold text: give these as ``dtype`` when reading a check CSV, or
 #: pandas turns seeds such as "003" into the integer 3 (`validate_checks` rejects that)
-TEXT_COLUMNS = {c: str for c in ("id", "seed", "source", "row", "quantity", "unit", "tolerance_basis", "status",
-                                 "note")}
+TEXT_COLUMNS = {
+    c: str for c in ("id", "seed", "source", "row", "quantity", "unit", "tolerance_basis", "status", "note")
+}
 
 _FP_SLACK = 1e-12
 
@@ -71,8 +93,9 @@ def printed_interval(printed: str, rounding: str = "round") -> tuple[float, floa
     raise ValueError(f"rounding must be 'round' or 'truncate', got {rounding!r}")
 
 
-def compare_value(pub: pd.Series, computed: float, extra_tol: float = 0.0, extra_basis: str = "",
-                  note: str = "") -> dict:
+def compare_value(
+    pub: pd.Series, computed: float, extra_tol: float = 0.0, extra_basis: str = "", note: str = ""
+) -> dict:
     """One check record for a published value row (a row of ``Published.values``)."""
     lo, hi, basis = printed_interval(pub["printed"], pub["rounding"])
     if extra_tol < 0:
@@ -86,8 +109,13 @@ def compare_value(pub: pd.Series, computed: float, extra_tol: float = 0.0, extra
     rec = {k: pub.get(k, "") for k in ("id", "seed", "source", "row", "quantity", "unit")}
     rec.update(published=value, tolerance=max(hi - value, value - lo), tolerance_basis=basis, note=note)
     if computed is None or not np.isfinite(computed):
-        rec.update(computed=np.nan, abs_err=np.nan, rel_err=np.nan, status="deviates",
-                   note=(note + "; " if note else "") + "computation returned no finite value")
+        rec.update(
+            computed=np.nan,
+            abs_err=np.nan,
+            rel_err=np.nan,
+            status="deviates",
+            note=(note + "; " if note else "") + "computation returned no finite value",
+        )
         return rec
     computed = float(computed)
     slack = _FP_SLACK * max(abs(value), abs(computed), 1e-300)
@@ -101,8 +129,7 @@ def compare_value(pub: pd.Series, computed: float, extra_tol: float = 0.0, extra
         ok = lo - slack <= computed <= hi + slack
     abs_err = computed - value
     rel_err = abs_err / abs(value) if value != 0 else np.nan
-    rec.update(computed=computed, abs_err=abs_err, rel_err=rel_err,
-               status="reproduced" if ok else "deviates")
+    rec.update(computed=computed, abs_err=abs_err, rel_err=rel_err, status="reproduced" if ok else "deviates")
     return rec
 
 
@@ -118,12 +145,15 @@ def check_values(published_values: pd.DataFrame, computed: pd.DataFrame) -> pd.D
         raise KeyError(f"computed ids not in the published data: {unknown[:10]}")
     recs = []
     for _, c in computed.iterrows():
-        recs.append(compare_value(
-            pub.loc[c["id"]], c["computed"],
-            extra_tol=float(c.get("extra_tol", 0.0) or 0.0),
-            extra_basis=str(c.get("extra_basis", "") or ""),
-            note=str(c.get("note", "") or ""),
-        ))
+        recs.append(
+            compare_value(
+                pub.loc[c["id"]],
+                c["computed"],
+                extra_tol=float(c.get("extra_tol", 0.0) or 0.0),
+                extra_basis=str(c.get("extra_basis", "") or ""),
+                note=str(c.get("note", "") or ""),
+            )
+        )
     return pd.DataFrame(recs, columns=CHECK_COLUMNS)
 
 
@@ -132,11 +162,20 @@ def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
     if not evidence:
         raise ValueError("a qualitative verdict needs its evidence (the numbers behind it)")
     return {
-        "id": claim["id"], "seed": claim["seed"], "source": claim["source"],
-        "row": claim.get("parameters", ""), "quantity": claim["kind"], "unit": "",
-        "published": np.nan, "computed": np.nan, "abs_err": np.nan, "rel_err": np.nan,
-        "tolerance": np.nan, "tolerance_basis": claim.get("confirm_if", ""),
-        "status": "qualitative-holds" if holds else "qualitative-fails", "note": evidence,
+        "id": claim["id"],
+        "seed": claim["seed"],
+        "source": claim["source"],
+        "row": claim.get("parameters", ""),
+        "quantity": claim["kind"],
+        "unit": "",
+        "published": np.nan,
+        "computed": np.nan,
+        "abs_err": np.nan,
+        "rel_err": np.nan,
+        "tolerance": np.nan,
+        "tolerance_basis": claim.get("confirm_if", ""),
+        "status": "qualitative-holds" if holds else "qualitative-fails",
+        "note": evidence,
     }
 
 
@@ -145,15 +184,24 @@ def not_computed(rows: pd.DataFrame, reason: str) -> pd.DataFrame:
     recs = []
     for _, r in rows.iterrows():
         is_claim = "kind" in r.index and "statement" in r.index
-        recs.append({
-            "id": r["id"], "seed": r["seed"], "source": r["source"],
-            "row": r.get("parameters", "") if is_claim else r["row"],
-            "quantity": r["kind"] if is_claim else r["quantity"],
-            "unit": "" if is_claim else r["unit"],
-            "published": np.nan if is_claim else float(r["value"]),
-            "computed": np.nan, "abs_err": np.nan, "rel_err": np.nan, "tolerance": np.nan,
-            "tolerance_basis": "", "status": "not-computed", "note": reason,
-        })
+        recs.append(
+            {
+                "id": r["id"],
+                "seed": r["seed"],
+                "source": r["source"],
+                "row": r.get("parameters", "") if is_claim else r["row"],
+                "quantity": r["kind"] if is_claim else r["quantity"],
+                "unit": "" if is_claim else r["unit"],
+                "published": np.nan if is_claim else float(r["value"]),
+                "computed": np.nan,
+                "abs_err": np.nan,
+                "rel_err": np.nan,
+                "tolerance": np.nan,
+                "tolerance_basis": "",
+                "status": "not-computed",
+                "note": reason,
+            }
+        )
     return pd.DataFrame(recs, columns=CHECK_COLUMNS)
 
 
@@ -169,8 +217,10 @@ def validate_checks(checks: pd.DataFrame) -> pd.DataFrame:
         raise ValueError(f"duplicate check ids: {sorted(set(checks['id'][checks['id'].duplicated()]))[:10]}")
     bad_seed = [s for s in checks["seed"].unique() if not (isinstance(s, str) and len(s) == 3 and s.isdigit())]
     if bad_seed:
-        raise ValueError(f"seed must be a three-digit string such as '003', got {bad_seed[:5]} "
-                         "(read check CSVs with dtype=checks.TEXT_COLUMNS)")
+        raise ValueError(
+            f"seed must be a three-digit string such as '003', got {bad_seed[:5]} "
+            "(read check CSVs with dtype=checks.TEXT_COLUMNS)"
+        )
     return checks
 
 

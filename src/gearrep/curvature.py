@@ -128,8 +128,12 @@ def fundamental_forms(p: SurfacePoint) -> FundamentalForms:
     with n = unit(r_u x r_v) (seed 004 eq (9)-(13), same quantities)."""
     n = p.normal
     return FundamentalForms(
-        _dot(p.r_u, p.r_u), _dot(p.r_u, p.r_v), _dot(p.r_v, p.r_v),
-        _dot(p.r_uu, n), _dot(p.r_uv, n), _dot(p.r_vv, n),
+        _dot(p.r_u, p.r_u),
+        _dot(p.r_u, p.r_v),
+        _dot(p.r_v, p.r_v),
+        _dot(p.r_uu, n),
+        _dot(p.r_uv, n),
+        _dot(p.r_vv, n),
     )
 
 
@@ -278,8 +282,7 @@ def signed_angle(a, b, n) -> np.ndarray:
     return np.arctan2(_dot(np.asarray(n, dtype=float), cross(a, b)), _dot(a, b))
 
 
-def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma,
-                                  umbilic_tol: float = DEFAULT_UMBILIC_TOL):
+def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma, umbilic_tol: float = DEFAULT_UMBILIC_TOL):
     """Principal relative curvatures of two tangent surfaces from principal curvatures and
     the angle sigma between e_I^(1) and e_I^(2) (common normal; sigma counter-clockwise
     about it). Returns (k1_rel >= k2_rel, alpha).
@@ -295,7 +298,8 @@ def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma,
     (e_I^(1), e_II^(1)), which avoids the cancellation in kS1 - kS2 - R when the smaller
     relative curvature is a small difference of large numbers."""
     kI1, kII1, kI2, kII2, sigma = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (kI1, kII1, kI2, kII2, sigma)))
+        *(np.asarray(x, dtype=float) for x in (kI1, kII1, kI2, kII2, sigma))
+    )
     c, s = np.cos(sigma), np.sin(sigma)
     C11 = kI1 - (kI2 * c * c + kII2 * s * s)
     C22 = kII1 - (kI2 * s * s + kII2 * c * c)
@@ -304,9 +308,13 @@ def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma,
     return k1, k2, alpha
 
 
-def relative_curvature(c1: PrincipalCurvatures, c2: PrincipalCurvatures, *,
-                       normal_tol: float = 1e-6,
-                       umbilic_tol: float = DEFAULT_UMBILIC_TOL) -> RelativeCurvature:
+def relative_curvature(
+    c1: PrincipalCurvatures,
+    c2: PrincipalCurvatures,
+    *,
+    normal_tol: float = 1e-6,
+    umbilic_tol: float = DEFAULT_UMBILIC_TOL,
+) -> RelativeCurvature:
     """Relative (induced) curvature kappa^(12) = kappa^(1) - kappa^(2) of two surfaces in
     tangency at a point, with the true angle sigma between e_I^(1) and e_I^(2).
 
@@ -323,7 +331,8 @@ def relative_curvature(c1: PrincipalCurvatures, c2: PrincipalCurvatures, *,
         raise ValueError(
             "relative_curvature: the two surfaces' normals differ by up to "
             f"{np.degrees(np.max(np.arccos(cosang))):.6g} deg (allowed: <= normal_tol = "
-            f"{normal_tol:g} rad); express both with a common normal (with_opposite_normal)")
+            f"{normal_tol:g} rad); express both with a common normal (with_opposite_normal)"
+        )
     # e_I^(2) projected into the tangent plane of surface 1 (removes the tiny normal mismatch)
     e2I = c2.e1 - _dot(c2.e1, n)[..., None] * n
     sigma = signed_angle(c1.e1, e2I, n)

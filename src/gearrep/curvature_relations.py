@@ -126,8 +126,10 @@ def _coefficients(envelope: Envelope, q):
     wf = np.einsum("nka,na->nk", w, e1)
     wh = np.einsum("nka,na->nk", w, e2)
     nxo = cross(n[:, None, :], om)  # n x omega_j
-    C = np.stack([-k1[:, None] * wf + np.einsum("nka,na->nk", nxo, e1),
-                  -k2[:, None] * wh + np.einsum("nka,na->nk", nxo, e2)], axis=1)  # (n,2,k)
+    C = np.stack(
+        [-k1[:, None] * wf + np.einsum("nka,na->nk", nxo, e1), -k2[:, None] * wh + np.einsum("nka,na->nk", nxo, e2)],
+        axis=1,
+    )  # (n,2,k)
     II = k1[:, None, None] * wf[:, :, None] * wf[:, None, :] + k2[:, None, None] * wh[:, :, None] * wh[:, None, :]
     ow = np.einsum("na,nija->nij", n, cross(om[:, :, None, :], w[:, None, :, :]))  # n.(omega_i x w_j)
     E = -II + ow + np.swapaxes(ow, 1, 2) - np.einsum("na,nija->nij", n, loc.Xr)
@@ -165,8 +167,9 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     nk = envelope.k
     A = np.zeros((q.shape[0], 2 + nk, 2 + nk))
     A[:, :2, :2], A[:, :2, 2:], A[:, 2:, :2], A[:, 2:, 2:] = B, C, np.swapaxes(C, 1, 2), E
-    return GeneratedCurvatures(k1, k2, rot(e1), rot(cross(loc.n, e1)), rot(loc.n),
-                               k_f, k_h, rot(e_f), rot(e_h), sigma, A)
+    return GeneratedCurvatures(
+        k1, k2, rot(e1), rot(cross(loc.n, e1)), rot(loc.n), k_f, k_h, rot(e_f), rot(e_h), sigma, A
+    )
 
 
 def litvin_one_parameter(k_f, k_h, a13, a23, a33):
@@ -219,12 +222,24 @@ def two_parameter_b_coefficients(b) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     den = g(3, 3) * g(4, 4) - g(3, 4) * g(4, 3)
     if np.any(den == 0):
         raise ValueError("b_33 b_44 - b_34 b_43 must be nonzero (it vanishes at singular points)")
-    b11 = (g(1, 3) * g(3, 1) * g(4, 4) - g(1, 3) * g(3, 4) * g(4, 1)
-           - g(1, 4) * g(3, 1) * g(4, 3) + g(1, 4) * g(3, 3) * g(4, 1)) / den
-    b12 = (g(1, 3) * g(3, 2) * g(4, 4) - g(1, 3) * g(3, 4) * g(4, 2)
-           - g(1, 4) * g(3, 2) * g(4, 3) + g(1, 4) * g(3, 3) * g(4, 2)) / den
-    b22 = (g(2, 3) * g(3, 2) * g(4, 4) - g(2, 3) * g(3, 4) * g(4, 2)
-           - g(2, 4) * g(3, 2) * g(4, 3) + g(2, 4) * g(3, 3) * g(4, 2)) / den
+    b11 = (
+        g(1, 3) * g(3, 1) * g(4, 4)
+        - g(1, 3) * g(3, 4) * g(4, 1)
+        - g(1, 4) * g(3, 1) * g(4, 3)
+        + g(1, 4) * g(3, 3) * g(4, 1)
+    ) / den
+    b12 = (
+        g(1, 3) * g(3, 2) * g(4, 4)
+        - g(1, 3) * g(3, 4) * g(4, 2)
+        - g(1, 4) * g(3, 2) * g(4, 3)
+        + g(1, 4) * g(3, 3) * g(4, 2)
+    ) / den
+    b22 = (
+        g(2, 3) * g(3, 2) * g(4, 4)
+        - g(2, 3) * g(3, 4) * g(4, 2)
+        - g(2, 4) * g(3, 2) * g(4, 3)
+        + g(2, 4) * g(3, 3) * g(4, 2)
+    ) / den
     return b11, b12, b22
 
 
@@ -233,12 +248,24 @@ def _two_parameter_b_coefficients_printed(b):
     b = np.asarray(b, dtype=float)
     g = lambda i, j: b[..., i - 1, j - 1]  # noqa: E731
     den = g(3, 3) * g(4, 4) - g(3, 4) * g(4, 3)
-    b11 = (g(1, 3) * g(3, 4) * g(4, 1) + g(1, 4) * g(4, 3) * g(3, 1)
-           - g(1, 4) * g(3, 3) * g(4, 1) - g(1, 3) * g(3, 1) * g(4, 4)) / den
-    b12 = (g(1, 3) * g(3, 4) * g(4, 2) + g(1, 4) * g(4, 3) * g(3, 2)
-           - g(1, 4) * g(3, 3) * g(4, 2) - g(1, 3) * g(3, 2) * g(4, 4)) / den
-    b22 = (g(2, 3) * g(3, 4) * g(4, 2) + g(2, 4) * g(4, 3) * g(3, 2)
-           - g(2, 4) * g(3, 3) * g(4, 2) - g(2, 3) * g(3, 2) * g(4, 4)) / den
+    b11 = (
+        g(1, 3) * g(3, 4) * g(4, 1)
+        + g(1, 4) * g(4, 3) * g(3, 1)
+        - g(1, 4) * g(3, 3) * g(4, 1)
+        - g(1, 3) * g(3, 1) * g(4, 4)
+    ) / den
+    b12 = (
+        g(1, 3) * g(3, 4) * g(4, 2)
+        + g(1, 4) * g(4, 3) * g(3, 2)
+        - g(1, 4) * g(3, 3) * g(4, 2)
+        - g(1, 3) * g(3, 2) * g(4, 4)
+    ) / den
+    b22 = (
+        g(2, 3) * g(3, 4) * g(4, 2)
+        + g(2, 4) * g(4, 3) * g(3, 2)
+        - g(2, 4) * g(3, 3) * g(4, 2)
+        - g(2, 3) * g(3, 2) * g(4, 4)
+    ) / den
     return b11, b12, b22
 
 

@@ -153,8 +153,9 @@ def elastic_ellipse_from_relative(k1_rel, k2_rel, delta, alpha=0.0) -> ContactEl
     return _ellipse_from_AB(0.5 * lo, 0.5 * hi, alpha_B, delta)
 
 
-def elastic_ellipse_at(c1: PrincipalCurvatures, c2: PrincipalCurvatures, delta, *,
-                       normal_tol: float = 1e-6) -> ContactEllipse:
+def elastic_ellipse_at(
+    c1: PrincipalCurvatures, c2: PrincipalCurvatures, delta, *, normal_tol: float = 1e-6
+) -> ContactEllipse:
     """Elastic-approach ellipse from both surfaces' :class:`PrincipalCurvatures` at the
     contact point (same unit normal; see gearrep.curvature.with_opposite_normal), including
     the unit 3-vectors of the major and minor axes. Seed 002 eq 2.6.1-2.6.6 with the true
@@ -228,8 +229,9 @@ def hertz_ratio(b_over_a) -> np.ndarray:
     return elliprd(0.0, 1.0, p) / elliprd(0.0, p, 1.0)
 
 
-def hertz_contact(k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: float = 1e-13,
-                  maxiter: int = 50) -> HertzContact:
+def hertz_contact(
+    k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: float = 1e-13, maxiter: int = 50
+) -> HertzContact:
     """Hertz contact of two elastic bodies from the principal relative curvatures at the
     contact point (kappa^(1) - kappa^(2), any common normal; both must have one sign), the
     normal load and the elastic constants. Johnson sect. 4.2 (eq 4.33-4.36, 3.63-3.64):
@@ -243,7 +245,8 @@ def hertz_contact(k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: floa
     load = _check_positive("load", load)
     Estar = effective_modulus(E1, nu1, E2, nu2)
     k1_rel, k2_rel, load, Estar = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (k1_rel, k2_rel, load, Estar)))
+        *(np.asarray(x, dtype=float) for x in (k1_rel, k2_rel, load, Estar))
+    )
     shape = k1_rel.shape
     k1f, k2f = k1_rel.ravel(), k2_rel.ravel()
     ok = (k1f * k2f > 0) & np.isfinite(k1f) & np.isfinite(k2f)
@@ -263,8 +266,7 @@ def hertz_contact(k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: floa
             return (np.log(hertz_ratio(np.sqrt(p))) - target[rows])[:, None]
 
         x0 = (2.0 / 3.0) * target  # a/b ~ (B/A)^(2/3) (Johnson)
-        sr: SolveResult = newton(fun, x0[:, None], tol=tol, maxiter=maxiter, lower=[0.0],
-                                 rows=True)
+        sr: SolveResult = newton(fun, x0[:, None], tol=tol, maxiter=maxiter, lower=[0.0], rows=True)
         s[idx], res[idx], its[idx], status[idx] = sr.x[:, 0], sr.residual, sr.iterations, sr.status
     p = np.exp(-2.0 * s)
     Is, _, K = _integrals(np.where(ok, p, 1.0))
@@ -279,5 +281,4 @@ def hertz_contact(k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: floa
     for arr in (a, b, p0, approach, e):
         arr[bad] = np.nan
     r = lambda x: x.reshape(shape)  # noqa: E731
-    return HertzContact(r(a), r(b), r(p0), r(approach), r(e), r(A), r(B), Estar,
-                        r(res), r(its), r(status))
+    return HertzContact(r(a), r(b), r(p0), r(approach), r(e), r(A), r(B), Estar, r(res), r(its), r(status))

@@ -131,8 +131,7 @@ class Motion:
             m = m[..., None]
         if m.shape[-1] != self.n_params:
             raise ValueError(
-                f"m must have last dimension {self.n_params} (motion parameters {self.names}), "
-                f"got shape {m.shape}"
+                f"m must have last dimension {self.n_params} (motion parameters {self.names}), got shape {m.shape}"
             )
         return m
 
@@ -154,8 +153,15 @@ class FunctionMotion(Motion):
     (exact derivatives) when the motion is a product of rotations and translations.
     """
 
-    def __init__(self, M: Callable, n_params: int = 1, names: Sequence[str] | None = None,
-                 dM: Callable | None = None, d2M: Callable | None = None, fd_step: float = 1e-3):
+    def __init__(
+        self,
+        M: Callable,
+        n_params: int = 1,
+        names: Sequence[str] | None = None,
+        dM: Callable | None = None,
+        d2M: Callable | None = None,
+        fd_step: float = 1e-3,
+    ):
         if n_params not in (1, 2):
             raise ValueError(f"n_params must be 1 or 2, got {n_params!r}")
         if not (fd_step > 0):
@@ -176,8 +182,7 @@ class FunctionMotion(Motion):
         if self._dM is not None:
             dM = np.asarray(self._dM(m), dtype=float)
         else:
-            dM = np.stack([sum(w * at(o * h * eye[j]) for w, o in zip(_D1, _D1_OFF)) / h
-                           for j in range(k)], axis=-3)
+            dM = np.stack([sum(w * at(o * h * eye[j]) for w, o in zip(_D1, _D1_OFF)) / h for j in range(k)], axis=-3)
         if self._d2M is not None:
             d2M = np.asarray(self._d2M(m), dtype=float)
         else:
@@ -186,12 +191,16 @@ class FunctionMotion(Motion):
                 row = []
                 for j in range(k):
                     if i == j:
-                        row.append(sum(w * (M if o == 0 else at(o * h * eye[i]))
-                                       for w, o in zip(_D2, _D2_OFF)) / h**2)
+                        row.append(sum(w * (M if o == 0 else at(o * h * eye[i])) for w, o in zip(_D2, _D2_OFF)) / h**2)
                     else:
-                        row.append(sum(wi * wj * at(oi * h * eye[i] + oj * h * eye[j])
-                                       for wi, oi in zip(_D1, _D1_OFF)
-                                       for wj, oj in zip(_D1, _D1_OFF)) / h**2)
+                        row.append(
+                            sum(
+                                wi * wj * at(oi * h * eye[i] + oj * h * eye[j])
+                                for wi, oi in zip(_D1, _D1_OFF)
+                                for wj, oj in zip(_D1, _D1_OFF)
+                            )
+                            / h**2
+                        )
                 rows.append(np.stack(row, axis=-3))
             d2M = np.stack(rows, axis=-4)
         return M, dM, d2M
@@ -249,8 +258,9 @@ def _coeffs(coeffs):
 def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
     """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
     s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
-    return _Factor("rot", _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3),
-                   _coeffs(coeffs), float(offset))
+    return _Factor(
+        "rot", _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3), _coeffs(coeffs), float(offset)
+    )
 
 
 def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
@@ -287,9 +297,7 @@ class ChainMotion(Motion):
             if not isinstance(f, _Factor):
                 raise ValueError("factors must be made by rotation(), translation() or fixed()")
             if f.kind != "fixed" and f.coeffs.size != self.n_params:
-                raise ValueError(
-                    f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}"
-                )
+                raise ValueError(f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}")
         self.factors = tuple(factors)
 
     def matrices(self, m):
@@ -310,12 +318,15 @@ class ChainMotion(Motion):
             F, Fs, Fss = f.evaluate(s)
             dF = f.coeffs[None, :, None, None] * Fs[:, None]  # (n, k, 4, 4)
             d2F = (f.coeffs[:, None] * f.coeffs[None, :])[None, :, :, None, None] * Fss[:, None, None]
-            d2P = (d2P @ F[:, None, None] + dP[:, :, None] @ dF[:, None, :]
-                   + dP[:, None, :] @ dF[:, :, None] + P[:, None, None] @ d2F)
+            d2P = (
+                d2P @ F[:, None, None]
+                + dP[:, :, None] @ dF[:, None, :]
+                + dP[:, None, :] @ dF[:, :, None]
+                + P[:, None, None] @ d2F
+            )
             dP = dP @ F[:, None] + P[:, None] @ dF
             P = P @ F
-        return (P.reshape(shape + (4, 4)), dP.reshape(shape + (k, 4, 4)),
-                d2P.reshape(shape + (k, k, 4, 4)))
+        return (P.reshape(shape + (4, 4)), dP.reshape(shape + (k, 4, 4)), d2P.reshape(shape + (k, k, 4, 4)))
 
 
 def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi") -> ChainMotion:
@@ -343,8 +354,11 @@ def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi")
         raise ValueError(f"member_side must be +1 or -1, got {member_side!r}")
     s = -float(member_side)
     return ChainMotion(
-        [rotation((0, 0, 1), [s]), translation((1.0, 0.0, 0.0), [0.0], offset=s * r_p),
-         translation((0.0, -r_p, 0.0), [1.0])],
+        [
+            rotation((0, 0, 1), [s]),
+            translation((1.0, 0.0, 0.0), [0.0], offset=s * r_p),
+            translation((0.0, -r_p, 0.0), [1.0]),
+        ],
         names=(name,),
     )
 
@@ -407,8 +421,7 @@ def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     f_u = np.einsum("na,nka->nk", n_u, w) + np.einsum("na,nka->nk", n, Om_ru)
     f_v = np.einsum("na,nka->nk", n_v, w) + np.einsum("na,nka->nk", n, Om_rv)
     # df_j/dm_i = n . (X_ij r_h) - n . (omega_i x w_j)
-    f_m = np.einsum("na,nija->nji", n, Xr) - np.einsum(
-        "na,nija->nji", n, cross(omega[:, :, None, :], w[:, None, :, :]))
+    f_m = np.einsum("na,nija->nji", n, Xr) - np.einsum("na,nija->nji", n, cross(omega[:, :, None, :], w[:, None, :, :]))
     J = np.concatenate([f_u[..., None], f_v[..., None], f_m], axis=-1)
     T = np.concatenate([p.r_u[:, None], p.r_v[:, None], w], axis=1)
     nq = 2 + k
@@ -482,8 +495,9 @@ def _litvin_matrix(loc: LocalGeometry):
     """Litvin's singularity matrix [[T . t1], [T . t2], [J]] ((2+k)-square) per point."""
     t1 = loc.tool.r_u / np.linalg.norm(loc.tool.r_u, axis=-1, keepdims=True)
     t2 = cross(loc.n, t1)
-    A = np.concatenate([np.einsum("nqa,na->nq", loc.T, t1)[:, None],
-                        np.einsum("nqa,na->nq", loc.T, t2)[:, None], loc.J], axis=1)
+    A = np.concatenate(
+        [np.einsum("nqa,na->nq", loc.T, t1)[:, None], np.einsum("nqa,na->nq", loc.T, t2)[:, None], loc.J], axis=1
+    )
     return A
 
 
@@ -521,8 +535,18 @@ class Envelope:
     singular_tol : threshold on ``singular_measure`` for the ``singular`` flag
     """
 
-    def __init__(self, tool: Surface, motion: Motion, free=("u", "v"), *, lower=None, upper=None,
-                 tol: float = 1e-12, maxiter: int = 50, singular_tol: float = 1e-6):
+    def __init__(
+        self,
+        tool: Surface,
+        motion: Motion,
+        free=("u", "v"),
+        *,
+        lower=None,
+        upper=None,
+        tol: float = 1e-12,
+        maxiter: int = 50,
+        singular_tol: float = 1e-6,
+    ):
         if not isinstance(tool, Surface):
             raise ValueError("tool must be a gearrep.surface.Surface")
         if not isinstance(motion, Motion) or motion.n_params not in (1, 2):
@@ -611,8 +635,7 @@ class Envelope:
         def jac(x, idx):
             return _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x)).J[:, :, S]
 
-        res = newton(fun, x0, jac, tol=self.tol, maxiter=self.maxiter, lower=self.lower,
-                     upper=self.upper, rows=True)
+        res = newton(fun, x0, jac, tol=self.tol, maxiter=self.maxiter, lower=self.lower, upper=self.upper, rows=True)
         return res, self._assemble(a, b, res.x)
 
     def _free_values(self, a, b):
@@ -684,8 +707,9 @@ class Envelope:
         tan1 = np.einsum("nqa,nqf->nfa", loc.T, D)
         tangents = np.einsum("nab,nfb->nfa", R, tan1)
         meas, det = _singularity(loc)
-        return EnvelopeResult(self.names, q, point, normal, tangents, meas,
-                              np.nan_to_num(meas, nan=np.inf) < self.singular_tol, det, res)
+        return EnvelopeResult(
+            self.names, q, point, normal, tangents, meas, np.nan_to_num(meas, nan=np.inf) < self.singular_tol, det, res
+        )
 
     def at(self, q) -> EnvelopeResult:
         """Record at given full parameters q (n, 2+k) without solving (status CONVERGED where
@@ -761,19 +785,19 @@ class EnvelopeSurface(Surface):
         D2[:, list(env.free)] = 0.0
         R = loc.M[:, :3, :3]
         first = np.einsum("nqa,nqf->nfa", loc.T, D)  # (n,2,3) in S_1
-        second = (np.einsum("npqa,npf,nqg->nfga", loc.H, D, D)
-                  + np.einsum("nqa,nqfg->nfga", loc.T, D2))
+        second = np.einsum("npqa,npf,nqg->nfga", loc.H, D, D) + np.einsum("nqa,nqfg->nfga", loc.T, D2)
         first = np.einsum("nab,nfb->nfa", R, first)
         second = np.einsum("nab,nfgb->nfga", R, second)
         r = np.einsum("nab,nb->na", R, loc.tool.r) + loc.M[:, :3, 3]
-        nanify = (lambda x: np.where(bad.reshape((-1,) + (1,) * (x.ndim - 1)), np.nan, x))
+        nanify = lambda x: np.where(bad.reshape((-1,) + (1,) * (x.ndim - 1)), np.nan, x)
         r, first, second = nanify(r), nanify(first), nanify(second)
 
         def sh(x):
             return x.reshape(shape + (3,))
 
-        return SurfacePoint(sh(r), sh(first[:, 0]), sh(first[:, 1]), sh(second[:, 0, 0]),
-                            sh(second[:, 0, 1]), sh(second[:, 1, 1]))
+        return SurfacePoint(
+            sh(r), sh(first[:, 0]), sh(first[:, 1]), sh(second[:, 0, 0]), sh(second[:, 0, 1]), sh(second[:, 1, 1])
+        )
 
 
 def singular_points(envelope: Envelope, fixed_name, fixed_value, guess) -> EnvelopeResult:
@@ -795,8 +819,10 @@ def singular_points(envelope: Envelope, fixed_name, fixed_value, guess) -> Envel
     try:
         x0 = np.broadcast_to(np.asarray(guess, dtype=float), (fv.size, 1 + envelope.k)).copy()
     except ValueError:
-        raise ValueError(f"guess must broadcast to ({fv.size}, {1 + envelope.k}): the parameters "
-                         f"{tuple(n for n in envelope.names if n != fixed_name)}") from None
+        raise ValueError(
+            f"guess must broadcast to ({fv.size}, {1 + envelope.k}): the parameters "
+            f"{tuple(n for n in envelope.names if n != fixed_name)}"
+        ) from None
 
     def assemble(x, idx):
         q = np.empty((x.shape[0], 2 + envelope.k))

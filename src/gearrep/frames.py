@@ -276,8 +276,9 @@ def misalignment_rotation(gamma_h=0.0, gamma_v=0.0, axes: str = "xy") -> np.ndar
     return rotation(axes[0], gamma_h) @ rotation(axes[1], gamma_v)
 
 
-def gear_mounting(center_distance, *, d_center=0.0, d_axial=0.0, gamma_in_plane=0.0,
-                  gamma_out_of_plane=0.0, center_axis: str = "x") -> np.ndarray:
+def gear_mounting(
+    center_distance, *, d_center=0.0, d_axial=0.0, gamma_in_plane=0.0, gamma_out_of_plane=0.0, center_axis: str = "x"
+) -> np.ndarray:
     """M_fq: coordinates in the (non-rotating) mounting frame S_q of a misaligned gear ->
     the fixed frame S_f of the pinion, for parallel-axis gears.
 

@@ -141,8 +141,9 @@ def _boundary_solve(pair, contact: ContactPoints, j: int, v1_fixed, tol=1e-12, m
     return phi1, c, res
 
 
-def engagement_limits(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, step=None,
-                      max_steps: int = 400, tol: float = 1e-12):
+def engagement_limits(
+    pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, step=None, max_steps: int = 400, tol: float = 1e-12
+):
     """Angles phi_1B < phi_1E at which one tooth pair enters and leaves mesh (eq 5.13's limits).
 
     Walks the path of contact by continuation from ``phi1_start`` (a position inside the
@@ -157,8 +158,10 @@ def engagement_limits(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1
         raise ValueError(f"step must be > 0, got {step!r}")
     c0 = solve_contact(pair, phi1_start, start, v1=v1, tol=tol)
     if c0.status[0] != Status.CONVERGED:
-        raise ValueError(f"no contact inside the flanks at phi1_start = {phi1_start!r} "
-                         f"(status {c0.status_name[0]}); give another phi1_start or start")
+        raise ValueError(
+            f"no contact inside the flanks at phi1_start = {phi1_start!r} "
+            f"(status {c0.status_name[0]}); give another phi1_start or start"
+        )
     out = []
     for direction in (-1.0, 1.0):
         last = c0
@@ -183,8 +186,9 @@ def engagement_limits(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1
             m, _, _ = _margins(pair, _values(last))
             j = int(np.argmin(m[0]))
         phi, c, res = _boundary_solve(pair, last, j, v1, tol=tol)
-        if res.status[0] != Status.CONVERGED or not (min(last.phi1[0], first_out.phi1[0]) - 1e-9 <= phi
-                                                     <= max(last.phi1[0], first_out.phi1[0]) + 1e-9):
+        if res.status[0] != Status.CONVERGED or not (
+            min(last.phi1[0], first_out.phi1[0]) - 1e-9 <= phi <= max(last.phi1[0], first_out.phi1[0]) + 1e-9
+        ):
             # a different boundary was crossed first: try all, keep the one nearest the last inside point
             best = None
             for jj in range(8):
@@ -260,8 +264,9 @@ class _TEFunction:
         return te
 
 
-def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, n_points: int = 81,
-                  tol: float = 1e-12) -> MeshingCycle:
+def meshing_cycle(
+    pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, n_points: int = 81, tol: float = 1e-12
+) -> MeshingCycle:
     """Engagement limits, contact ratio (eq 5.13 corrected), transfer points and the TE over the
     real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring).
 
@@ -317,15 +322,26 @@ def meshing_cycle(pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=Non
         t_in = np.nan
         phi = np.linspace(b.phi1, b.phi1 + p1, int(n_points))
     te, k = envelope(phi)
-    return MeshingCycle(begin=b, end=e, contact_ratio=mc, path=path, transfer_in=float(t_in),
-                        transfer_out=float(t_out), transfer_kind=kind, phi1=phi, te=te, pair_index=k)
+    return MeshingCycle(
+        begin=b,
+        end=e,
+        contact_ratio=mc,
+        path=path,
+        transfer_in=float(t_in),
+        transfer_out=float(t_out),
+        transfer_kind=kind,
+        phi1=phi,
+        te=te,
+        pair_index=k,
+    )
 
 
 # ----------------------------------------------------------------------------------------------
 # upper envelope of sampled per-tooth TE curves
 # ----------------------------------------------------------------------------------------------
-def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolation: str = "linear",
-                   tol: float = 1e-12, engaged=None) -> np.ndarray:
+def pair_te_curves(
+    phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolation: str = "linear", tol: float = 1e-12, engaged=None
+) -> np.ndarray:
     """TE of neighbouring tooth pairs from one pair's TE sampled on a grid.
 
     Tooth pair k engages one angular pitch (``pitch`` = 2 pi / N1) after pair k - 1, so with
@@ -355,8 +371,10 @@ def pair_te_curves(phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolat
         def f(q):
             return spline(np.clip(q, lo, hi))
     else:
+
         def f(q):
             return np.interp(q, x, y)
+
     out = []
     for k in pairs:
         q = at - k * pitch
@@ -389,7 +407,10 @@ def handover_jump(curves, lead, envelope) -> float:
     jump = 0.0
     for i in np.flatnonzero(lead[1:] != lead[:-1]):
         a, b = lead[i], lead[i + 1]
-        both = [abs(curves[a, j] - curves[b, j]) for j in (i, i + 1)
-                if np.isfinite(curves[a, j]) and np.isfinite(curves[b, j])]
+        both = [
+            abs(curves[a, j] - curves[b, j])
+            for j in (i, i + 1)
+            if np.isfinite(curves[a, j]) and np.isfinite(curves[b, j])
+        ]
         jump = max(jump, min(both) if both else abs(envelope[i + 1] - envelope[i]))
     return jump

@@ -12,7 +12,12 @@ import re
 import matplotlib as mpl
 
 __all__ = [
-    "STYLE", "use_style", "label_axes", "computed", "published", "finish",
+    "STYLE",
+    "use_style",
+    "label_axes",
+    "computed",
+    "published",
+    "finish",
 ]
 
 STYLE = {
@@ -42,8 +47,10 @@ def use_style() -> None:
 
 def _require_unit(label: str, which: str) -> str:
     if not _UNIT.search(label):
-        raise ValueError(f"{which} label {label!r} must end with its unit in brackets, e.g. 'KE [arcsec]' "
-                         "(use '[-]' for dimensionless)")
+        raise ValueError(
+            f"{which} label {label!r} must end with its unit in brackets, e.g. 'KE [arcsec]' "
+            "(use '[-]' for dimensionless)"
+        )
     return label
 
 

@@ -25,18 +25,52 @@ import pandas as pd
 from .units import KNOWN_UNITS
 
 __all__ = [
-    "VALUE_COLUMNS", "PARAM_COLUMNS", "CLAIM_COLUMNS", "SEEDS", "PRECISION_KINDS", "ROUNDINGS",
-    "CLAIM_KINDS", "PAPERS", "PublishedDataError", "Published", "printed_precision",
-    "validate_values", "validate_params", "validate_claims", "load", "parse_row", "param_table",
+    "VALUE_COLUMNS",
+    "PARAM_COLUMNS",
+    "CLAIM_COLUMNS",
+    "SEEDS",
+    "PRECISION_KINDS",
+    "ROUNDINGS",
+    "CLAIM_KINDS",
+    "PAPERS",
+    "PublishedDataError",
+    "Published",
+    "printed_precision",
+    "validate_values",
+    "validate_params",
+    "validate_claims",
+    "load",
+    "parse_row",
+    "param_table",
 ]
 
 VALUE_COLUMNS = [
-    "id", "seed", "source", "line", "row", "quantity", "printed", "value", "unit",
-    "precision_kind", "precision", "rounding", "notes",
+    "id",
+    "seed",
+    "source",
+    "line",
+    "row",
+    "quantity",
+    "printed",
+    "value",
+    "unit",
+    "precision_kind",
+    "precision",
+    "rounding",
+    "notes",
 ]
 PARAM_COLUMNS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
 CLAIM_COLUMNS = [
-    "id", "seed", "source", "line", "kind", "statement", "parameters", "confirm_if", "refute_if", "notes",
+    "id",
+    "seed",
+    "source",
+    "line",
+    "kind",
+    "statement",
+    "parameters",
+    "confirm_if",
+    "refute_if",
+    "notes",
 ]
 SEEDS = ("000", "002", "003", "004")
 PRECISION_KINDS = ("decimals", "sig")
@@ -254,7 +288,6 @@ def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> 
     return dict(zip(sel["parameter"], sel["value"]))
 
 
-
 # ----------------------------------------------------------------------------- manifest
 
 #: The manifest of a published-data directory: one row per data file.
@@ -283,8 +316,7 @@ def file_entry(path) -> dict:
     kind = _kind(path.name)
     if kind is None:
         raise PublishedDataError(
-            f"{path.name}: not a published-data file name ({', '.join(DATA_PATTERNS.values())}); "
-            f"load() would ignore it"
+            f"{path.name}: not a published-data file name ({', '.join(DATA_PATTERNS.values())}); load() would ignore it"
         )
     raw = path.read_bytes()
     try:
@@ -360,7 +392,8 @@ def _difference(listed: pd.Series, path: Path) -> str | None:
         return None
     per_seed = ", ".join(
         f"seed {s} {listed[f'rows_{s}']} -> {now[f'rows_{s}']}"
-        for s in SEEDS if now[f"rows_{s}"] != int(listed[f"rows_{s}"])
+        for s in SEEDS
+        if now[f"rows_{s}"] != int(listed[f"rows_{s}"])
     )
     seeds = f" ({per_seed})" if per_seed else ""
     if now["rows"] == 0:
@@ -369,7 +402,9 @@ def _difference(listed: pd.Series, path: Path) -> str | None:
         return f"{name}: shrunk from {rows} to {now['rows']} rows{seeds}"
     if now["rows"] > rows:
         return f"{name}: grown from {rows} to {now['rows']} rows{seeds}"
-    return f"{name}: altered (same {rows} rows{seeds}, sha256 {now['sha256'][:12]}... is not {listed['sha256'][:12]}...)"
+    return (
+        f"{name}: altered (same {rows} rows{seeds}, sha256 {now['sha256'][:12]}... is not {listed['sha256'][:12]}...)"
+    )
 
 
 def verify_manifest(directory, manifest: pd.DataFrame | None = None) -> pd.DataFrame:
@@ -387,7 +422,8 @@ def verify_manifest(directory, manifest: pd.DataFrame | None = None) -> pd.DataF
     problems += [f"{p.name}: not listed in {MANIFEST_NAME}" for p in _data_files(d) if p.name not in listed]
     if problems:
         raise PublishedDataError(
-            f"published data in {d} differ from {MANIFEST_NAME}:\n  " + "\n  ".join(problems)
+            f"published data in {d} differ from {MANIFEST_NAME}:\n  "
+            + "\n  ".join(problems)
             + f"\nIf the change is deliberate, run `{_REGENERATE} {d}` and commit the manifest "
             "with the data."
         )
@@ -413,8 +449,10 @@ def main(argv: list[str] | None = None) -> int:
         if args.write_manifest:
             out = write_manifest(args.write_manifest)
             m = read_manifest(args.write_manifest)
-            print(f"wrote {out}: {len(m)} files, {int(m['rows'].sum())} rows; scored rows per seed "
-                  f"{scored_rows_per_seed(m)}")
+            print(
+                f"wrote {out}: {len(m)} files, {int(m['rows'].sum())} rows; scored rows per seed "
+                f"{scored_rows_per_seed(m)}"
+            )
         else:
             m = verify_manifest(args.verify)
             load(args.verify)

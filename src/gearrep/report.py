@@ -18,7 +18,8 @@ from .checks import STATUSES, summary
 from .published import PAPERS
 
 __all__ = [
-    "anchor", "render",
+    "anchor",
+    "render",
 ]
 
 _STATUS_COLOURS = {
@@ -86,8 +87,14 @@ def _bar(counts: pd.Series) -> str:
     return f'<div class="bar">{spans}</div>'
 
 
-def render(card: pd.DataFrame, figures: dict[str, bytes], errata: pd.DataFrame, environment: dict,
-           notebooks: dict[str, str] | None = None, runtime_s: float | None = None) -> str:
+def render(
+    card: pd.DataFrame,
+    figures: dict[str, bytes],
+    errata: pd.DataFrame,
+    environment: dict,
+    notebooks: dict[str, str] | None = None,
+    runtime_s: float | None = None,
+) -> str:
     """HTML of the report.
 
     card : the scorecard (columns of gearrep.checks.scorecard plus ``replication``)
@@ -100,12 +107,15 @@ def render(card: pd.DataFrame, figures: dict[str, bytes], errata: pd.DataFrame, 
     if "status" not in card.columns or "seed" not in card.columns:
         raise ValueError("scorecard needs 'seed' and 'status' columns")
     notebooks = notebooks or {}
-    parts = [f"<!doctype html><html><head><meta charset='utf-8'><title>gearrep replication report</title>"
-             f"<style>{_CSS}</style></head><body>",
-             "<h1>gearrep replication report</h1>",
-             f"<p>{len(card)} published values and claims checked against our computations. "
-             "Status legend: " + ", ".join(
-                 f'<span class="status" style="color:{_STATUS_COLOURS[s]}">{s}</span>' for s in STATUSES) + ".</p>"]
+    parts = [
+        f"<!doctype html><html><head><meta charset='utf-8'><title>gearrep replication report</title>"
+        f"<style>{_CSS}</style></head><body>",
+        "<h1>gearrep replication report</h1>",
+        f"<p>{len(card)} published values and claims checked against our computations. "
+        "Status legend: "
+        + ", ".join(f'<span class="status" style="color:{_STATUS_COLOURS[s]}">{s}</span>' for s in STATUSES)
+        + ".</p>",
+    ]
     if runtime_s is not None:
         parts.append(f"<p>Total workflow run time (sum of job wall times): {runtime_s:.1f} s.</p>")
 
@@ -115,10 +125,12 @@ def render(card: pd.DataFrame, figures: dict[str, bytes], errata: pd.DataFrame, 
     rows = []
     for _, r in by.iterrows():
         counts = pd.Series({s: r[s] for s in STATUSES})
-        rows.append(f"<tr><td>{r['seed']}</td><td><a href='#paper-{r['seed']}'>{html.escape(str(r['paper']))}</a>"
-                    f"</td><td>{_bar(counts)}</td>"
-                    + "".join(f"<td class='num'>{int(r[s])}</td>" for s in STATUSES)
-                    + f"<td class='num'>{int(r['total'])}</td></tr>")
+        rows.append(
+            f"<tr><td>{r['seed']}</td><td><a href='#paper-{r['seed']}'>{html.escape(str(r['paper']))}</a>"
+            f"</td><td>{_bar(counts)}</td>"
+            + "".join(f"<td class='num'>{int(r[s])}</td>" for s in STATUSES)
+            + f"<td class='num'>{int(r['total'])}</td></tr>"
+        )
     head = "".join(f"<th>{h}</th>" for h in ["seed", "paper", "", *STATUSES, "total"])
     parts.append(f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>")
 
@@ -126,29 +138,57 @@ def render(card: pd.DataFrame, figures: dict[str, bytes], errata: pd.DataFrame, 
         parts.append("<h2 id='figures'>Key figures</h2>")
         for caption, png in figures.items():
             b64 = base64.b64encode(png).decode("ascii")
-            parts.append(f"<div class='fig'><img alt='{html.escape(caption)}' src='data:image/png;base64,{b64}'>"
-                         f"<p>{html.escape(caption)}</p></div>")
+            parts.append(
+                f"<div class='fig'><img alt='{html.escape(caption)}' src='data:image/png;base64,{b64}'>"
+                f"<p>{html.escape(caption)}</p></div>"
+            )
 
     for seed, grp in card.groupby("seed", sort=True):
         parts.append(f"<h2 id='paper-{seed}'>Seed {seed}: {html.escape(PAPERS.get(seed, ''))}</h2>")
         reps = sorted({r for r in grp.get("replication", pd.Series(dtype=str)).fillna("") if r})
         if reps:
-            parts.append("<p>Notebooks: " + ", ".join(
-                f"<a href='{html.escape(notebooks[r])}'>{html.escape(r)}</a>" if r in notebooks else html.escape(r)
-                for r in reps) + "</p>")
+            parts.append(
+                "<p>Notebooks: "
+                + ", ".join(
+                    f"<a href='{html.escape(notebooks[r])}'>{html.escape(r)}</a>" if r in notebooks else html.escape(r)
+                    for r in reps
+                )
+                + "</p>"
+            )
         by_src = summary(grp, by=("source",))
         parts.append(_table(by_src, status_col=None))
-        cols = [c for c in ["id", "source", "row", "quantity", "unit", "published", "computed", "abs_err",
-                            "tolerance", "status", "note"] if c in grp.columns]
+        cols = [
+            c
+            for c in [
+                "id",
+                "source",
+                "row",
+                "quantity",
+                "unit",
+                "published",
+                "computed",
+                "abs_err",
+                "tolerance",
+                "status",
+                "note",
+            ]
+            if c in grp.columns
+        ]
 
         def link(r, _nb=notebooks):
             rep = r.get("replication", "")
             return f"{_nb[rep]}#{anchor(r['source'])}" if rep in _nb else ""
 
-        parts.append(f"<details><summary>All {len(grp)} rows</summary>"
-                     + _table(grp.assign(replication=grp.get("replication", ""))[cols + ["replication"]]
-                              if "replication" in grp.columns else grp[cols],
-                              links={"source": link}) + "</details>")
+        parts.append(
+            f"<details><summary>All {len(grp)} rows</summary>"
+            + _table(
+                grp.assign(replication=grp.get("replication", ""))[cols + ["replication"]]
+                if "replication" in grp.columns
+                else grp[cols],
+                links={"source": link},
+            )
+            + "</details>"
+        )
 
     parts.append("<h2 id='errata'>Errata found in the papers</h2>")
     if len(errata):

@@ -233,8 +233,12 @@ def _schema_of(s: Setting) -> dict:
     d: dict = {}
     if s.kind in ("number", "integer"):
         d["type"] = s.kind
-        for ours, theirs in (("ge", "minimum"), ("le", "maximum"), ("gt", "exclusiveMinimum"),
-                             ("lt", "exclusiveMaximum")):
+        for ours, theirs in (
+            ("ge", "minimum"),
+            ("le", "maximum"),
+            ("gt", "exclusiveMinimum"),
+            ("lt", "exclusiveMaximum"),
+        ):
             if getattr(s, ours) is not None:
                 d[theirs] = getattr(s, ours)
     elif s.kind == "string":
@@ -264,6 +268,7 @@ def rows(decl: Mapping[str, Setting], prefix: str = "") -> list[dict]:
         if s.kind == "group":
             out += rows(s.fields, f"{prefix}{k}.")
         else:
-            out.append({"name": f"{prefix}{k}", "value": s.value, "unit": s.unit, "allowed": s.allowed(),
-                        "reason": s.reason})
+            out.append(
+                {"name": f"{prefix}{k}", "value": s.value, "unit": s.unit, "allowed": s.allowed(), "reason": s.reason}
+            )
     return out

@@ -20,7 +20,12 @@ from enum import IntEnum
 import numpy as np
 
 __all__ = [
-    "Status", "STATUS_NAMES", "status_names", "SolveResult", "numeric_jacobian", "newton",
+    "Status",
+    "STATUS_NAMES",
+    "status_names",
+    "SolveResult",
+    "numeric_jacobian",
+    "newton",
 ]
 
 

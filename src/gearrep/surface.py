@@ -92,9 +92,7 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3) -> Surf
     r_uu = sum(w * (r if o == 0 else shifted(o * h_u, 0.0)) for w, o in zip(_D2, _D2_OFF)) / h_u**2
     r_vv = sum(w * (r if o == 0 else shifted(0.0, o * h_v)) for w, o in zip(_D2, _D2_OFF)) / h_v**2
     r_uv = sum(
-        wi * wj * shifted(oi * h_u, oj * h_v)
-        for wi, oi in zip(_D1, _D1_OFF)
-        for wj, oj in zip(_D1, _D1_OFF)
+        wi * wj * shifted(oi * h_u, oj * h_v) for wi, oi in zip(_D1, _D1_OFF) for wj, oj in zip(_D1, _D1_OFF)
     ) / (h_u * h_v)
     return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
 
@@ -149,8 +147,9 @@ class RotatedSurface(Surface):
 
     def evaluate(self, u, v) -> SurfacePoint:
         P = self.surface.evaluate(u, v)
-        return SurfacePoint(self._q(P.r) + self.t, self._q(P.r_u), self._q(P.r_v), self._q(P.r_uu),
-                            self._q(P.r_uv), self._q(P.r_vv))
+        return SurfacePoint(
+            self._q(P.r) + self.t, self._q(P.r_u), self._q(P.r_v), self._q(P.r_uu), self._q(P.r_uv), self._q(P.r_vv)
+        )
 
     def contains(self, u, v, tol: float = 1e-9):
         """The wrapped surface's ``contains`` (parameters are unchanged by the motion)."""

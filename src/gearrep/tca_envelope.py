@@ -32,8 +32,20 @@ from .solve import SolveResult, Status, newton, status_names
 _GeneratedGear = Any
 _ZAHob = Any
 
-__all__ = ["Flank", "make_flank", "member_geometry", "dropped_component", "tangency_system", "ContactPath",
-           "solve_points", "predict", "hob_pitch_l", "require", "trace_path", "physical_contact"]
+__all__ = [
+    "Flank",
+    "make_flank",
+    "member_geometry",
+    "dropped_component",
+    "tangency_system",
+    "ContactPath",
+    "solve_points",
+    "predict",
+    "hob_pitch_l",
+    "require",
+    "trace_path",
+    "physical_contact",
+]
 
 
 @dataclass(frozen=True)
@@ -174,10 +186,19 @@ class ContactPath:
 
     def take(self, idx) -> ContactPath:
         s = self.solve
-        return ContactPath(self.phi1[idx], self.x[idx], SolveResult(s.x[idx], s.residual[idx], s.iterations[idx],
-                        s.status[idx], None if s.condition is None else s.condition[idx]), *(getattr(self, f)[idx] for f in
-                        ("r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond")),
-                        *(None if getattr(self, f) is None else getattr(self, f)[idx] for f in _DIAG))
+        return ContactPath(
+            self.phi1[idx],
+            self.x[idx],
+            SolveResult(
+                s.x[idx],
+                s.residual[idx],
+                s.iterations[idx],
+                s.status[idx],
+                None if s.condition is None else s.condition[idx],
+            ),
+            *(getattr(self, f)[idx] for f in ("r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond")),
+            *(None if getattr(self, f) is None else getattr(self, f)[idx] for f in _DIAG),
+        )
 
 
 _DIAG = ("n_tangencies", "tangency_phi2_spread", "tangency_min_gap", "phi2_continuation")
@@ -209,8 +230,19 @@ def _finish(pair, x, phi1, res: SolveResult, drop) -> ContactPath:
     # member frames (placement): Z and radius of the point on each member
     rpm = np.einsum("ab,nb->na", pair.pinion.placement, rp)
     rgm = np.einsum("ab,nb->na", pair.gear.placement, rg)
-    return ContactPath(np.asarray(phi1, float), x, res, np.einsum("nab,nb->na", Ap, rp), Np, Ng, rpm[:, 2],
-                    rgm[:, 2], np.hypot(rpm[:, 0], rpm[:, 1]), np.hypot(rgm[:, 0], rgm[:, 1]), cond)
+    return ContactPath(
+        np.asarray(phi1, float),
+        x,
+        res,
+        np.einsum("nab,nb->na", Ap, rp),
+        Np,
+        Ng,
+        rpm[:, 2],
+        rgm[:, 2],
+        np.hypot(rpm[:, 0], rpm[:, 1]),
+        np.hypot(rgm[:, 0], rgm[:, 1]),
+        cond,
+    )
 
 
 def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_halvings: int = 12) -> ContactPath:
@@ -251,13 +283,20 @@ def hob_pitch_l(hob: _ZAHob) -> float:
 def require(sol: ContactPath, what: str):
     """Raise RuntimeError (with the statuses and residuals) unless every point of ``sol`` converged."""
     if not np.all(sol.converged):
-        raise RuntimeError(f"{what}: TCA solve did not converge (status {list(sol.status_name)}, "
-                           f"residual {sol.solve.residual})")
+        raise RuntimeError(
+            f"{what}: TCA solve did not converge (status {list(sol.status_name)}, residual {sol.solve.residual})"
+        )
 
 
-
-def trace_path(pair, start: ContactPath, phi1, *, tol: float = 1e-11, max_step_rad: float = np.radians(4.0),
-               branch_tol: float = 0.1):
+def trace_path(
+    pair,
+    start: ContactPath,
+    phi1,
+    *,
+    tol: float = 1e-11,
+    max_step_rad: float = np.radians(4.0),
+    branch_tol: float = 0.1,
+):
     """Contact points at all phi1' (n,) [rad] from a converged point ``start`` (one row): the
     predictor from ``start`` gives every point's start and all are solved at once. A root farther
     than ``branch_tol`` (mm or rad, any unknown) from its predicted start is another branch (e.g.
@@ -287,7 +326,6 @@ def trace_path(pair, start: ContactPath, phi1, *, tol: float = 1e-11, max_step_r
     return sol
 
 
-
 def _pinion_outward(pair, sol: ContactPath) -> np.ndarray:
     """Unit normal of the pinion flank in S_f pointing out of its tooth (n, 3). The hob normal
     keeps its side of the flank everywhere, so its outward sign is taken once, at the pitch
@@ -301,8 +339,18 @@ def _pinion_outward(pair, sol: ContactPath) -> np.ndarray:
     return s * np.einsum("nab,nb->na", pair.pinion_rotation(sol.phi1), n)
 
 
-def physical_contact(pair, sol: ContactPath, *, face_width_mm: float, n_starts: int = 9, tol: float = 1e-11, maxiter: int = 12,
-                     max_halvings: int = 3, same_tooth_rad: float = 1e-3, distinct_mm: float = 1e-3) -> ContactPath:
+def physical_contact(
+    pair,
+    sol: ContactPath,
+    *,
+    face_width_mm: float,
+    n_starts: int = 9,
+    tol: float = 1e-11,
+    maxiter: int = 12,
+    max_halvings: int = 3,
+    same_tooth_rad: float = 1e-3,
+    distinct_mm: float = 1e-3,
+) -> ContactPath:
     """The physical contact among all tangencies of the 9 x 9 system at each phi1' of ``sol``.
 
     Where the lengthwise curvatures almost agree (an almost-line contact) the system has several
@@ -339,7 +387,7 @@ def physical_contact(pair, sol: ContactPath, *, face_width_mm: float, n_starts: 
     n_tan = np.ones(n, int)
     spread, min_gap = np.zeros(n), np.zeros(n)
     for i in range(n):
-        idx = i * m + np.flatnonzero(keep[i * m:(i + 1) * m])
+        idx = i * m + np.flatnonzero(keep[i * m : (i + 1) * m])
         if not sol.converged[i]:
             n_tan[i] = 0
             continue
@@ -369,8 +417,13 @@ def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, sam
     x0[~ok0] = np.repeat(sol.x, m, 0)[~ok0]
     phi1 = np.repeat(sol.phi1, m)
     cand = solve_points(pair, phi1, x0, tol=tol, maxiter=maxiter, max_halvings=max_halvings)
-    keep = (ok0 & cand.converged & (np.abs(cand.phi2 - np.repeat(sol.phi2, m)) < same_tooth_rad)
-            & (np.abs(cand.Z_p) <= face_width_mm / 2) & (np.abs(cand.Z_g) <= face_width_mm / 2))
+    keep = (
+        ok0
+        & cand.converged
+        & (np.abs(cand.phi2 - np.repeat(sol.phi2, m)) < same_tooth_rad)
+        & (np.abs(cand.Z_p) <= face_width_mm / 2)
+        & (np.abs(cand.Z_g) <= face_width_mm / 2)
+    )
     return cand, keep
 
 

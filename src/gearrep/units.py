@@ -9,8 +9,20 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
-    "DEG", "ARCMIN", "ARCSEC", "MM_PER_IN", "deg2rad", "rad2deg", "arcsec2rad", "rad2arcsec",
-    "arcmin2rad", "rad2arcmin", "in2mm", "mm2in", "TO_INTERNAL", "KNOWN_UNITS",
+    "DEG",
+    "ARCMIN",
+    "ARCSEC",
+    "MM_PER_IN",
+    "deg2rad",
+    "rad2deg",
+    "arcsec2rad",
+    "rad2arcsec",
+    "arcmin2rad",
+    "rad2arcmin",
+    "in2mm",
+    "mm2in",
+    "TO_INTERNAL",
+    "KNOWN_UNITS",
 ]
 
 DEG = np.pi / 180.0  #: one degree in radians

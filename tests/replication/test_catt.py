@@ -103,8 +103,12 @@ def test_regression_values(tables):
     c = tables["cycle"]
 
     def S(design, pair, reading, phi, col="S_mm2"):
-        r = c[(c["design"] == design) & (c["pair"] == pair) & (c["reading"] == reading)
-              & np.isclose(c["phi_paper_deg"], phi)]
+        r = c[
+            (c["design"] == design)
+            & (c["pair"] == pair)
+            & (c["reading"] == reading)
+            & np.isclose(c["phi_paper_deg"], phi)
+        ]
         assert len(r) == 1
         return float(r[col].iloc[0])
 
@@ -152,11 +156,13 @@ def test_bad_design_data_and_settings_are_refused(pub, design):
         S.resolve(catt.SETTINGS, {"maxiter": 0}, where="catt")
     good = study_settings("catt")
     catt.validate(good, design)
-    bad = [({"section_check": {**good["section_check"], "design": "nope"}}, "catt.section_check.design"),
-           ({"gap_check": {**good["gap_check"], "design": "nope"}}, "catt.gap_check.design"),
-           ({"thickness": {**good["thickness"], "sections_mm": [0.0, 150.0]}}, "catt.thickness.sections_mm"),
-           ({"near_top_eval_deg": 20.0}, "catt.near_top_eval_deg"),
-           ({"near_top_deg": 40.0}, "catt.near_top_deg")]
+    bad = [
+        ({"section_check": {**good["section_check"], "design": "nope"}}, "catt.section_check.design"),
+        ({"gap_check": {**good["gap_check"], "design": "nope"}}, "catt.gap_check.design"),
+        ({"thickness": {**good["thickness"], "sections_mm": [0.0, 150.0]}}, "catt.thickness.sections_mm"),
+        ({"near_top_eval_deg": 20.0}, "catt.near_top_eval_deg"),
+        ({"near_top_deg": 40.0}, "catt.near_top_deg"),
+    ]
     for change, key in bad:
         with pytest.raises(S.SettingError, match=key):
             catt.run({**good, **change}, design, jobs=["settings"])

@@ -48,7 +48,8 @@ def test_face_and_jobs(tables):
 def test_every_published_item_has_its_expected_status(records, published):
     exp = pd.read_csv(EXPECTED)
     ids = set(published.values.loc[published.values["seed"] == "002", "id"]) | set(
-        published.claims.loc[published.claims["seed"] == "002", "id"])
+        published.claims.loc[published.claims["seed"] == "002", "id"]
+    )
     assert set(records["id"]) == ids
     assert set(exp["id"]) == ids, "expected_nasa.csv must list every seed-002 value and claim"
     assert exp["reason"].notna().all() and (exp["reason"].str.len() > 5).all()
@@ -74,7 +75,11 @@ def test_a_missing_table_is_reported_not_computed(tables, published):
 def test_curvatures_two_methods_agree(tables):
     cur = tables["curvatures"]
     assert (cur["max_rel_diff"] < 1e-8).all()
-    assert (tables["path_curvatures"].groupby("member")[["kappa_I_per_in", "kappa_II_per_in"]].agg(np.ptp) < 1e-10).all().all()
+    assert (
+        (tables["path_curvatures"].groupby("member")[["kappa_I_per_in", "kappa_II_per_in"]].agg(np.ptp) < 1e-10)
+        .all()
+        .all()
+    )
 
 
 def test_printed_equations_against_the_library_route(tables):
@@ -102,13 +107,22 @@ def test_aligned_pair_has_zero_te(tables):
 
 def test_regression_own_numbers(tables):
     cur = tables["curvatures"].set_index(["case", "member"])
-    np.testing.assert_allclose(cur.loc[("design", "pinion"), ["kappa_I_per_in", "kappa_II_per_in"]].to_numpy(float),
-                               [0.012537886531791553, 1.5604994926080131], rtol=1e-9)
-    np.testing.assert_allclose(cur.loc[("design", "gear"), ["kappa_I_per_in", "kappa_II_per_in"]].to_numpy(float),
-                               [-0.008300305907457006, 0.5938938106217597], rtol=1e-9)
+    np.testing.assert_allclose(
+        cur.loc[("design", "pinion"), ["kappa_I_per_in", "kappa_II_per_in"]].to_numpy(float),
+        [0.012537886531791553, 1.5604994926080131],
+        rtol=1e-9,
+    )
+    np.testing.assert_allclose(
+        cur.loc[("design", "gear"), ["kappa_I_per_in", "kappa_II_per_in"]].to_numpy(float),
+        [-0.008300305907457006, 0.5938938106217597],
+        rtol=1e-9,
+    )
     ell = tables["ellipse"].set_index(["version", "zone", "case"])
-    np.testing.assert_allclose(ell.loc[(3, "single", "design"), ["major_2a_in", "minor_2b_in", "area_in2"]].to_numpy(float),
-                               [1.0341912583806292, 0.04504746886939616, 0.03658989285208967], rtol=1e-9)
+    np.testing.assert_allclose(
+        ell.loc[(3, "single", "design"), ["major_2a_in", "minor_2b_in", "area_in2"]].to_numpy(float),
+        [1.0341912583806292, 0.04504746886939616, 0.03658989285208967],
+        rtol=1e-9,
+    )
     np.testing.assert_allclose(ell.loc[(1, "single", "design"), "major_2a_in"], 0.28353576678746956, rtol=1e-9)
     te = tables["te_summary"].set_index("case")
     assert te.loc["dgamma_plus", "te_max_arcsec"] == pytest.approx(40.4813, abs=2e-3)
@@ -139,13 +153,16 @@ def test_bench_case_runs(settings, design):
     assert res == pytest.approx(40.4813, abs=1e-3)
 
 
-@pytest.mark.parametrize("override, key", [
-    ({"te_points": 5}, "te_points"),
-    ({"face_width_over_axial_pitch": 0.5}, "face_width_over_axial_pitch"),
-    ({"pinion_hand": "up"}, "pinion_hand"),
-    ({"tol": 1e-3}, "tol"),
-    ({"rho_t_sweep_times_Pn": [8.0]}, "rho_t_sweep_times_Pn"),
-])
+@pytest.mark.parametrize(
+    "override, key",
+    [
+        ({"te_points": 5}, "te_points"),
+        ({"face_width_over_axial_pitch": 0.5}, "face_width_over_axial_pitch"),
+        ({"pinion_hand": "up"}, "pinion_hand"),
+        ({"tol": 1e-3}, "tol"),
+        ({"rho_t_sweep_times_Pn": [8.0]}, "rho_t_sweep_times_Pn"),
+    ],
+)
 def test_settings_are_checked(override, key):
     with pytest.raises(gs.SettingError, match=f"nasa.{key}"):
         gs.resolve(nasa.SETTINGS, override, where="nasa")

@@ -49,8 +49,17 @@ def check_records(tables, published):
 # ---------------------------------------------------------------------------------------------
 def test_convergence_csv_interface(tables):
     conv = tables["convergence"]
-    assert list(conv.columns) == ["case", "formulation", "variant", "n_starts", "phi2_window_rad", "correct_pct",
-                                  "wrong_root_pct", "mean_iterations", "seconds_per_solve"]
+    assert list(conv.columns) == [
+        "case",
+        "formulation",
+        "variant",
+        "n_starts",
+        "phi2_window_rad",
+        "correct_pct",
+        "wrong_root_pct",
+        "mean_iterations",
+        "seconds_per_solve",
+    ]
     assert set(conv["formulation"]) == {"conventional", "reduced"}
     assert {"plain", "damped", "domain", "seeded", "robust", "reduced", "reduced_robust"} <= set(conv["variant"])
     assert conv["correct_pct"].between(0, 100).all() and (conv["seconds_per_solve"] > 0).all()
@@ -62,8 +71,18 @@ def test_convergence_csv_interface(tables):
 
 def test_protocol_is_stated(tables):
     items = set(tables["protocol"]["item"])
-    for needed in ("random generator", "u1 start", "v1 start", "u2, v2 start", "phi2 start", "solver",
-                   "step control", "iteration limit", "tolerance", "converged (correct)"):
+    for needed in (
+        "random generator",
+        "u1 start",
+        "v1 start",
+        "u2, v2 start",
+        "phi2 start",
+        "solver",
+        "step control",
+        "iteration limit",
+        "tolerance",
+        "converged (correct)",
+    ):
         assert needed in items
 
 
@@ -103,16 +122,42 @@ def test_design_from_published_equals_the_printed_numbers(design):
     """The design read from data/published/params_003_*.csv is the one the replication used to
     hard-code (numbers as printed; the readings the thesis leaves open are design.READINGS)."""
     p = design.pairs
-    assert p["spur_52_72"] == dict(n1=52, n2=72, module=1.0, pressure_angle_deg=20.0, face_width=11.42,
-                                   crown1=0.002857, crown2=0.0, phi1_thesis=np.pi / 2)
-    assert p["spur_25_25"] == dict(n1=25, n2=25, module=2.5, pressure_angle_deg=20.0, face_width=25.0,
-                                   crown1=1.0e-4, crown2=1.0e-4, phi1_thesis=np.pi / 2)
-    assert p["helical_25_77"] == dict(n1=25, n2=77, module=5.0, pressure_angle_deg=27.5, helix_angle_deg=20.0,
-                                      face_width=40.0, profile_crown1=1.4e-3, profile_crown2=8.0e-5, hand1=-1,
-                                      phi1_thesis=np.pi / 2)
+    assert p["spur_52_72"] == dict(
+        n1=52,
+        n2=72,
+        module=1.0,
+        pressure_angle_deg=20.0,
+        face_width=11.42,
+        crown1=0.002857,
+        crown2=0.0,
+        phi1_thesis=np.pi / 2,
+    )
+    assert p["spur_25_25"] == dict(
+        n1=25,
+        n2=25,
+        module=2.5,
+        pressure_angle_deg=20.0,
+        face_width=25.0,
+        crown1=1.0e-4,
+        crown2=1.0e-4,
+        phi1_thesis=np.pi / 2,
+    )
+    assert p["helical_25_77"] == dict(
+        n1=25,
+        n2=77,
+        module=5.0,
+        pressure_angle_deg=27.5,
+        helix_angle_deg=20.0,
+        face_width=40.0,
+        profile_crown1=1.4e-3,
+        profile_crown2=8.0e-5,
+        hand1=-1,
+        phi1_thesis=np.pi / 2,
+    )
     assert p["spur_25_25_m1"] == dict(n1=25, n2=25, module=1.0, pressure_angle_deg=20.0, face_width=10.0)
-    assert p["helical_40_37"] == dict(n1=40, n2=37, module=1.0, pressure_angle_deg=20.0, helix_angle_deg=14.0,
-                                      face_width=20.0, hand1=1)
+    assert p["helical_40_37"] == dict(
+        n1=40, n2=37, module=1.0, pressure_angle_deg=20.0, helix_angle_deg=14.0, face_width=20.0, hand1=1
+    )
     assert design.sec61_phi2_guesses_thesis == (0.0, -1.1, -1.15, -1.2)
     assert design.sec61_phi2_window_thesis == (-1.7, -1.0) and design.sec61_misalignment_deg == 0.1
     assert design.helical_phi2_window_thesis == (-1.7, -1.3) and design.helical_misalignment_arcmin == -3.0
@@ -125,8 +170,12 @@ def test_table34_amounts_are_the_published_ones(published):
     for _, r in v.iterrows():
         k = dict(x.split("=") for x in r["row"].split(";"))
         got[(k["plane"], float(k["misalignment_deg"]), k["crown"], int(k["table_row"]))] = float(r["value"])
-    want = {(pl, ang, kind, i + 1): a for (pl, ang), kinds in T.TABLE34.items() for kind, am in kinds.items()
-            for i, a in enumerate(am)}
+    want = {
+        (pl, ang, kind, i + 1): a
+        for (pl, ang), kinds in T.TABLE34.items()
+        for kind, am in kinds.items()
+        for i, a in enumerate(am)
+    }
     assert got == want
 
 
@@ -281,8 +330,9 @@ def test_te_readings_table(tables, published):
     rd = tables["te_readings"]
     assert set(rd["reading"]) == set(TE_READINGS) and len(rd) == 54 * len(TE_READINGS)
     assert rd.loc[rd["reading"] != "axis_pivot_rigid_arcsec", "value_abs"].notna().all()
-    w = rd.pivot_table(index=["plane", "misalignment_deg", "crown_kind", "table_row"], columns="reading",
-                       values="value_abs")
+    w = rd.pivot_table(
+        index=["plane", "misalignment_deg", "crown_kind", "table_row"], columns="reading", values="value_abs"
+    )
     # rigid-body face-end term, closed form: 1000 (b/2) sin(0.05 deg) / r_p1, r_p1 = 40 / (2 cos 14 deg)
     r_p1 = 20.0 / np.cos(np.radians(14.0))
     out = w.xs(("out", 0.05, "circular", 1))
@@ -314,7 +364,8 @@ def test_te_max_notes_carry_the_readings(check_records):
 # ---------------------------------------------------------------------------------------------
 def test_every_seed003_item_has_a_check(check_records, published):
     ids = set(published.values.loc[published.values["seed"] == "003", "id"]) | set(
-        published.claims.loc[published.claims["seed"] == "003", "id"])
+        published.claims.loc[published.claims["seed"] == "003", "id"]
+    )
     assert set(check_records["id"]) == ids
     ck.validate_checks(check_records)
     assert check_records.loc[check_records["status"] == "deviates", "note"].str.len().gt(20).all()
@@ -351,10 +402,14 @@ def test_fact_keys_route_published_ids(published):
     v = published.values[published.values["seed"] == "003"]
     keys = {r["id"]: T.fact_key(r) for _, r in v.iterrows()}
     assert keys["003-T10-case=spur_52_72;method=reduced-convergence_rate"] == "t10_red_rate"
-    assert keys["003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad=-1.15-converged_count"] == \
-        "s61_guess_-1.15_count"
-    assert keys["003-T4-plane=out;misalignment_deg=0.2;crown=logarithmic;table_row=3-te_max"] == \
-        "t34_out_0.2_logarithmic_3"
+    assert (
+        keys["003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad=-1.15-converged_count"]
+        == "s61_guess_-1.15_count"
+    )
+    assert (
+        keys["003-T4-plane=out;misalignment_deg=0.2;crown=logarithmic;table_row=3-te_max"]
+        == "t34_out_0.2_logarithmic_3"
+    )
     assert keys["003-S4.2-plane=out;misalignment_deg=0.2;bound=min-contact_shift"] == "shift_out_0.2_min"
     assert all(k is None for i, k in keys.items() if "bevel" in i or "stress" in i or "crown_amount" in i)
 

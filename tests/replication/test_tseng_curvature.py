@@ -24,8 +24,15 @@ from gearrep.settings import SettingError, resolve
 
 ROOT = Path(__file__).parents[2]
 EXPECTED = pd.read_csv(Path(__file__).with_name("expected_tseng_curvature.csv"))
-CH4_CLAIMS = {"000-T4.2-missing", "000-T4.5-missing", "000-ch4-e_s-along-Zf", "000-ch4-Sigma2L-hyperbolic",
-              "000-ch4-Sigma2R-elliptic", "000-ch4-only-k_s-depends-on-R_c", "000-ch4-l1-range"}
+CH4_CLAIMS = {
+    "000-T4.2-missing",
+    "000-T4.5-missing",
+    "000-ch4-e_s-along-Zf",
+    "000-ch4-Sigma2L-hyperbolic",
+    "000-ch4-Sigma2R-elliptic",
+    "000-ch4-only-k_s-depends-on-R_c",
+    "000-ch4-l1-range",
+}
 
 
 @pytest.fixture(scope="module")

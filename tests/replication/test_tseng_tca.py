@@ -90,13 +90,22 @@ def test_all_points_converged(tables):
 def test_regression_numbers(tables):
     """Our own numbers (default tol 1e-11): pinned to 1e-6 (KE arcsec, mm)."""
     pins = {
-        ("ke_table_5_4", 0): {"KE_arcsec": 4.202665083, "Z_p_mm": 3.734082498, "l_p_mm": 4.319535968, "Z_g_mm": 3.728273437},
+        ("ke_table_5_4", 0): {
+            "KE_arcsec": 4.202665083,
+            "Z_p_mm": 3.734082498,
+            "l_p_mm": 4.319535968,
+            "Z_g_mm": 3.728273437,
+        },
         ("ke_table_5_4", 10): {"KE_arcsec": 0.269660500, "Z_p_mm": 3.382729635, "l_p_mm": 7.889077723},
         ("ke_table_5_9", 0): {"KE_arcsec": 4.180010737, "Z_p_mm": 0.392858364, "Z_g_mm": 0.258652369},
         # ideal 110/110: the physical contact (one of the symmetric pair, see physical_contact);
         # the mid-face root a bare continuation keeps gave KE 4.248801443, l_p 4.301112228
-        ("ke_table_5_2", 0): {"KE_arcsec": 4.239085776, "l_p_mm": 4.306991605, "Z_p_mm": 2.063072665,
-                              "tangency_phi2_spread_arcsec": 0.010721521},
+        ("ke_table_5_2", 0): {
+            "KE_arcsec": 4.239085776,
+            "l_p_mm": 4.306991605,
+            "Z_p_mm": 2.063072665,
+            "tangency_phi2_spread_arcsec": 0.010721521,
+        },
         ("ke_table_5_2", 5): {"Z_p_mm": 1.096732258, "tangency_phi2_spread_arcsec": 0.001005853},
     }
     for (name, i), vals in pins.items():
@@ -247,8 +256,14 @@ def test_printed_matrices_against_the_library_route(tables):
 
 
 def test_design_from_published(cases):
-    assert cases["5.4"] == {"R_cp_mm": 110.0, "R_cg_mm": 113.0, "dgamma_h_arcmin": 3.0, "dgamma_v_arcmin": 0.0,
-                            "dC_mm": 0.0, "dZ_mm": 0.0}
+    assert cases["5.4"] == {
+        "R_cp_mm": 110.0,
+        "R_cg_mm": 113.0,
+        "dgamma_h_arcmin": 3.0,
+        "dgamma_v_arcmin": 0.0,
+        "dC_mm": 0.0,
+        "dZ_mm": 0.0,
+    }
     assert cases["5.2"]["R_cg_mm"] == 110.0 and cases["5.9"]["dZ_mm"] == 0.1
     assert set(T.TABLE_EXAMPLE.values()) <= set(cases)
 
@@ -272,8 +287,17 @@ def test_topology_converges_to_the_curvature_ellipse_for_small_separation():
     """The curvature method is the second-order limit of the surface-topology pattern: with a
     separation 100 times smaller (axes 10 times shorter) the two agree to < 0.2 % on both axes,
     while at the paper's 0.00632 mm the long axis differs by ~4 %."""
-    pair, sol = T.compute_case({"R_cp_mm": 110.0, "R_cg_mm": 113.0, "dgamma_h_arcmin": 0.0, "dgamma_v_arcmin": 0.0,
-                                "dC_mm": 0.0, "dZ_mm": 0.0}, np.radians([0.0]))
+    pair, sol = T.compute_case(
+        {
+            "R_cp_mm": 110.0,
+            "R_cg_mm": 113.0,
+            "dgamma_h_arcmin": 0.0,
+            "dgamma_v_arcmin": 0.0,
+            "dC_mm": 0.0,
+            "dZ_mm": 0.0,
+        },
+        np.radians([0.0]),
+    )
     small = T.topology_pattern(pair, sol, 0, 0.0000632, 4)
     assert small["converged"].all()
     np.testing.assert_allclose(small["rho_mm"], small["rho_curvature_mm"], rtol=2e-3)

@@ -112,7 +112,7 @@ def test_missing_column_is_named(data, name, column):
     path = data / name
     rows = _rows(path)
     i = rows[0].index(column)
-    _write(path, [r[:i] + r[i + 1:] for r in rows])
+    _write(path, [r[:i] + r[i + 1 :] for r in rows])
     _refused(data, name, "missing required column", repr(column))
 
 

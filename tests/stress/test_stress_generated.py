@@ -280,7 +280,7 @@ def _check_catt_tca(mesh, phi1, cp):
     # off the middle section the radius changes only to second order in the axial offset z:
     # |dr| <= z^2 / rho_blade + the tolerance (the blade circle radius rho >= R_T - pi m / 4)
     zb = np.abs(cp.position[ok, 2])
-    assert np.all(np.abs(dr) <= zb ** 2 / (mesh.g1.R_T - mesh.g1.q) + 10 * CATT_TCA_TOL), np.abs(dr).max()
+    assert np.all(np.abs(dr) <= zb**2 / (mesh.g1.R_T - mesh.g1.q) + 10 * CATT_TCA_TOL), np.abs(dr).max()
     return ok
 
 
@@ -303,8 +303,12 @@ def test_catt_tca_cutter_radius_sweep_and_straight_limit(pair_id, record_conditi
         per_rt[RT] = cp
         record_conditions(cp.condition, f"R_T={RT:g}, pair {pair_id}")
     assert not np.any(per_rt[1e7].converged)
-    assert set(np.unique(per_rt[1e7].status)) <= {Status.SINGULAR, Status.NOT_CONVERGED, Status.DIVERGED,
-                                                  Status.OFF_FLANK}
+    assert set(np.unique(per_rt[1e7].status)) <= {
+        Status.SINGULAR,
+        Status.NOT_CONVERGED,
+        Status.DIVERGED,
+        Status.OFF_FLANK,
+    }
     # condition ~ R_T^2: a factor ~100 per decade between 1e3 and 1e6 mm
     c = {RT: np.median(per_rt[RT].condition) for RT in (1000.0, 10000.0, 1e5, 1e6)}
     ratios = np.array([c[10000.0] / c[1000.0], c[1e5] / c[10000.0], c[1e6] / c[1e5]])
@@ -506,8 +510,14 @@ def test_line_contact_110_110_along_the_path(record_conditions):
     """The ideal 110/110 path over phi1' = -10..10 deg (Table 5.2 range) from the library's route,
     then every point re-solved from 50 starts spread over the face: each start converges to a
     genuine tangency or is flagged; the condition numbers stay ~1e6 along the path."""
-    case = {"R_cp_mm": 110.0, "R_cg_mm": 110.0, "dgamma_h_arcmin": 0.0, "dgamma_v_arcmin": 0.0,
-            "dC_mm": 0.0, "dZ_mm": 0.0}
+    case = {
+        "R_cp_mm": 110.0,
+        "R_cg_mm": 110.0,
+        "dgamma_h_arcmin": 0.0,
+        "dgamma_v_arcmin": 0.0,
+        "dC_mm": 0.0,
+        "dZ_mm": 0.0,
+    }
     phi1 = np.radians(np.arange(-10.0, 10.1, 2.0))
     pair, path = ts.compute_case(case, phi1)
     ok = _assert_honest_ke(path)

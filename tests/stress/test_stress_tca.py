@@ -90,8 +90,12 @@ def test_misalignment_from_1e_7_rad_to_edge_contact(plane, record_conditions):
     assert edge[-1], "the largest misalignment should push the contact off the face"
     for st, e in zip(statuses, edge):
         if e:
-            assert Status.CONVERGED not in st and st <= {Status.OFF_FLANK, Status.NOT_CONVERGED, Status.SINGULAR,
-                                                         Status.WRONG_ROOT}
+            assert Status.CONVERGED not in st and st <= {
+                Status.OFF_FLANK,
+                Status.NOT_CONVERGED,
+                Status.SINGULAR,
+                Status.WRONG_ROOT,
+            }
 
 
 @pytest.mark.parametrize("n1", [12, 14, 17, 18, 25, 60, 120, 200])
@@ -123,9 +127,18 @@ def test_line_contact_with_the_point_solver_is_flagged_or_on_the_line(record_con
     start = _box_starts(rng, pair.lower1, pair.upper1, 400, grow=0.0)
     phi1 = -np.pi / (2 * 52)
     for form in ("reduced", "conventional"):
-        s = start if form == "reduced" else np.column_stack(
-            [start, np.full(400, pair.lower2[0] + 0.5 * (pair.upper2[0] - pair.lower2[0])), start[:, 1],
-             np.full(400, pair.ratio * phi1)])
+        s = (
+            start
+            if form == "reduced"
+            else np.column_stack(
+                [
+                    start,
+                    np.full(400, pair.lower2[0] + 0.5 * (pair.upper2[0] - pair.lower2[0])),
+                    start[:, 1],
+                    np.full(400, pair.ratio * phi1),
+                ]
+            )
+        )
         c = solve_contact(pair, np.full(400, phi1), s, formulation=form)
         assert_honest(c)
         ok = c.converged

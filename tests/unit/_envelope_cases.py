@@ -92,13 +92,16 @@ def torus_motion(R0, r0, gamma, **_):
     x = np.array([1.0, 0.0, 0.0])
     O = np.eye(4)
     O[:3, 0], O[:3, 1], O[:3, 2] = x, np.cross(d, x), d
-    return ChainMotion([
-        rotation((0, 0, 1), [1, 0]),
-        translation((1, 0, 0), [0, 0], offset=R0),
-        rotation((0, 1, 0), [0, -1]),
-        translation((1, 0, 0), [0, 0], offset=r0),
-        fixed(O),
-    ], names=("theta", "psi"))
+    return ChainMotion(
+        [
+            rotation((0, 0, 1), [1, 0]),
+            translation((1, 0, 0), [0, 0], offset=R0),
+            rotation((0, 1, 0), [0, -1]),
+            translation((1, 0, 0), [0, 0], offset=r0),
+            fixed(O),
+        ],
+        names=("theta", "psi"),
+    )
 
 
 # ---- ellipsoid -----------------------------------------------------------------------------
@@ -183,11 +186,14 @@ class ArchimedeanThread(Surface):
 def hob_case():
     lam, r_t, P, E = hob_constants(**HOB)
     tool = ArchimedeanThread(r_t, HOB["alpha"], P)
-    motion = ChainMotion([
-        rotation((0, 0, 1), [1.0 / HOB["N"], 0.0]),  # gear turns theta/N
-        rotation((1, 0, 0), [0.0, 1.0], point=(E, HOB["R_c"], 0.0)),  # swivel psi
-        translation((1, 0, 0), [0.0, 0.0], offset=E),  # centre distance
-        rotation((1, 0, 0), [0.0, 0.0], offset=-np.pi / 2 + lam),  # hob axis set at the lead angle
-        rotation((0, 0, 1), [1.0, 0.0]),  # hob spin theta
-    ], names=("theta", "psi"))
+    motion = ChainMotion(
+        [
+            rotation((0, 0, 1), [1.0 / HOB["N"], 0.0]),  # gear turns theta/N
+            rotation((1, 0, 0), [0.0, 1.0], point=(E, HOB["R_c"], 0.0)),  # swivel psi
+            translation((1, 0, 0), [0.0, 0.0], offset=E),  # centre distance
+            rotation((1, 0, 0), [0.0, 0.0], offset=-np.pi / 2 + lam),  # hob axis set at the lead angle
+            rotation((0, 0, 1), [1.0, 0.0]),  # hob spin theta
+        ],
+        names=("theta", "psi"),
+    )
     return tool, motion

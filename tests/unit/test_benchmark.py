@@ -55,8 +55,13 @@ def _partial_e(n):
 
 def test_sweep_measures_error_against_the_reference():
     # the error of a truncated series for e is known exactly
-    out = B.sweep(lambda s: _partial_e(s["n"]), [{"n": n} for n in (2, 4, 8, 16)], {"n": 30},
-                  lambda r, ref: abs(r - ref), repeats=2)
+    out = B.sweep(
+        lambda s: _partial_e(s["n"]),
+        [{"n": n} for n in (2, 4, 8, 16)],
+        {"n": 30},
+        lambda r, ref: abs(r - ref),
+        repeats=2,
+    )
     assert list(out.columns) == ["n", "time_s", "time_min_s", "error", "load_1min", "pareto", "knee"]
     np.testing.assert_allclose(out["error"], [abs(_partial_e(n) - math.e) for n in (2, 4, 8, 16)], atol=1e-15)
     assert out["knee"].sum() == 1

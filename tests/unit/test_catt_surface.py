@@ -87,8 +87,9 @@ def test_numerical_envelope_equals_closed_form(side):
         return J
 
     # the complex-step transforms reproduce the real ones exactly
-    np.testing.assert_array_equal(f.position_by_transforms(T.astype(complex), T, P).real,
-                                  f.position_by_transforms(T, T, P))
+    np.testing.assert_array_equal(
+        f.position_by_transforms(T.astype(complex), T, P).real, f.position_by_transforms(T, T, P)
+    )
     res = newton(meshing, np.column_stack([np.zeros_like(T), T, P]), jac, tol=1e-9, maxiter=40)
     assert np.all(res.converged)
     u = res.x[:, 0]
@@ -163,7 +164,7 @@ def test_straight_trace_limit_is_involute_spur(z_mm):
             assert best == pytest.approx(pred, rel=2e-3)
         # the tooth is as thick as the involute spur tooth in the limit
         t, _ = tooth_thickness(g, [z_mm])
-        assert t[0] == pytest.approx(inv.tooth_thickness, abs=2 * 8.0 * z_mm ** 2 / RT ** 2 + 1e-9)
+        assert t[0] == pytest.approx(inv.tooth_thickness, abs=2 * 8.0 * z_mm**2 / RT**2 + 1e-9)
     if z_mm == 0.0:
         assert max(devs) < 1e-10
     else:
@@ -197,10 +198,16 @@ def test_tooth_thickness_closed_form():
     assert np.all(np.diff(t) < 0)
 
 
-@pytest.mark.parametrize("kw,name", [
-    ({"n_teeth": 2.5}, "n_teeth"), ({"module": -1.0}, "module"), ({"R_T": 30.0}, "R_T"),
-    ({"face_width": 0.0}, "face_width"), ({"pressure_angle": 1.2}, "pressure_angle"),
-])
+@pytest.mark.parametrize(
+    "kw,name",
+    [
+        ({"n_teeth": 2.5}, "n_teeth"),
+        ({"module": -1.0}, "module"),
+        ({"R_T": 30.0}, "R_T"),
+        ({"face_width": 0.0}, "face_width"),
+        ({"pressure_angle": 1.2}, "pressure_angle"),
+    ],
+)
 def test_bad_input(kw, name):
     args = {"n_teeth": 19, "module": 8.0, "R_T": 500.0, "face_width": 80.0, **kw}
     with pytest.raises(ValueError, match=name):
@@ -224,29 +231,29 @@ def test_printed_eq8_10_15_16_are_wrong_corrected_forms_hold(side):
     dot = np.sum(p.r_u * p.r_v, axis=-1)
     cross = np.linalg.norm(np.cross(p.r_u, p.r_v), axis=-1)
     scale = np.linalg.norm(p.r_u, axis=-1) * np.linalg.norm(p.r_v, axis=-1)
-    assert abs(dot[0]) < 1e-12 * scale[0]           # printed eq (8): division by zero at the middle section
+    assert abs(dot[0]) < 1e-12 * scale[0]  # printed eq (8): division by zero at the middle section
     assert np.all(np.abs(np.abs(dot[1:]) - cross[1:]) > 0.5 * cross[1:])  # and not the norm elsewhere
     # eq (10): the first fundamental form reproduces |dr|^2 with F = r_theta . r_phi, not with r_theta . r
     d = np.array([2e-5, 3e-5])
     dr = f.position(th + d[0], ph + d[1]) - f.position(th - d[0], ph - d[1])
-    E, G = np.sum(p.r_u ** 2, -1), np.sum(p.r_v ** 2, -1)
+    E, G = np.sum(p.r_u**2, -1), np.sum(p.r_v**2, -1)
     F_ok, F_printed = dot, np.sum(p.r_u * p.r, axis=-1)
     I_ok = 4 * (E * d[0] ** 2 + 2 * F_ok * d[0] * d[1] + G * d[1] ** 2)
     I_pr = 4 * (E * d[0] ** 2 + 2 * F_printed * d[0] * d[1] + G * d[1] ** 2)
-    ds2 = np.sum(dr ** 2, -1)
+    ds2 = np.sum(dr**2, -1)
     np.testing.assert_allclose(I_ok, ds2, rtol=1e-6)
     # (on the middle section r_theta is axial and r lies in z = 0, so there both F vanish; off it they differ)
     assert np.all(np.abs(I_pr[1:] / ds2[1:] - 1) > 1e-2)
     # eq (13)-(16)
     n = p.normal
     L, M, N = (np.sum(x * n, -1) for x in (p.r_uu, p.r_uv, p.r_vv))
-    K = (L * N - M ** 2) / (E * G - F_ok ** 2)
-    H = (L * G - 2 * M * F_ok + N * E) / (2 * (E * G - F_ok ** 2))
+    K = (L * N - M**2) / (E * G - F_ok**2)
+    H = (L * G - 2 * M * F_ok + N * E) / (2 * (E * G - F_ok**2))
     pc = curvature.principal_curvatures(p)
     k = np.sort(np.column_stack([pc.k1, pc.k2]), axis=1)
     corrected = np.sort(np.column_stack([H - np.sqrt(H * H - K), H + np.sqrt(H * H - K)]), axis=1)
     np.testing.assert_allclose(corrected, k, rtol=1e-9, atol=1e-15)
-    np.testing.assert_allclose(k.sum(axis=1), 2 * H, rtol=1e-9)   # x^2 - 2Hx + K = 0, not x^2 - Hx + K
+    np.testing.assert_allclose(k.sum(axis=1), 2 * H, rtol=1e-9)  # x^2 - 2Hx + K = 0, not x^2 - Hx + K
     k2_printed = H + np.sqrt(H * H + K)
     assert np.all(np.min(np.abs(k - k2_printed[:, None]), axis=1) > 1e-3 * np.max(np.abs(k), axis=1))
     with np.errstate(invalid="ignore"):
@@ -265,8 +272,9 @@ def test_printed_eq19_needs_R_I_in_its_first_term():
     k1II, k2II = max(kpII, kaII), min(kpII, kaII)
     sigma = np.pi / 2
     s0 = np.linspace(0, np.pi, 13)
-    direct = (k1I * np.cos(s0) ** 2 + k2I * np.sin(s0) ** 2
-              - k1II * np.cos(s0 - sigma) ** 2 - k2II * np.sin(s0 - sigma) ** 2)
+    direct = (
+        k1I * np.cos(s0) ** 2 + k2I * np.sin(s0) ** 2 - k1II * np.cos(s0 - sigma) ** 2 - k2II * np.sin(s0 - sigma) ** 2
+    )
     HI, HII, RI, RII = (k1I + k2I) / 2, (k1II + k2II) / 2, (k1I - k2I) / 2, (k1II - k2II) / 2
     corrected = HI - HII + RI * np.cos(2 * s0) - RII * np.cos(2 * (s0 - sigma))
     printed = HI - HII + RII * np.cos(2 * s0) - RII * np.cos(2 * (s0 - sigma))

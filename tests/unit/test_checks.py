@@ -8,8 +8,17 @@ from gearrep import checks
 
 
 def row(printed, rounding="round", **kw):
-    d = {"id": "x", "seed": "000", "source": "Table", "row": "k=1", "quantity": "q", "unit": "mm",
-         "printed": printed, "value": float(printed), "rounding": rounding}
+    d = {
+        "id": "x",
+        "seed": "000",
+        "source": "Table",
+        "row": "k=1",
+        "quantity": "q",
+        "unit": "mm",
+        "printed": printed,
+        "value": float(printed),
+        "rounding": rounding,
+    }
     d.update(kw)
     return pd.Series(d)
 
@@ -61,8 +70,20 @@ def test_check_values_rejects_unknown_ids():
 
 def test_scorecard_fills_not_computed_and_rejects_strays():
     values = pd.DataFrame([row("1.00", id="a"), row("2.00", id="b")])
-    claims = pd.DataFrame([{"id": "c", "seed": "000", "source": "text", "kind": "trend",
-                            "statement": "s", "parameters": "", "confirm_if": "y", "refute_if": "n"}])
+    claims = pd.DataFrame(
+        [
+            {
+                "id": "c",
+                "seed": "000",
+                "source": "text",
+                "kind": "trend",
+                "statement": "s",
+                "parameters": "",
+                "confirm_if": "y",
+                "refute_if": "n",
+            }
+        ]
+    )
     done = checks.check_values(values, pd.DataFrame({"id": ["a"], "computed": [1.0]}))
     card = checks.scorecard({"rep": done}, values, claims)
     assert dict(zip(card["id"], card["status"])) == {"a": "reproduced", "b": "not-computed", "c": "not-computed"}
@@ -73,8 +94,9 @@ def test_scorecard_fills_not_computed_and_rejects_strays():
 
 
 def test_qualitative_needs_evidence():
-    claim = pd.Series({"id": "c", "seed": "004", "source": "Fig 12", "kind": "trend", "parameters": "",
-                       "confirm_if": "S grows"})
+    claim = pd.Series(
+        {"id": "c", "seed": "004", "source": "Fig 12", "kind": "trend", "parameters": "", "confirm_if": "S grows"}
+    )
     with pytest.raises(ValueError):
         checks.qualitative(claim, True, "")
     assert checks.qualitative(claim, False, "S falls 3 %")["status"] == "qualitative-fails"

@@ -14,12 +14,15 @@ from gearrep import benchmark, checks, curvature, published, tca, units
 from gearrep.surfaces.analytic import Cylinder, Sphere
 
 
-@pytest.mark.parametrize("to, back, x, y", [
-    (units.deg2rad, units.rad2deg, 180.0, math.pi),
-    (units.arcmin2rad, units.rad2arcmin, 60.0, math.pi / 180.0),
-    (units.arcsec2rad, units.rad2arcsec, 3600.0, math.pi / 180.0),
-    (units.in2mm, units.mm2in, 1.0, 25.4),
-])
+@pytest.mark.parametrize(
+    "to, back, x, y",
+    [
+        (units.deg2rad, units.rad2deg, 180.0, math.pi),
+        (units.arcmin2rad, units.rad2arcmin, 60.0, math.pi / 180.0),
+        (units.arcsec2rad, units.rad2arcsec, 3600.0, math.pi / 180.0),
+        (units.in2mm, units.mm2in, 1.0, 25.4),
+    ],
+)
 def test_unit_conversions_exact_and_inverse(to, back, x, y):
     assert to(x) == pytest.approx(y, rel=1e-15)
     arr = np.array([-2.5, 0.0, 1e-9, 7.0])
@@ -89,9 +92,17 @@ def test_newton_rows_solves_each_row_with_its_own_data():
 
 
 def _values():
-    return pd.DataFrame({"id": ["x-1", "x-2"], "seed": ["000", "000"], "source": ["Table 1"] * 2,
-                         "row": ["a=1", "a=2"], "quantity": ["k", "k"], "unit": ["per_mm"] * 2,
-                         "value": ["0.5", "-1.25"]})
+    return pd.DataFrame(
+        {
+            "id": ["x-1", "x-2"],
+            "seed": ["000", "000"],
+            "source": ["Table 1"] * 2,
+            "row": ["a=1", "a=2"],
+            "quantity": ["k", "k"],
+            "unit": ["per_mm"] * 2,
+            "value": ["0.5", "-1.25"],
+        }
+    )
 
 
 def test_not_computed_records_values_and_claims():
@@ -100,8 +111,16 @@ def test_not_computed_records_values_and_claims():
     assert list(rec["status"]) == ["not-computed"] * 2
     assert list(rec["published"]) == [0.5, -1.25] and rec["computed"].isna().all()
     assert (rec["note"] == "needs a bevel surface").all()
-    claims = pd.DataFrame({"id": ["c-1"], "seed": ["004"], "source": ["sec 4"], "kind": ["trend"],
-                           "statement": ["S grows"], "parameters": ["R_T=300"]})
+    claims = pd.DataFrame(
+        {
+            "id": ["c-1"],
+            "seed": ["004"],
+            "source": ["sec 4"],
+            "kind": ["trend"],
+            "statement": ["S grows"],
+            "parameters": ["R_T=300"],
+        }
+    )
     rc = checks.not_computed(claims, "later")
     assert rc.loc[0, "row"] == "R_T=300" and rc.loc[0, "quantity"] == "trend" and math.isnan(rc.loc[0, "published"])
     checks.validate_checks(pd.concat([rec, rc], ignore_index=True))
@@ -120,9 +139,14 @@ def test_validate_checks_rejects_bad_tables():
 
 
 def test_param_table_selects_file_and_example():
-    params = pd.DataFrame({"file": ["p_a.csv", "p_a.csv", "p_a.csv", "p_b.csv"],
-                           "example": ["e1", "e1", "e2", "e1"], "parameter": ["m", "z", "m", "m"],
-                           "value": [2.5, 25.0, 3.0, 1.0]})
+    params = pd.DataFrame(
+        {
+            "file": ["p_a.csv", "p_a.csv", "p_a.csv", "p_b.csv"],
+            "example": ["e1", "e1", "e2", "e1"],
+            "parameter": ["m", "z", "m", "m"],
+            "value": [2.5, 25.0, 3.0, 1.0],
+        }
+    )
     assert published.param_table(params, "p_a.csv", "e1") == {"m": 2.5, "z": 25.0}
     assert published.param_table(params, "p_b.csv") == {"m": 1.0}
     with pytest.raises(KeyError, match="example='e9'"):

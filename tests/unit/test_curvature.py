@@ -188,6 +188,7 @@ def test_gaussian_mean_match_principal_generic_param():
             return s.position(u - 0.7 * v, v)
 
     from gearrep.surface import fd_derivatives
+
     u, v = np.array([0.1, 2.0]), np.array([0.5, 2.5])
     p = fd_derivatives(Skew(2.0, 0.5).position, u, v)
     pc = cv.principal_curvatures(p)
@@ -267,12 +268,12 @@ def test_relative_crossed_cylinders(gamma):
     assert abs(kr.max() - rel.k1) < 1e-9 and abs(kr.min() - rel.k2) < 1e-9
     np.testing.assert_allclose(abs(np.dot(d[np.argmax(kr)], rel.e1)), 1.0, atol=1e-9)
     # directions and frame
-    np.testing.assert_allclose(cv.normal_curvature(p1, rel.e1) + cv.normal_curvature(p2, rel.e1),
-                               rel.k1, atol=1e-12)
+    np.testing.assert_allclose(cv.normal_curvature(p1, rel.e1) + cv.normal_curvature(p2, rel.e1), rel.k1, atol=1e-12)
     np.testing.assert_allclose(np.cross(rel.e1, rel.e2), rel.normal, atol=1e-14)
     # sigma is the true angle between e_I(1), e_I(2) (mod pi)
-    np.testing.assert_allclose(np.cos(2 * rel.sigma),
-                               np.cos(2 * cv.signed_angle(pc1.e1, pc2.e1, pc1.normal)), atol=1e-14)
+    np.testing.assert_allclose(
+        np.cos(2 * rel.sigma), np.cos(2 * cv.signed_angle(pc1.e1, pc2.e1, pc1.normal)), atol=1e-14
+    )
 
 
 def test_relative_two_spheres_isotropic():
@@ -317,11 +318,14 @@ def test_relative_principal_brute_force(a1, b1, a2, b2, sigma):
     kI1, kII1, kI2, kII2 = a1, b1, a2, b2
     k1, k2, alpha = cv.relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma)
     q = np.linspace(-np.pi / 2, np.pi / 2, 20001)
-    kr = (kI1 * np.cos(q) ** 2 + kII1 * np.sin(q) ** 2
-          - kI2 * np.cos(q - sigma) ** 2 - kII2 * np.sin(q - sigma) ** 2)
+    kr = kI1 * np.cos(q) ** 2 + kII1 * np.sin(q) ** 2 - kI2 * np.cos(q - sigma) ** 2 - kII2 * np.sin(q - sigma) ** 2
     assert abs(kr.max() - k1) < 1e-6 * (1 + abs(k1)) and abs(kr.min() - k2) < 1e-6 * (1 + abs(k2))
-    at_alpha = (kI1 * np.cos(alpha) ** 2 + kII1 * np.sin(alpha) ** 2
-                - kI2 * np.cos(alpha - sigma) ** 2 - kII2 * np.sin(alpha - sigma) ** 2)
+    at_alpha = (
+        kI1 * np.cos(alpha) ** 2
+        + kII1 * np.sin(alpha) ** 2
+        - kI2 * np.cos(alpha - sigma) ** 2
+        - kII2 * np.sin(alpha - sigma) ** 2
+    )
     assert abs(at_alpha - k1) < 1e-9 * (1 + abs(k1))
 
 
@@ -339,8 +343,9 @@ def test_second_form_in_basis_is_shape_matrix_and_rotates_with_the_basis():
     s = Torus(3.0, 1.2)
     u, v = np.array([0.4, 1.3, -2.0]), np.array([0.9, -0.3, 2.2])
     q = s.evaluate(u, v)
-    p = SurfacePoint(q.r, q.r_u, q.r_u * 0.6 + q.r_v, q.r_uu, q.r_uu * 0.6 + q.r_uv,
-                     q.r_uu * 0.36 + 2 * 0.6 * q.r_uv + q.r_vv)  # v' = v, u = u' + 0.6 v'
+    p = SurfacePoint(
+        q.r, q.r_u, q.r_u * 0.6 + q.r_v, q.r_uu, q.r_uu * 0.6 + q.r_uv, q.r_uu * 0.36 + 2 * 0.6 * q.r_uv + q.r_vv
+    )  # v' = v, u = u' + 0.6 v'
     t1, t2, n, S11, S12, S22 = cv.shape_matrix(p)
     K = cv.second_form_in_basis(p, n, t1, t2)
     assert K.shape == (3, 2, 2)

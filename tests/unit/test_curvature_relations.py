@@ -100,8 +100,7 @@ def test_parabolic_rack_relations_vs_direct(a, side, member_side):
     ks, kq, sig = litvin_one_parameter(gc.k_f, gc.k_h, A[:, 0, 2], A[:, 1, 2], A[:, 2, 2])
     np.testing.assert_allclose([ks, kq], [gc.k1, gc.k2], rtol=1e-13, atol=1e-15)
     np.testing.assert_allclose(sig, gc.sigma, atol=1e-13)
-    np.testing.assert_allclose(ks + kq, gc.k_f + gc.k_h + (A[:, 0, 2] ** 2 + A[:, 1, 2] ** 2) / A[:, 2, 2],
-                               rtol=1e-13)
+    np.testing.assert_allclose(ks + kq, gc.k_f + gc.k_h + (A[:, 0, 2] ** 2 + A[:, 1, 2] ** 2) / A[:, 2, 2], rtol=1e-13)
     # e1 = cos(sigma) e_f + sin(sigma) e_h, orthonormal frame with the common normal
     e1 = np.cos(gc.sigma)[:, None] * gc.e_f + np.sin(gc.sigma)[:, None] * gc.e_h
     np.testing.assert_allclose(e1, gc.e1, atol=1e-14)
@@ -205,8 +204,9 @@ def test_seed000_equations_4_33_to_4_39():
     assert np.all(np.isnan(b[:, :2, :2])) and np.all(np.isfinite(b[:, 2:, :]))
     b11, b12, b22 = two_parameter_b_coefficients(b)
     # B = K_2 - K_1 in (e_f, e_h)
-    np.testing.assert_allclose(np.stack([b11, b12, b22], -1),
-                               np.stack([gc.A[:, 0, 0], gc.A[:, 0, 1], gc.A[:, 1, 1]], -1), rtol=1e-12)
+    np.testing.assert_allclose(
+        np.stack([b11, b12, b22], -1), np.stack([gc.A[:, 0, 0], gc.A[:, 0, 1], gc.A[:, 1, 1]], -1), rtol=1e-12
+    )
     # rank 2 of the completed 4 x 4 matrix (eq 4.33) and the determinant conditions 4.34-4.36
     bb = b.copy()
     bb[:, 0, 0], bb[:, 0, 1], bb[:, 1, 0], bb[:, 1, 1] = b11, b12, b12, b22
@@ -229,8 +229,9 @@ def test_seed000_equations_4_33_to_4_39():
     ks, kq, sig = two_parameter_principal_curvatures(b11, b12, b22, gc.k_f, gc.k_h)
     np.testing.assert_allclose(np.sort(np.c_[ks, kq], axis=1), np.c_[gc.k2, gc.k1], rtol=1e-12)
     assert np.all(np.abs(sig) <= np.pi / 4 + 1e-15)
-    np.testing.assert_allclose(np.abs(np.sin(sig)), np.abs(np.sin(np.where(ks >= kq, gc.sigma, gc.sigma - np.pi / 2))),
-                               atol=1e-12)
+    np.testing.assert_allclose(
+        np.abs(np.sin(sig)), np.abs(np.sin(np.where(ks >= kq, gc.sigma, gc.sigma - np.pi / 2))), atol=1e-12
+    )
     # with the printed signs the curvatures are wrong
     ks_p, kq_p, _ = two_parameter_principal_curvatures(p11, p12, p22, gc.k_f, gc.k_h)
     assert np.max(np.abs(np.sort(np.c_[ks_p, kq_p], axis=1) - np.c_[gc.k2, gc.k1])) > 1e-2

@@ -247,8 +247,7 @@ def _displacement(a, b, p0, Es, x0, y0):
         val = np.pi * w**2 / 4 + 0.5 * cc * np.sqrt(max(w * w - cc * cc, 0.0)) + 0.5 * w**2 * np.arcsin(cc / w)
         return np.sqrt(al) * val
 
-    tot = quad(radial, 0, 2 * np.pi, epsabs=0, epsrel=1e-12, limit=400,
-               points=[np.pi / 2, np.pi, 1.5 * np.pi])[0]
+    tot = quad(radial, 0, 2 * np.pi, epsabs=0, epsrel=1e-12, limit=400, points=[np.pi / 2, np.pi, 1.5 * np.pi])[0]
     return p0 * tot / (np.pi * Es)
 
 
@@ -268,11 +267,9 @@ def test_hertz_elliptic_against_direct_displacement_integral(ratio):
 
 
 def test_hertz_batch_status_and_validation():
-    h = el.hertz_contact(np.array([[1.0, 1.0], [1.0, 2.0]]), np.array([[1.0, -1.0], [0.0, 30.0]]),
-                         10.0, 200e3, 0.3)
+    h = el.hertz_contact(np.array([[1.0, 1.0], [1.0, 2.0]]), np.array([[1.0, -1.0], [0.0, 30.0]]), 10.0, 200e3, 0.3)
     assert h.a.shape == (2, 2)
-    np.testing.assert_array_equal(h.status, [[Status.CONVERGED, Status.SINGULAR],
-                                             [Status.SINGULAR, Status.CONVERGED]])
+    np.testing.assert_array_equal(h.status, [[Status.CONVERGED, Status.SINGULAR], [Status.SINGULAR, Status.CONVERGED]])
     assert np.isnan(h.a[0, 1]) and np.isnan(h.p0[1, 0])
     with pytest.raises(ValueError, match="load"):
         el.hertz_contact(1.0, 1.0, 0.0, 200e3, 0.3)

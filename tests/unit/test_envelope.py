@@ -43,13 +43,16 @@ def involute_case(N=20, mn=3.0, alpha_n=20 * DEG, beta=15 * DEG, y0=0.3, side=1)
 
 # ---- motions -------------------------------------------------------------------------------
 def test_chain_motion_derivatives_match_finite_differences():
-    mot = ChainMotion([
-        rotation((0, 0, 1), [0.05, 0.0]),
-        rotation((1, 0.2, 0), [0.0, 1.0], point=(60, 110, 0)),
-        translation((1, 0, 0), [0.0, 3.0], offset=60),
-        fixed(np.diag([1.0, -1.0, -1.0, 1.0])),
-        rotation((0, 0, 1), [1.0, 0.7]),
-    ], names=("theta", "psi"))
+    mot = ChainMotion(
+        [
+            rotation((0, 0, 1), [0.05, 0.0]),
+            rotation((1, 0.2, 0), [0.0, 1.0], point=(60, 110, 0)),
+            translation((1, 0, 0), [0.0, 3.0], offset=60),
+            fixed(np.diag([1.0, -1.0, -1.0, 1.0])),
+            rotation((0, 0, 1), [1.0, 0.7]),
+        ],
+        names=("theta", "psi"),
+    )
     m = np.array([[0.3, -0.1], [2.0, 0.05]])
     M, dM, d2M = mot.matrices(m)
     fd = FunctionMotion(lambda x: mot.matrices(x)[0], 2, ("theta", "psi"), fd_step=1e-3)
@@ -175,12 +178,15 @@ def test_two_parameter_torus_from_cylinder():
     np.testing.assert_allclose(np.hypot(rc, X[:, 2]), r0 + rho, rtol=1e-14)
     # position: p(theta, psi) + rho n, with the tool contact point fixed at (u, v) = (0, 0)
     t, p = rec.param("theta"), rec.param("psi")
-    Xc = np.stack([(R0 + (r0 + rho) * np.cos(p)) * np.cos(t), (R0 + (r0 + rho) * np.cos(p)) * np.sin(t),
-                   (r0 + rho) * np.sin(p)], -1)
+    Xc = np.stack(
+        [(R0 + (r0 + rho) * np.cos(p)) * np.cos(t), (R0 + (r0 + rho) * np.cos(p)) * np.sin(t), (r0 + rho) * np.sin(p)],
+        -1,
+    )
     np.testing.assert_allclose(X, Xc, atol=1e-12)
     np.testing.assert_allclose(rec.params[:, :2], 0.0, atol=1e-12)
-    np.testing.assert_allclose(rec.normal, (Xc - np.stack([R0 * np.cos(t), R0 * np.sin(t), 0 * t], -1)) / (r0 + rho),
-                               atol=1e-13)
+    np.testing.assert_allclose(
+        rec.normal, (Xc - np.stack([R0 * np.cos(t), R0 * np.sin(t), 0 * t], -1)) / (r0 + rho), atol=1e-13
+    )
     # generated surface curvatures by direct differential geometry vs closed form
     surf = env.surface([0.1, 0.2])
     sp = surf.evaluate(t, p)
@@ -191,10 +197,13 @@ def test_two_parameter_torus_from_cylinder():
     np.testing.assert_allclose(k2, np.minimum(kmer, kpar), rtol=1e-10)
 
 
-@pytest.mark.parametrize("free, grid", [
-    (("theta", "psi"), (np.linspace(-2, 2, 4), np.linspace(0.3, 1.2, 3))),
-    (("v", "psi"), (np.linspace(-0.4, 0.4, 3), np.linspace(0.3, 1.2, 3))),
-])
+@pytest.mark.parametrize(
+    "free, grid",
+    [
+        (("theta", "psi"), (np.linspace(-2, 2, 4), np.linspace(0.3, 1.2, 3))),
+        (("v", "psi"), (np.linspace(-0.4, 0.4, 3), np.linspace(0.3, 1.2, 3))),
+    ],
+)
 def test_two_parameter_ellipsoid_from_plane(free, grid):
     axes = np.array([3.0, 2.0, 1.2])
     env = Envelope(Plane(), ellipsoid_motion(axes), free=free)
@@ -235,6 +244,7 @@ def test_status_is_reported_not_hidden():
     env1, *_ = involute_case()
     rec = Envelope(env1.tool, env1.motion, lower=[-0.01], upper=[0.01]).solve([0.0, 3.0], 0.0, guess=0.0)
     assert rec.status[0] == Status.CONVERGED and rec.status[1] == Status.OFF_FLANK
+
     # a tool that returns NaN (a point off its domain): DIVERGED, not an exception
     class Bad(Plane):
         def evaluate(self, u, v):

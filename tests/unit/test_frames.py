@@ -87,8 +87,9 @@ def test_homogeneous_compose_inverse_and_transforms():
     np.testing.assert_allclose(fr.inverse(R), np.swapaxes(R, -1, -2))
     # chain rule M_ik = M_ij M_jk
     M2 = fr.homogeneous(fr.rot_y(0.2), [1.0, 2.0, 3.0])
-    np.testing.assert_allclose(fr.transform_points(fr.compose(M, M2), p),
-                               fr.transform_points(M, fr.transform_points(M2, p)), atol=1e-13)
+    np.testing.assert_allclose(
+        fr.transform_points(fr.compose(M, M2), p), fr.transform_points(M, fr.transform_points(M2, p)), atol=1e-13
+    )
     np.testing.assert_allclose(fr.compose(M), M)
     # points broadcast against a single matrix
     q = rng.normal(size=(4, 7, 3))

@@ -24,8 +24,14 @@ from conftest import ROOT, copy_workflow, tool_env
 
 
 def smk(cwd, *args, timeout=900):
-    return subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(),
-                          text=True, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", *args],
+        cwd=cwd,
+        capture_output=True,
+        env=tool_env(),
+        text=True,
+        timeout=timeout,
+    )
 
 
 @pytest.fixture(scope="module")
@@ -83,7 +89,9 @@ def test_every_deviation_and_gap_carries_its_explanation(run):
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
     need = card[card["status"].isin(["deviates", "qualitative-fails", "not-computed"])]
     short = need[need["note"].str.strip().str.len() < 20]
-    assert short.empty, f"{len(short)} rows without an explanation, e.g. {short[['id', 'status', 'note']].head(5).to_dict('records')}"
+    assert short.empty, (
+        f"{len(short)} rows without an explanation, e.g. {short[['id', 'status', 'note']].head(5).to_dict('records')}"
+    )
 
 
 def test_readme_counts_are_the_scorecard_counts(run):
@@ -106,8 +114,13 @@ def test_rendered_notebooks_have_no_errors_and_a_heading_per_check_source(run):
     for name in notebooks(run):
         text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
         executed = json.loads((run / "results" / "notebooks" / f"{name}.ipynb").read_text())
-        errors = [o for c in executed["cells"] if c["cell_type"] == "code" for o in c.get("outputs", [])
-                  if o.get("output_type") == "error"]
+        errors = [
+            o
+            for c in executed["cells"]
+            if c["cell_type"] == "code"
+            for o in c.get("outputs", [])
+            if o.get("output_type") == "error"
+        ]
         assert not errors, f"{name}: {errors[0].get('ename')}: {errors[0].get('evalue')}"
         assert "<img" in text or "image/png" in text, f"{name}: no figure rendered"
         ids = set(re.findall(r'id="([^"]+)"', text))
@@ -136,8 +149,9 @@ def test_real_report_in_headless_browser(run):
         pytest.skip("no Chromium-family browser installed")
     import matplotlib.image as mpimg
 
-    img = mpimg.imread(shot.screenshot(run / "results" / "report.html", run / "results" / "report.png",
-                                       width=1200, height=900))[..., :3]
+    img = mpimg.imread(
+        shot.screenshot(run / "results" / "report.html", run / "results" / "report.png", width=1200, height=900)
+    )[..., :3]
     assert img.std() > 0.05, "screenshot of the report is blank"
 
 
@@ -149,7 +163,7 @@ def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):
     for f in (run / "workflow" / "rules").glob("rep_*.smk"):
         rules |= set(re.findall(r"^rule (\w+_notebook):", f.read_text(), flags=re.M))
     assert rules or not list((ROOT / "notebooks").glob("*.ipynb"))
-    goals = {r: f"results/notebooks/{r[:-len('_notebook')]}.executed" for r in sorted(rules)}
+    goals = {r: f"results/notebooks/{r[: -len('_notebook')]}.executed" for r in sorted(rules)}
     force = ["--forcerun", *sorted(rules)]
     jobs = smk(run, "-n", *force, "--", *goals.values()).stdout
     saved = {}

@@ -103,8 +103,9 @@ def test_direct_geometry_agrees_with_envelope_relations(name):
     s = np.sign(np.sum(pc.normal * c.normal, -1))
     direct = np.sort(np.c_[s * pc.k1, s * pc.k2], 1)
     np.testing.assert_allclose(direct, np.sort(np.c_[c.k_s, c.k_q], 1), rtol=1e-7)
-    np.testing.assert_allclose(np.sort(np.c_[c.k_s_two_parameter, c.k_q_two_parameter], 1), np.sort(np.c_[c.k_s, c.k_q], 1),
-                               rtol=1e-10)
+    np.testing.assert_allclose(
+        np.sort(np.c_[c.k_s_two_parameter, c.k_q_two_parameter], 1), np.sort(np.c_[c.k_s, c.k_q], 1), rtol=1e-10
+    )
 
 
 def test_far_from_mid_face_marches():

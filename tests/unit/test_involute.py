@@ -37,8 +37,12 @@ def helical(n=40, m=1.0, b=20.0, beta=14.0, **kw):
 @pytest.mark.parametrize("crown", [None, "par", "circ", "log"])
 def test_analytic_derivatives_match_finite_differences(form, side, crown):
     g = helical(25, 2.5, 25.0)
-    cr = {None: None, "par": ParabolicCrowning(0.003, 1e-3, 2e-3, v0=1.0),
-          "circ": CircularCrowning(0.05, 25.0), "log": LogarithmicCrowning(0.02, 0.6, 12.5)}[crown]
+    cr = {
+        None: None,
+        "par": ParabolicCrowning(0.003, 1e-3, 2e-3, v0=1.0),
+        "circ": CircularCrowning(0.05, 25.0),
+        "log": LogarithmicCrowning(0.02, 0.6, 12.5),
+    }[crown]
     rel = [TipRelief(g.r_p + 1.0, 1.5, 0.02), RootRelief(g.r_p - 1.0, 1.0, 0.01)]
     f = InvoluteFlank(g, side, -1, crowning=cr, relief=rel, helix_form=form)
     u = np.array([g.r_p - 1.7, g.r_p - 0.4, g.r_p + 0.6, g.r_p + 2.0])
@@ -98,6 +102,7 @@ def test_correction_1_y_component_of_eq_1():
 
 def test_correction_2_tip_diameter_of_table_1():
     from gearrep.meshing import contact_ratio_closed_form
+
     g1, g2 = InvoluteGearData(52, 1.0, D(20), 11.42), InvoluteGearData(72, 1.0, D(20), 11.42)
     a = standard_centre_distance(g1, g2)
     assert np.isclose(g1.r_a, 0.5 * (52 + 2)) and np.isclose(g2.r_a, 0.5 * (72 + 2))
@@ -211,10 +216,16 @@ def test_gear_data_and_bounds():
     assert np.isclose(g.tooth_thickness, np.pi * g.transverse_module / 2)
 
 
-@pytest.mark.parametrize("kwargs, name", [
-    (dict(n_teeth=2), "n_teeth"), (dict(module=0.0), "module"), (dict(pressure_angle=2.0), "pressure_angle"),
-    (dict(face_width=-1.0), "face_width"), (dict(helix_angle=-0.1), "helix_angle"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(n_teeth=2), "n_teeth"),
+        (dict(module=0.0), "module"),
+        (dict(pressure_angle=2.0), "pressure_angle"),
+        (dict(face_width=-1.0), "face_width"),
+        (dict(helix_angle=-0.1), "helix_angle"),
+    ],
+)
 def test_gear_data_validation(kwargs, name):
     base = dict(n_teeth=20, module=1.0, pressure_angle=D(20), face_width=10.0)
     base.update(kwargs)

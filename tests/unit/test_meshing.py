@@ -35,8 +35,9 @@ def closed_form(pair, g1, g2):
     return contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, pair.centre_distance, g1.base_pitch)
 
 
-@pytest.mark.parametrize("n1, n2, m, alpha", [(52, 72, 1.0, 20.0), (25, 25, 2.5, 20.0), (20, 40, 3.0, 20.0),
-                                              (17, 77, 2.0, 25.0)])
+@pytest.mark.parametrize(
+    "n1, n2, m, alpha", [(52, 72, 1.0, 20.0), (25, 25, 2.5, 20.0), (20, 40, 3.0, 20.0), (17, 77, 2.0, 25.0)]
+)
 def test_spur_contact_ratio_equals_closed_form(n1, n2, m, alpha):
     """(sqrt(ra1^2 - rb1^2) + sqrt(ra2^2 - rb2^2) - a sin(alpha)) / (pi m cos(alpha)) to 1e-6."""
     pair, g1, g2 = make_pair(n1, n2, m=m, alpha=alpha)
@@ -105,8 +106,10 @@ def test_tip_relief_transfer_points_and_te_envelope():
     assert np.all(cyc.te <= 1e-15)  # relief only removes material: member 2 lags
     # peak-to-peak is bounded by the relief at the tip, amount / r_b
     assert 0 < cyc.te_peak_to_peak < 0.01 / g.r_b
-    print(f"\ntip-relief TE over the real cycle: peak-to-peak {cyc.te_peak_to_peak / ARCSEC:.4f} arcsec, "
-          f"contact ratio {cyc.contact_ratio:.6f}")
+    print(
+        f"\ntip-relief TE over the real cycle: peak-to-peak {cyc.te_peak_to_peak / ARCSEC:.4f} arcsec, "
+        f"contact ratio {cyc.contact_ratio:.6f}"
+    )
 
 
 def test_crowned_misaligned_cycle_transfers_at_engagement_or_exit():
@@ -174,8 +177,9 @@ def test_envelope_jumps_where_a_linear_curve_leaves_its_flank():
     env_gap, _ = upper_envelope(pair_te_curves(phi, short, p, np.linspace(-0.5 * p, 0.5 * p, 51)))
     assert np.isnan(env_gap).any() and np.isfinite(env_gap).any()
     # the same gap from an engagement mask (e.g. contact inside the face width) on the full samples
-    masked = pair_te_curves(phi, s * phi, p, np.linspace(-0.5 * p, 0.5 * p, 51),
-                            engaged=lambda q: np.abs(q) <= 0.3 * p + 1e-12)
+    masked = pair_te_curves(
+        phi, s * phi, p, np.linspace(-0.5 * p, 0.5 * p, 51), engaged=lambda q: np.abs(q) <= 0.3 * p + 1e-12
+    )
     env_mask, _ = upper_envelope(masked)
     np.testing.assert_array_equal(np.isnan(env_mask), np.isnan(env_gap))
     with pytest.raises(ValueError, match="pitch"):

@@ -64,8 +64,9 @@ def test_unplunged_worm_grinds_the_rack_generated_pinion():
         x0 = np.column_stack([np.zeros(len(rec.point)), rec.point[:, 2] / np.cos(beta)])
         # foot of the normal from the ground point on the rack-generated pinion: F parallel to its normal
         # (two components of F x n vanish), then the gap is |F . n|
-        res = newton(lambda x, idx: np.cross(F(x, idx), pin.evaluate(x[:, 0], x[:, 1]).normal)[:, :2], x0,
-                     tol=1e-13, rows=True)
+        res = newton(
+            lambda x, idx: np.cross(F(x, idx), pin.evaluate(x[:, 0], x[:, 1]).normal)[:, :2], x0, tol=1e-13, rows=True
+        )
         assert np.all(res.converged)
         gap = np.abs(np.einsum("na,na->n", F(res.x, np.arange(len(x0))), pin.evaluate(res.x[:, 0], res.x[:, 1]).normal))
         mid = np.abs(ll.ravel()) < 1e-12

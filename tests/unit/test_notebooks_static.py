@@ -27,12 +27,14 @@ def test_notebook_is_stored_clean_and_wired(path):
     assert nb["metadata"].get("language_info", {}).get("name") == "python"
     for cell in nb["cells"]:
         if cell["cell_type"] == "code":
-            assert not cell.get("outputs") and cell.get("execution_count") is None, \
+            assert not cell.get("outputs") and cell.get("execution_count") is None, (
                 f"{path.name}: stored with outputs (clear them before committing)"
+            )
     code = "\n".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
     assert "snakemake.input" in code, f"{path.name} must read its inputs from the workflow (snakemake.input)"
     name = path.stem
-    assert re.search(rf'notebook:\s*\n?\s*"\.\./\.\./notebooks/{re.escape(name)}\.ipynb"', RULES), \
+    assert re.search(rf'notebook:\s*\n?\s*"\.\./\.\./notebooks/{re.escape(name)}\.ipynb"', RULES), (
         f"no rule executes notebooks/{name}.ipynb"
+    )
     assert re.search(rf'NOTEBOOKS\.append\(\s*"{re.escape(name)}"\s*\)', RULES), f"{name} not in NOTEBOOKS"
     assert re.search(rf'touch\("results/notebooks/{re.escape(name)}\.executed"\)', RULES)

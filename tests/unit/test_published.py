@@ -65,7 +65,7 @@ def test_printed_numbers_stand_on_their_line(published, seed_lines, table):
         lines = seed_lines[r["seed"]]
         ln = int(r["line"])
         assert 1 <= ln <= len(lines), (r.get("id", r["parameter"]), ln)
-        window = " ".join(lines[max(ln - 2, 0): ln + 1])
+        window = " ".join(lines[max(ln - 2, 0) : ln + 1])
         window_nospace = window.replace(" ", "")
         found = any(v in window or v.replace(" ", "") in window_nospace for v in _variants(r["printed"]))
         if not found and "ocr" not in str(r["notes"]).lower():

@@ -2,6 +2,7 @@
 
 Spot values below were typed from seeds/000_4d213f6321cd1ae7.txt, not copied from the CSVs.
 """
+
 from pathlib import Path
 
 import pandas as pd
@@ -13,8 +14,10 @@ from gearrep.units import KNOWN_UNITS as UNITS
 PUB = Path(__file__).parents[2] / "data" / "published"
 
 
-L1_KEYS = {f"l1_mm={v}" for v in ["4.381", "4.979", "5.576", "6.173", "6.770", "7.368", "7.965",
-                                  "8.562", "9.159", "9.757", "10.354"]}
+L1_KEYS = {
+    f"l1_mm={v}"
+    for v in ["4.381", "4.979", "5.576", "6.173", "6.770", "7.368", "7.965", "8.562", "9.159", "9.757", "10.354"]
+}
 PHI1_KEYS = {f"phi1_deg={v}" for v in range(-10, 11, 2)}
 Q4 = {"k_s", "e_s_x", "e_s_y", "e_s_z", "k_q", "e_q_x", "e_q_y", "e_q_z"}
 Q5 = {"phi2", "l_p", "Z_p", "l_g", "Z_g", "KE"}
@@ -138,16 +141,26 @@ def test_phi2_is_truncated_ratio_plus_ke(values, t):
 
 # (table, first-row [phi2, l_p, Z_p, l_g, Z_g, KE], last-row [...]) typed from the seed
 KE_SPOTS = {
-    "T5.3": (["-4.998", "4.460", "10.672", "9.322", "10.667", "3.859"],
-             ["5.000", "8.024", "9.660", "5.760", "9.663", "0.601"]),
-    "T5.4": (["-4.998", "4.319", "3.727", "9.456", "3.721", "4.203"],
-             ["5.000", "7.889", "3.376", "5.889", "3.378", "0.270"]),
-    "T5.7": (["-4.998", "4.321", "-3.771", "9.454", "3.871", "4.200"],
-             ["5.000", "7.890", "-3.415", "5.887", "3.515", "0.273"]),
-    "T5.8": (["-4.998", "4.270", "4.792", "9.297", "4.758", "4.104"],
-             ["5.000", "7.839", "4.335", "5.730", "4.312", "0.410"]),
-    "T5.9": (["-4.998", "4.239", "0.393", "9.325", "-0.259", "4.180"],
-             ["5.000", "7.809", "0.356", "5.757", "-0.233", "0.337"]),
+    "T5.3": (
+        ["-4.998", "4.460", "10.672", "9.322", "10.667", "3.859"],
+        ["5.000", "8.024", "9.660", "5.760", "9.663", "0.601"],
+    ),
+    "T5.4": (
+        ["-4.998", "4.319", "3.727", "9.456", "3.721", "4.203"],
+        ["5.000", "7.889", "3.376", "5.889", "3.378", "0.270"],
+    ),
+    "T5.7": (
+        ["-4.998", "4.321", "-3.771", "9.454", "3.871", "4.200"],
+        ["5.000", "7.890", "-3.415", "5.887", "3.515", "0.273"],
+    ),
+    "T5.8": (
+        ["-4.998", "4.270", "4.792", "9.297", "4.758", "4.104"],
+        ["5.000", "7.839", "4.335", "5.730", "4.312", "0.410"],
+    ),
+    "T5.9": (
+        ["-4.998", "4.239", "0.393", "9.325", "-0.259", "4.180"],
+        ["5.000", "7.809", "0.356", "5.757", "-0.233", "0.337"],
+    ),
 }
 
 
@@ -165,8 +178,7 @@ def test_ke_spot_values(values, t):
 
 
 def test_source_lines(values):
-    first_lines = {"T4.3": 366, "T4.4": 383, "T5.3": 633, "T5.4": 666, "T5.7": 691,
-                   "T5.8": 721, "T5.9": 739}
+    first_lines = {"T4.3": 366, "T4.4": 383, "T5.3": 633, "T5.4": 666, "T5.7": 691, "T5.8": 721, "T5.9": 739}
     for t, ln in first_lines.items():
         lines = values[t]["line"].astype(int)
         assert lines.min() == ln and lines.max() == ln + 10, t
@@ -195,8 +207,14 @@ def test_params_table5_1():
     assert p[("5.1", "R_cp")] == "110" and p[("5.1", "R_cg")] == "110"
     assert p[("5.3", "paint_thickness")] == "0.00632"
     assert p[("4.1", "R_c")] == "110" and p[("4.2", "R_c")] == "5000"
-    assert df.loc[df.parameter.str.startswith(("hob_", "gear_", "pinion_", "N_", "R_c")) &
-                  (df.source == "Table 5.1"), "line"].astype(int).between(611, 618).all()
+    assert (
+        df.loc[
+            df.parameter.str.startswith(("hob_", "gear_", "pinion_", "N_", "R_c")) & (df.source == "Table 5.1"), "line"
+        ]
+        .astype(int)
+        .between(611, 618)
+        .all()
+    )
 
 
 def test_params_examples():
@@ -213,10 +231,15 @@ def test_params_examples():
     for ex in [f"5.{i}" for i in range(1, 10)]:
         assert v[(ex, "R_cp")] == 110
         assert v[(ex, "R_cg")] == (110 if ex in ("5.1", "5.2") else 113)
-    expect = {"5.2": {"dgamma_h": 3}, "5.4": {"dgamma_h": 3}, "5.5": {"dgamma_v": 3},
-              "5.6": {"dC": 0.2}, "5.7": {"dZ": 0.1},
-              "5.8": {"dgamma_h": 3, "dgamma_v": 3, "dC": 0.2},
-              "5.9": {"dgamma_h": 3, "dgamma_v": 3, "dC": 0.2, "dZ": 0.1}}
+    expect = {
+        "5.2": {"dgamma_h": 3},
+        "5.4": {"dgamma_h": 3},
+        "5.5": {"dgamma_v": 3},
+        "5.6": {"dC": 0.2},
+        "5.7": {"dZ": 0.1},
+        "5.8": {"dgamma_h": 3, "dgamma_v": 3, "dC": 0.2},
+        "5.9": {"dgamma_h": 3, "dgamma_v": 3, "dC": 0.2, "dZ": 0.1},
+    }
     for ex in [f"5.{i}" for i in range(1, 10)]:
         for par in ["dgamma_h", "dgamma_v", "dC", "dZ"]:
             assert v[(ex, par)] == expect.get(ex, {}).get(par, 0.0), (ex, par)
@@ -228,7 +251,12 @@ def test_claims():
     assert set(df["kind"]) == {"missing-table", "trend", "approximate"}
     missing = df[df.kind == "missing-table"]
     assert set(missing["source"].str.extract(r"(Table \d\.\d)")[0]) == {
-        "Table 4.2", "Table 4.5", "Table 5.2", "Table 5.5", "Table 5.6"}
+        "Table 4.2",
+        "Table 4.5",
+        "Table 5.2",
+        "Table 5.5",
+        "Table 5.6",
+    }
     assert (df[["statement", "confirm_if", "refute_if"]] != "").all().all()
     df["line"].astype(int)
     approx_lines = set(df.loc[df.kind == "approximate", "line"].astype(int))

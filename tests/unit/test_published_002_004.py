@@ -56,13 +56,12 @@ CLAIM_COUNTS = {"claims_002.csv": 26, "claims_004.csv": 24}
 WORD_NUMBERS = {("params_004_examples.csv", "phi1_at_pitch_point"), ("params_002_T6.2.csv", "meshing_zones")}
 
 
-
-
 def _values(name: str) -> pd.DataFrame:
     return _read(name).set_index("id")
 
 
 # ----------------------------------------------------------------------------- structure
+
 
 @pytest.mark.parametrize("name,count", sorted(VALUE_COUNTS.items()))
 def test_value_file_format(name, count):
@@ -76,7 +75,7 @@ def test_value_file_format(name, count):
         assert re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", r["printed"]), r["id"]
         assert _precision(r["printed"]) == (r["precision_kind"], int(r["precision"])), r["id"]
         assert math.isclose(float(r["printed"]), float(r["value"]), rel_tol=1e-12), r["id"]
-        assert r["id"] == f"{r['seed']}-{name[len('values_002_'):-4]}-{r['row']}-{r['quantity']}"
+        assert r["id"] == f"{r['seed']}-{name[len('values_002_') : -4]}-{r['row']}-{r['quantity']}"
         for part in r["row"].split(";"):
             assert re.fullmatch(r"[A-Za-z0-9_]+=[^=;]+", part), (r["id"], part)
 
@@ -136,16 +135,31 @@ def test_printed_strings_on_cited_lines():
 
 # ----------------------------------------------------------------------------- key sets
 
+
 def test_key_sets_002():
     s25 = _read("values_002_S2.5.csv")
     assert set(zip(s25["row"], s25["quantity"])) == {
-        ("member=1", "kappa_I"), ("member=1", "kappa_II"), ("member=2", "kappa_I"), ("member=2", "kappa_II")}
+        ("member=1", "kappa_I"),
+        ("member=1", "kappa_II"),
+        ("member=2", "kappa_I"),
+        ("member=2", "kappa_II"),
+    }
     s55 = _read("values_002_S5.5.csv")
     assert set(s55["row"]) == {
-        f"crowning=profile;tool={t};misalignment={m}" for t in ("disk", "worm") for m in ("dgamma_3arcmin", "dlambda_3arcmin")
-    } | {f"crowning={c};misalignment={m}" for c in ("disk", "worm") for m in ("none", "dgamma_3arcmin", "dlambda_3arcmin")}
+        f"crowning=profile;tool={t};misalignment={m}"
+        for t in ("disk", "worm")
+        for m in ("dgamma_3arcmin", "dlambda_3arcmin")
+    } | {
+        f"crowning={c};misalignment={m}"
+        for c in ("disk", "worm")
+        for m in ("none", "dgamma_3arcmin", "dlambda_3arcmin")
+    }
     assert set(_read("values_002_T6.2.1.csv")["row"]) == {
-        "version=1", "version=2;zone=pinion_addendum", "version=2;zone=pinion_dedendum", "version=3"}
+        "version=1",
+        "version=2;zone=pinion_addendum",
+        "version=2;zone=pinion_dedendum",
+        "version=3",
+    }
     for name, quantities in (
         ("values_002_T6.2.2.csv", {"ha_Pn", "hd_Pn", "h_Pn"}),
         ("values_002_T6.2.3.csv", {"delta_alpha", "delta_1"}),
@@ -156,7 +170,16 @@ def test_key_sets_002():
     t62 = _read("params_002_T6.2.csv")
     assert set(t62["example"]) == {"version1", "version2", "version3"}
     assert set(_read("params_002_S5.4.csv")["parameter"]) == {
-        "N1", "N2", "normal_pressure_angle", "normal_diametral_pitch", "a_c", "a_t", "helix_angle", "a_pl", "r_pw"}
+        "N1",
+        "N2",
+        "normal_pressure_angle",
+        "normal_diametral_pitch",
+        "a_c",
+        "a_t",
+        "helix_angle",
+        "a_pl",
+        "r_pw",
+    }
 
 
 def test_key_sets_004():
@@ -165,11 +188,23 @@ def test_key_sets_004():
     assert {f"fig12_module_sweep_m{m}" for m in (4, 8, 12, 16)} <= examples
     assert {f"fig13_RT_sweep_z2_{z}_RT{r}" for z in (29, 89) for r in (300, 400, 500, 600, 800)} <= examples
     assert {f"fig15_z2_sweep_z2_{z}" for z in (29, 49, 69, 89, 109)} <= examples
-    assert {"sec4_3d_model", "sec4_fea", "sec4_meshing_test", "figs12-15_common", "fig14_thickness_sections"} <= examples
+    assert {
+        "sec4_3d_model",
+        "sec4_fea",
+        "sec4_meshing_test",
+        "figs12-15_common",
+        "fig14_thickness_sections",
+    } <= examples
     assert len(examples) == 4 + 10 + 5 + 5
     for ex in examples:
         if ex.startswith(("fig12", "fig13", "fig15")):
-            assert set(p.loc[p["example"] == ex, "parameter"]) == {"z1", "z2", "module", "tooth_line_radius", "face_width"}
+            assert set(p.loc[p["example"] == ex, "parameter"]) == {
+                "z1",
+                "z2",
+                "module",
+                "tooth_line_radius",
+                "face_width",
+            }
     c = _read("claims_004.csv")
     for fig in ("F12", "F13", "F15"):
         assert f"004-{fig}-cliff_near_top" in set(c["id"])
@@ -177,6 +212,7 @@ def test_key_sets_004():
 
 
 # ----------------------------------------------------------------------------- spot values
+
 
 def test_spot_values_002():
     v = pd.concat([_values(n) for n in VALUE_COUNTS])
@@ -208,7 +244,10 @@ def test_spot_values_002():
     for ver in (1, 2, 3):
         t2 = v.loc[[f"002-T6.2.2-version={ver}-{q}" for q in ("ha_Pn", "hd_Pn", "h_Pn")], "value"].astype(float)
         assert t2.iloc[0] + t2.iloc[1] == pytest.approx(t2.iloc[2], abs=1e-9)
-        a2, b2, area = (float(v.loc[f"002-T6.2.4-version={ver}-{q}", "value"]) for q in ("major_axis_2a", "minor_axis_2b", "area_F1"))
+        a2, b2, area = (
+            float(v.loc[f"002-T6.2.4-version={ver}-{q}", "value"])
+            for q in ("major_axis_2a", "minor_axis_2b", "area_F1")
+        )
         assert math.pi * a2 * b2 / 4 == pytest.approx(area, abs=0.0005 + 1e-9)
 
 
@@ -232,7 +271,9 @@ def test_spot_params_002():
 def test_spot_params_004():
     p = _read("params_004_examples.csv")
     val = lambda ex, par: float(p[(p.example == ex) & (p.parameter == par)]["value"].iloc[0])
-    assert [val("sec4_3d_model", k) for k in ("z1", "z2", "module", "face_width", "tooth_line_radius", "pressure_angle")] == [19, 31, 8, 80, 500, 20]
+    assert [
+        val("sec4_3d_model", k) for k in ("z1", "z2", "module", "face_width", "tooth_line_radius", "pressure_angle")
+    ] == [19, 31, 8, 80, 500, 20]
     assert val("figs12-15_common", "elastic_approach") == 0.00632
     assert (val("figs12-15_common", "phi1_min"), val("figs12-15_common", "phi1_max")) == (-14.5, 14.5)
     assert val("fig12_module_sweep_m16", "module") == 16

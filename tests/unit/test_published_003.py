@@ -67,8 +67,6 @@ WORDS = {
 BEVEL_FILES = {"values_003_T11.csv", "values_003_T12.csv", "values_003_S5.csv"}
 
 
-
-
 def _all_values() -> pd.DataFrame:
     return pd.concat([_read(n).assign(file=n) for n in VALUE_COUNTS], ignore_index=True)
 
@@ -85,6 +83,7 @@ def _on_line(text: str, line: str) -> bool:
 
 # ----------------------------------------------------------------------------- structure
 
+
 @pytest.mark.parametrize("name,count", sorted(VALUE_COUNTS.items()))
 def test_value_file_format(name, count):
     df = _read(name)
@@ -94,7 +93,7 @@ def test_value_file_format(name, count):
     assert set(df["seed"]) == {"003"}
     assert set(df["unit"]) <= UNITS
     assert set(df["rounding"]) == {"round"}
-    tag = name[len("values_003_"):-4]
+    tag = name[len("values_003_") : -4]
     for _, r in df.iterrows():
         assert re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", r["printed"]), r["id"]
         assert _precision(r["printed"]) == (r["precision_kind"], int(r["precision"])), r["id"]
@@ -136,8 +135,10 @@ def test_claim_file_format():
 
 def test_ids_unique_across_all_files():
     """Ids are unique over every values_* and claims_* file of every seed."""
-    ids = pd.concat([_read(p.name)["id"] for p in sorted(PUB.glob("values_*.csv"))]
-                    + [_read(p.name)["id"] for p in sorted(PUB.glob("claims_*.csv"))])
+    ids = pd.concat(
+        [_read(p.name)["id"] for p in sorted(PUB.glob("values_*.csv"))]
+        + [_read(p.name)["id"] for p in sorted(PUB.glob("claims_*.csv"))]
+    )
     assert ids.is_unique, sorted(set(ids[ids.duplicated()]))[:10]
 
 
@@ -156,6 +157,7 @@ def test_gearrep_loader_accepts_files():
 
 
 # ----------------------------------------------------------------------------- against the seed text
+
 
 @pytest.mark.skipif(not SEED_FILE.is_file(), reason="seed OCR file not available")
 def test_printed_numbers_on_their_exact_line():
@@ -197,20 +199,28 @@ def test_claims_cite_text_lines():
 
 # ----------------------------------------------------------------------------- key sets
 
+
 def test_key_sets():
     t10 = _read("values_003_T10.csv")
     assert set(zip(t10["row"], t10["quantity"])) == {
-        (f"case=spur_52_72;method={m}", q) for m in ("conventional", "reduced")
-        for q in ("convergence_rate", "mean_iterations", "total_time")}
+        (f"case=spur_52_72;method={m}", q)
+        for m in ("conventional", "reduced")
+        for q in ("convergence_rate", "mean_iterations", "total_time")
+    }
     t12 = _read("values_003_T12.csv")
     assert set(t12["quantity"]) == {"mean_iterations", "mean_time_per_solve", "convergence_rate", "mean_absolute_error"}
-    for name, plane, angles in (("values_003_T3.csv", "in", ("-0.05", "-0.1", "-0.2")),
-                                ("values_003_T4.csv", "out", ("0.05", "0.1", "0.2"))):
+    for name, plane, angles in (
+        ("values_003_T3.csv", "in", ("-0.05", "-0.1", "-0.2")),
+        ("values_003_T4.csv", "out", ("0.05", "0.1", "0.2")),
+    ):
         df = _read(name)
         assert set(zip(df["row"], df["quantity"])) == {
             (f"plane={plane};misalignment_deg={a};crown={k};table_row={i}", q)
-            for a in angles for k in ("circular", "parabolic", "logarithmic") for i in (1, 2, 3)
-            for q in ("crown_amount", "te_max")}
+            for a in angles
+            for k in ("circular", "parabolic", "logarithmic")
+            for i in (1, 2, 3)
+            for q in ("crown_amount", "te_max")
+        }
         units = dict(zip(df["row"] + "|" + df["quantity"], df["unit"]))
         for key, unit in units.items():
             want = "arcsec" if key.endswith("te_max") else ("per_mm" if "parabolic" in key else "mm")
@@ -243,6 +253,7 @@ def test_bevel_rows_are_marked():
 
 # ----------------------------------------------------------------------------- spot values (typed from the seed)
 
+
 def test_spot_values():
     v = _all_values().set_index("id")
     spot = {
@@ -262,10 +273,26 @@ def test_spot_values():
         "003-S6.1-case=spur_25_25;point=pitch-phi1": ("1.5707", "rad", 1027),
         "003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad=-1.1-convergence_rate": ("48", "pct", 1027),
         "003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad=-1.15-converged_count": ("670", "count", 1027),
-        "003-S6.1-case=spur_25_25;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0-convergence_rate": ("81.8", "pct", 1040),
-        "003-S6.1-case=spur_25_25;misalignment_in_plane_deg=0.1;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0-convergence_rate": ("80", "pct", 1049),
-        "003-S6.1-case=helical_25_77;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.3-convergence_rate": ("13.5", "pct", 1111),
-        "003-S6.1-case=helical_25_77;misalignment_in_plane_arcmin=-3;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.3-convergence_rate": ("14.2", "pct", 1114),
+        "003-S6.1-case=spur_25_25;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0-convergence_rate": (
+            "81.8",
+            "pct",
+            1040,
+        ),
+        "003-S6.1-case=spur_25_25;misalignment_in_plane_deg=0.1;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0-convergence_rate": (
+            "80",
+            "pct",
+            1049,
+        ),
+        "003-S6.1-case=helical_25_77;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.3-convergence_rate": (
+            "13.5",
+            "pct",
+            1111,
+        ),
+        "003-S6.1-case=helical_25_77;misalignment_in_plane_arcmin=-3;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.3-convergence_rate": (
+            "14.2",
+            "pct",
+            1114,
+        ),
         "003-S6.1-case=helical_25_77;point=pitch-phi2": ("-1.635", "rad", 1099),
         "003-S6.2-case=spur_52_72;method=conventional;n_starts=1000-convergence_rate": ("25", "pct", 1165),
         "003-T3-plane=in;misalignment_deg=-0.05;crown=circular;table_row=1-crown_amount": ("2.398", "mm", 705),
@@ -277,7 +304,11 @@ def test_spot_values():
         "003-S4.2-plane=in;misalignment_deg=-0.2;crown=logarithmic-te_area": ("-0.218083", "1", 721),
         "003-S4.2-plane=out;misalignment_deg=0.2;crown=circular-te_area": ("-0.645048", "1", 755),
         "003-S4.2-plane=out;misalignment_deg=0.01;crown=logarithmic-stress_ratio": ("15.1803", "1", 779),
-        "003-S5-case=spiral_bevel_17_17;misalignment=dE_dH_0.04;c_1=0.005;c_t=0.08;L_t=0.16-te_amplitude": ("1500", "arcsec", 959),
+        "003-S5-case=spiral_bevel_17_17;misalignment=dE_dH_0.04;c_1=0.005;c_t=0.08;L_t=0.16-te_amplitude": (
+            "1500",
+            "arcsec",
+            959,
+        ),
     }
     for id_, (printed, unit, line) in spot.items():
         r = v.loc[id_]
@@ -288,22 +319,52 @@ def test_spot_params():
     p = pd.concat([_read(n).assign(file=n) for n in PARAM_COUNTS])
     val = lambda ex, par: float(p[(p.example == ex) & (p.parameter == par)]["value"].iloc[0])
     assert [val("spur_52_72", k) for k in ("N1", "N2", "module", "pressure_angle", "face_width", "a_1")] == [
-        52, 72, 1, 20, 11.42, 0.002857]
+        52,
+        72,
+        1,
+        20,
+        11.42,
+        0.002857,
+    ]
     assert [val("spur_25_25", k) for k in ("N1", "N2", "module", "pressure_angle", "face_width", "a_p")] == [
-        25, 25, 2.5, 20, 25, 0.0001]
+        25,
+        25,
+        2.5,
+        20,
+        25,
+        0.0001,
+    ]
     assert [val("helical_25_77", k) for k in ("N1", "N2", "module", "pressure_angle", "helix_angle", "face_width")] == [
-        25, 77, 5, 27.5, 20, 40]
+        25,
+        77,
+        5,
+        27.5,
+        20,
+        40,
+    ]
     assert (val("helical_25_77", "profile_crowning_1"), val("helical_25_77", "profile_crowning_2")) == (1.4e-3, 8e-5)
     assert val("helical_25_77", "misalignment_in_plane") == -3
     assert [val("helical_40_37", k) for k in ("N1", "N2", "module", "pressure_angle", "helix_angle", "face_width")] == [
-        40, 37, 1, 20, 14, 20]
+        40,
+        37,
+        1,
+        20,
+        14,
+        20,
+    ]
     assert [val("straight_bevel_39_32", k) for k in ("N1", "N2", "module", "face_width", "base_cone_angle_1")] == [
-        39, 32, 2.5, 14, 47.79]
+        39,
+        32,
+        2.5,
+        14,
+        47.79,
+    ]
     assert [val("spiral_bevel_17_17", k) for k in ("N1", "N2", "spiral_angle", "face_width")] == [17, 17, 35, 4.8]
     assert val("spur_25_25_m1", "a_1_sufficient") == 0.01675
 
 
 # ----------------------------------------------------------------------------- internal consistency
+
 
 def test_pitch_point_lies_on_the_line_of_action():
     """sqrt(u1^2 - rb^2) + sqrt(u2^2 - rb^2) = a sin(alpha) for the 25/25, m = 2.5 pair: the
@@ -319,9 +380,11 @@ def test_pitch_point_lies_on_the_line_of_action():
 
 def test_rates_match_counts():
     s = "003-S6.1-case=spur_25_25;"
-    for row, n in (("method=conventional;phi2_guess_rad=-1.1", 1000),
-                   ("method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0", 1000),
-                   ("misalignment_in_plane_deg=0.1;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0", 1000)):
+    for row, n in (
+        ("method=conventional;phi2_guess_rad=-1.1", 1000),
+        ("method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0", 1000),
+        ("misalignment_in_plane_deg=0.1;method=conventional;phi2_lo_rad=-1.7;phi2_hi_rad=-1.0", 1000),
+    ):
         assert 100 * _v(f"{s}{row}-converged_count") / n == pytest.approx(_v(f"{s}{row}-convergence_rate"))
 
 
@@ -330,9 +393,15 @@ def test_area_ratios_match_areas():
     unit of the percentage's last printed digit plus the effect of rounding the areas to 6 decimals
     (1 - 0.218083/0.223297 = 2.3350 %, printed 2.33)."""
     a = lambda plane, ang, k: abs(_v(f"003-S4.2-plane={plane};misalignment_deg={ang};crown={k}-te_area"))
-    r = lambda plane, ang, k: _v(f"003-S4.2-plane={plane};misalignment_deg={ang};compare=logarithmic_vs_{k}-te_area_reduction")
-    for plane, ang, k, half in (("in", "-0.2", "parabolic", 0.005), ("in", "-0.2", "circular", 0.05),
-                                ("out", "0.2", "circular", 0.5), ("out", "0.2", "parabolic", 0.5)):
+    r = lambda plane, ang, k: _v(
+        f"003-S4.2-plane={plane};misalignment_deg={ang};compare=logarithmic_vs_{k}-te_area_reduction"
+    )
+    for plane, ang, k, half in (
+        ("in", "-0.2", "parabolic", 0.005),
+        ("in", "-0.2", "circular", 0.05),
+        ("out", "0.2", "circular", 0.5),
+        ("out", "0.2", "parabolic", 0.5),
+    ):
         s_l, s_k = a(plane, ang, "logarithmic"), a(plane, ang, k)
         computed = 100 * (1 - s_l / s_k)
         area_rounding = 100 * 0.5e-6 * (1 / s_k + s_l / s_k**2)

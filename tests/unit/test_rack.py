@@ -22,8 +22,7 @@ def test_analytic_derivatives_match_finite_differences(rack):
     p = rack.evaluate(u, th)
     q = fd_derivatives(rack.position, u, th)
     # FD rounding: ~eps |r| / h for first, ~eps |r| / h^2 (~1e-9 here) for second derivatives
-    for name, tol in (("r", 1e-15), ("r_u", 1e-11), ("r_v", 1e-11), ("r_uu", 1e-8), ("r_uv", 1e-8),
-                      ("r_vv", 1e-8)):
+    for name, tol in (("r", 1e-15), ("r_u", 1e-11), ("r_v", 1e-11), ("r_uu", 1e-8), ("r_uv", 1e-8), ("r_vv", 1e-8)):
         np.testing.assert_allclose(getattr(p, name), getattr(q, name), atol=tol, err_msg=name)
     assert p.r.shape == u.shape + (3,)
 

@@ -14,15 +14,23 @@ from gearrep import report  # noqa: E402
 
 @pytest.fixture()
 def card():
-    return pd.DataFrame({
-        "replication": ["tseng_curvature", "tseng_curvature", ""],
-        "id": ["a", "b", "c"], "seed": ["000", "000", "004"],
-        "source": ["Table 4.3", "Table 4.3", "Fig 12"], "row": ["l1_mm=4.381"] * 2 + [""],
-        "quantity": ["k_s", "k_q", "trend"], "unit": ["per_mm", "per_mm", ""],
-        "published": [0.008067, 0.058372, float("nan")], "computed": [0.008067, 0.0584, float("nan")],
-        "abs_err": [0.0, 2.8e-5, float("nan")], "tolerance": [5e-7, 5e-7, float("nan")],
-        "status": ["reproduced", "deviates", "not-computed"], "note": ["", "l1 rounding", "pending"],
-    })
+    return pd.DataFrame(
+        {
+            "replication": ["tseng_curvature", "tseng_curvature", ""],
+            "id": ["a", "b", "c"],
+            "seed": ["000", "000", "004"],
+            "source": ["Table 4.3", "Table 4.3", "Fig 12"],
+            "row": ["l1_mm=4.381"] * 2 + [""],
+            "quantity": ["k_s", "k_q", "trend"],
+            "unit": ["per_mm", "per_mm", ""],
+            "published": [0.008067, 0.058372, float("nan")],
+            "computed": [0.008067, 0.0584, float("nan")],
+            "abs_err": [0.0, 2.8e-5, float("nan")],
+            "tolerance": [5e-7, 5e-7, float("nan")],
+            "status": ["reproduced", "deviates", "not-computed"],
+            "note": ["", "l1 rounding", "pending"],
+        }
+    )
 
 
 def png():
@@ -35,13 +43,35 @@ def png():
 
 
 def test_render_contains_every_paper_status_and_figure(card):
-    errata = pd.DataFrame({"seed": ["004"], "location": ["eq (8)"], "printed": ["|r_t . r_p|"],
-                           "correction": ["|r_t x r_p|"], "evidence": ["normal must be unit"]})
-    html = report.render(card, {"curvature: k_s": png()}, errata, {"python": "3.11"},
-                         notebooks={"tseng_curvature": "notebooks/tseng_curvature.html"}, runtime_s=12.5)
+    errata = pd.DataFrame(
+        {
+            "seed": ["004"],
+            "location": ["eq (8)"],
+            "printed": ["|r_t . r_p|"],
+            "correction": ["|r_t x r_p|"],
+            "evidence": ["normal must be unit"],
+        }
+    )
+    html = report.render(
+        card,
+        {"curvature: k_s": png()},
+        errata,
+        {"python": "3.11"},
+        notebooks={"tseng_curvature": "notebooks/tseng_curvature.html"},
+        runtime_s=12.5,
+    )
     assert html.startswith("<!doctype html>") and html.rstrip().endswith("</html>")
-    for text in ("paper-000", "paper-004", "reproduced", "deviates", "not-computed", "data:image/png;base64,",
-                 "eq (8)", "12.5 s", "notebooks/tseng_curvature.html#Table-4.3"):
+    for text in (
+        "paper-000",
+        "paper-004",
+        "reproduced",
+        "deviates",
+        "not-computed",
+        "data:image/png;base64,",
+        "eq (8)",
+        "12.5 s",
+        "notebooks/tseng_curvature.html#Table-4.3",
+    ):
         assert text in html, text
     assert "http://" not in html and "https://" not in html  # opens offline
 
@@ -81,12 +111,13 @@ def test_report_screenshot_in_headless_browser(card, tmp_path):
     if shot.find_browser() is None:
         pytest.skip("no Chromium-family browser installed")
     page = tmp_path / "report.html"
-    page.write_text(report.render(card, {"curvature: k_s": png()}, pd.DataFrame(), {"python": "3.11"}),
-                    encoding="utf-8")
+    page.write_text(
+        report.render(card, {"curvature: k_s": png()}, pd.DataFrame(), {"python": "3.11"}), encoding="utf-8"
+    )
     out = shot.screenshot(page, tmp_path / "report.png", width=1000, height=800)
     img = mpimg.imread(out)[..., :3]
     assert img.shape[:2] == (800, 1000)
     assert img.std() > 0.05, "screenshot is blank"
     for hex_colour in ("#1a7f37", "#cf222e"):  # reproduced (green) and deviates (red) in the summary bar
-        rgb = np.array([int(hex_colour[i:i + 2], 16) for i in (1, 3, 5)]) / 255.0
+        rgb = np.array([int(hex_colour[i : i + 2], 16) for i in (1, 3, 5)]) / 255.0
         assert (np.abs(img - rgb).max(axis=-1) < 0.03).sum() > 20, f"{hex_colour} not on screen"

@@ -34,8 +34,9 @@ def wf(tmp_path_factory):
 
 
 def smk(cwd, *args):
-    out = subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(), text=True,
-                         timeout=300)
+    out = subprocess.run(
+        [sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(), text=True, timeout=300
+    )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     return out.stdout + out.stderr
 
@@ -128,8 +129,11 @@ def gearrep_files(source: Path, extra_modules=()) -> set[str]:
         finder.run_script(str(tmp))
     missing = sorted(m for m in finder.badmodules if m.startswith("gearrep"))
     assert not missing, f"{source.name} imports gearrep modules that do not exist: {missing}"
-    return {str(Path(m.__file__).resolve().relative_to(ROOT)) for name, m in finder.modules.items()
-            if name.startswith("gearrep")}
+    return {
+        str(Path(m.__file__).resolve().relative_to(ROOT))
+        for name, m in finder.modules.items()
+        if name.startswith("gearrep")
+    }
 
 
 def _bench_names() -> list[str]:
@@ -141,8 +145,9 @@ def _bench_names() -> list[str]:
 def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
     extra = tmp_path / "bench_all.yaml"
     extra.write_text("bench:\n  replications: " + json.dumps(_bench_names()) + "\n")
-    jobs = plan(wf, "all", "bench", "results/report.png", "--forceall", "--configfile", "config/config.yaml",
-                str(extra))
+    jobs = plan(
+        wf, "all", "bench", "results/report.png", "--forceall", "--configfile", "config/config.yaml", str(extra)
+    )
     sources = rule_sources()
     checked, wrong = set(), []
     for job in jobs:
@@ -154,8 +159,10 @@ def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
         declared = {p for p in job["input"] if p.startswith("src/gearrep/")}
         wanted = gearrep_files(src, dynamic)
         if declared != wanted:
-            wrong.append(f"rule {job['rule']} ({src.name}): declared but not imported {sorted(declared - wanted)}; "
-                         f"imported but not declared {sorted(wanted - declared)}")
+            wrong.append(
+                f"rule {job['rule']} ({src.name}): declared but not imported {sorted(declared - wanted)}; "
+                f"imported but not declared {sorted(wanted - declared)}"
+            )
         checked.add(job["rule"])
     assert not wrong, "\n".join(wrong)
     assert {"scorecard", "report", "bench_core"} <= checked
@@ -195,8 +202,11 @@ def test_job_counts_of_framework_targets(wf):
 
     from gearrep.replications import REGISTRY
 
-    n_rep = len(((yaml.safe_load((wf / "config" / "config.yaml").read_text()) or {}).get("bench") or {}).get(
-        "replications", list(REGISTRY)))
+    n_rep = len(
+        ((yaml.safe_load((wf / "config" / "config.yaml").read_text()) or {}).get("bench") or {}).get(
+            "replications", list(REGISTRY)
+        )
+    )
     bench = sorted(j["rule"] for j in plan(wf, "--forceall", "bench"))
     assert bench == sorted(["bench", "bench_core", "bench_defaults"] + ["bench_replication"] * n_rep)
     default = {j["rule"] for j in plan(wf, "--forceall")}

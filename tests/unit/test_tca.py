@@ -186,18 +186,23 @@ def test_crowned_pinion_misalignment_closed_form(dg, rtol):
         x, y = c.position[:, 0], c.position[:, 1]
         if kind == "out-of-plane":
             z_cf = np.tan(dg) * np.cos(ALPHA) / (2 * C1)
-            te_cf = (np.tan(dg) ** 2 * np.cos(ALPHA) ** 2 / (4 * C1) - y * (1 / np.cos(dg) - 1) * np.cos(ALPHA)) / g2.r_b
+            te_cf = (
+                np.tan(dg) ** 2 * np.cos(ALPHA) ** 2 / (4 * C1) - y * (1 / np.cos(dg) - 1) * np.cos(ALPHA)
+            ) / g2.r_b
         else:
             z_cf = -np.tan(dg) * np.sin(ALPHA) / (2 * C1)
-            te_cf = (np.tan(dg) ** 2 * np.sin(ALPHA) ** 2 / (4 * C1)
-                     + (a - x) * (1 / np.cos(dg) - 1) * np.sin(ALPHA)) / g2.r_b
+            te_cf = (
+                np.tan(dg) ** 2 * np.sin(ALPHA) ** 2 / (4 * C1) + (a - x) * (1 / np.cos(dg) - 1) * np.sin(ALPHA)
+            ) / g2.r_b
         assert np.allclose(c.position[:, 2], z_cf, rtol=rtol, atol=0)
         assert np.allclose(c.v1, z_cf, rtol=rtol, atol=0)
         assert np.allclose(c.te, te_cf, rtol=rtol, atol=0)
         assert np.all(c.te > 0)
         if dg == 3 * ARCMIN:
-            print(f"\n{kind} 3': shift {c.v1[6]:.6f} mm (closed form {z_cf:.6f}), "
-                  f"TE {c.te_arcsec[6]:.6f} arcsec (closed form {te_cf[6] / ARCSEC:.6f})")
+            print(
+                f"\n{kind} 3': shift {c.v1[6]:.6f} mm (closed form {z_cf:.6f}), "
+                f"TE {c.te_arcsec[6]:.6f} arcsec (closed form {te_cf[6] / ARCSEC:.6f})"
+            )
 
 
 # ---------------------------------------------------------------------------------------------
@@ -213,8 +218,9 @@ def test_conventional_and_reduced_agree(case):
         pair, _, _ = helical_pair(crown1=ParabolicCrowning(0.0227), mis=mis)
         phi = np.linspace(-0.05, 0.05, 9)
     red = solve_contact(pair, phi)
-    conv = solve_contact(pair, phi, red.unknowns("conventional") + [0.3, -0.5, -0.3, 0.4, 0.01],
-                         formulation="conventional")
+    conv = solve_contact(
+        pair, phi, red.unknowns("conventional") + [0.3, -0.5, -0.3, 0.4, 0.01], formulation="conventional"
+    )
     both = (red.status == Status.CONVERGED) & (conv.status == Status.CONVERGED)
     assert both.sum() >= len(phi) - 2
     assert np.max(np.abs(red.position[both] - conv.position[both])) < 1e-9
@@ -242,8 +248,17 @@ def test_far_starts_are_flagged_not_silent():
     f1 = pair.flank1
     ref = solve_contact(pair, 0.0)
     assert ref.status[0] == Status.CONVERGED
-    far = np.array([[3 * f1.u_max, 0.0], [f1.u_max, 60.0], [0.5 * g1.r_b, 0.0], [f1.u_min, -60.0],
-                    [1e3, 1e3], [-5.0, 0.0], [1e6, -1e6]])
+    far = np.array(
+        [
+            [3 * f1.u_max, 0.0],
+            [f1.u_max, 60.0],
+            [0.5 * g1.r_b, 0.0],
+            [f1.u_min, -60.0],
+            [1e3, 1e3],
+            [-5.0, 0.0],
+            [1e6, -1e6],
+        ]
+    )
     red = solve_contact(pair, 0.0, far)
     conv_start = np.column_stack([far, np.full(len(far), g2.r_p), np.zeros(len(far)), np.full(len(far), 2.0)])
     conv = solve_contact(pair, 0.0, conv_start, formulation="conventional")
@@ -252,8 +267,13 @@ def test_far_starts_are_flagged_not_silent():
         # every point is either flagged or the verified root inside the flanks
         assert np.all(np.abs(c.u1[ok] - ref.u1[0]) < 1e-8) and np.all(np.abs(c.v1[ok] - ref.v1[0]) < 1e-8)
         assert np.sum(~ok) >= 4
-        assert set(np.unique(c.status[~ok])) <= {Status.NOT_CONVERGED, Status.OFF_FLANK, Status.SINGULAR,
-                                                 Status.WRONG_ROOT, Status.DIVERGED}
+        assert set(np.unique(c.status[~ok])) <= {
+            Status.NOT_CONVERGED,
+            Status.OFF_FLANK,
+            Status.SINGULAR,
+            Status.WRONG_ROOT,
+            Status.DIVERGED,
+        }
     # a position outside the engagement interval: the contact exists but off the flank
     for form in ("reduced", "conventional"):
         c = solve_contact(pair, [0.25, -0.3], formulation=form)
@@ -278,9 +298,11 @@ def test_random_starts_converge_only_to_the_true_root():
         ok = c.converged
         assert np.max(np.abs(c.u1[ok] - ref.u1[0])) < 1e-9 and np.max(np.abs(c.v1[ok] - ref.v1[0])) < 1e-9
         assert np.max(np.abs(c.phi2[ok] - ref.phi2[0])) < 1e-12
-    print(f"\nconvergence from {n} random starts: reduced {red.converged.mean():.2%} "
-          f"({red.iterations[red.converged].mean():.2f} it), conventional {conv.converged.mean():.2%} "
-          f"({conv.iterations[conv.converged].mean():.2f} it)")
+    print(
+        f"\nconvergence from {n} random starts: reduced {red.converged.mean():.2%} "
+        f"({red.iterations[red.converged].mean():.2f} it), conventional {conv.converged.mean():.2%} "
+        f"({conv.iterations[conv.converged].mean():.2f} it)"
+    )
     assert red.converged.mean() > 0.99
 
 
@@ -290,6 +312,7 @@ def test_choice_of_normal_components_decides_conditioning():
     5x5 Jacobian is nearly singular and the sign-flipped false roots n1z = +n2z appear (flagged
     WRONG_ROOT). Dropping the largest component (default) is well conditioned."""
     from gearrep.tca._formulations import _conventional_FJ
+
     pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
     ref = solve_contact(pair, 0.0)
     x = ref.unknowns("conventional")
@@ -342,6 +365,7 @@ def test_reduced_explicit_relations_and_phi2_sign_rule():
     # in member 2's axis frame (w2 = -z there)
     f2 = pair.flank2
     from gearrep.frames import rot_z
+
     p = np.einsum("ij,nj->ni", rot_z(pair.phase2), f2.position(u2, v2))
     q = (r1 - pair.O2) @ pair.A2  # A2^T (r - O2)
     p[:, 2] = q[:, 2] = 0.0
@@ -393,8 +417,10 @@ def test_performance_10000_aligned_spur_solves():
         c = solve_contact(pair, phi, v1=v1)
         best = min(best, time.perf_counter() - t0)
     assert np.all(c.status == Status.CONVERGED)
-    print(f"\n10,000 aligned spur contact solves (reduced, analytic Jacobian): {best:.3f} s "
-          f"({c.iterations.mean():.2f} iterations on average)")
+    print(
+        f"\n10,000 aligned spur contact solves (reduced, analytic Jacobian): {best:.3f} s "
+        f"({c.iterations.mean():.2f} iterations on average)"
+    )
     assert best < 1.0
 
 
@@ -446,8 +472,9 @@ def test_contact_curvatures_and_ellipse_of_a_crowned_spur_pair():
     rel = relative_curvature(p1, p2)
     rho1, rho2 = np.sqrt(c.u1**2 - g1.r_b**2), np.sqrt(c.u2**2 - g2.r_b**2)
     k_profile = 1 / rho1 + 1 / rho2
-    np.testing.assert_allclose(np.sort(np.abs([rel.k1, rel.k2]), axis=0), np.sort([np.full(7, 2 * C1), k_profile], axis=0),
-                               rtol=1e-7)
+    np.testing.assert_allclose(
+        np.sort(np.abs([rel.k1, rel.k2]), axis=0), np.sort([np.full(7, 2 * C1), k_profile], axis=0), rtol=1e-7
+    )
     delta = 0.00632
     el = contact_ellipse(pair, c, delta)
     assert np.all(el.elliptic)
@@ -486,8 +513,7 @@ def test_solver_variants_agree_from_seeded_and_robust_starts():
         x, status, _ = solve_variant(pair, 0.01, starts, v, drop=drop)
         assert np.all(status == Status.CONVERGED), v
         assert np.max(np.abs(x[:, :4] - x_ref[:4])) < 1e-8, v
-    six = solve_conventional(pair, 0.01, seed_from_reduced(pair, 0.01, starts[:, 0], starts[:, 1]),
-                             equations="six")
+    six = solve_conventional(pair, 0.01, seed_from_reduced(pair, 0.01, starts[:, 0], starts[:, 1]), equations="six")
     assert np.all(six.status == Status.CONVERGED) and np.max(np.abs(six.x[:, :4] - x_ref[:4])) < 1e-8
     with pytest.raises(ValueError, match="variant"):
         solve_conventional(pair, 0.01, starts, variant="newton")

@@ -19,13 +19,26 @@ def wf(tmp_path):
 
 
 def smk(cwd, *args, timeout=600):
-    return subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(),
-                          text=True, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", *args],
+        cwd=cwd,
+        capture_output=True,
+        env=tool_env(),
+        text=True,
+        timeout=timeout,
+    )
 
 
-@pytest.mark.parametrize("section, key, bad", [("thesis", "tol", -1.0e-12), ("catt", "maxiter", 0),
-                                               ("bench", "repeats", 0), ("thesis", "tol", float("nan")),
-                                               ("nasaa", "tol", 1e-9)])
+@pytest.mark.parametrize(
+    "section, key, bad",
+    [
+        ("thesis", "tol", -1.0e-12),
+        ("catt", "maxiter", 0),
+        ("bench", "repeats", 0),
+        ("thesis", "tol", float("nan")),
+        ("nasaa", "tol", 1e-9),
+    ],
+)
 def test_bad_config_stops_before_any_job(wf, section, key, bad):
     import yaml
 

@@ -33,10 +33,19 @@ def pkg(tmp_path):
 
 
 def test_closure_follows_relative_and_absolute_imports(pkg):
-    assert pkg.closure("a") == ["src/gearrep/__init__.py", "src/gearrep/a.py", "src/gearrep/b.py",
-                                "src/gearrep/c/__init__.py", "src/gearrep/c/d.py"]
-    assert pkg.closure("e") == ["src/gearrep/__init__.py", "src/gearrep/c/__init__.py", "src/gearrep/c/d.py",
-                                "src/gearrep/e.py"]
+    assert pkg.closure("a") == [
+        "src/gearrep/__init__.py",
+        "src/gearrep/a.py",
+        "src/gearrep/b.py",
+        "src/gearrep/c/__init__.py",
+        "src/gearrep/c/d.py",
+    ]
+    assert pkg.closure("e") == [
+        "src/gearrep/__init__.py",
+        "src/gearrep/c/__init__.py",
+        "src/gearrep/c/d.py",
+        "src/gearrep/e.py",
+    ]
     assert pkg.closure() == []
     with pytest.raises(ValueError, match="no module gearrep.zz"):
         pkg.closure("zz")
@@ -47,8 +56,10 @@ def test_scripts_and_notebooks(pkg, tmp_path):
     script.write_text("import gearrep\nfrom gearrep import a\nfrom gearrep.c import d as dd\nimport os\n")
     assert pkg.source_modules(script) == ["", "a", "c", "c.d"]
     nb = tmp_path / "n.ipynb"
-    nb.write_text('{"cells": [{"cell_type": "code", "source": ["%matplotlib inline\\n", "from gearrep import e\\n"]},'
-                  ' {"cell_type": "markdown", "source": ["import gearrep.a"]}]}')
+    nb.write_text(
+        '{"cells": [{"cell_type": "code", "source": ["%matplotlib inline\\n", "from gearrep import e\\n"]},'
+        ' {"cell_type": "markdown", "source": ["import gearrep.a"]}]}'
+    )
     assert pkg.source_modules(nb) == ["", "e"]
     assert "src/gearrep/b.py" in pkg.source_closure(script)
     assert pkg.source_closure(nb, "a")[-1] == "src/gearrep/e.py"
@@ -63,7 +74,8 @@ def test_schema_file_is_generated_from_the_declarations():
     text = (ROOT / "config" / "schema.yaml").read_text()
     assert text.startswith(wfconfig.SCHEMA_HEADER)
     assert yaml.safe_load(text) == yaml.safe_load(yaml.safe_dump(wfconfig.schema())), (
-        "config/schema.yaml differs from the settings declarations: run `make schema`")
+        "config/schema.yaml differs from the settings declarations: run `make schema`"
+    )
 
 
 def test_every_study_is_declared_and_every_config_key_is_a_setting():
@@ -77,12 +89,15 @@ def test_every_study_is_declared_and_every_config_key_is_a_setting():
     wfconfig.resolve_config(both, ROOT)
 
 
-@pytest.mark.parametrize("config, message", [
-    ({"nasaa": {}}, r"config\.nasaa: unknown setting \(did you mean 'nasa'\?\)"),
-    ({"thesis": {"tol": float("nan")}}, r"config\.thesis\.tol: got nan"),
-    ({"bench": {"replications": ["thesis", "cat"]}}, r"config\.bench\.replications\[1\]: got 'cat'"),
-    ({"published_dir": "no/such/dir"}, r"config\.published_dir: 'no/such/dir' is not a directory"),
-])
+@pytest.mark.parametrize(
+    "config, message",
+    [
+        ({"nasaa": {}}, r"config\.nasaa: unknown setting \(did you mean 'nasa'\?\)"),
+        ({"thesis": {"tol": float("nan")}}, r"config\.thesis\.tol: got nan"),
+        ({"bench": {"replications": ["thesis", "cat"]}}, r"config\.bench\.replications\[1\]: got 'cat'"),
+        ({"published_dir": "no/such/dir"}, r"config\.published_dir: 'no/such/dir' is not a directory"),
+    ],
+)
 def test_bad_config_names_the_key(config, message):
     with pytest.raises(S.SettingError, match=message):
         wfconfig.resolve_config(config, ROOT)

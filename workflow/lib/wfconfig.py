@@ -28,8 +28,12 @@ WORKFLOW = S.declare(
         n_single=S.integer(200, "count", "points solved one call each", ge=1, le=100_000),
         repeats=S.integer(5, "count", "timings are medians of this many runs", ge=1, le=100),
         replications=S.array(
-            list(REGISTRY), "", "studies whose bench_cases() the bench target sweeps",
-            S.choice(None, list(REGISTRY), ""), min_items=0),
+            list(REGISTRY),
+            "",
+            "studies whose bench_cases() the bench target sweeps",
+            S.choice(None, list(REGISTRY), ""),
+            min_items=0,
+        ),
     ),
 )
 
@@ -53,8 +57,10 @@ def resolve_config(config: dict, root: Path | str = ".") -> dict:
     return resolved
 
 
-SCHEMA_HEADER = ("# GENERATED from the settings declarations (gearrep.replications.<study>.SETTINGS and\n"
-                 "# workflow/lib/wfconfig.py): do not edit; regenerate with `make schema`.\n")
+SCHEMA_HEADER = (
+    "# GENERATED from the settings declarations (gearrep.replications.<study>.SETTINGS and\n"
+    "# workflow/lib/wfconfig.py): do not edit; regenerate with `make schema`.\n"
+)
 
 
 def schema() -> dict:

@@ -14,14 +14,14 @@ rule bench_core:
         throughput=f"{BENCH_DIR}/throughput.csv",
         sweep=f"{BENCH_DIR}/core_tca.csv",
         figure=figure(f"{BENCH_DIR}/figures/core_tca_time_vs_error.png", "bench"),
-    params:
-        n_vectorised=RESOLVED["bench"]["n_vectorised"],
-        n_single=RESOLVED["bench"]["n_single"],
-        repeats=RESOLVED["bench"]["repeats"],
     log:
         "results/logs/bench_core.log",
     conda:
         "../envs/gearrep.yaml"
+    params:
+        n_vectorised=RESOLVED["bench"]["n_vectorised"],
+        n_single=RESOLVED["bench"]["n_single"],
+        repeats=RESOLVED["bench"]["repeats"],
     script:
         "../scripts/bench_core.py"
 
@@ -40,16 +40,16 @@ rule bench_replication:
         sweep=f"{BENCH_DIR}/{{name}}.csv",
         defaults=f"{BENCH_DIR}/{{name}}_defaults.csv",
         figure=figure(f"{BENCH_DIR}/figures/{{name}}_time_vs_error.png", "bench"),
+    log:
+        "results/logs/bench_{name}.log",
+    wildcard_constraints:
+        name="|".join(RESOLVED["bench"]["replications"]) or "no-replication",
+    conda:
+        "../envs/gearrep.yaml"
     params:
         settings=lambda wc: SETTINGS[wc.name],
         published_dir=PUBLISHED_DIR,
         repeats=RESOLVED["bench"]["repeats"],
-    wildcard_constraints:
-        name="|".join(RESOLVED["bench"]["replications"]) or "no-replication",
-    log:
-        "results/logs/bench_{name}.log",
-    conda:
-        "../envs/gearrep.yaml"
     script:
         "../scripts/bench_replication.py"
 
@@ -65,6 +65,20 @@ rule bench_defaults:
         import pandas as pd
 
         frames = [pd.read_csv(f) for f in input]
-        (pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(
-            columns=["replication", "case", "setting", "time_s", "error", "error_unit", "error_target", "current",
-                     "rule"])).to_csv(output[0], index=False)
+        (
+            pd.concat(frames, ignore_index=True)
+            if frames
+            else pd.DataFrame(
+                columns=[
+                    "replication",
+                    "case",
+                    "setting",
+                    "time_s",
+                    "error",
+                    "error_unit",
+                    "error_target",
+                    "current",
+                    "rule",
+                ]
+            )
+        ).to_csv(output[0], index=False)

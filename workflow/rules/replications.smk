@@ -22,19 +22,19 @@ for _key in REGISTRY:
                 design=published_files(*_study.DESIGN_DATA),
             output:
                 **{t: f"results/{p}" for t, p in _spec.tables.items()},
+            log:
+                f"results/logs/{_key}/{_job}.log",
+            benchmark:
+                f"results/benchmarks/{_key}/{_job}.tsv"
+            conda:
+                "../envs/gearrep.yaml"
+            resources:
+                runtime=10,
             params:
                 study=_key,
                 job=_job,
                 published_dir=PUBLISHED_DIR,
                 settings=SETTINGS[_key],  # a changed setting reruns the study's jobs
-            log:
-                f"results/logs/{_key}/{_job}.log",
-            benchmark:
-                f"results/benchmarks/{_key}/{_job}.tsv"
-            resources:
-                runtime=10,
-            conda:
-                "../envs/gearrep.yaml"
             script:
                 "../scripts/run_job.py"
 
@@ -48,15 +48,15 @@ for _key in REGISTRY:
             code=_code,
         output:
             **{n: f"results/{p}" for n, p in _study.CHECK_OUTPUTS.items()},
-        params:
-            study=_key,
-            published_dir=PUBLISHED_DIR,
         log:
             f"results/logs/{_key}/checks.log",
         benchmark:
             f"results/benchmarks/{_key}/checks.tsv"
         conda:
             "../envs/gearrep.yaml"
+        params:
+            study=_key,
+            published_dir=PUBLISHED_DIR,
         script:
             "../scripts/run_checks.py"
 
@@ -71,14 +71,14 @@ for _key in REGISTRY:
                 code=script_lib(f"workflow/scripts/{_key}_figures.py"),
             output:
                 **{k: figure(p, _key) for k, p in _figures.items()},
-            params:
-                # script and notebook paths are formatted when the job runs: loop variables would
-                # then hold the last study, params hold this rule's own
-                study=_key,
             log:
                 f"results/logs/{_key}/figures.log",
             conda:
                 "../envs/gearrep.yaml"
+            params:
+                # script and notebook paths are formatted when the job runs: loop variables would
+                # then hold the last study, params hold this rule's own
+                study=_key,
             script:
                 "../scripts/{params.study}_figures.py"
 
@@ -95,17 +95,19 @@ for _key in REGISTRY:
             code=script_lib(f"notebooks/{_key}.ipynb"),
         output:
             touch(f"results/notebooks/{_key}.executed"),
-        params:
-            study=_key,
-            settings=SETTINGS[_key],
         log:
             notebook=f"results/notebooks/{_key}.ipynb",
         conda:
             "../envs/gearrep.yaml"
+        params:
+            study=_key,
+            settings=SETTINGS[_key],
         notebook:
             "../../notebooks/{params.study}.ipynb"
 
     CHECK_FILES.append(f"results/{_study.CHECK_OUTPUTS['checks']}")
-    FINAL_OUTPUTS.extend(_tables + [f"results/{p}" for p in _study.CHECK_OUTPUTS.values()] + list(_figures.values()))
+    FINAL_OUTPUTS.extend(
+        _tables + [f"results/{p}" for p in _study.CHECK_OUTPUTS.values()] + list(_figures.values())
+    )
     REPORT_FIGURES.extend(_figures[k] for k in _study.REPORT_FIGURES)
     NOTEBOOKS.append(_key)

@@ -68,23 +68,48 @@ for family, (pair, _) in CASES.items():
         kw = {"formulation": form, "v1": v1}
         res, t = benchmark.time_call(lambda: solve_contact(pair, phi, start, **kw), repeats=REPEATS)
         ok = float(np.mean(res.converged))
-        rows.append({"family": family, "formulation": form, "mode": "vectorised", "n_solves": N_VEC,
-                     "seconds_per_solve": t.median_s / N_VEC, "solves_per_s": N_VEC / t.median_s,
-                     "converged_fraction": ok, "load_1min": t.load_1min})
+        rows.append(
+            {
+                "family": family,
+                "formulation": form,
+                "mode": "vectorised",
+                "n_solves": N_VEC,
+                "seconds_per_solve": t.median_s / N_VEC,
+                "solves_per_s": N_VEC / t.median_s,
+                "converged_fraction": ok,
+                "load_1min": t.load_1min,
+            }
+        )
         idx = np.arange(N_SINGLE)
 
         def loop():
             out = []
             for i in idx:
-                out.append(solve_contact(pair, phi[i:i + 1], start[i:i + 1], formulation=form,
-                                         v1=None if v1 is None else v1[i:i + 1]))
+                out.append(
+                    solve_contact(
+                        pair,
+                        phi[i : i + 1],
+                        start[i : i + 1],
+                        formulation=form,
+                        v1=None if v1 is None else v1[i : i + 1],
+                    )
+                )
             return out
 
         res1, t1 = benchmark.time_call(loop, repeats=REPEATS)
         ok1 = float(np.mean([r.converged[0] for r in res1]))
-        rows.append({"family": family, "formulation": form, "mode": "single-point", "n_solves": N_SINGLE,
-                     "seconds_per_solve": t1.median_s / N_SINGLE, "solves_per_s": N_SINGLE / t1.median_s,
-                     "converged_fraction": ok1, "load_1min": t1.load_1min})
+        rows.append(
+            {
+                "family": family,
+                "formulation": form,
+                "mode": "single-point",
+                "n_solves": N_SINGLE,
+                "seconds_per_solve": t1.median_s / N_SINGLE,
+                "solves_per_s": N_SINGLE / t1.median_s,
+                "converged_fraction": ok1,
+                "load_1min": t1.load_1min,
+            }
+        )
 thr = pd.DataFrame(rows)
 
 # the thesis's own timings (Mathematica, seconds per solve), as published
@@ -103,8 +128,9 @@ starts = {f: default_start(pair, phi, f) for f in ("reduced", "conventional")}
 
 
 def run(s):
-    c = solve_contact(pair, phi, starts[s["formulation"]], formulation=s["formulation"], tol=s["tol"],
-                      maxiter=s["maxiter"])
+    c = solve_contact(
+        pair, phi, starts[s["formulation"]], formulation=s["formulation"], tol=s["tol"], maxiter=s["maxiter"]
+    )
     return c
 
 

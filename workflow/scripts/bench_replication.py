@@ -37,12 +37,21 @@ for case, c in cases.items():
     sw["error_unit"] = c["error_unit"]
     frames.append(sw)
     row = sw.iloc[k]
-    chosen.append({"replication": name, "case": case,
-                   "setting": "; ".join(f"{kn}={row[kn]}" for kn in knobs),
-                   "time_s": row["time_s"], "error": row["error"], "error_unit": c["error_unit"],
-                   "error_target": target, "current": "; ".join(f"{kn}={v}" for kn, v in c.get("current", {}).items()),
-                   "rule": "fastest meeting the target" if target is not None and row["error"] <= target
-                   else "knee of the Pareto front"})
+    chosen.append(
+        {
+            "replication": name,
+            "case": case,
+            "setting": "; ".join(f"{kn}={row[kn]}" for kn in knobs),
+            "time_s": row["time_s"],
+            "error": row["error"],
+            "error_unit": c["error_unit"],
+            "error_target": target,
+            "current": "; ".join(f"{kn}={v}" for kn, v in c.get("current", {}).items()),
+            "rule": "fastest meeting the target"
+            if target is not None and row["error"] <= target
+            else "knee of the Pareto front",
+        }
+    )
 table = pd.concat(frames, ignore_index=True)
 Path(smk.output.sweep).parent.mkdir(parents=True, exist_ok=True)
 table.to_csv(smk.output.sweep, index=False)

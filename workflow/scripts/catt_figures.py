@@ -81,8 +81,12 @@ fig, ax = plt.subplots()
 for sec, g in th.groupby("section_mm"):
     g = g.sort_values("R_T_mm")
     plotting.computed(ax, g["R_T_mm"], g["thickness_mm"], f"B{sec:g}")
-plotting.label_axes(ax, "tooth-line radius R_T [mm]", "pitch-circle tooth thickness [mm]",
-                    f"Fig 14: thickness vs R_T (z={int(th['z'].iloc[0])}, m={th['module_mm'].iloc[0]:g})")
+plotting.label_axes(
+    ax,
+    "tooth-line radius R_T [mm]",
+    "pitch-circle tooth thickness [mm]",
+    f"Fig 14: thickness vs R_T (z={int(th['z'].iloc[0])}, m={th['module_mm'].iloc[0]:g})",
+)
 plotting.finish(ax)
 save(fig, out.fig14)
 

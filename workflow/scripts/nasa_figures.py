@@ -24,11 +24,19 @@ smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 inp, out = smk.input, smk.output
 T = {Path(f).stem: f for f in inp.tables}
-pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in inp.published if Path(f).name.startswith("values_")],
-                ignore_index=True).set_index("id")
-LABEL = {"dgamma_plus": "dgamma = +3'", "dgamma_minus": "dgamma = -3'", "dlambda_helix_plus": "dlambda = +3' (lead)",
-         "dlambda_helix_minus": "dlambda = -3' (lead)", "aligned": "aligned", "dE_0.001in": "dE = 0.001 in",
-         "dgamma_intersecting": "3' in the plane of the axes"}
+pub = pd.concat(
+    [pd.read_csv(f, dtype={"seed": str}) for f in inp.published if Path(f).name.startswith("values_")],
+    ignore_index=True,
+).set_index("id")
+LABEL = {
+    "dgamma_plus": "dgamma = +3'",
+    "dgamma_minus": "dgamma = -3'",
+    "dlambda_helix_plus": "dlambda = +3' (lead)",
+    "dlambda_helix_minus": "dlambda = -3' (lead)",
+    "aligned": "aligned",
+    "dE_0.001in": "dE = 0.001 in",
+    "dgamma_intersecting": "3' in the plane of the axes",
+}
 
 
 def save(fig, path):
@@ -44,8 +52,13 @@ fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.2))
 for case in ("dgamma_plus", "dlambda_helix_plus", "aligned"):
     c = cyc[cyc["case"] == case]
     for k, g in c.groupby("tooth"):
-        plotting.computed(ax, np.degrees(g["phi1_rad"]), g["te_arcsec"], LABEL[case] if k == 0 else None,
-                          color={"dgamma_plus": "C0", "dlambda_helix_plus": "C1", "aligned": "C2"}[case])
+        plotting.computed(
+            ax,
+            np.degrees(g["phi1_rad"]),
+            g["te_arcsec"],
+            LABEL[case] if k == 0 else None,
+            color={"dgamma_plus": "C0", "dlambda_helix_plus": "C1", "aligned": "C2"}[case],
+        )
 plotting.label_axes(ax, "phi1 [deg]", "TE [arcsec]", "Profile crowning only: TE over three meshing cycles")
 plotting.finish(ax)
 cases = ["dgamma_plus", "dgamma_minus", "dlambda_helix_plus", "dlambda_helix_minus"]
@@ -62,14 +75,18 @@ ws = pd.read_csv(T["worm_summary"]).set_index("case")
 fig_w, (ax, ax2w) = plt.subplots(1, 2, figsize=(12, 4.2))
 for case, col in (("worm_aligned", "C2"), ("worm_dgamma_plus", "C0"), ("worm_dlambda_plus", "C1")):
     g = wc[wc["case"] == case].sort_values("phi1_rad")
-    plotting.computed(ax, np.degrees(g["phi1_rad"]), g["te_arcsec"], case.replace("worm_", "worm: "), color=col, marker=None)
+    plotting.computed(
+        ax, np.degrees(g["phi1_rad"]), g["te_arcsec"], case.replace("worm_", "worm: "), color=col, marker=None
+    )
 plotting.label_axes(ax, "phi1 [deg]", "TE [arcsec]", "Plunging worm: TE over one meshing cycle")
 plotting.finish(ax)
 wcases = ["worm_aligned", "worm_dgamma_plus", "worm_dgamma_minus", "worm_dlambda_plus", "worm_dlambda_minus"]
 xw = np.arange(len(wcases))
 plotting.computed(ax2w, xw, [ws.loc[c, "te_max_arcsec"] for c in wcases], "computed TE_max")
-pubw = [pub.loc[f"002-S5.5-crowning=worm;misalignment={m}-TE_max", "value"]
-        for m in ("none", "dgamma_3arcmin", "dgamma_3arcmin", "dlambda_3arcmin", "dlambda_3arcmin")]
+pubw = [
+    pub.loc[f"002-S5.5-crowning=worm;misalignment={m}-TE_max", "value"]
+    for m in ("none", "dgamma_3arcmin", "dgamma_3arcmin", "dlambda_3arcmin", "dlambda_3arcmin")
+]
 plotting.published(ax2w, xw, pubw, "Sec 5.5", "printed")
 ax2w.set_xticks(xw, [c.replace("worm_", "") for c in wcases], rotation=15)
 plotting.label_axes(ax2w, "case [-]", "TE_max [arcsec]", "Worm-ground pinion: maximal TE")
@@ -117,8 +134,12 @@ fig, ax = plt.subplots()
 for case in ("aligned", "dE_0.001in", "dgamma_plus", "dlambda_helix_plus"):
     s = sg[(sg["case"] == case) & sg["on_face"].astype(bool)]
     plotting.computed(ax, s["z_in"], s["u1_in"], LABEL[case])
-plotting.label_axes(ax, "axial position of the contact point [in]", "pinion rack profile parameter u [in]",
-                    "Contact paths on the pinion (u = 0: helix through Q)")
+plotting.label_axes(
+    ax,
+    "axial position of the contact point [in]",
+    "pinion rack profile parameter u [in]",
+    "Contact paths on the pinion (u = 0: helix through Q)",
+)
 plotting.finish(ax)
 save(fig, out.paths)
 Path(smk.log[0]).parent.mkdir(parents=True, exist_ok=True)

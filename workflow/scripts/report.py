@@ -14,24 +14,30 @@ smk = snakemake  # noqa: F821  (provided by Snakemake)
 
 card = pd.read_csv(smk.input.scorecard, dtype={"seed": str}, keep_default_na=False, na_values=[""])
 card["replication"] = card["replication"].astype(object).fillna("").astype(str)
-figures = {Path(f).parent.parent.name + ": " + Path(f).stem.replace("_", " "): Path(f).read_bytes()
-           for f in smk.input.figures}
+figures = {
+    Path(f).parent.parent.name + ": " + Path(f).stem.replace("_", " "): Path(f).read_bytes() for f in smk.input.figures
+}
 errata = pd.read_csv(smk.input.errata, dtype=str, keep_default_na=False)
 notebooks = {Path(f).stem: "notebooks/" + Path(f).name for f in smk.input.notebooks}
 
 try:
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
-                            check=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], capture_output=True,
-                           text=True, check=True).stdout.strip()
+    commit = subprocess.run(
+        ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, check=True
+    ).stdout.strip()
+    dirty = subprocess.run(
+        ["git", "status", "--porcelain", "--untracked-files=no"], capture_output=True, text=True, check=True
+    ).stdout.strip()
     commit += " (with uncommitted changes)" if dirty else ""
 except (OSError, subprocess.CalledProcessError):
     commit = "unknown (not a git checkout)"
 
-env = {"gearrep commit": commit,
-       "config sha256": hashlib.sha256(Path(smk.input.config).read_bytes()).hexdigest()[:16],
-       "requirements.lock sha256": hashlib.sha256(Path(smk.input.lock).read_bytes()).hexdigest(),
-       "python": platform.python_version(), "platform": platform.platform()}
+env = {
+    "gearrep commit": commit,
+    "config sha256": hashlib.sha256(Path(smk.input.config).read_bytes()).hexdigest()[:16],
+    "requirements.lock sha256": hashlib.sha256(Path(smk.input.lock).read_bytes()).hexdigest(),
+    "python": platform.python_version(),
+    "platform": platform.platform(),
+}
 for pkg in ("numpy", "scipy", "pandas", "matplotlib", "snakemake", "papermill", "nbconvert"):
     env[pkg] = version(pkg)
 

@@ -10,7 +10,10 @@ smk = snakemake  # noqa: F821  (provided by Snakemake)
 
 data_dir = Path(smk.input.manifest).parent
 pub = published.load(data_dir)
-tables = {Path(f).stem: pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""]) for f in smk.input.checks}
+tables = {
+    Path(f).stem: pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""])
+    for f in smk.input.checks
+}
 card = checks.scorecard(tables, pub.values, pub.claims)
 card["paper"] = card["seed"].map(published.PAPERS)
 # every published value and claim of the manifest has its row: nothing dropped silently
@@ -32,17 +35,40 @@ def md_table(df: pd.DataFrame) -> str:
 by_paper = checks.summary(card, by=("seed",))
 by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS))
 by_source = checks.summary(card, by=("seed", "source"))
-rows = card[["id", "seed", "source", "row", "quantity", "unit", "published", "computed",
-             "abs_err", "tolerance", "status", "tolerance_basis", "note"]]
+rows = card[
+    [
+        "id",
+        "seed",
+        "source",
+        "row",
+        "quantity",
+        "unit",
+        "published",
+        "computed",
+        "abs_err",
+        "tolerance",
+        "status",
+        "tolerance_basis",
+        "note",
+    ]
+]
 
-text = "\n\n".join([
-    "# gearrep replication scorecard",
-    f"{len(card)} published values and claims; statuses: " + ", ".join(
-        f"{k} {v}" for k, v in card["status"].value_counts().items()),
-    "## Counts by paper", md_table(by_paper),
-    "## Counts by table", md_table(by_source),
-    "## Every value", md_table(rows),
-]) + "\n"
+text = (
+    "\n\n".join(
+        [
+            "# gearrep replication scorecard",
+            f"{len(card)} published values and claims; statuses: "
+            + ", ".join(f"{k} {v}" for k, v in card["status"].value_counts().items()),
+            "## Counts by paper",
+            md_table(by_paper),
+            "## Counts by table",
+            md_table(by_source),
+            "## Every value",
+            md_table(rows),
+        ]
+    )
+    + "\n"
+)
 
 Path(smk.output.csv).parent.mkdir(parents=True, exist_ok=True)
 card.to_csv(smk.output.csv, index=False)

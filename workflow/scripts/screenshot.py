@@ -31,9 +31,18 @@ def screenshot(html: Path, png: Path, width: int = 1280, height: int = 1800, tim
     if not html.is_file():
         raise FileNotFoundError(f"html: no such file {html}")
     png.parent.mkdir(parents=True, exist_ok=True)
-    cmd = [browser, "--headless=new", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-           "--disable-extensions", "--no-first-run", f"--window-size={width},{height}",
-           f"--screenshot={png}", html.as_uri()]
+    cmd = [
+        browser,
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--hide-scrollbars",
+        "--disable-extensions",
+        "--no-first-run",
+        f"--window-size={width},{height}",
+        f"--screenshot={png}",
+        html.as_uri(),
+    ]
     out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s)
     if out.returncode != 0 or not png.is_file():
         raise RuntimeError(f"{browser} failed ({out.returncode}): {out.stderr[-1500:]}")

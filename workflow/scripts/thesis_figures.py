@@ -22,8 +22,13 @@ TABLES = {Path(f).stem: f for f in smk.input.tables}
 PUB = published.load(Path(smk.input.published[0]).parent).values.set_index("id")["value"].astype(float)
 T10_CONV = "003-T10-case=spur_52_72;method=conventional-convergence_rate"
 S61 = "003-S6.1-case=spur_25_25;method=conventional;phi2_guess_rad={g}-{q}"
-COLORS = {"correct": "tab:blue", "wrong_root": "tab:orange", "not_converged": "tab:red", "singular": "tab:purple",
-          "diverged": "0.6"}
+COLORS = {
+    "correct": "tab:blue",
+    "wrong_root": "tab:orange",
+    "not_converged": "tab:red",
+    "singular": "tab:purple",
+    "diverged": "0.6",
+}
 
 
 def save(fig, path):
@@ -74,10 +79,15 @@ for v, ls in (("seeded", "--"), ("reduced", ":"), ("robust", "-.")):
     d = c[c["variant"] == v]
     if len(d):
         ax.axhline(float(d["correct_pct"].iloc[0]), ls=ls, color="0.3", lw=1, label=f"{v} (independent of phi2 start)")
-plotting.published(ax, [2 * np.pi], [PUB[T10_CONV]], "Table 10", label="thesis conventional, window not stated",
-                   marker="D")
-plotting.label_axes(ax, "width of the phi2 start window, centred on the root [rad]", "correct-root convergence [%]",
-                    "Spur 52/72: convergence against the phi2 guess window")
+plotting.published(
+    ax, [2 * np.pi], [PUB[T10_CONV]], "Table 10", label="thesis conventional, window not stated", marker="D"
+)
+plotting.label_axes(
+    ax,
+    "width of the phi2 start window, centred on the root [rad]",
+    "correct-root convergence [%]",
+    "Spur 52/72: convergence against the phi2 guess window",
+)
 ax.set_ylim(-2, 105)
 save(plotting.finish(ax, loc="lower left"), smk.output.window)
 
@@ -91,12 +101,24 @@ for v, mk in (("plain", "o"), ("damped", "s"), ("domain", "^")):
     d = g[g["variant"] == v].sort_values("guess")
     plotting.computed(ax, d["guess"] - ref, d["correct_pct"], f"conventional, {v}", marker=mk)
 # printed: 0 % at 0, 48 % at -1.1, 670 of 1000 at -1.15 (data/published); -1.2 "almost all" (no number, not drawn)
-pg = [(0.0, PUB[S61.format(g="0", q="convergence_rate")]), (-1.1, PUB[S61.format(g="-1.1", q="convergence_rate")]),
-      (-1.15, PUB[S61.format(g="-1.15", q="converged_count")] / 10.0)]
-plotting.published(ax, np.array([x for x, _ in pg]) - ref, [y for _, y in pg], "sec 6.1",
-                   label="thesis (-1.2 rad: 'almost all', no number)")
-plotting.label_axes(ax, "phi2 guess minus root (thesis frame) [rad]", "correct-root convergence [%]",
-                    "Spur 25/25 (sec 6.1): fixed phi2 guess, u2 and v2 at the flank mid-point")
+pg = [
+    (0.0, PUB[S61.format(g="0", q="convergence_rate")]),
+    (-1.1, PUB[S61.format(g="-1.1", q="convergence_rate")]),
+    (-1.15, PUB[S61.format(g="-1.15", q="converged_count")] / 10.0),
+]
+plotting.published(
+    ax,
+    np.array([x for x, _ in pg]) - ref,
+    [y for _, y in pg],
+    "sec 6.1",
+    label="thesis (-1.2 rad: 'almost all', no number)",
+)
+plotting.label_axes(
+    ax,
+    "phi2 guess minus root (thesis frame) [rad]",
+    "correct-root convergence [%]",
+    "Spur 25/25 (sec 6.1): fixed phi2 guess, u2 and v2 at the flank mid-point",
+)
 save(plotting.finish(ax), smk.output.guess)
 
 # --- TE curves -----------------------------------------------------------------------------------
@@ -108,14 +130,16 @@ for (crown, plane), d in s.groupby(["crown_amount", "plane"]):
     if plane == "none":
         continue
     plotting.computed(axes[0], d["phi1_rad"], d["te_pair_arcsec"], f"a1 = {crown:g}, {plane}-plane")
-plotting.label_axes(axes[0], "phi1 [rad]", "TE of one tooth pair [arcsec]",
-                    "Spur 25/25 m = 1, 17.5 mrad misalignment (library sign)")
+plotting.label_axes(
+    axes[0], "phi1 [rad]", "TE of one tooth pair [arcsec]", "Spur 25/25 m = 1, 17.5 mrad misalignment (library sign)"
+)
 plotting.finish(axes[0])
 h = cyc[cyc["case"] == "helical_40_37"]
 for (kind, plane), d in h.groupby(["crown_kind", "plane"]):
     plotting.computed(axes[1], d["phi1_rad"], -d["te_arcsec"], f"{kind}, {plane}-plane 0.2 deg")
-plotting.label_axes(axes[1], "phi1 [rad]", "transmitted TE, thesis sign [arcsec]",
-                    "Helical 40/37, Tables 3-4 first rows, one cycle")
+plotting.label_axes(
+    axes[1], "phi1 [rad]", "transmitted TE, thesis sign [arcsec]", "Helical 40/37, Tables 3-4 first rows, one cycle"
+)
 plotting.finish(axes[1], loc="best")
 save(fig, smk.output.te)
 

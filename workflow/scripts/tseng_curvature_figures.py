@@ -17,12 +17,22 @@ from gearrep import plotting  # noqa: E402
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 tables = {Path(f).stem: f for f in smk.input.tables}
-tabs = {name.replace("curvature_table_", "").replace("_", "."): pd.read_csv(f) for name, f in tables.items()
-        if name.startswith("curvature_table_")}
-pub = pd.concat([pd.read_csv(f, dtype={"seed": str}) for f in smk.input.published if Path(f).name.startswith("values_")],
-                ignore_index=True)
+tabs = {
+    name.replace("curvature_table_", "").replace("_", "."): pd.read_csv(f)
+    for name, f in tables.items()
+    if name.startswith("curvature_table_")
+}
+pub = pd.concat(
+    [pd.read_csv(f, dtype={"seed": str}) for f in smk.input.published if Path(f).name.startswith("values_")],
+    ignore_index=True,
+)
 pub["l1_mm"] = pub["row"].str.split("=").str[1].astype(float)
-NAMES = {"4.2": "Sigma_2L, R_c=110", "4.3": "Sigma_2R, R_c=110", "4.4": "Sigma_2L, R_c=5000", "4.5": "Sigma_2R, R_c=5000"}
+NAMES = {
+    "4.2": "Sigma_2L, R_c=110",
+    "4.3": "Sigma_2R, R_c=110",
+    "4.4": "Sigma_2L, R_c=5000",
+    "4.5": "Sigma_2R, R_c=5000",
+}
 
 
 def save(fig, path):

@@ -18,8 +18,14 @@ from gearrep import plotting  # noqa: E402
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 plotting.use_style()
 tables = {Path(f).stem: pd.read_csv(f) for f in smk.input.tables}
-values = pd.concat([pd.read_csv(f, dtype=str, keep_default_na=False) for f in smk.input.published
-                    if Path(f).name.startswith("values_")], ignore_index=True)
+values = pd.concat(
+    [
+        pd.read_csv(f, dtype=str, keep_default_na=False)
+        for f in smk.input.published
+        if Path(f).name.startswith("values_")
+    ],
+    ignore_index=True,
+)
 values["value"] = pd.to_numeric(values["value"], errors="coerce")
 SURVIVING = ["5.3", "5.4", "5.7", "5.8", "5.9"]
 
@@ -47,8 +53,12 @@ for key, col, q, ylabel in (("ke", "KE_arcsec", "KE", "KE [arcsec]"), ("zp", "Z_
     if key == "ke":
         t = tables["ke_table_5_2"]
         plotting.computed(ax, t["phi1_deg"], t[col], "computed, Table 5.2 (ideal, no data)", color="k", linestyle=":")
-    plotting.label_axes(ax, "phi1' [deg]", ylabel, "seed 000 Tables 5.2-5.9: " + ("kinematic error" if key == "ke"
-                                                                                   else "contact position on the pinion face"))
+    plotting.label_axes(
+        ax,
+        "phi1' [deg]",
+        ylabel,
+        "seed 000 Tables 5.2-5.9: " + ("kinematic error" if key == "ke" else "contact position on the pinion face"),
+    )
     save(plotting.finish(ax, loc="upper center" if key == "ke" else "best"), smk.output[key])
 
 h = tables["ke_vs_hob_radius"]
@@ -61,7 +71,9 @@ er = tables["ellipse_ratio"]
 fig, ax = plt.subplots()
 for i, (a, g) in enumerate(er.groupby("alpha_n_deg")):
     g = g.sort_values("R_cp_mm")
-    plotting.computed(ax, g["R_cp_mm"], g["a_over_b"], f"alpha_n = {a:g} deg, R_cg = R_cp + 1 mm, pitch point", color=f"C{i}")
+    plotting.computed(
+        ax, g["R_cp_mm"], g["a_over_b"], f"alpha_n = {a:g} deg, R_cg = R_cp + 1 mm, pitch point", color=f"C{i}"
+    )
     v = values[(values["quantity"] == "a_over_b") & values["row"].str.contains(f"alpha_n_deg={a:g};")]
     plotting.published(ax, [110.0] * len(v), v["value"], "Fig 5.7 text", label=f"{a:g} deg", color=f"C{i}")
 plotting.label_axes(ax, "R_c [mm]", "a/b [-]", "Fig 5.7: contact-ellipse axis ratio (curvature method)")

@@ -88,8 +88,21 @@ def table_paths(jobs: Mapping[str, Job]) -> dict:
 
 
 #: names every replication package defines
-FACE = ("SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
-        "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate")
+FACE = (
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
+)
 
 
 def check_face(module: ModuleType) -> None:

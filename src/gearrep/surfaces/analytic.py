@@ -68,8 +68,14 @@ class Plane(_Analytic):
     def _derivs(self, u, v):
         r = self.origin + u[..., None] * self.a + v[..., None] * self.b
         z = np.zeros_like(r)
-        return (r, np.broadcast_to(self.a, r.shape).copy(), np.broadcast_to(self.b, r.shape).copy(),
-                z, z.copy(), z.copy())
+        return (
+            r,
+            np.broadcast_to(self.a, r.shape).copy(),
+            np.broadcast_to(self.b, r.shape).copy(),
+            z,
+            z.copy(),
+            z.copy(),
+        )
 
     def exact_principal(self, u, v):
         u, v = _uv(u, v)

@@ -93,8 +93,14 @@ from ..solve import SolveResult, Status, newton
 from ..surface import Surface, SurfacePoint
 
 __all__ = [
-    "CATTGearData", "CATTFlank", "turn_over", "tooth_thickness",
-    "pitch_thickness_closed_form", "middle_section_curvatures", "eq28_profile", "eq29_profile",
+    "CATTGearData",
+    "CATTFlank",
+    "turn_over",
+    "tooth_thickness",
+    "pitch_thickness_closed_form",
+    "middle_section_curvatures",
+    "eq28_profile",
+    "eq29_profile",
 ]
 
 
@@ -138,8 +144,9 @@ class CATTGearData:
         _finite("clearance", self.clearance, nonneg=True)
         rt = _finite("R_T", self.R_T, positive=True)
         if not rt > self.face_width / 2 + np.pi * self.module:
-            raise ValueError(f"R_T must exceed face_width/2 + pi*module = "
-                             f"{self.face_width / 2 + np.pi * self.module:g}, got {rt!r}")
+            raise ValueError(
+                f"R_T must exceed face_width/2 + pi*module = {self.face_width / 2 + np.pi * self.module:g}, got {rt!r}"
+            )
 
     @property
     def r_p(self) -> float:
@@ -175,8 +182,7 @@ class CATTGearData:
         h = self.addendum * self.module
         # rack line point at depth h touches the blank on the line of action at distance h / s from I
         l_low = h / s
-        return float(max(self.r_b, np.hypot(self.r_b, self.r_p * s - l_low)) if l_low < self.r_p * s
-                     else self.r_b)
+        return float(max(self.r_b, np.hypot(self.r_b, self.r_p * s - l_low)) if l_low < self.r_p * s else self.r_b)
 
 
 def _real_or_complex(x):
@@ -217,7 +223,7 @@ class CATTFlank(Surface):
         self.rho0 = gear.R_T - self.side * gear.q
         self.fd_step = (1e-4, 1e-4)
         # generous parameter box (theta, phi) containing the flank
-        th = np.arcsin(min(1.0, 0.5 * gear.face_width / (self.rho0 * self.c ** 2)))
+        th = np.arcsin(min(1.0, 0.5 * gear.face_width / (self.rho0 * self.c**2)))
         ph = (self.side * gear.q) / self.R
         span = (gear.r_a + gear.module) / (self.R * self.c)
         self.lower = np.array([-1.2 * th, -ph - span])
@@ -229,8 +235,10 @@ class CATTFlank(Surface):
 
     def __repr__(self) -> str:
         g = self.gear
-        return (f"CATTFlank(z={g.n_teeth}, m={g.module}, R_T={g.R_T}, B={g.face_width}, "
-                f"alpha={g.pressure_angle:.6g}, side={self.side} ({'convex' if self.convex else 'concave'}))")
+        return (
+            f"CATTFlank(z={g.n_teeth}, m={g.module}, R_T={g.R_T}, B={g.face_width}, "
+            f"alpha={g.pressure_angle:.6g}, side={self.side} ({'convex' if self.convex else 'concave'}))"
+        )
 
     # -- the paper's equations as printed ------------------------------------------------------
     def blade_u(self, theta, phi):
@@ -301,14 +309,15 @@ class CATTFlank(Surface):
         tn = st * sec
         W = self.R_T + R * phi
         sc = s * a * c
-        P = np.stack([c * c * (W - rho0 * ct), sc * (W * sec - rho0) - R,
-                      rho0 * c * c * st + a * a * W * tn], axis=-1)
+        P = np.stack([c * c * (W - rho0 * ct), sc * (W * sec - rho0) - R, rho0 * c * c * st + a * a * W * tn], axis=-1)
         if order == 0:
             return P
         P_t = np.stack([c * c * rho0 * st, sc * W * sec * tn, rho0 * c * c * ct + a * a * W * sec * sec], -1)
         P_p = R * np.stack([np.full_like(W, c * c), sc * sec, a * a * tn], -1)
-        P_tt = np.stack([c * c * rho0 * ct, sc * W * (sec * tn * tn + sec ** 3),
-                         -rho0 * c * c * st + 2 * a * a * W * sec * sec * tn], -1)
+        P_tt = np.stack(
+            [c * c * rho0 * ct, sc * W * (sec * tn * tn + sec**3), -rho0 * c * c * st + 2 * a * a * W * sec * sec * tn],
+            -1,
+        )
         P_tp = R * np.stack([np.zeros_like(W), sc * sec * tn, a * a * sec * sec], -1)
         return P, P_t, P_p, P_tt, P_tp
 
@@ -351,7 +360,7 @@ class CATTFlank(Surface):
         r = np.asarray(radius, float)
         s, g = self.side, self.gear
         with np.errstate(invalid="ignore"):
-            D = s * (self.R * self.sa - np.sqrt(r * r - g.r_b ** 2)) / self.c
+            D = s * (self.R * self.sa - np.sqrt(r * r - g.r_b**2)) / self.c
         return (D - s * g.q) / self.R
 
     def solve_point(self, z, radius, *, tol=1e-11, maxiter=40) -> SolveResult:
@@ -366,8 +375,9 @@ class CATTFlank(Surface):
         # newton passes only the active rows to fun; carry the targets as frozen extra unknowns
         def F(X):
             p = self.position(X[:, 0], X[:, 1])
-            return np.column_stack([p[:, 2] - X[:, 2], np.hypot(p[:, 0], p[:, 1]) - X[:, 3],
-                                    np.zeros(len(X)), np.zeros(len(X))])
+            return np.column_stack(
+                [p[:, 2] - X[:, 2], np.hypot(p[:, 0], p[:, 1]) - X[:, 3], np.zeros(len(X)), np.zeros(len(X))]
+            )
 
         def J(X):
             P = self.evaluate(X[:, 0], X[:, 1])
@@ -396,8 +406,12 @@ class CATTFlank(Surface):
         p = self.position(theta, phi)
         rad = np.hypot(p[..., 0], p[..., 1])
         g = self.gear
-        return ((rad >= g.r_form - tol) & (rad <= g.r_a + tol) & (np.abs(p[..., 2]) <= 0.5 * g.face_width + tol)
-                & (np.abs(np.asarray(theta)) < 0.5 * np.pi))
+        return (
+            (rad >= g.r_form - tol)
+            & (rad <= g.r_a + tol)
+            & (np.abs(p[..., 2]) <= 0.5 * g.face_width + tol)
+            & (np.abs(np.asarray(theta)) < 0.5 * np.pi)
+        )
 
     def tip_edge(self, z):
         """Points (n, 3) of the tip edge (intersection with the tip cylinder) at axial coordinates z."""
@@ -422,7 +436,7 @@ def middle_section_curvatures(gear: CATTGearData, side: int, radius):
     r = np.asarray(radius, float)
     s, c, a = side, np.cos(gear.pressure_angle), np.sin(gear.pressure_angle)
     with np.errstate(invalid="ignore"):
-        rho_prof = np.sqrt(r * r - gear.r_b ** 2)
+        rho_prof = np.sqrt(r * r - gear.r_b**2)
     l = s * (gear.r_p * a - rho_prof)  # c D with D from CATTFlank.middle_section_phi
     rho = gear.R_T - s * gear.q + l * a * a / c
     return -1.0 / rho_prof, -s * c / rho, rho, l

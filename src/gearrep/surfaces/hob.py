@@ -294,13 +294,16 @@ class GeneratedGear:
             swivel = translation((0.0, 0.0, -float(self.arc_centre)), [0.0, 1.0])
         else:
             swivel = rotation((1, 0, 0), [0.0, 1.0], point=(E, self.arc_centre * self.R_c_mm, 0.0))  # swivel psi
-        return ChainMotion([
-            rotation((0, 0, 1), [1.0 / self.n_teeth, 0.0]),  # work gear turns theta / N
-            swivel,
-            translation((1, 0, 0), [0.0, 0.0], offset=E),  # centre distance
-            rotation((1, 0, 0), [0.0, 0.0], offset=lam - np.pi / 2),  # hob axis set at the lead angle
-            rotation((0, 0, 1), [1.0, 0.0]),  # hob spin theta
-        ], names=("theta", "psi"))
+        return ChainMotion(
+            [
+                rotation((0, 0, 1), [1.0 / self.n_teeth, 0.0]),  # work gear turns theta / N
+                swivel,
+                translation((1, 0, 0), [0.0, 0.0], offset=E),  # centre distance
+                rotation((1, 0, 0), [0.0, 0.0], offset=lam - np.pi / 2),  # hob axis set at the lead angle
+                rotation((0, 0, 1), [1.0, 0.0]),  # hob spin theta
+            ],
+            names=("theta", "psi"),
+        )
 
     @property
     def effective_tol(self) -> float:
@@ -380,8 +383,9 @@ class GeneratedGear:
     def l_at_radius(self, radius_mm, psi_rad=0.0, l0_mm=6.0) -> SolveResult:
         """The l whose generated point at psi lies at distance ``radius_mm`` from the gear axis
         (e.g. the tip r_a = 33 mm: first row of Tables 4.2-4.5). Newton on l (one unknown)."""
-        r_target, ps = np.broadcast_arrays(np.atleast_1d(np.asarray(radius_mm, float)),
-                                           np.atleast_1d(np.asarray(psi_rad, float)))
+        r_target, ps = np.broadcast_arrays(
+            np.atleast_1d(np.asarray(radius_mm, float)), np.atleast_1d(np.asarray(psi_rad, float))
+        )
         r_target, ps = r_target.reshape(-1), ps.reshape(-1)
         if np.any(~np.isfinite(r_target) | (r_target <= 0)):
             raise ValueError(f"radius_mm must be finite and > 0, got {radius_mm!r}")

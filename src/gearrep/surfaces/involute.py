@@ -78,9 +78,17 @@ import numpy as np
 from ..surface import Surface, SurfacePoint
 
 __all__ = [
-    "involute_polar_angle", "involute_xy", "ParabolicCrowning", "CircularCrowning",
-    "LogarithmicCrowning", "TipRelief", "RootRelief", "InvoluteGearData", "InvoluteFlank",
-    "mating_flanks", "standard_centre_distance",
+    "involute_polar_angle",
+    "involute_xy",
+    "ParabolicCrowning",
+    "CircularCrowning",
+    "LogarithmicCrowning",
+    "TipRelief",
+    "RootRelief",
+    "InvoluteGearData",
+    "InvoluteFlank",
+    "mating_flanks",
+    "standard_centre_distance",
 ]
 
 
@@ -370,8 +378,18 @@ class InvoluteFlank(Surface):
 
     cylindrical = True  #: r = (u cos psi, u sin psi, v): u = radius, v = axial coordinate
 
-    def __init__(self, gear: InvoluteGearData, side: int = 1, hand: int = 1, *, crowning=None,
-                 relief=(), helix_form: str = "true", u_min=None, u_max=None):
+    def __init__(
+        self,
+        gear: InvoluteGearData,
+        side: int = 1,
+        hand: int = 1,
+        *,
+        crowning=None,
+        relief=(),
+        helix_form: str = "true",
+        u_min=None,
+        u_max=None,
+    ):
         if not isinstance(gear, InvoluteGearData):
             raise ValueError(f"gear must be an InvoluteGearData, got {type(gear).__name__}")
         if side not in (1, -1):
@@ -529,12 +547,24 @@ class InvoluteFlank(Surface):
 
     def __repr__(self) -> str:
         g = self.gear
-        return (f"InvoluteFlank(N={g.n_teeth}, m={g.module}, alpha={g.pressure_angle:.6g}, beta={g.helix_angle:.6g}, "
-                f"side={self.side}, hand={self.hand}, helix_form={self.helix_form!r})")
+        return (
+            f"InvoluteFlank(N={g.n_teeth}, m={g.module}, alpha={g.pressure_angle:.6g}, beta={g.helix_angle:.6g}, "
+            f"side={self.side}, hand={self.hand}, helix_form={self.helix_form!r})"
+        )
 
 
-def mating_flanks(gear1: InvoluteGearData, gear2: InvoluteGearData, *, side: int = 1, hand1: int = 1,
-                  crowning1=None, crowning2=None, relief1=(), relief2=(), helix_form: str = "true"):
+def mating_flanks(
+    gear1: InvoluteGearData,
+    gear2: InvoluteGearData,
+    *,
+    side: int = 1,
+    hand1: int = 1,
+    crowning1=None,
+    crowning2=None,
+    relief1=(),
+    relief2=(),
+    helix_form: str = "true",
+):
     """The two drive flanks of an external involute pair: same ``side``, opposite hands.
 
     Checks that the pair can mesh (same normal module, pressure angle and helix angle).

@@ -62,9 +62,20 @@ class RackGeneratedFlank(Surface):
     tol, maxiter : Newton settings of the meshing solve
     """
 
-    def __init__(self, a: float, alpha_n: float, l: float, beta: float, r_p: float, member_side: int,
-                 outward_sign: int = 1, u_range=(-0.5, 0.5), theta_range=(-10.0, 10.0),
-                 tol: float = 1e-13, maxiter: int = 30):
+    def __init__(
+        self,
+        a: float,
+        alpha_n: float,
+        l: float,
+        beta: float,
+        r_p: float,
+        member_side: int,
+        outward_sign: int = 1,
+        u_range=(-0.5, 0.5),
+        theta_range=(-10.0, 10.0),
+        tol: float = 1e-13,
+        maxiter: int = 30,
+    ):
         if outward_sign not in (1, -1):
             raise ValueError(f"outward_sign must be +1 or -1, got {outward_sign!r}")
         for name, rng in (("u_range", u_range), ("theta_range", theta_range)):
@@ -74,8 +85,9 @@ class RackGeneratedFlank(Surface):
         self.rack = ParabolicRackCutter(a, alpha_n, l, beta=beta)
         self.r_p = float(r_p)
         self.member_side = int(member_side)
-        self.envelope = Envelope(self.rack, rack_generation_motion(self.r_p, self.member_side),
-                                 free=("u", "v"), tol=tol, maxiter=maxiter)
+        self.envelope = Envelope(
+            self.rack, rack_generation_motion(self.r_p, self.member_side), free=("u", "v"), tol=tol, maxiter=maxiter
+        )
         self._surface = self.envelope.surface(0.0)
         self.outward_sign = int(outward_sign)
         self.lower = np.array([float(u_range[0]), float(theta_range[0])])
@@ -102,8 +114,12 @@ class RackGeneratedFlank(Surface):
             h1 = (P1 * Q - P * Q1) / Q**2
             h2 = (P2 * Q**2 - 2.0 * P1 * Q * Q1 + 2.0 * P * Q1**2) / Q**3
         rp = self.r_p
-        return ((y * cb + theta * sb + cb * h) / rp, (y1 * cb + cb * h1) / rp, (y2 * cb + cb * h2) / rp,
-                np.full(u.shape, sb / rp))
+        return (
+            (y * cb + theta * sb + cb * h) / rp,
+            (y1 * cb + cb * h1) / rp,
+            (y2 * cb + cb * h2) / rp,
+            np.full(u.shape, sb / rp),
+        )
 
     def position(self, u, v) -> np.ndarray:
         return self.evaluate(u, v).r
@@ -177,9 +193,23 @@ class WormGeneratedPinion(Surface):
     with analytic normal parts).
     """
 
-    def __init__(self, a: float, alpha_n: float, l: float, beta: float, r_p: float, P_n: float, r_pw: float,
-                 a_pl: float, N_w: int = 1, outward_sign: int = 1, psi_range=(-1.0, 1.0), l_range=(-3.0, 3.0),
-                 tol: float = 1e-13, maxiter: int = 30):
+    def __init__(
+        self,
+        a: float,
+        alpha_n: float,
+        l: float,
+        beta: float,
+        r_p: float,
+        P_n: float,
+        r_pw: float,
+        a_pl: float,
+        N_w: int = 1,
+        outward_sign: int = 1,
+        psi_range=(-1.0, 1.0),
+        l_range=(-3.0, 3.0),
+        tol: float = 1e-13,
+        maxiter: int = 30,
+    ):
         from ..envelope import Envelope, FunctionMotion
 
         if not (np.isfinite(r_pw) and r_pw > 0):
@@ -327,8 +357,10 @@ class NormalPartSurface(Surface):
         gc = generated_curvatures(self.base.envelope, rec.params)
 
         def II(a, b):
-            return (gc.k1 * np.sum(a * gc.e1, -1) * np.sum(b * gc.e1, -1)
-                    + gc.k2 * np.sum(a * gc.e2, -1) * np.sum(b * gc.e2, -1))[:, None] * gc.normal
+            return (
+                gc.k1 * np.sum(a * gc.e1, -1) * np.sum(b * gc.e1, -1)
+                + gc.k2 * np.sum(a * gc.e2, -1) * np.sum(b * gc.e2, -1)
+            )[:, None] * gc.normal
 
         out = [r, ru, rv, II(ru, ru), II(ru, rv), II(rv, rv)]
         out = [np.where(ok[:, None], x, np.nan).reshape(shape + (3,)) for x in out]

@@ -175,8 +175,7 @@ class ParabolicRackCutter(RackCutter):
     beta, y0, side : as for :class:`StraightRackCutter`
     """
 
-    def __init__(self, a: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0,
-                 side: int = 1):
+    def __init__(self, a: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
         super().__init__(beta)
         self.a = _finite(a, "a (parabola coefficient)")
         self.alpha_n = _angle(alpha_n, "alpha_n (normal pressure angle)", 0.0, np.pi / 2)

@@ -36,8 +36,9 @@ def contact_curvatures(pair: GearPair, contact: ContactPoints):
     nan3 = np.full((len(contact), 3), np.nan)
     out = []
     for flank, u, v, R, sign, origin, flip in (
-            (pair.flank1, contact.u1, contact.v1, pair.R1(contact.phi1), pair.sign1, None, False),
-            (pair.flank2, contact.u2, contact.v2, pair.R2(contact.phi2), pair.sign2, pair.O2, True)):
+        (pair.flank1, contact.u1, contact.v1, pair.R1(contact.phi1), pair.sign1, None, False),
+        (pair.flank2, contact.u2, contact.v2, pair.R2(contact.phi2), pair.sign2, pair.O2, True),
+    ):
         pc = principal_curvatures(_fixed_frame_point(flank, u[idx], v[idx], R[idx], origin))
         # r_u x r_v -> outward normal of the member, then member 2 seen with member 1's normal
         if (sign < 0) != flip:

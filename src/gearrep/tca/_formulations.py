@@ -9,7 +9,15 @@ from ..solve import SolveResult, Status, newton
 from ..surface import cross
 from ._pair import ContactPoints, GearPair, _mv, _wrap, transmission_error
 
-__all__ = ["normal_derivatives", "conventional_system", "newton_rows", "default_start", "solve_contact", "reduced_unknowns", "trace_path"]
+__all__ = [
+    "normal_derivatives",
+    "conventional_system",
+    "newton_rows",
+    "default_start",
+    "solve_contact",
+    "reduced_unknowns",
+    "trace_path",
+]
 
 
 def normal_derivatives(P, sign):
@@ -148,8 +156,9 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
 # ----------------------------------------------------------------------------------------------
 # newton with frozen per-row parameters
 # ----------------------------------------------------------------------------------------------
-def newton_rows(F, FJ, x0, params, *, lower=None, upper=None, jacobian="analytic", tol=1e-12, maxiter=50,
-                damped=True) -> SolveResult:
+def newton_rows(
+    F, FJ, x0, params, *, lower=None, upper=None, jacobian="analytic", tol=1e-12, maxiter=50, damped=True
+) -> SolveResult:
     """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
 
     ``F(x, p) -> (n, m)``; ``FJ(x, p) -> (F, J)`` with J (n, m, k) (analytic; ignored when
@@ -170,8 +179,17 @@ def newton_rows(F, FJ, x0, params, *, lower=None, upper=None, jacobian="analytic
     def jac(x, idx):
         return FJ(x, params[idx])[1]
 
-    return newton(fun, x0, jac if jacobian == "analytic" else None, tol=tol, maxiter=maxiter, damped=damped,
-                  lower=lower, upper=upper, rows=True)
+    return newton(
+        fun,
+        x0,
+        jac if jacobian == "analytic" else None,
+        tol=tol,
+        maxiter=maxiter,
+        damped=damped,
+        lower=lower,
+        upper=upper,
+        rows=True,
+    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -200,9 +218,21 @@ def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndar
     return np.column_stack([np.tile(mid1, (len(phi1), 1)), np.tile(mid2, (len(phi1), 1)), pair.ratio * phi1])
 
 
-def solve_contact(pair: GearPair, phi1, start=None, *, formulation: str = "reduced", v1=None,
-                  jacobian: str = "analytic", tol: float = 1e-12, maxiter: int = 50, damped: bool = True,
-                  phi10: float = 0.0, phi20: float = 0.0, drop=None) -> ContactPoints:
+def solve_contact(
+    pair: GearPair,
+    phi1,
+    start=None,
+    *,
+    formulation: str = "reduced",
+    v1=None,
+    jacobian: str = "analytic",
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    damped: bool = True,
+    phi10: float = 0.0,
+    phi20: float = 0.0,
+    drop=None,
+) -> ContactPoints:
     """Contact points of ``pair`` at member-1 angles ``phi1`` (vectorised over starts and angles).
 
     Parameters
@@ -249,8 +279,11 @@ def solve_contact(pair: GearPair, phi1, start=None, *, formulation: str = "reduc
             raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
         drop = np.full(n, float(drop))
 
-    free = [0] if (fixed and formulation == "reduced") else ([0, 1] if formulation == "reduced" else
-                                                             ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4]))
+    free = (
+        [0]
+        if (fixed and formulation == "reduced")
+        else ([0, 1] if formulation == "reduced" else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4]))
+    )
     lo_all = np.concatenate([pair.lower1, pair.lower2, [-np.inf]])
     hi_all = np.concatenate([pair.upper1, pair.upper2, [np.inf]])
 
@@ -262,6 +295,7 @@ def solve_contact(pair: GearPair, phi1, start=None, *, formulation: str = "reduc
         return full
 
     if formulation == "reduced":
+
         def FJ(x, p):
             full = expand(x, p)
             Fv, J, _ = _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1])
@@ -271,6 +305,7 @@ def solve_contact(pair: GearPair, phi1, start=None, *, formulation: str = "reduc
             full = expand(x, p)
             return _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1], derivs=False)[0]
     else:
+
         def FJ(x, p):
             Fv, J = _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1])
             return Fv, J[:, :, free]
@@ -279,8 +314,18 @@ def solve_contact(pair: GearPair, phi1, start=None, *, formulation: str = "reduc
             return _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1], derivs=False)[0]
 
     params = np.column_stack([phi1, drop] + ([start[:, 1]] if fixed else []))
-    res = newton_rows(Fonly, FJ, start[:, free], params, lower=lo_all[free], upper=hi_all[free], jacobian=jacobian,
-                      tol=tol, maxiter=maxiter, damped=damped)
+    res = newton_rows(
+        Fonly,
+        FJ,
+        start[:, free],
+        params,
+        lower=lo_all[free],
+        upper=hi_all[free],
+        jacobian=jacobian,
+        tol=tol,
+        maxiter=maxiter,
+        damped=damped,
+    )
     sol = expand(res.x, params)
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20)
 
@@ -304,13 +349,30 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
     solved = (status == Status.CONVERGED) | (status == Status.OFF_FLANK)
     status[solved & ~opposite] = int(Status.WRONG_ROOT)
     tol2 = 1e-12 * (1 + np.abs(np.concatenate([pair.lower2, pair.upper2])))
-    inside2 = ((u2 >= pair.lower2[0] - tol2[0]) & (u2 <= pair.upper2[0] + tol2[2])
-               & (v2 >= pair.lower2[1] - tol2[1]) & (v2 <= pair.upper2[1] + tol2[3]))
+    inside2 = (
+        (u2 >= pair.lower2[0] - tol2[0])
+        & (u2 <= pair.upper2[0] + tol2[2])
+        & (v2 >= pair.lower2[1] - tol2[1])
+        & (v2 <= pair.upper2[1] + tol2[3])
+    )
     status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
     te = transmission_error(phi1, phi2, pair.n1, pair.n2, phi10, phi20)
-    return ContactPoints(u1=u1, v1=v1, u2=u2, v2=v2, phi1=phi1, phi2=phi2, position=r, normal=n1, te=te,
-                         residual=res.residual, iterations=res.iterations, status=status, formulation=formulation,
-                         condition=res.condition)
+    return ContactPoints(
+        u1=u1,
+        v1=v1,
+        u2=u2,
+        v2=v2,
+        phi1=phi1,
+        phi2=phi2,
+        position=r,
+        normal=n1,
+        te=te,
+        residual=res.residual,
+        iterations=res.iterations,
+        status=status,
+        formulation=formulation,
+        condition=res.condition,
+    )
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):
@@ -321,9 +383,20 @@ def reduced_unknowns(pair: GearPair, u1, v1, phi1):
     return K["u2"].reshape(shape), K["v2"].reshape(shape), K["phi2"].reshape(shape)
 
 
-def trace_path(pair: GearPair, phi1, start=None, *, formulation: str = "reduced", v1=None,
-               jacobian: str = "analytic", tol: float = 1e-12, maxiter: int = 50, phi10: float = 0.0,
-               phi20: float = 0.0, predictor: bool = True) -> ContactPoints:
+def trace_path(
+    pair: GearPair,
+    phi1,
+    start=None,
+    *,
+    formulation: str = "reduced",
+    v1=None,
+    jacobian: str = "analytic",
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    phi10: float = 0.0,
+    phi20: float = 0.0,
+    predictor: bool = True,
+) -> ContactPoints:
     """Path of contact over the angles ``phi1`` (in order) by continuation (Litvin & Fuentes ch. 9).
 
     Each position starts from the previous converged solution (linearly extrapolated from the last
@@ -347,13 +420,31 @@ def trace_path(pair: GearPair, phi1, start=None, *, formulation: str = "reduced"
             guess = xb + (xb - xa) * (p - pb) / (pb - pa)
         elif hist:
             guess = hist[-1][1]
-        c = solve_contact(pair, p, guess[None, :], formulation=formulation,
-                          v1=None if v1a is None else v1a[i], jacobian=jacobian, tol=tol, maxiter=maxiter,
-                          phi10=phi10, phi20=phi20)
+        c = solve_contact(
+            pair,
+            p,
+            guess[None, :],
+            formulation=formulation,
+            v1=None if v1a is None else v1a[i],
+            jacobian=jacobian,
+            tol=tol,
+            maxiter=maxiter,
+            phi10=phi10,
+            phi20=phi20,
+        )
         if c.status[0] != Status.CONVERGED and len(hist) >= 1 and predictor:
-            c2 = solve_contact(pair, p, hist[-1][1][None, :], formulation=formulation,
-                               v1=None if v1a is None else v1a[i], jacobian=jacobian, tol=tol, maxiter=maxiter,
-                               phi10=phi10, phi20=phi20)
+            c2 = solve_contact(
+                pair,
+                p,
+                hist[-1][1][None, :],
+                formulation=formulation,
+                v1=None if v1a is None else v1a[i],
+                jacobian=jacobian,
+                tol=tol,
+                maxiter=maxiter,
+                phi10=phi10,
+                phi20=phi20,
+            )
             if c2.status[0] == Status.CONVERGED:
                 c = c2
         out.append(c)

@@ -79,8 +79,18 @@ class GearPair:
     phase2 : fixed turn of member 2 in its frame; default pi - side pi / n2 (see module docstring)
     """
 
-    def __init__(self, flank1, flank2, n1: int, n2: int, centre_distance: float, *, misalignment=None,
-                 shaft_angle: float = 0.0, phase2=None):
+    def __init__(
+        self,
+        flank1,
+        flank2,
+        n1: int,
+        n2: int,
+        centre_distance: float,
+        *,
+        misalignment=None,
+        shaft_angle: float = 0.0,
+        phase2=None,
+    ):
         for name, n in (("n1", n1), ("n2", n2)):
             if int(n) != n or n < 1:
                 raise ValueError(f"{name} must be a positive integer, got {n!r}")
@@ -113,8 +123,16 @@ class GearPair:
 
     def with_misalignment(self, misalignment) -> GearPair:
         """Same pair with another misalignment."""
-        return GearPair(self.flank1, self.flank2, self.n1, self.n2, self.centre_distance,
-                        misalignment=misalignment, shaft_angle=self.shaft_angle, phase2=self.phase2)
+        return GearPair(
+            self.flank1,
+            self.flank2,
+            self.n1,
+            self.n2,
+            self.centre_distance,
+            misalignment=misalignment,
+            shaft_angle=self.shaft_angle,
+            phase2=self.phase2,
+        )
 
     def R1(self, phi1):
         """Rotation of member 1, Rz(phi1)."""
@@ -200,16 +218,46 @@ class ContactPoints:
 
     def take(self, idx) -> ContactPoints:
         """Subset by index or boolean mask."""
-        kw = {f: getattr(self, f)[idx] for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal",
-                                                   "te", "residual", "iterations", "status")}
+        kw = {
+            f: getattr(self, f)[idx]
+            for f in (
+                "u1",
+                "v1",
+                "u2",
+                "v2",
+                "phi1",
+                "phi2",
+                "position",
+                "normal",
+                "te",
+                "residual",
+                "iterations",
+                "status",
+            )
+        }
         cond = None if self.condition is None else self.condition[idx]
         return ContactPoints(formulation=self.formulation, condition=cond, **kw)
 
     @staticmethod
     def concatenate(items) -> ContactPoints:
         items = list(items)
-        kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in
-              ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te", "residual", "iterations", "status")}
+        kw = {
+            f: np.concatenate([getattr(c, f) for c in items])
+            for f in (
+                "u1",
+                "v1",
+                "u2",
+                "v2",
+                "phi1",
+                "phi2",
+                "position",
+                "normal",
+                "te",
+                "residual",
+                "iterations",
+                "status",
+            )
+        }
         conds = [c.condition for c in items]
         cond = None if any(c is None for c in conds) else np.concatenate(conds)
         return ContactPoints(formulation=items[0].formulation, condition=cond, **kw)

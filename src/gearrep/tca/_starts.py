@@ -21,7 +21,21 @@ from ..surface import cross
 from ._formulations import conventional_system, newton_rows, reduced_unknowns, solve_contact
 from ._pair import GearPair
 
-__all__ = ["CONVENTIONAL_VARIANTS", "REDUCED_VARIANTS", "flank_boxes", "solve_conventional", "seed_from_reduced", "guard_reduced_starts", "transverse_stage", "robust_start", "solve_reduced", "solve_variant", "line_of_action_start", "line_of_action_starts", "draw_starts"]
+__all__ = [
+    "CONVENTIONAL_VARIANTS",
+    "REDUCED_VARIANTS",
+    "flank_boxes",
+    "solve_conventional",
+    "seed_from_reduced",
+    "guard_reduced_starts",
+    "transverse_stage",
+    "robust_start",
+    "solve_reduced",
+    "solve_variant",
+    "line_of_action_start",
+    "line_of_action_starts",
+    "draw_starts",
+]
 
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
 REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
@@ -39,8 +53,18 @@ def flank_boxes(pair: GearPair, margin: float = 0.0):
     return lo, hi
 
 
-def solve_conventional(pair: GearPair, phi1: float, x0, *, variant: str = "plain", equations: str = "five",
-                       drop: int = 0, tol: float = 1e-12, maxiter: int = 50, margin: float = 1e-6) -> SolveResult:
+def solve_conventional(
+    pair: GearPair,
+    phi1: float,
+    x0,
+    *,
+    variant: str = "plain",
+    equations: str = "five",
+    drop: int = 0,
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    margin: float = 1e-6,
+) -> SolveResult:
     """Conventional TCA at a fixed ``phi1`` from starts ``x0`` (n, 5) with solver ``variant``
     (:data:`CONVENTIONAL_VARIANTS`; ``seeded`` and ``robust`` expect x0 already prepared by
     :func:`seed_from_reduced`, and run plain Newton).
@@ -125,8 +149,9 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
         return cross(n1, n2)[:, 2:3]
 
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r = newton_rows(F, None, u1[:, None], np.column_stack([v1, ph]), jacobian="numeric", tol=tol,
-                        maxiter=maxiter, damped=True)
+        r = newton_rows(
+            F, None, u1[:, None], np.column_stack([v1, ph]), jacobian="numeric", tol=tol, maxiter=maxiter, damped=True
+        )
     ok = r.status == Status.CONVERGED
     return np.where(ok, r.x[:, 0], u1), r.iterations
 
@@ -150,20 +175,38 @@ def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduce
     if variant == "reduced_robust":
         u1, extra = robust_start(pair, phi1, u1, v1)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = solve_contact(pair, phi1, np.column_stack([u1, v1]), formulation="reduced",
-                          damped=(variant == "reduced_damped"), tol=tol, maxiter=maxiter)
+        c = solve_contact(
+            pair,
+            phi1,
+            np.column_stack([u1, v1]),
+            formulation="reduced",
+            damped=(variant == "reduced_damped"),
+            tol=tol,
+            maxiter=maxiter,
+        )
     return c.unknowns("conventional"), c.status, c.iterations + extra, c.residual
 
 
-def solve_variant(pair: GearPair, phi1: float, starts, variant: str, *, equations: str = "five", drop: int = 0,
-                  tol: float = 1e-12, maxiter: int = 50, margin: float = 1e-6):
+def solve_variant(
+    pair: GearPair,
+    phi1: float,
+    starts,
+    variant: str,
+    *,
+    equations: str = "five",
+    drop: int = 0,
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    margin: float = 1e-6,
+):
     """Solve conventional starts ``starts`` (n, 5) with any variant of either formulation (the
     reduced ones use only the (u1, v1) columns). Returns (x (n, 5), status, iterations); a seeded
     or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED."""
     starts = np.asarray(starts, float)
     if variant in REDUCED_VARIANTS:
-        x, status, iters, _ = solve_reduced(pair, phi1, starts[:, 0], starts[:, 1], variant=variant, tol=tol,
-                                            maxiter=maxiter)
+        x, status, iters, _ = solve_reduced(
+            pair, phi1, starts[:, 0], starts[:, 1], variant=variant, tol=tol, maxiter=maxiter
+        )
         return x, status, np.asarray(iters)
     x0, extra = starts, 0
     if variant == "seeded":
@@ -171,8 +214,9 @@ def solve_variant(pair: GearPair, phi1: float, starts, variant: str, *, equation
     elif variant == "robust":
         u1r, extra = robust_start(pair, phi1, starts[:, 0], starts[:, 1])
         x0 = seed_from_reduced(pair, phi1, u1r, starts[:, 1])
-    r = solve_conventional(pair, phi1, x0, variant=variant, equations=equations, drop=drop, tol=tol,
-                           maxiter=maxiter, margin=margin)
+    r = solve_conventional(
+        pair, phi1, x0, variant=variant, equations=equations, drop=drop, tol=tol, maxiter=maxiter, margin=margin
+    )
     status = r.status
     if variant in ("seeded", "robust"):
         status = np.where(np.all(np.isfinite(x0), axis=1), status, int(Status.DIVERGED))
@@ -218,8 +262,9 @@ def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
     return np.column_stack([u, np.zeros_like(u)])
 
 
-def draw_starts(pair: GearPair, n: int, rng: np.random.Generator, *, phi2_window=None, phi2_fixed=None,
-                uv2: str = "uniform") -> np.ndarray:
+def draw_starts(
+    pair: GearPair, n: int, rng: np.random.Generator, *, phi2_window=None, phi2_fixed=None, uv2: str = "uniform"
+) -> np.ndarray:
     """Random conventional starts (n, 5), drawn in a fixed order from ``rng``: u1, v1 uniform on
     flank 1, then u2, v2 uniform on flank 2 (``uv2="uniform"``) or its mid-point
     (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``."""

@@ -38,57 +38,125 @@ from .claims import checks, claim_verdicts  # noqa: F401
 from .contact import contact_geometry  # noqa: F401
 from .design import Design, params_from_published, validate  # noqa: F401
 
-__all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
-           "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "claim_verdicts",
-           "contact_geometry", "PAIRS", "PAIR_NAMES", "READINGS", "PRIMARY", "Mesh", "assemble", "path_limits",
-           "contact_radii", "reading_to_mesh", "solve_cycle", "starts"]
+__all__ = [
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
+    "Design",
+    "claim_verdicts",
+    "contact_geometry",
+    "PAIRS",
+    "PAIR_NAMES",
+    "READINGS",
+    "PRIMARY",
+    "Mesh",
+    "assemble",
+    "path_limits",
+    "contact_radii",
+    "reading_to_mesh",
+    "solve_cycle",
+    "starts",
+]
 
 SEED = "004"
 
 _deg = _s.number(None, "deg", "", ge=-90, le=90)
 SETTINGS = _s.declare(
     step_deg=_s.number(0.5, "deg", "abscissa step of the meshing-cycle grids (paper abscissa)", ge=0.01, le=5),
-    off_path_margin_deg=_s.number(1.0, "deg", "the grids reach this far beyond the real path (there S_clipped = 0)",
-                                  ge=0, le=30),
-    near_top_deg=_s.number(3.0, "deg", "the last 3 deg of the window are 'near the top' (cliff claims, claims_004); "
-                           "at most the window width (validate)", ge=0.1, le=180),
-    near_top_eval_deg=_s.number(10.0, "deg", "angle of the near-top orderings (claims_004); inside the window "
-                                "(validate)", ge=-90, le=90),
-    tol=_s.number(1e-8, "mm", "TCA Newton residual (mm / unit normal); bench: 1e-8 gives S to 2e-15 relative "
-                  "(target 1e-7), the same as 1e-10", ge=1e-14, le=1e-6),
+    off_path_margin_deg=_s.number(
+        1.0, "deg", "the grids reach this far beyond the real path (there S_clipped = 0)", ge=0, le=30
+    ),
+    near_top_deg=_s.number(
+        3.0,
+        "deg",
+        "the last 3 deg of the window are 'near the top' (cliff claims, claims_004); "
+        "at most the window width (validate)",
+        ge=0.1,
+        le=180,
+    ),
+    near_top_eval_deg=_s.number(
+        10.0, "deg", "angle of the near-top orderings (claims_004); inside the window (validate)", ge=-90, le=90
+    ),
+    tol=_s.number(
+        1e-8,
+        "mm",
+        "TCA Newton residual (mm / unit normal); bench: 1e-8 gives S to 2e-15 relative "
+        "(target 1e-7), the same as 1e-10",
+        ge=1e-14,
+        le=1e-6,
+    ),
     maxiter=_s.integer(50, "1", "Newton iterations of the TCA", ge=1, le=1000),
-    start_offset_mm=_s.number(5.0, "mm", "TCA starts 5 mm off the middle section (the solve must find it)",
-                              ge=0, le=30),
-    n_tip_edge=_s.integer(41, "1", "tip-edge samples over the face width (ellipse truncation); bench: with "
-                          "n_clip_nodes 50, S_clipped to 5e-4 of max S (target 1e-3)", ge=11, le=5001),
-    n_clip_nodes=_s.integer(50, "1", "Gauss-Legendre nodes along the long axis (ellipse truncation); bench as "
-                            "n_tip_edge", ge=20, le=20000),
+    start_offset_mm=_s.number(
+        5.0, "mm", "TCA starts 5 mm off the middle section (the solve must find it)", ge=0, le=30
+    ),
+    n_tip_edge=_s.integer(
+        41,
+        "1",
+        "tip-edge samples over the face width (ellipse truncation); bench: with "
+        "n_clip_nodes 50, S_clipped to 5e-4 of max S (target 1e-3)",
+        ge=11,
+        le=5001,
+    ),
+    n_clip_nodes=_s.integer(
+        50, "1", "Gauss-Legendre nodes along the long axis (ellipse truncation); bench as n_tip_edge", ge=20, le=20000
+    ),
     thickness=_s.group(
         "tooth thickness vs R_T (Fig 14): its gear is not printed, Fig 13's gear is assumed; sections below "
         "min(R_T)/2 (validate)",
         z=_s.integer(21, "1", "tooth number of the Fig 14 gear (Fig 13's pinion assumed)", ge=5, le=10000),
         module=_s.number(8.0, "mm", "module of the Fig 14 gear (Fig 13's assumed)", ge=0.1, le=100),
         face_width=_s.number(80.0, "mm", "face width of the Fig 14 gear (Fig 13's assumed)", gt=0),
-        R_T=_s.array([300.0, 400.0, 500.0, 600.0, 800.0], "mm", "tooth-line radii of Fig 14 (those of Fig 13)",
-                     _s.number(None, "mm", "", gt=0), min_items=2),
-        sections_mm=_s.array([0.0, 15.0, 30.0, 45.0], "mm", "transverse sections B0..B45 of Fig 14",
-                             _s.number(None, "mm", "", ge=0), min_items=2),
+        R_T=_s.array(
+            [300.0, 400.0, 500.0, 600.0, 800.0],
+            "mm",
+            "tooth-line radii of Fig 14 (those of Fig 13)",
+            _s.number(None, "mm", "", gt=0),
+            min_items=2,
+        ),
+        sections_mm=_s.array(
+            [0.0, 15.0, 30.0, 45.0],
+            "mm",
+            "transverse sections B0..B45 of Fig 14",
+            _s.number(None, "mm", "", ge=0),
+            min_items=2,
+        ),
     ),
     section_check=_s.group(
         "transverse sections of one design against involutes, eq (28)-(29) vs eq (6)",
-        design=_s.text("sec4_3d_model", "the design whose pinion is checked: the sec 4 model pair (validate: "
-                       "must be a design)"),
-        sections_mm=_s.array([15.0, 30.0, 45.0], "mm", "offsets of the checked sections (those of Fig 14)",
-                             _s.number(None, "mm", "", gt=0)),
+        design=_s.text(
+            "sec4_3d_model", "the design whose pinion is checked: the sec 4 model pair (validate: must be a design)"
+        ),
+        sections_mm=_s.array(
+            [15.0, 30.0, 45.0],
+            "mm",
+            "offsets of the checked sections (those of Fig 14)",
+            _s.number(None, "mm", "", gt=0),
+        ),
         n_points=_s.integer(41, "1", "profile points per section, form to tip", ge=5, le=1000),
     ),
     gap_check=_s.group(
         "exact <= delta separation region against the ellipse at a few TCA points",
         design=_s.text("sec4_3d_model", "the design checked: the sec 4 model pair (validate: must be a design)"),
         phi_deg=_s.array([-10.0, 0.0, 10.0], "deg", "paper abscissae (reading R1) of the checked points", _deg),
-        n_dirs=_s.integer(96, "1", "rays of the tangent plane per point: resolve the region's centroid (the claim's "
-                          "criterion); its area is not resolved (sec 4 pair: +14..26 % over pi a b with 96 rays, "
-                          "+1..3 % with 192, within 0.3 % with 384 and 768)", ge=8, le=2000),
+        n_dirs=_s.integer(
+            96,
+            "1",
+            "rays of the tangent plane per point: resolve the region's centroid (the claim's "
+            "criterion); its area is not resolved (sec 4 pair: +14..26 % over pi a b with 96 rays, "
+            "+1..3 % with 192, within 0.3 % with 384 and 768)",
+            ge=8,
+            le=2000,
+        ),
     ),
 )
 

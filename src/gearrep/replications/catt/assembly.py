@@ -25,9 +25,23 @@ from ...frames import rot_z
 from ...surface import RotatedSurface
 from ...surfaces.catt import CATTFlank, CATTGearData, middle_section_curvatures, turn_over
 
-__all__ = ["PAIRS", "PAIR_NAMES", "READINGS", "PRIMARY", "Mesh", "gear_data", "assemble", "path_limits",
-           "contact_radii", "reading_to_mesh", "mesh_to_reading", "closed_form_ellipse", "pitch_point_closed_form",
-           "starts", "solve_cycle"]
+__all__ = [
+    "PAIRS",
+    "PAIR_NAMES",
+    "READINGS",
+    "PRIMARY",
+    "Mesh",
+    "gear_data",
+    "assemble",
+    "path_limits",
+    "contact_radii",
+    "reading_to_mesh",
+    "mesh_to_reading",
+    "closed_form_ellipse",
+    "pitch_point_closed_form",
+    "starts",
+    "solve_cycle",
+]
 
 PAIRS = {"A": (1, -1), "B": (-1, 1)}  #: flank pair -> (pinion side, gear side); +1 convex, -1 concave
 PAIR_NAMES = {"A": "pinion convex / gear concave", "B": "pinion concave / gear convex"}
@@ -61,9 +75,15 @@ class Mesh:
 def gear_data(design: dict, prm: dict, member: int) -> CATTGearData:
     """Gear data of member 1 (pinion) or 2 (gear) of ``design``; ``prm`` brings the pressure angle
     (deg), addendum and clearance coefficients."""
-    return CATTGearData(design["z1"] if member == 1 else design["z2"], design["module"], design["R_T"],
-                        design["face_width"], np.deg2rad(prm["pressure_angle_deg"]), prm["addendum"],
-                        prm["clearance"])
+    return CATTGearData(
+        design["z1"] if member == 1 else design["z2"],
+        design["module"],
+        design["R_T"],
+        design["face_width"],
+        np.deg2rad(prm["pressure_angle_deg"]),
+        prm["addendum"],
+        prm["clearance"],
+    )
 
 
 def assemble(design: dict, pair_id: str, prm: dict) -> Mesh:
@@ -90,14 +110,19 @@ def path_limits(mesh: Mesh) -> dict:
     c, a = np.cos(g1.pressure_angle), np.sin(g1.pressure_angle)
     lims = []
     for g, s in ((g1, mesh.f1.side), (g2, mesh.f2.side)):
-        A, B, C = c * c, -2 * s * a * c * g.r_p, g.r_p ** 2 - g.r_a ** 2  # c^2 D^2 - 2 s a c R D + R^2 - r_a^2 = 0
+        A, B, C = c * c, -2 * s * a * c * g.r_p, g.r_p**2 - g.r_a**2  # c^2 D^2 - 2 s a c R D + R^2 - r_a^2 = 0
         disc = math.sqrt(B * B - 4 * A * C)
         lims.append(sorted([(-B - disc) / (2 * A), (-B + disc) / (2 * A)]))
     Dlo = max(lims[0][0], lims[1][0])
     Dhi = min(lims[0][1], lims[1][1])
     pb = 2 * np.pi * g1.r_b / g1.n_teeth
-    return {"phi1_lo": Dlo / g1.r_p, "phi1_hi": Dhi / g1.r_p, "D_lo": Dlo, "D_hi": Dhi,
-            "contact_ratio": c * (Dhi - Dlo) / pb}
+    return {
+        "phi1_lo": Dlo / g1.r_p,
+        "phi1_hi": Dhi / g1.r_p,
+        "D_lo": Dlo,
+        "D_hi": Dhi,
+        "contact_ratio": c * (Dhi - Dlo) / pb,
+    }
 
 
 def contact_radii(mesh: Mesh, phi1):
@@ -105,8 +130,8 @@ def contact_radii(mesh: Mesh, phi1):
     g1, g2 = mesh.g1, mesh.g2
     c, a = np.cos(g1.pressure_angle), np.sin(g1.pressure_angle)
     D = g1.r_p * np.asarray(phi1, float)
-    r1 = np.sqrt(c * c * D * D - 2 * mesh.f1.side * a * c * g1.r_p * D + g1.r_p ** 2)
-    r2 = np.sqrt(c * c * D * D - 2 * mesh.f2.side * a * c * g2.r_p * D + g2.r_p ** 2)
+    r1 = np.sqrt(c * c * D * D - 2 * mesh.f1.side * a * c * g1.r_p * D + g1.r_p**2)
+    r2 = np.sqrt(c * c * D * D - 2 * mesh.f2.side * a * c * g2.r_p * D + g2.r_p**2)
     return r1, r2
 
 
@@ -139,8 +164,15 @@ def closed_form_ellipse(mesh: Mesh, phi1, delta: float) -> dict:
     with np.errstate(invalid="ignore", divide="ignore"):
         a = np.sqrt(2 * delta / k_ax)
         b = np.sqrt(2 * delta / k_prof)
-    return {"kappa_axial": k_ax, "kappa_profile": k_prof, "a": a, "b": b, "S": np.pi * a * b,
-            "rho_blade1": rho1, "rho_blade2": rho2}
+    return {
+        "kappa_axial": k_ax,
+        "kappa_profile": k_prof,
+        "a": a,
+        "b": b,
+        "S": np.pi * a * b,
+        "rho_blade1": rho1,
+        "rho_blade2": rho2,
+    }
 
 
 def pitch_point_closed_form(design: dict, prm: dict) -> dict:
@@ -154,8 +186,14 @@ def pitch_point_closed_form(design: dict, prm: dict) -> dict:
     ka = np.cos(al) * (1 / (RT - q) - 1 / (RT + q))
     d = prm["delta_mm"]
     a, b = np.sqrt(2 * d / ka), np.sqrt(2 * d / kp)
-    return {"kappa_axial": ka, "kappa_profile": kp, "a": a, "b": b, "S": np.pi * a * b,
-            "S_formula": 2 * np.pi * d / np.sqrt(ka * kp)}
+    return {
+        "kappa_axial": ka,
+        "kappa_profile": kp,
+        "a": a,
+        "b": b,
+        "S": np.pi * a * b,
+        "S_formula": 2 * np.pi * d / np.sqrt(ka * kp),
+    }
 
 
 def starts(mesh: Mesh, phi1, offset_mm):
@@ -179,5 +217,6 @@ def solve_cycle(mesh: Mesh, phi1, prm: dict):
 
     start = starts(mesh, phi1, prm["start_offset_mm"])
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return solve_contact(mesh.gear_pair, phi1, start, formulation="conventional", tol=prm["tol"],
-                             maxiter=prm["maxiter"])
+        return solve_contact(
+            mesh.gear_pair, phi1, start, formulation="conventional", tol=prm["tol"], maxiter=prm["maxiter"]
+        )

@@ -41,8 +41,10 @@ def _err_S(res, ref):
 def _err_clip(res, ref):
     if not (res["status"] == "converged").all():
         return float("nan")
-    return float(np.max(np.abs(res["S_clipped_mm2"].to_numpy() - ref["S_clipped_mm2"].to_numpy()))
-                 / np.max(ref["S_mm2"].to_numpy()))
+    return float(
+        np.max(np.abs(res["S_clipped_mm2"].to_numpy() - ref["S_clipped_mm2"].to_numpy()))
+        / np.max(ref["S_mm2"].to_numpy())
+    )
 
 
 def bench_cases(settings: dict, design: Design) -> dict:
@@ -64,14 +66,18 @@ def bench_cases(settings: dict, design: Design) -> dict:
             "run": run,
             "settings": [{"tol": t} for t in (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)],
             "reference": {"tol": 1e-13},
-            "error": _err_S, "error_unit": "relative", "error_target": 0.1 * BENCH_S_TOL_REL,
+            "error": _err_S,
+            "error_unit": "relative",
+            "error_target": 0.1 * BENCH_S_TOL_REL,
             "current": {"tol": settings["tol"]},
         },
         "truncation": {
             "run": run,
             "settings": [{"n_clip_nodes": n, "n_tip_edge": m} for n in (25, 50, 100, 200, 400) for m in (41, 81, 161)],
             "reference": {"n_clip_nodes": 1600, "n_tip_edge": 1281},
-            "error": _err_clip, "error_unit": "relative to max S", "error_target": 0.1 * BENCH_CLIP_TOL_REL,
+            "error": _err_clip,
+            "error_unit": "relative to max S",
+            "error_target": 0.1 * BENCH_CLIP_TOL_REL,
             "current": {"n_clip_nodes": settings["n_clip_nodes"], "n_tip_edge": settings["n_tip_edge"]},
         },
     }

@@ -34,16 +34,33 @@ _SWEEP_CLAIMS = {
     "004-F15-cliff_near_top": ("F15", "cliff"),
 }
 
-_CYCLE_COLUMNS = ["design", "group", "pair", "reading", "z1", "z2", "module_mm", "R_T_mm", "in_window", "on_path",
-                  "phi_paper_deg", "S_mm2", "S_clipped_mm2", "kappa_long_per_mm", "kappa_short_per_mm"]
+_CYCLE_COLUMNS = [
+    "design",
+    "group",
+    "pair",
+    "reading",
+    "z1",
+    "z2",
+    "module_mm",
+    "R_T_mm",
+    "in_window",
+    "on_path",
+    "phi_paper_deg",
+    "S_mm2",
+    "S_clipped_mm2",
+    "kappa_long_per_mm",
+    "kappa_short_per_mm",
+]
 
 
 def _point_contact(cycle: CycleIndex, pair, reading, prm):
     """Point contact: both principal relative curvatures positive along the path (sec 4 pair)."""
     c = curve(cycle, "sec4_3d_model", pair, reading)
     kl, ks = c["kappa_long_per_mm"].to_numpy(), c["kappa_short_per_mm"].to_numpy()
-    return bool(np.all(kl > 1e-7) and np.all(ks > 0)), (f"[{len(c)} path points in the window: min kappa_long="
-                                                         f"{kl.min():.4e} per_mm, min kappa_short={ks.min():.4e} per_mm]")
+    return bool(np.all(kl > 1e-7) and np.all(ks > 0)), (
+        f"[{len(c)} path points in the window: min kappa_long="
+        f"{kl.min():.4e} per_mm, min kappa_short={ks.min():.4e} per_mm]"
+    )
 
 
 #: further reading-dependent claim id -> verdict(cycle index, pair, reading, prm) -> (holds, evidence)
@@ -52,9 +69,12 @@ _READING_CLAIMS = {"004-S3-point_contact": _point_contact}
 
 def _settings(tables) -> dict:
     st = tables["settings"].iloc[0]
-    return {"window_deg": [float(st["window_lo_deg"]), float(st["window_hi_deg"])],
-            "near_top_deg": float(st["near_top_deg"]), "near_top_eval_deg": float(st["near_top_eval_deg"]),
-            "delta_mm": float(st["delta_mm"])}
+    return {
+        "window_deg": [float(st["window_lo_deg"]), float(st["window_hi_deg"])],
+        "near_top_deg": float(st["near_top_deg"]),
+        "near_top_eval_deg": float(st["near_top_eval_deg"]),
+        "delta_mm": float(st["delta_mm"]),
+    }
 
 
 def _sweep_verdict(cid):
@@ -76,8 +96,16 @@ def claim_verdicts(tables: dict) -> pd.DataFrame:
         for pair in PAIRS:
             for rd in READINGS:
                 ok, ev = verdict(cycle, pair, rd, prm)
-                rows.append({"id": cid, "pair": pair, "reading": rd, "primary": (pair, rd) == PRIMARY,
-                             "holds": ok, "evidence": ev})
+                rows.append(
+                    {
+                        "id": cid,
+                        "pair": pair,
+                        "reading": rd,
+                        "primary": (pair, rd) == PRIMARY,
+                        "holds": ok,
+                        "evidence": ev,
+                    }
+                )
     return pd.DataFrame(rows)
 
 
@@ -94,7 +122,8 @@ def _centred(t):
         f"point <= {off:.2e} x 2b (criterion < 0.1). The exact region's area differs from pi a b by "
         f"{100 * g['area_rel_diff'].min():.0f}..{100 * g['area_rel_diff'].max():.0f}%, a ray quadrature of a slender "
         f"region (semi-major axis a = {a_semi:.1f} mm at the pitch point) that depends on the number of rays "
-        f"(gap_check.n_dirs; not the claim's criterion); no loaded-contact model.")
+        f"(gap_check.n_dirs; not the claim's criterion); no loaded-contact model."
+    )
 
 
 def _eq20(t):
@@ -113,7 +142,8 @@ def _eq20(t):
         f"{100 * err_alg:.3g}% from the eigenvalues of the relative curvature tensor (the concave flank's largest "
         f"curvature is axial, the convex flank's profile). Paired by direction (axial-axial, profile-profile) the "
         f"differences equal the eigenvalues to {err_par:.1e} (principal directions are aligned as lines, sigma = 0 or "
-        f"90 deg exactly). Eq 23-24 with the true sigma are right.")
+        f"90 deg exactly). Eq 23-24 with the true sigma are right."
+    )
 
 
 def _middle_section_contact(t):
@@ -125,14 +155,17 @@ def _middle_section_contact(t):
         f"Aligned TCA of the meshing-test pair (z1=31, z2=69, m=4, R_T=500), {len(c)} points on the real path, both "
         f"pairs and readings: max |z| of the contact point {zmax:.2e} mm (criterion 1e-6), max |TE| {te:.2e} arcsec, "
         f"long axis along the axial direction to {orient:.2e} deg, so the ellipse is symmetric about the middle "
-        f"section. Theoretical path only; the vermilion test itself is not modelled.")
+        f"section. Theoretical path only; the vermilion test itself is not modelled."
+    )
 
 
 def _middle_involute(t):
     sec = t["sections"]
     dmid = float(sec.loc[sec["section_mm"] == 0.0, "dev_nominal_involute_mm"].max())
-    return bool(dmid < 1e-6), (f"z = 0 section of eq (6), convex and concave flanks of the sec 4 pinion: max deviation "
-                               f"from the involute of base radius R cos(alpha) = {dmid:.2e} mm (criterion 1e-6).")
+    return bool(dmid < 1e-6), (
+        f"z = 0 section of eq (6), convex and concave flanks of the sec 4 pinion: max deviation "
+        f"from the involute of base radius R cos(alpha) = {dmid:.2e} mm (criterion 1e-6)."
+    )
 
 
 def _other_sections(t):
@@ -141,8 +174,11 @@ def _other_sections(t):
     fit = oth.groupby("section_mm")["dev_best_fit_involute_mm"].max()
     nom = oth.groupby("section_mm")["dev_nominal_involute_mm"].max()
     outside = sorted(set(oth.loc[oth["outside_face_width"].astype(bool), "section_mm"]))
-    outside_txt = (f"offsets {outside} mm lie outside the face width (|z| > B/2)." if outside
-                   else "all offsets lie inside the face width.")
+    outside_txt = (
+        f"offsets {outside} mm lie outside the face width (|z| > B/2)."
+        if outside
+        else "all offsets lie inside the face width."
+    )
     return bool(fit.min() > 1e-3 and bool(np.all(np.diff(fit.to_numpy()) > 0))), (
         f"Sections at {fit.index.tolist()} mm (sec 4 pinion, both flanks): deviation from the best-fit involute "
         f"(base radius and rotation fitted) {np.array2string(fit.to_numpy(), precision=3)} mm, growing with the offset "
@@ -150,7 +186,8 @@ def _other_sections(t):
         f"to within {fit.max():.1e} mm, not visibly 'hyperbolic'. From the nominal involute (r_b = R cos alpha) they "
         f"deviate by {np.array2string(nom.to_numpy(), precision=3)} mm (the thickness change and the change of "
         f"transverse pressure angle). Neither the refutation (involute to 1e-6 mm) nor the confirmation holds, so the "
-        f"claim is recorded as failing its confirmation criterion; {outside_txt}")
+        f"claim is recorded as failing its confirmation criterion; {outside_txt}"
+    )
 
 
 def _thickness(t):
@@ -165,7 +202,8 @@ def _thickness_middle(t):
     return bool(var0 < 1e-3), (
         f"Pitch-circle transverse thickness at B0, z={int(th['z'].iloc[0])}, m={th['module_mm'].iloc[0]:g} (Fig 14 data "
         f"not printed; Fig 13's gear assumed): {np.array2string(b0.to_numpy(), precision=6)} mm for R_T = "
-        f"{piv.index.tolist()} mm; relative variation {var0:.1e} (criterion 1e-3); pi m / 2 exactly.")
+        f"{piv.index.tolist()} mm; relative variation {var0:.1e} (criterion 1e-3); pi m / 2 exactly."
+    )
 
 
 def _thickness_falls(t):
@@ -177,7 +215,8 @@ def _thickness_falls(t):
         f"Thickness (mm) rows R_T={piv.index.tolist()}, columns B{[int(s) for s in secs]}: "
         f"{np.array2string(piv[secs].to_numpy(), precision=4)}; falls from B0 to B45 for every R_T: {along}; "
         f"grows with R_T at B15, B30, B45: {with_rt}. Closed form pi m - [sqrt((R_T+q)^2-z^2) - sqrt((R_T-q)^2-z^2)] "
-        f"agrees to {th['abs_diff_mm'].abs().max():.1e} mm.")
+        f"agrees to {th['abs_diff_mm'].abs().max():.1e} mm."
+    )
 
 
 def _thickness_small_change(t):
@@ -186,8 +225,9 @@ def _thickness_small_change(t):
     t45 = piv[max(secs)]
     g_hi = abs(t45.loc[800.0] - t45.loc[600.0]) / 200.0
     g_lo = abs(t45.loc[400.0] - t45.loc[300.0]) / 100.0
-    return bool(g_hi < g_lo), (f"At B{max(secs):g}: |t(800)-t(600)|/200 = {g_hi:.3e} mm/mm vs |t(400)-t(300)|/100 = "
-                               f"{g_lo:.3e} mm/mm.")
+    return bool(g_hi < g_lo), (
+        f"At B{max(secs):g}: |t(800)-t(600)|/200 = {g_hi:.3e} mm/mm vs |t(400)-t(300)|/100 = {g_lo:.3e} mm/mm."
+    )
 
 
 def _fig13_family(grp, d13):
@@ -199,12 +239,14 @@ def _fig13_family(grp, d13):
     z2 = grp["z2"].iloc[0]
     m_mm = float(grp["design"].map(d13["module_mm"]).iloc[0])
     al = np.radians(float(grp["design"].map(d13["pressure_angle_deg"]).iloc[0]))
-    est = np.cos(al) * (np.pi * m_mm / 2) / rt ** 2
+    est = np.cos(al) * (np.pi * m_mm / 2) / rt**2
     ok = bool(np.all(np.diff(ka) < 0) and np.all(np.diff(a2) > 0) and np.all(np.diff(steps) < 0))
-    return ok, [f"[z2={z2}: relative fall of d(2a)/dR_T from the first to the last step {1 - steps[-1] / steps[0]:.2e}]",
-                f"[z2={z2}: kappa_long={np.array2string(ka, precision=4)} per_mm (c*(pi m/2)/R_T^2 = "
-                f"{np.array2string(est, precision=4)}), 2a={np.array2string(a2, precision=3)} mm, "
-                f"d(2a)/dR_T={np.array2string(steps, precision=4)}]"]
+    return ok, [
+        f"[z2={z2}: relative fall of d(2a)/dR_T from the first to the last step {1 - steps[-1] / steps[0]:.2e}]",
+        f"[z2={z2}: kappa_long={np.array2string(ka, precision=4)} per_mm (c*(pi m/2)/R_T^2 = "
+        f"{np.array2string(est, precision=4)}), 2a={np.array2string(a2, precision=3)} mm, "
+        f"d(2a)/dR_T={np.array2string(steps, precision=4)}]",
+    ]
 
 
 def _rt_mechanism(t):
@@ -219,8 +261,10 @@ def _rt_mechanism(t):
         ok, inf = _fig13_family(grp, d13)
         oks.append(ok)
         info += inf
-    return all(oks), (f"At the pitch point (pair-independent closed form; the pipeline's kappa_long agrees with it to "
-                      f"{pp_err:.1e} relative): " + " ".join(info))
+    return all(oks), (
+        f"At the pitch point (pair-independent closed form; the pipeline's kappa_long agrees with it to "
+        f"{pp_err:.1e} relative): " + " ".join(info)
+    )
 
 
 #: claim id -> predicate(tables) -> (holds, note), for the claims judged once (None: not computed)
@@ -238,18 +282,24 @@ _CLAIMS = {
 }
 
 #: claim id -> why it is not computed
-_NOT_COMPUTED = {"004-S4-FE_elliptic_contact": "needs a finite-element or loaded contact model (outside gearrep's scope)"}
+_NOT_COMPUTED = {
+    "004-S4-FE_elliptic_contact": "needs a finite-element or loaded contact model (outside gearrep's scope)"
+}
 
-_LEGEND = ("Pairs: A = pinion convex/gear concave, B = pinion concave/gear convex; readings: R1 = phi1 is the "
-           "pinion angle (pinion root->top), R2 = gear angle (gear root->top). Status from the primary "
-           f"reading {PRIMARY[0]}/{PRIMARY[1]}. S = pi a b (eq 27) unless 'clipped'. ")
+_LEGEND = (
+    "Pairs: A = pinion convex/gear concave, B = pinion concave/gear convex; readings: R1 = phi1 is the "
+    "pinion angle (pinion root->top), R2 = gear angle (gear root->top). Status from the primary "
+    f"reading {PRIMARY[0]}/{PRIMARY[1]}. S = pi a b (eq 27) unless 'clipped'. "
+)
 
 
 def _variants_text(v: pd.DataFrame) -> str:
     parts = []
     for _, r in v.sort_values(["primary"], ascending=False).iterrows():
-        parts.append(f"{r['pair']}/{r['reading']}{' (primary)' if r['primary'] else ''}: "
-                     f"{'holds' if r['holds'] else 'fails'} {r['evidence']}")
+        parts.append(
+            f"{r['pair']}/{r['reading']}{' (primary)' if r['primary'] else ''}: "
+            f"{'holds' if r['holds'] else 'fails'} {r['evidence']}"
+        )
     return " || ".join(parts)
 
 
@@ -261,8 +311,11 @@ def checks(tables: dict, published) -> dict:
     recs = []
     for cid, v in ver.groupby("id", sort=False):
         prim = v[v["primary"]].iloc[0]
-        agree = ("verdict is the same for every pair and reading. " if v["holds"].nunique() == 1
-                 else "VERDICT DEPENDS ON THE READING. ")
+        agree = (
+            "verdict is the same for every pair and reading. "
+            if v["holds"].nunique() == 1
+            else "VERDICT DEPENDS ON THE READING. "
+        )
         recs.append(_checks.qualitative(claims.loc[cid], bool(prim["holds"]), _LEGEND + agree + _variants_text(v)))
     for cid, predicate in _CLAIMS.items():
         if predicate is None:

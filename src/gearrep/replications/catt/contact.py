@@ -45,14 +45,53 @@ _FIELDS = ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv")
 
 #: columns of :func:`contact_geometry`, in order
 COLUMNS = (
-    "phi1_mesh_deg", "phi2_mesh_deg", "status", "residual", "iterations", "solved", "on_flank", "x_mm", "y_mm",
-    "z_mm", "r1_mm", "r2_mm", "te_arcsec", "theta1_rad", "phig1_rad", "theta2_rad", "phig2_rad", "normal_mismatch",
-    "k1_pinion_per_mm", "k2_pinion_per_mm", "k1_gear_per_mm", "k2_gear_per_mm", "k_axial_pinion_per_mm",
-    "k_profile_pinion_per_mm", "k_axial_gear_per_mm", "k_profile_gear_per_mm", "sigma_deg", "kappa_long_per_mm",
-    "kappa_short_per_mm", "a_mm", "b_mm", "S_mm2", "S_clipped_mm2", "S_tensor_mm2", "sigma_true_deg",
-    "orientation_deg", "alphaI_eq26_deg", "A_eq23", "B_eq24", "eq20_algebraic_1_per_mm", "eq20_algebraic_2_per_mm",
-    "eq20_paired_axial_per_mm", "eq20_paired_profile_per_mm", "S_closed_form_mm2", "a_closed_form_mm",
-    "b_closed_form_mm", "S_rel_diff_closed_form",
+    "phi1_mesh_deg",
+    "phi2_mesh_deg",
+    "status",
+    "residual",
+    "iterations",
+    "solved",
+    "on_flank",
+    "x_mm",
+    "y_mm",
+    "z_mm",
+    "r1_mm",
+    "r2_mm",
+    "te_arcsec",
+    "theta1_rad",
+    "phig1_rad",
+    "theta2_rad",
+    "phig2_rad",
+    "normal_mismatch",
+    "k1_pinion_per_mm",
+    "k2_pinion_per_mm",
+    "k1_gear_per_mm",
+    "k2_gear_per_mm",
+    "k_axial_pinion_per_mm",
+    "k_profile_pinion_per_mm",
+    "k_axial_gear_per_mm",
+    "k_profile_gear_per_mm",
+    "sigma_deg",
+    "kappa_long_per_mm",
+    "kappa_short_per_mm",
+    "a_mm",
+    "b_mm",
+    "S_mm2",
+    "S_clipped_mm2",
+    "S_tensor_mm2",
+    "sigma_true_deg",
+    "orientation_deg",
+    "alphaI_eq26_deg",
+    "A_eq23",
+    "B_eq24",
+    "eq20_algebraic_1_per_mm",
+    "eq20_algebraic_2_per_mm",
+    "eq20_paired_axial_per_mm",
+    "eq20_paired_profile_per_mm",
+    "S_closed_form_mm2",
+    "a_closed_form_mm",
+    "b_closed_form_mm",
+    "S_rel_diff_closed_form",
 )
 
 
@@ -155,18 +194,24 @@ def _paper_route(K1, K2, concave_is_1: bool) -> dict:
     """Seed 004 eq (16)-(26) with Sigma^I concave, Sigma^II convex, common normal = outward normal
     of the convex flank: k1 >= k2 ordered algebraically (eq 16), sigma between e1^I and e1^II,
     A, B, alpha^I (eq 23-26 by the library route), eq (20) as printed and paired by direction."""
-    KI = -(K1 if concave_is_1 else K2)   # concave member w.r.t. the outward normal of the convex one
-    KII = K2 if concave_is_1 else K1     # convex member w.r.t. its outward normal
+    KI = -(K1 if concave_is_1 else K2)  # concave member w.r.t. the outward normal of the convex one
+    KII = K2 if concave_is_1 else K1  # convex member w.r.t. its outward normal
     k1I, k2I, thI = _eig(KI)
     k1II, k2II, thII = _eig(KII)
     cs = np.clip(np.abs(np.cos(thI) * np.cos(thII) + np.sin(thI) * np.sin(thII)), 0, 1)
     sigma = np.arccos(cs)  # angle between e1^I and e1^II (algebraic ordering, eq 16)
     A, B, alphaI = _ellipse.litvin_coefficients(k1I, k2I, k1II, k2II, sigma)
     eq20_1, eq20_2 = eq20_like_indexed(k1I, k2I, k1II, k2II)
-    return {"sigma_deg": np.degrees(sigma), "alphaI_eq26_deg": np.degrees(np.abs(alphaI)), "A_eq23": A, "B_eq24": B,
-            "eq20_algebraic_1_per_mm": eq20_1, "eq20_algebraic_2_per_mm": eq20_2,
-            "eq20_paired_axial_per_mm": KI[..., 0, 0] - KII[..., 0, 0],
-            "eq20_paired_profile_per_mm": KI[..., 1, 1] - KII[..., 1, 1]}
+    return {
+        "sigma_deg": np.degrees(sigma),
+        "alphaI_eq26_deg": np.degrees(np.abs(alphaI)),
+        "A_eq23": A,
+        "B_eq24": B,
+        "eq20_algebraic_1_per_mm": eq20_1,
+        "eq20_algebraic_2_per_mm": eq20_2,
+        "eq20_paired_axial_per_mm": KI[..., 0, 0] - KII[..., 0, 0],
+        "eq20_paired_profile_per_mm": KI[..., 1, 1] - KII[..., 1, 1],
+    }
 
 
 def _truncated_areas(mesh, cp, prm, tips, R1, R2, n1, e_long, a, b, S, solved):
@@ -181,8 +226,9 @@ def _truncated_areas(mesh, cp, prm, tips, R1, R2, n1, e_long, a, b, S, solved):
         t1 = _rotate(np.broadcast_to(R1[i], (len(tips[0]), 3, 3)), tips[0])
         t2 = _rotate(np.broadcast_to(R2[i], (len(tips[1]), 3, 3)), tips[1]) + O2
         es = np.cross(n1[i], e_long[i])
-        Sc[i] = clip_area(a[i], b[i], e_long[i], es, cp.position[i], t1, t2, mesh.g1.face_width,
-                          mesh.g2.face_width, nodes)
+        Sc[i] = clip_area(
+            a[i], b[i], e_long[i], es, cp.position[i], t1, t2, mesh.g1.face_width, mesh.g2.face_width, nodes
+        )
     return Sc, on
 
 
@@ -207,35 +253,60 @@ def contact_geometry(mesh: Mesh, cp, prm: dict, tips=None, clip: bool = True) ->
         S_tensor = np.pi * np.sqrt(2 * delta / ka) * np.sqrt(2 * delta / kb)
     main, e_long = _library_route(M1, M2, n1, n2, delta)
     # angle of the long axis to the axial tangent direction e_ax (projection of the gear axis)
-    orient = np.degrees(np.arctan2(np.linalg.norm(np.cross(e_long, e_ax), axis=-1),
-                                   np.abs(np.sum(e_long * e_ax, axis=-1))))
+    orient = np.degrees(
+        np.arctan2(np.linalg.norm(np.cross(e_long, e_ax), axis=-1), np.abs(np.sum(e_long * e_ax, axis=-1)))
+    )
     solved = (cp.status == Status.CONVERGED) | (cp.status == Status.OFF_FLANK)
     if clip:
         tips = tip_edges(mesh, prm["n_tip_edge"]) if tips is None else tips
-        Sc, on = _truncated_areas(mesh, cp, prm, tips, R1, R2, n1, e_long, main["a_mm"], main["b_mm"],
-                                  main["S_mm2"], solved)
+        Sc, on = _truncated_areas(
+            mesh, cp, prm, tips, R1, R2, n1, e_long, main["a_mm"], main["b_mm"], main["S_mm2"], solved
+        )
     else:
         Sc, on = np.full(len(cp.phi1), np.nan), solved & mesh.f1.contains(cp.u1, cp.v1) & mesh.f2.contains(cp.u2, cp.v2)
     cf = closed_form_ellipse(mesh, cp.phi1, delta)
     O2 = mesh.gear_pair.O2
-    df = pd.DataFrame({
-        "phi1_mesh_deg": np.degrees(cp.phi1), "phi2_mesh_deg": np.degrees(cp.phi2),
-        "status": status_names(cp.status), "residual": cp.residual, "iterations": cp.iterations,
-        "solved": solved, "on_flank": on,
-        "x_mm": cp.position[:, 0], "y_mm": cp.position[:, 1], "z_mm": cp.position[:, 2],
-        "r1_mm": np.hypot(M1.r[:, 0], M1.r[:, 1]), "r2_mm": np.hypot(M2.r[:, 0] - O2[0], M2.r[:, 1] - O2[1]),
-        "te_arcsec": cp.te / ARCSEC,
-        "theta1_rad": cp.u1, "phig1_rad": cp.v1, "theta2_rad": cp.u2, "phig2_rad": cp.v2,
-        "normal_mismatch": np.linalg.norm(n1 + n2, axis=-1),
-        "k1_pinion_per_mm": k1_pin, "k2_pinion_per_mm": k2_pin, "k1_gear_per_mm": k1_gear, "k2_gear_per_mm": k2_gear,
-        "k_axial_pinion_per_mm": K1[..., 0, 0], "k_profile_pinion_per_mm": K1[..., 1, 1],
-        "k_axial_gear_per_mm": K2[..., 0, 0], "k_profile_gear_per_mm": K2[..., 1, 1],
-        "kappa_long_per_mm": ka, "kappa_short_per_mm": kb,
-        **{k: main[k] for k in ("a_mm", "b_mm", "S_mm2")}, "S_clipped_mm2": Sc, "S_tensor_mm2": S_tensor,
-        "sigma_true_deg": main["sigma_true_deg"], "orientation_deg": orient,
-        **_paper_route(K1, K2, mesh.f1.side == -1),
-        "S_closed_form_mm2": cf["S"], "a_closed_form_mm": cf["a"], "b_closed_form_mm": cf["b"],
-    })
+    df = pd.DataFrame(
+        {
+            "phi1_mesh_deg": np.degrees(cp.phi1),
+            "phi2_mesh_deg": np.degrees(cp.phi2),
+            "status": status_names(cp.status),
+            "residual": cp.residual,
+            "iterations": cp.iterations,
+            "solved": solved,
+            "on_flank": on,
+            "x_mm": cp.position[:, 0],
+            "y_mm": cp.position[:, 1],
+            "z_mm": cp.position[:, 2],
+            "r1_mm": np.hypot(M1.r[:, 0], M1.r[:, 1]),
+            "r2_mm": np.hypot(M2.r[:, 0] - O2[0], M2.r[:, 1] - O2[1]),
+            "te_arcsec": cp.te / ARCSEC,
+            "theta1_rad": cp.u1,
+            "phig1_rad": cp.v1,
+            "theta2_rad": cp.u2,
+            "phig2_rad": cp.v2,
+            "normal_mismatch": np.linalg.norm(n1 + n2, axis=-1),
+            "k1_pinion_per_mm": k1_pin,
+            "k2_pinion_per_mm": k2_pin,
+            "k1_gear_per_mm": k1_gear,
+            "k2_gear_per_mm": k2_gear,
+            "k_axial_pinion_per_mm": K1[..., 0, 0],
+            "k_profile_pinion_per_mm": K1[..., 1, 1],
+            "k_axial_gear_per_mm": K2[..., 0, 0],
+            "k_profile_gear_per_mm": K2[..., 1, 1],
+            "kappa_long_per_mm": ka,
+            "kappa_short_per_mm": kb,
+            **{k: main[k] for k in ("a_mm", "b_mm", "S_mm2")},
+            "S_clipped_mm2": Sc,
+            "S_tensor_mm2": S_tensor,
+            "sigma_true_deg": main["sigma_true_deg"],
+            "orientation_deg": orient,
+            **_paper_route(K1, K2, mesh.f1.side == -1),
+            "S_closed_form_mm2": cf["S"],
+            "a_closed_form_mm": cf["a"],
+            "b_closed_form_mm": cf["b"],
+        }
+    )
     with np.errstate(invalid="ignore", divide="ignore"):
         df["S_rel_diff_closed_form"] = df["S_mm2"] / df["S_closed_form_mm2"] - 1.0
     df.loc[~df["solved"], ["S_mm2", "a_mm", "b_mm"]] = np.nan

@@ -54,12 +54,18 @@ def _pair(example: str, v: dict) -> dict:
     bw = v.get("face_width", v.get("face_width_driven"))
     if bw is None:
         raise ValueError(f"{where}: no face_width (or face_width_driven)")
-    d = {"name": example, "group": example.split("_")[0],
-         "z1": int(_in(f"{where}.z1", v["z1"], 5, 10000)), "z2": int(_in(f"{where}.z2", v["z2"], 5, 10000)),
-         "module": _in(f"{where}.module", v["module"], 0.1, 100), "face_width": _in(f"{where}.face_width", bw, 1, 2000)}
+    d = {
+        "name": example,
+        "group": example.split("_")[0],
+        "z1": int(_in(f"{where}.z1", v["z1"], 5, 10000)),
+        "z2": int(_in(f"{where}.z2", v["z2"], 5, 10000)),
+        "module": _in(f"{where}.module", v["module"], 0.1, 100),
+        "face_width": _in(f"{where}.face_width", bw, 1, 2000),
+    }
     # the cutter must be larger than half the face width plus the blade offsets
-    d["R_T"] = _in(f"{where}.tooth_line_radius", v["tooth_line_radius"], d["face_width"] / 2 + np.pi * d["module"] + 1e-9,
-                   1e6)
+    d["R_T"] = _in(
+        f"{where}.tooth_line_radius", v["tooth_line_radius"], d["face_width"] / 2 + np.pi * d["module"] + 1e-9, 1e6
+    )
     return d
 
 
@@ -87,9 +93,14 @@ def params_from_published(published) -> Design:
     lo, hi = get(_COMMON, "phi1_min", -90, 90), get(_COMMON, "phi1_max", -90, 90)
     if not lo < hi:
         raise ValueError(f"params_004_examples.csv {_COMMON}: phi1_min {lo} must be below phi1_max {hi}")
-    return Design(tuple(designs), get(_COMMON, "elastic_approach", 1e-6, 0.1), (lo, hi),
-                  get(_TOOL, "pressure_angle", 5, 40), get(_TOOL, "addendum_coefficient", 0, 2),
-                  get(_TOOL, "clearance_coefficient", 0, 1))
+    return Design(
+        tuple(designs),
+        get(_COMMON, "elastic_approach", 1e-6, 0.1),
+        (lo, hi),
+        get(_TOOL, "pressure_angle", 5, 40),
+        get(_TOOL, "addendum_coefficient", 0, 2),
+        get(_TOOL, "clearance_coefficient", 0, 1),
+    )
 
 
 def validate(settings: dict, design: Design) -> None:
@@ -102,20 +113,30 @@ def validate(settings: dict, design: Design) -> None:
             raise SettingError(f"catt.{key}.design: got {settings[key]['design']!r}; allowed: one of {names}")
     lo, hi = design.window_deg
     if not settings["near_top_deg"] <= hi - lo:
-        raise SettingError(f"catt.near_top_deg: got {settings['near_top_deg']!r}; allowed: at most the window "
-                           f"width {hi - lo:g} deg")
+        raise SettingError(
+            f"catt.near_top_deg: got {settings['near_top_deg']!r}; allowed: at most the window width {hi - lo:g} deg"
+        )
     if not lo <= settings["near_top_eval_deg"] <= hi:
-        raise SettingError(f"catt.near_top_eval_deg: got {settings['near_top_eval_deg']!r}; allowed: in the window "
-                           f"[{lo:g}, {hi:g}] deg")
+        raise SettingError(
+            f"catt.near_top_eval_deg: got {settings['near_top_eval_deg']!r}; allowed: in the window "
+            f"[{lo:g}, {hi:g}] deg"
+        )
     th = settings["thickness"]
     if any(not 0 <= s < min(th["R_T"]) / 2 for s in th["sections_mm"]):
-        raise SettingError(f"catt.thickness.sections_mm: got {th['sections_mm']!r}; allowed: each in "
-                           f"[0, min(R_T)/2) = [0, {min(th['R_T']) / 2:g}) mm")
+        raise SettingError(
+            f"catt.thickness.sections_mm: got {th['sections_mm']!r}; allowed: each in "
+            f"[0, min(R_T)/2) = [0, {min(th['R_T']) / 2:g}) mm"
+        )
 
 
 def prm(settings: dict, design: Design) -> dict:
     """The settings with the design's common data (delta, window, tool data) beside them: the one
     mapping the computations read."""
-    return {**settings, "delta_mm": design.delta_mm, "window_deg": list(design.window_deg),
-            "pressure_angle_deg": design.pressure_angle_deg, "addendum": design.addendum,
-            "clearance": design.clearance}
+    return {
+        **settings,
+        "delta_mm": design.delta_mm,
+        "window_deg": list(design.window_deg),
+        "pressure_angle_deg": design.pressure_angle_deg,
+        "addendum": design.addendum,
+        "clearance": design.clearance,
+    }

@@ -53,6 +53,7 @@ def exact_contact_region(mesh: Mesh, row: pd.Series, prm: dict, n_dirs: int) -> 
         def ev(u, v):
             Q = surf.evaluate(u, v)
             return SimpleNamespace(r_u=Q.r_u @ R.T, r_v=Q.r_v @ R.T)
+
         return ev
 
     ev1, ev2 = _E(mesh.p1, R1), _E(mesh.p2, R2)
@@ -81,10 +82,14 @@ def exact_contact_region(mesh: Mesh, row: pd.Series, prm: dict, n_dirs: int) -> 
             rho = new
             break
         rho = new
-    area = 0.5 * np.sum(rho ** 2) * (2 * np.pi / n_dirs)
-    cx = np.sum(rho ** 3 * c) * (2 * np.pi / n_dirs) / 3 / area
-    cy = np.sum(rho ** 3 * s) * (2 * np.pi / n_dirs) / 3 / area
-    return {"area_exact_mm2": area, "centroid_long_mm": cx, "centroid_short_mm": cy,
-            "max_radius_mm": float(rho.max()), "min_radius_mm": float(rho.min()), "all_solved": bool(ok.all())}
-
-
+    area = 0.5 * np.sum(rho**2) * (2 * np.pi / n_dirs)
+    cx = np.sum(rho**3 * c) * (2 * np.pi / n_dirs) / 3 / area
+    cy = np.sum(rho**3 * s) * (2 * np.pi / n_dirs) / 3 / area
+    return {
+        "area_exact_mm2": area,
+        "centroid_long_mm": cx,
+        "centroid_short_mm": cy,
+        "max_radius_mm": float(rho.max()),
+        "min_radius_mm": float(rho.min()),
+        "all_solved": bool(ok.all()),
+    }

@@ -79,11 +79,20 @@ def section_shapes(design: dict, prm: dict) -> pd.DataFrame:
             pts, res = f.section_profile(z, radii)
             dev_nom, _ = involute_deviation(pts, r_b=g.r_b)
             dev_fit, rb_fit = involute_deviation(pts)
-            rows.append({"design": design["name"], "side": side, "flank": "convex" if side == 1 else "concave",
-                         "section_mm": z, "outside_face_width": z > 0.5 * g.face_width,
-                         "max_solve_residual": float(np.max(res.residual)),
-                         "dev_nominal_involute_mm": dev_nom, "dev_best_fit_involute_mm": dev_fit,
-                         "best_fit_r_b_mm": rb_fit, "nominal_r_b_mm": g.r_b})
+            rows.append(
+                {
+                    "design": design["name"],
+                    "side": side,
+                    "flank": "convex" if side == 1 else "concave",
+                    "section_mm": z,
+                    "outside_face_width": z > 0.5 * g.face_width,
+                    "max_solve_residual": float(np.max(res.residual)),
+                    "dev_nominal_involute_mm": dev_nom,
+                    "dev_best_fit_involute_mm": dev_fit,
+                    "best_fit_r_b_mm": rb_fit,
+                    "nominal_r_b_mm": g.r_b,
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -107,8 +116,13 @@ def equation_checks(design: dict, prm: dict) -> pd.DataFrame:
     for upper, side in ((True, -1), (False, 1)):
         x, y = eq29_profile(g, upper, phs)
         p = CATTFlank(g, side).position(0 * phs, phs)
-        rows.append({"check": "eq29_vs_eq6_turned_over", "flank": "upper" if upper else "lower",
-                     "max_abs_mm": float(np.max(np.hypot(x - p[:, 0], y + p[:, 1])))})
+        rows.append(
+            {
+                "check": "eq29_vs_eq6_turned_over",
+                "flank": "upper" if upper else "lower",
+                "max_abs_mm": float(np.max(np.hypot(x - p[:, 0], y + p[:, 1]))),
+            }
+        )
         # eq (29) is an involute of base radius R cos(alpha)
         dev, _ = involute_deviation(np.column_stack([x, y]), r_b=g.r_b)
         rows.append({"check": "eq29_involute_deviation", "flank": "upper" if upper else "lower", "max_abs_mm": dev})
@@ -122,12 +136,19 @@ def equation_checks(design: dict, prm: dict) -> pd.DataFrame:
             p = f.position(ths, phi1)  # theta > 0 gives z = +b in eq (6) with b -> ... checked below
             zdev = float(np.max(np.abs(p[:, 2] + b)))
             pm = f.position(-ths, phi1)
-            dev = min(float(np.max(np.hypot(x - p[:, 0], y + p[:, 1]))),
-                      float(np.max(np.hypot(x - pm[:, 0], y + pm[:, 1]))))
-            rows.append({"check": f"eq28_vs_eq6_turned_over_b{b:g}", "flank": "upper" if upper else "lower",
-                         "max_abs_mm": dev})
-            rows.append({"check": f"eq28_section_z_plus_b_b{b:g}", "flank": "upper" if upper else "lower",
-                         "max_abs_mm": min(zdev, float(np.max(np.abs(p[:, 2] - b))))})
+            dev = min(
+                float(np.max(np.hypot(x - p[:, 0], y + p[:, 1]))), float(np.max(np.hypot(x - pm[:, 0], y + pm[:, 1])))
+            )
+            rows.append(
+                {"check": f"eq28_vs_eq6_turned_over_b{b:g}", "flank": "upper" if upper else "lower", "max_abs_mm": dev}
+            )
+            rows.append(
+                {
+                    "check": f"eq28_section_z_plus_b_b{b:g}",
+                    "flank": "upper" if upper else "lower",
+                    "max_abs_mm": min(zdev, float(np.max(np.abs(p[:, 2] - b)))),
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -138,15 +159,24 @@ def thickness_table(prm: dict) -> pd.DataFrame:
     rows = []
     al = np.deg2rad(prm["pressure_angle_deg"])
     for RT in th["R_T"]:
-        g = CATTGearData(int(th["z"]), float(th["module"]), float(RT), float(th["face_width"]), al,
-                         prm["addendum"], prm["clearance"])
+        g = CATTGearData(
+            int(th["z"]), float(th["module"]), float(RT), float(th["face_width"]), al, prm["addendum"], prm["clearance"]
+        )
         zs = np.asarray(th["sections_mm"], float)
         t, res = tooth_thickness(g, zs)
         tc = pitch_thickness_closed_form(g, zs)
         for z, ti, tci in zip(zs, t, tc):
-            rows.append({"R_T_mm": float(RT), "section_mm": float(z), "section": f"B{z:g}",
-                         "thickness_mm": ti, "thickness_closed_form_mm": tci, "abs_diff_mm": ti - tci,
-                         "outside_face_width": z > 0.5 * g.face_width, "z": g.n_teeth, "module_mm": g.module})
+            rows.append(
+                {
+                    "R_T_mm": float(RT),
+                    "section_mm": float(z),
+                    "section": f"B{z:g}",
+                    "thickness_mm": ti,
+                    "thickness_closed_form_mm": tci,
+                    "abs_diff_mm": ti - tci,
+                    "outside_face_width": z > 0.5 * g.face_width,
+                    "z": g.n_teeth,
+                    "module_mm": g.module,
+                }
+            )
     return pd.DataFrame(rows)
-
-

@@ -31,8 +31,19 @@ from .design import prm as _prm
 from .gap import exact_contact_region
 from .profiles import equation_checks, section_shapes, thickness_table
 
-__all__ = ["designs", "cycle", "pitch_point", "precision", "thickness", "sections", "equations", "gap_check",
-           "settings_table", "reading_grid", "curve"]
+__all__ = [
+    "designs",
+    "cycle",
+    "pitch_point",
+    "precision",
+    "thickness",
+    "sections",
+    "equations",
+    "gap_check",
+    "settings_table",
+    "reading_grid",
+    "curve",
+]
 
 
 def _key(d: dict):
@@ -71,8 +82,16 @@ def curve(mesh, reading: str, prm: dict, tips=None, clip: bool = True, near_deg=
 
 
 def _design_columns(d: dict, pid: str, rd: str) -> dict:
-    return {"design": d["name"], "group": d["group"], "pair": pid, "reading": rd, "z1": d["z1"], "z2": d["z2"],
-            "module_mm": d["module"], "R_T_mm": d["R_T"]}
+    return {
+        "design": d["name"],
+        "group": d["group"],
+        "pair": pid,
+        "reading": rd,
+        "z1": d["z1"],
+        "z2": d["z2"],
+        "module_mm": d["module"],
+        "R_T_mm": d["R_T"],
+    }
 
 
 def designs(settings: dict, design: Design) -> dict:
@@ -87,11 +106,19 @@ def designs(settings: dict, design: Design) -> dict:
             lim = path_limits(mesh)
             for rd in READINGS:
                 _, ends = reading_grid(mesh, lim, rd, prm)
-                rows.append({**_design_columns(d, pid, rd), "B_mm": d["face_width"],
-                             "pressure_angle_deg": prm["pressure_angle_deg"], "path_start_deg": ends[0],
-                             "path_end_deg": ends[1], "window_lo_deg": wlo, "window_hi_deg": whi,
-                             "contact_ratio": lim["contact_ratio"],
-                             "window_inside_path": bool(ends[0] <= wlo and whi <= ends[1])})
+                rows.append(
+                    {
+                        **_design_columns(d, pid, rd),
+                        "B_mm": d["face_width"],
+                        "pressure_angle_deg": prm["pressure_angle_deg"],
+                        "path_start_deg": ends[0],
+                        "path_end_deg": ends[1],
+                        "window_lo_deg": wlo,
+                        "window_hi_deg": whi,
+                        "contact_ratio": lim["contact_ratio"],
+                        "window_inside_path": bool(ends[0] <= wlo and whi <= ends[1]),
+                    }
+                )
     return {"designs": pd.DataFrame(rows)}
 
 
@@ -131,18 +158,30 @@ def pitch_point(settings: dict, design: Design) -> dict:
     """``pitch_point``: the TCA pipeline at the pitch point against the closed form."""
     rows = []
     for d, mesh, r0, cf in _pitch_points(_prm(settings, design), design):
-        rows.append({
-            "design": d["name"], "pair": mesh.pair_id, "status": r0["status"], "z_mm": r0["z_mm"],
-            "te_arcsec": r0["te_arcsec"], "iterations": r0["iterations"],
-            "dist_to_pitch_point_mm": float(np.hypot(r0["x_mm"] - mesh.g1.r_p, r0["y_mm"])),
-            "kappa_axial_pipeline_per_mm": r0["kappa_long_per_mm"], "kappa_axial_closed_per_mm": cf["kappa_axial"],
-            "kappa_profile_pipeline_per_mm": r0["kappa_short_per_mm"],
-            "kappa_profile_closed_per_mm": cf["kappa_profile"],
-            "a_pipeline_mm": r0["a_mm"], "a_closed_mm": cf["a"], "b_pipeline_mm": r0["b_mm"], "b_closed_mm": cf["b"],
-            "S_pipeline_mm2": r0["S_mm2"], "S_closed_mm2": cf["S"],
-            "S_rel_err": r0["S_mm2"] / cf["S"] - 1.0,
-            "a_rel_err": r0["a_mm"] / cf["a"] - 1.0, "b_rel_err": r0["b_mm"] / cf["b"] - 1.0,
-        })
+        rows.append(
+            {
+                "design": d["name"],
+                "pair": mesh.pair_id,
+                "status": r0["status"],
+                "z_mm": r0["z_mm"],
+                "te_arcsec": r0["te_arcsec"],
+                "iterations": r0["iterations"],
+                "dist_to_pitch_point_mm": float(np.hypot(r0["x_mm"] - mesh.g1.r_p, r0["y_mm"])),
+                "kappa_axial_pipeline_per_mm": r0["kappa_long_per_mm"],
+                "kappa_axial_closed_per_mm": cf["kappa_axial"],
+                "kappa_profile_pipeline_per_mm": r0["kappa_short_per_mm"],
+                "kappa_profile_closed_per_mm": cf["kappa_profile"],
+                "a_pipeline_mm": r0["a_mm"],
+                "a_closed_mm": cf["a"],
+                "b_pipeline_mm": r0["b_mm"],
+                "b_closed_mm": cf["b"],
+                "S_pipeline_mm2": r0["S_mm2"],
+                "S_closed_mm2": cf["S"],
+                "S_rel_err": r0["S_mm2"] / cf["S"] - 1.0,
+                "a_rel_err": r0["a_mm"] / cf["a"] - 1.0,
+                "b_rel_err": r0["b_mm"] / cf["b"] - 1.0,
+            }
+        )
     return {"pitch_point": pd.DataFrame(rows)}
 
 
@@ -156,18 +195,26 @@ def _precision_row(mesh, r0: pd.Series, cf: dict) -> dict:
     n = Pa.normal
     kk = [(P.r_uu @ n) / (P.r_u @ P.r_u) for P in (Pa, Pf)]
     _, ka1, _, _ = middle_section_curvatures(mesh.g1, mesh.f1.side, np.hypot(*Pa.r[:2]))
-    return {"design": mesh.design["name"], "pair": mesh.pair_id,
-            "k_axial_pinion_per_mm": r0["k_axial_pinion_per_mm"], "k_axial_gear_per_mm": r0["k_axial_gear_per_mm"],
-            "kappa_axial_per_mm": cf["kappa_axial"], "cancellation_factor": cancel,
-            "curvature_rel_accuracy_needed_for_S_1e-6": 1e-6 * np.sqrt(2.0) / cancel,
-            "k_axial_analytic_vs_closed_rel": abs(kk[0] / ka1 - 1.0),
-            "k_axial_fd_vs_analytic_rel": abs(kk[1] / kk[0] - 1.0)}
+    return {
+        "design": mesh.design["name"],
+        "pair": mesh.pair_id,
+        "k_axial_pinion_per_mm": r0["k_axial_pinion_per_mm"],
+        "k_axial_gear_per_mm": r0["k_axial_gear_per_mm"],
+        "kappa_axial_per_mm": cf["kappa_axial"],
+        "cancellation_factor": cancel,
+        "curvature_rel_accuracy_needed_for_S_1e-6": 1e-6 * np.sqrt(2.0) / cancel,
+        "k_axial_analytic_vs_closed_rel": abs(kk[0] / ka1 - 1.0),
+        "k_axial_fd_vs_analytic_rel": abs(kk[1] / kk[0] - 1.0),
+    }
 
 
 def precision(settings: dict, design: Design) -> dict:
     """``precision``: how much the long axis loses to cancellation at the pitch point, per pair."""
-    return {"precision": pd.DataFrame([_precision_row(mesh, r0, cf)
-                                       for _, mesh, r0, cf in _pitch_points(_prm(settings, design), design)])}
+    return {
+        "precision": pd.DataFrame(
+            [_precision_row(mesh, r0, cf) for _, mesh, r0, cf in _pitch_points(_prm(settings, design), design)]
+        )
+    }
 
 
 def thickness(settings: dict, design: Design) -> dict:
@@ -201,11 +248,18 @@ def gap_check(settings: dict, design: Design) -> dict:
             if not r["solved"]:
                 continue
             ex = exact_contact_region(mesh, r, prm, settings["gap_check"]["n_dirs"])
-            rows.append({"design": d["name"], "pair": pid, "phi_paper_deg": r["phi_paper_deg"],
-                         "S_ellipse_mm2": r["S_mm2"], **ex,
-                         "area_rel_diff": ex["area_exact_mm2"] / r["S_mm2"] - 1.0,
-                         "centroid_offset_over_2b": np.hypot(ex["centroid_long_mm"], ex["centroid_short_mm"])
-                         / (2 * r["b_mm"])})
+            rows.append(
+                {
+                    "design": d["name"],
+                    "pair": pid,
+                    "phi_paper_deg": r["phi_paper_deg"],
+                    "S_ellipse_mm2": r["S_mm2"],
+                    **ex,
+                    "area_rel_diff": ex["area_exact_mm2"] / r["S_mm2"] - 1.0,
+                    "centroid_offset_over_2b": np.hypot(ex["centroid_long_mm"], ex["centroid_short_mm"])
+                    / (2 * r["b_mm"]),
+                }
+            )
     return {"gap_check": pd.DataFrame(rows)}
 
 
@@ -214,9 +268,25 @@ def settings_table(settings: dict, design: Design) -> dict:
     delta, grid, tool data, tolerance) and the primary flank pair and reading."""
     prm = _prm(settings, design)
     wlo, whi = prm["window_deg"]
-    return {"settings": pd.DataFrame([{
-        "window_lo_deg": wlo, "window_hi_deg": whi, "near_top_deg": prm["near_top_deg"],
-        "near_top_eval_deg": prm["near_top_eval_deg"], "delta_mm": prm["delta_mm"], "step_deg": prm["step_deg"],
-        "off_path_margin_deg": prm["off_path_margin_deg"], "pressure_angle_deg": prm["pressure_angle_deg"],
-        "addendum": prm["addendum"], "clearance": prm["clearance"], "tol": prm["tol"],
-        "n_designs": len(design.designs), "primary_pair": PRIMARY[0], "primary_reading": PRIMARY[1]}])}
+    return {
+        "settings": pd.DataFrame(
+            [
+                {
+                    "window_lo_deg": wlo,
+                    "window_hi_deg": whi,
+                    "near_top_deg": prm["near_top_deg"],
+                    "near_top_eval_deg": prm["near_top_eval_deg"],
+                    "delta_mm": prm["delta_mm"],
+                    "step_deg": prm["step_deg"],
+                    "off_path_margin_deg": prm["off_path_margin_deg"],
+                    "pressure_angle_deg": prm["pressure_angle_deg"],
+                    "addendum": prm["addendum"],
+                    "clearance": prm["clearance"],
+                    "tol": prm["tol"],
+                    "n_designs": len(design.designs),
+                    "primary_pair": PRIMARY[0],
+                    "primary_reading": PRIMARY[1],
+                }
+            ]
+        )
+    }

@@ -71,8 +71,13 @@ def _rise(c, near_top_lo, concave=False):
     Sm = S[ph <= end + 1e-9]
     draw = float(np.max((np.maximum.accumulate(Sm) - Sm) / np.maximum.accumulate(Sm)))
     nondec = bool(np.all(np.diff(Sm) >= -1e-12 * Sm[:-1]))
-    info = {"phi_max_S_deg": t_drop, "drop_in_near_top_zone": in_zone, "max_drawdown_pre_drop": draw,
-            "S_start_mm2": float(Sm[0]), "S_pre_drop_end_mm2": float(Sm[-1])}
+    info = {
+        "phi_max_S_deg": t_drop,
+        "drop_in_near_top_zone": in_zone,
+        "max_drawdown_pre_drop": draw,
+        "S_start_mm2": float(Sm[0]),
+        "S_pre_drop_end_mm2": float(Sm[-1]),
+    }
     ok = nondec and bool(Sm[-1] > Sm[0]) and in_zone
     if concave:
         d2 = np.diff(Sm, 2)
@@ -119,6 +124,7 @@ def _v_rise(concave):
             oks.append(ok)
             infos.append(f"[{tag}{' ' if tag else ''}{v:g}: {'ok' if ok else 'FAIL'} {_fmt(inf)}]")
         return oks, infos
+
     return verdict
 
 
@@ -132,7 +138,9 @@ def _v_grows_near_top(fig, curves, tag, prm):
     _, top, no_top = _root_top_angles(curves, prm)
     St = [_at(c, top) for c in curves.values()]
     note = "; a curve falls from the root on, no near-top angle before its drop" if no_top else ""
-    return [_order(St, increasing=True) and not no_top], [f"[{tag} phi_top={top:.3g} deg: S={np.round(St, 3).tolist()} mm2{note}]"]
+    return [_order(St, increasing=True) and not no_top], [
+        f"[{tag} phi_top={top:.3g} deg: S={np.round(St, 3).tolist()} mm2{note}]"
+    ]
 
 
 def _v_top_more_sensitive(fig, curves, tag, prm):
@@ -146,8 +154,10 @@ def _v_top_more_sensitive(fig, curves, tag, prm):
     sc = np.nonzero(np.sign(dd[1:]) != np.sign(dd[:-1]))[0]
     cross = [float(ph[i] - dd[i] * (ph[i + 1] - ph[i]) / (dd[i + 1] - dd[i])) for i in sc]
     ok = bool(spread_t > spread_r and len(cross) > 0 and all(x < 0 for x in cross)) and not no_top
-    return [ok], [f"[{tag} spread root ({root:.3g} deg)={spread_r:.4g}, top ({top:.3g} deg)={spread_t:.4g} mm2; "
-                  f"crossings of {vals[0]:g} and {vals[-1]:g} at {np.round(cross, 2).tolist()} deg]"]
+    return [ok], [
+        f"[{tag} spread root ({root:.3g} deg)={spread_r:.4g}, top ({top:.3g} deg)={spread_t:.4g} mm2; "
+        f"crossings of {vals[0]:g} and {vals[-1]:g} at {np.round(cross, 2).tolist()} deg]"
+    ]
 
 
 def _v_grows_with_RT(fig, curves, tag, prm):
@@ -158,17 +168,21 @@ def _v_grows_with_RT(fig, curves, tag, prm):
     common = [x for x in common if x < drops - 1e-9] or common[:1]
     bad = [x for x in common if not _order([_at(curves[v], x) for v in vals], increasing=True)]
     s0 = [_at(curves[v], 0.0) for v in vals]
-    return [not bad], [f"[{tag}: ordered at {len(common) - len(bad)}/{len(common)} angles below {drops:.3g} deg; "
-                       f"S(phi=0)={np.round(s0, 3).tolist()} mm2]"]
+    return [not bad], [
+        f"[{tag}: ordered at {len(common) - len(bad)}/{len(common)} angles below {drops:.3g} deg; "
+        f"S(phi=0)={np.round(s0, 3).tolist()} mm2]"
+    ]
 
 
 def _v_gain_diminishing(fig, curves, tag, prm):
     vals = list(curves)
     S0 = np.array([_at(curves[v], 0.0) for v in vals])
     g = np.diff(S0) / np.diff(np.asarray(vals, float))
-    return [bool(np.all(np.diff(g) < 0))], [f"[{tag}: gain per mm at phi=0: {np.array2string(g, precision=7)} mm2/mm; "
-                                            f"relative fall of the gain from the first to the last step "
-                                            f"{1 - g[-1] / g[0]:.2e}]"]
+    return [bool(np.all(np.diff(g) < 0))], [
+        f"[{tag}: gain per mm at phi=0: {np.array2string(g, precision=7)} mm2/mm; "
+        f"relative fall of the gain from the first to the last step "
+        f"{1 - g[-1] / g[0]:.2e}]"
+    ]
 
 
 #: kind of sweep claim -> verdict(fig, curves of one family, family tag, prm) -> (oks, infos)
@@ -210,12 +224,19 @@ def _cliff_of(c, prm):
     phi_drop = float(ph[i + below[0]]) if len(below) else (float(ph[-1]) if ph[-1] < whi - 1e-9 else np.nan)
     iu = int(np.nanargmax(Su))
     drop_u = 1.0 - float(np.nanmin(Su[iu:])) / Su[iu]
-    ok = (not reaches_edge) or (drop_c >= 0.3 and np.isfinite(phi_drop)
-                                and phi_drop >= whi - prm["near_top_deg"] - 1e-9)
+    ok = (not reaches_edge) or (
+        drop_c >= 0.3 and np.isfinite(phi_drop) and phi_drop >= whi - prm["near_top_deg"] - 1e-9
+    )
     onp = c["on_path"].astype(bool).to_numpy()
     root_ratio = float(Sc[onp][0] / Su[onp][0]) if onp.any() else np.nan
-    return reaches_edge, ok, (f"clipped drop {100 * drop_c:.0f}% at {phi_drop:.3g} deg, pi*a*b drop "
-                              f"{100 * drop_u:.1f}%, clipped/unclipped at the path start {root_ratio:.2f}]")
+    return (
+        reaches_edge,
+        ok,
+        (
+            f"clipped drop {100 * drop_c:.0f}% at {phi_drop:.3g} deg, pi*a*b drop "
+            f"{100 * drop_u:.1f}%, clipped/unclipped at the path start {root_ratio:.2f}]"
+        ),
+    )
 
 
 def verdict_cliff(fig, cycle: CycleIndex, pair, reading, prm):

@@ -25,32 +25,76 @@ from .design import design_beta, params_from_published
 from .records import check_records
 from .values import VALUES
 
-__all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "design_beta", "JOBS", "run",
-           "checks", "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate"]
+__all__ = [
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "design_beta",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
+]
 
 SEED = "002"
 
 SETTINGS = _s.declare(
-    tol=_s.number(1.0e-12, "in", "Newton residual of the TCA and envelope solves (in / unit normal); bench: 1e-8 "
-                  "already gives TE_max to 6e-8 arcsec (target 5e-4), 1e-10 to 7e-11; 1e-12 costs the same within "
-                  "timing noise", ge=1.0e-15, le=1.0e-8),
+    tol=_s.number(
+        1.0e-12,
+        "in",
+        "Newton residual of the TCA and envelope solves (in / unit normal); bench: 1e-8 "
+        "already gives TE_max to 6e-8 arcsec (target 5e-4), 1e-10 to 7e-11; 1e-12 costs the same within "
+        "timing noise",
+        ge=1.0e-15,
+        le=1.0e-8,
+    ),
     maxiter=_s.integer(50, "1", "Newton iterations per TCA solve (converged solves take far fewer)", ge=1, le=1000),
-    te_points_per_cycle=_s.integer(40, "1", "phi1 points per meshing cycle 2 pi / N1 (bench: 8 already gives TE_max "
-                                   "to 7e-11 arcsec; 40 for the TE curves of the figures)", ge=8, le=2000),
-    face_width_over_axial_pitch=_s.number(1.25, "1", "face width (not printed) / axial pitch; TE_max is independent "
-                                          "of it if >= 1 (contact ratio >= 1)", ge=1.0, le=5.0),
+    te_points_per_cycle=_s.integer(
+        40,
+        "1",
+        "phi1 points per meshing cycle 2 pi / N1 (bench: 8 already gives TE_max "
+        "to 7e-11 arcsec; 40 for the TE curves of the figures)",
+        ge=8,
+        le=2000,
+    ),
+    face_width_over_axial_pitch=_s.number(
+        1.25,
+        "1",
+        "face width (not printed) / axial pitch; TE_max is independent of it if >= 1 (contact ratio >= 1)",
+        ge=1.0,
+        le=5.0,
+    ),
     misalignment_arcmin=_s.number(3.0, "arcmin", "dgamma, dlambda of sec. 2.8 / 5.5 (params_002_S5.5)", gt=0, le=60),
-    delta_E_table623_in=_s.number(0.001, "in", "Table 6.2.3 step used for the checks (printed 0.0001 mm; see "
-                                  "data/errata.csv)", gt=0, le=0.1),
+    delta_E_table623_in=_s.number(
+        0.001, "in", "Table 6.2.3 step used for the checks (printed 0.0001 mm; see data/errata.csv)", gt=0, le=0.1
+    ),
     delta_E_fig110_mm=_s.number(0.1, "mm", "fig. 1.10 centre-distance change (params_002_S1)", gt=0, le=2),
-    rho_t_sweep_times_Pn=_s.array([6.0, 6.35, 7.0, 8.0], "1", "gear rack radius times P_n swept for the claim 'larger "
-                                  "rho_t - rho_c, less shift' (each above rho_c P_n = 5.88: validate)",
-                                  _s.number(None, "1", "", gt=5), min_items=2),
+    rho_t_sweep_times_Pn=_s.array(
+        [6.0, 6.35, 7.0, 8.0],
+        "1",
+        "gear rack radius times P_n swept for the claim 'larger "
+        "rho_t - rho_c, less shift' (each above rho_c P_n = 5.88: validate)",
+        _s.number(None, "1", "", gt=5),
+        min_items=2,
+    ),
     n_path_points=_s.integer(5, "1", "points on the helix through Q (constant-curvature claim)", ge=2, le=1000),
-    pinion_hand=_s.choice("left", ("left", "right"), "as in the report (sec. 2.1); TCA results of the other hand are "
-                          "the mirror image"),
-    worm_points_per_cycle=_s.integer(8, "1", "phi1 points per cycle of the worm-ground pinion's TCA (spline-"
-                                     "interpolated envelope; bench: 8 meets the target)", ge=6, le=200),
+    pinion_hand=_s.choice(
+        "left", ("left", "right"), "as in the report (sec. 2.1); TCA results of the other hand are the mirror image"
+    ),
+    worm_points_per_cycle=_s.integer(
+        8,
+        "1",
+        "phi1 points per cycle of the worm-ground pinion's TCA (spline-"
+        "interpolated envelope; bench: 8 meets the target)",
+        ge=6,
+        le=200,
+    ),
 )
 
 #: data/published files read by params_from_published (inputs of every job)
@@ -65,8 +109,10 @@ def validate(settings: dict, design: dict) -> None:
     rc = design["rho_c_times_Pn"]
     bad = [x for x in settings["rho_t_sweep_times_Pn"] if not x > rc]
     if bad:
-        raise _s.SettingError(f"nasa.rho_t_sweep_times_Pn: got {bad!r}; allowed: values above the pinion rack radius "
-                              f"rho_c P_n = {rc:g} of the design")
+        raise _s.SettingError(
+            f"nasa.rho_t_sweep_times_Pn: got {bad!r}; allowed: values above the pinion rack radius "
+            f"rho_c P_n = {rc:g} of the design"
+        )
 
 
 def _job(fn, *names) -> Job:

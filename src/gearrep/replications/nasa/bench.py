@@ -28,8 +28,17 @@ def bench_cases(settings: dict, design: dict) -> dict:
 
     def run_te(setting):
         q = {**s, **setting}
-        pair = make_pair(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, tol=q["tol"],
-                         hand=q["pinion_hand"], misalignment=Misalignment(d_gamma_out=q["misalignment_arcmin"] * ARCMIN))
+        pair = make_pair(
+            d,
+            d["rho_c_times_Pn"] / Pn,
+            d["rho_t_times_Pn"] / Pn,
+            an,
+            l,
+            beta,
+            tol=q["tol"],
+            hand=q["pinion_hand"],
+            misalignment=Misalignment(d_gamma_out=q["misalignment_arcmin"] * ARCMIN),
+        )
         return te_cycle(pair, q, B)[2]["te_max_arcsec"]
 
     def run_worm(setting):
@@ -41,7 +50,8 @@ def bench_cases(settings: dict, design: dict) -> dict:
             "settings": [{"worm_points_per_cycle": n} for n in (6, 8, 12)],
             "reference": {"worm_points_per_cycle": 24},
             "error": lambda res, ref: float(max(abs(res[k] - ref[k]) for k in ref)),
-            "error_unit": "arcsec", "error_target": 0.1 * BENCH_TE_TOL_ARCSEC,
+            "error_unit": "arcsec",
+            "error_target": 0.1 * BENCH_TE_TOL_ARCSEC,
             "current": {"worm_points_per_cycle": s["worm_points_per_cycle"]},
         },
         "te_max": {
@@ -49,7 +59,8 @@ def bench_cases(settings: dict, design: dict) -> dict:
             "settings": [{"te_points_per_cycle": n, "tol": t} for n in (8, 16, 40, 100) for t in (1e-8, 1e-10, 1e-12)],
             "reference": {"te_points_per_cycle": 400, "tol": 1e-13},
             "error": lambda res, ref: float(abs(res - ref)) if np.isfinite(res) else float("nan"),
-            "error_unit": "arcsec", "error_target": 0.1 * BENCH_TE_TOL_ARCSEC,
+            "error_unit": "arcsec",
+            "error_target": 0.1 * BENCH_TE_TOL_ARCSEC,
             "current": {"te_points_per_cycle": s["te_points_per_cycle"], "tol": s["tol"]},
         },
     }

@@ -32,7 +32,8 @@ def params_from_published(published) -> dict:
     P, V = published.params, published.values
     f5, f6, f54 = "params_002_S2.5.csv", "params_002_T6.2.csv", "params_002_S5.4.csv"
     d = {
-        "N1": _param(P, f5, "S2.5_example", "N1"), "N2": _param(P, f5, "S2.5_example", "N2"),
+        "N1": _param(P, f5, "S2.5_example", "N1"),
+        "N2": _param(P, f5, "S2.5_example", "N2"),
         "P_n_per_in": _param(P, f5, "S2.5_example", "normal_diametral_pitch"),
         "alpha_n_deg": _param(P, f5, "S2.5_example", "normal_pressure_angle"),
         "a_c_printed_per_in": _param(P, f5, "S2.5_example", "a_c"),
@@ -53,10 +54,14 @@ def params_from_published(published) -> dict:
         "s3_a_t_over_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "a_t_over_Pn"),
         "s3_l_c_times_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "l_c_times_Pn"),
         "rho_v1": (_value(V, "002-T6.2.1-version=1-rho_pinion"), _value(V, "002-T6.2.1-version=1-rho_gear")),
-        "rho_v2_add": (_value(V, "002-T6.2.1-version=2;zone=pinion_addendum-rho_pinion"),
-                       _value(V, "002-T6.2.1-version=2;zone=pinion_addendum-rho_gear")),
-        "rho_v2_ded": (_value(V, "002-T6.2.1-version=2;zone=pinion_dedendum-rho_pinion"),
-                       _value(V, "002-T6.2.1-version=2;zone=pinion_dedendum-rho_gear")),
+        "rho_v2_add": (
+            _value(V, "002-T6.2.1-version=2;zone=pinion_addendum-rho_pinion"),
+            _value(V, "002-T6.2.1-version=2;zone=pinion_addendum-rho_gear"),
+        ),
+        "rho_v2_ded": (
+            _value(V, "002-T6.2.1-version=2;zone=pinion_dedendum-rho_pinion"),
+            _value(V, "002-T6.2.1-version=2;zone=pinion_dedendum-rho_gear"),
+        ),
         # active heights (Table 6.2.2) for delta_1 = shift / height (eq 2.8.6, Table 6.2.3)
         "h_Pn": {v: _value(V, f"002-T6.2.2-version={v}-h_Pn") for v in (1, 2, 3)},
         "ha_Pn_v2": _value(V, "002-T6.2.2-version=2-ha_Pn"),

@@ -22,8 +22,20 @@ from ...tca import GearPair, solve_contact
 from ...units import DEG
 from .design import design_beta
 
-__all__ = ["basics", "make_flank", "point_curvatures", "report_principal", "line_angle", "pair_at_Q", "make_pair",
-           "aligned_start", "contact", "make_worm_pair", "solve_with_retries", "worm_start"]
+__all__ = [
+    "basics",
+    "make_flank",
+    "point_curvatures",
+    "report_principal",
+    "line_angle",
+    "pair_at_Q",
+    "make_pair",
+    "aligned_start",
+    "contact",
+    "make_worm_pair",
+    "solve_with_retries",
+    "worm_start",
+]
 
 
 def basics(d: dict):
@@ -72,11 +84,23 @@ def point_curvatures(flank: RackGeneratedFlank, u=0.0, theta=0.0) -> dict:
     dk2 = np.where(flip, -pc.k1, pc.k2)
     gen = frames.transform_vectors(flank.envelope.local(rec.params).M, flank.rack.t)  # rack generatrix
     kI, kII, eI, eII = _report_curvatures(gc.k1, gc.k2, gc.e1, gc.e2, gen)
-    dI, dII, _, _ = _report_curvatures(dk1, dk2, np.where(flip[:, None], pc.e2, pc.e1),
-                                       np.where(flip[:, None], pc.e1, pc.e2), gen)
+    dI, dII, _, _ = _report_curvatures(
+        dk1, dk2, np.where(flip[:, None], pc.e2, pc.e1), np.where(flip[:, None], pc.e1, pc.e2), gen
+    )
     sig = np.degrees(np.arccos(np.clip(np.abs(np.sum(eI * gen, -1)), 0, 1)))
-    return dict(rec=rec, gc=gc, kI=kI, kII=kII, eI=eI, eII=eII, kI_dg=dI, kII_dg=dII, normal=-gc.normal,
-                sigma_rack_deg=sig, path_tangent=rec.tangents[:, 1])
+    return dict(
+        rec=rec,
+        gc=gc,
+        kI=kI,
+        kII=kII,
+        eI=eI,
+        eII=eII,
+        kI_dg=dI,
+        kII_dg=dII,
+        normal=-gc.normal,
+        sigma_rack_deg=sig,
+        path_tangent=rec.tangents[:, 1],
+    )
 
 
 def report_principal(cv, i=0) -> PrincipalCurvatures:
@@ -111,15 +135,24 @@ def pair_at_Q(d, rho_c, rho_t, alpha_n, l, beta, delta, tol=1e-13) -> dict:
     t1 = c1["path_tangent"][0]
     t2 = c2["path_tangent"][0]
     return dict(
-        kappa_I_1_per_in=c1["kI"][0], kappa_II_1_per_in=c1["kII"][0],
-        kappa_I_2_per_in=c2["kI"][0], kappa_II_2_per_in=c2["kII"][0],
-        kappa_I_1_dg_per_in=c1["kI_dg"][0], kappa_II_1_dg_per_in=c1["kII_dg"][0],
-        kappa_I_2_dg_per_in=c2["kI_dg"][0], kappa_II_2_dg_per_in=c2["kII_dg"][0],
+        kappa_I_1_per_in=c1["kI"][0],
+        kappa_II_1_per_in=c1["kII"][0],
+        kappa_I_2_per_in=c2["kI"][0],
+        kappa_II_2_per_in=c2["kII"][0],
+        kappa_I_1_dg_per_in=c1["kI_dg"][0],
+        kappa_II_1_dg_per_in=c1["kII_dg"][0],
+        kappa_I_2_dg_per_in=c2["kI_dg"][0],
+        kappa_II_2_dg_per_in=c2["kII_dg"][0],
         sigma_deg=line_angle(c1["eI"][0], c2["eI"][0], n),
-        sigma_1c_deg=c1["sigma_rack_deg"][0], sigma_2t_deg=c2["sigma_rack_deg"][0],
-        major_2a_in=2 * float(el.a), minor_2b_in=2 * float(el.b), area_in2=float(el.area),
-        alpha1_deg=float(np.degrees(el.alpha)), elliptic=bool(el.elliptic),
-        mu1_deg=line_angle(t1, major, n), mu2_deg=line_angle(t2, major, n),
+        sigma_1c_deg=c1["sigma_rack_deg"][0],
+        sigma_2t_deg=c2["sigma_rack_deg"][0],
+        major_2a_in=2 * float(el.a),
+        minor_2b_in=2 * float(el.b),
+        area_in2=float(el.area),
+        alpha1_deg=float(np.degrees(el.alpha)),
+        elliptic=bool(el.elliptic),
+        mu1_deg=line_angle(t1, major, n),
+        mu2_deg=line_angle(t2, major, n),
         path_tangent_angle_deg=abs(line_angle(t1, t2, n)),
     )
 
@@ -167,8 +200,18 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
     Pn, an, beta, l = basics(d)
     h = -1.0 if s["pinion_hand"] == "left" else 1.0
     r_p1 = pitch_radius(d["N1"], Pn, beta)
-    worm = WormGeneratedPinion(Pn / (2 * d["rho_c_times_Pn"]), an, l, h * (beta - d_lambda), r_p1, Pn, d["r_pw_in"],
-                               d["a_pl_per_in"] if a_pl is None else a_pl, N_w=int(d["N_w"]), tol=s["tol"])
+    worm = WormGeneratedPinion(
+        Pn / (2 * d["rho_c_times_Pn"]),
+        an,
+        l,
+        h * (beta - d_lambda),
+        r_p1,
+        Pn,
+        d["r_pw_in"],
+        d["a_pl_per_in"] if a_pl is None else a_pl,
+        N_w=int(d["N_w"]),
+        tol=s["tol"],
+    )
     rec = worm.solve(np.array([0.0]), np.array([0.0]))
     nrm = worm.evaluate(np.array([0.0]), np.array([0.0])).normal[0]
     worm.outward_sign = int(np.sign(np.dot(nrm, rec.normal[0])))
@@ -203,8 +246,23 @@ def solve_with_retries(pair, phi, start, s, passes=3):
         if not fixed.any():
             break
         idx = bad[fixed]
-        parts = {f: getattr(c, f).copy() for f in ("u1", "v1", "u2", "v2", "phi1", "phi2", "position", "normal", "te",
-                                                   "residual", "iterations", "status")}
+        parts = {
+            f: getattr(c, f).copy()
+            for f in (
+                "u1",
+                "v1",
+                "u2",
+                "v2",
+                "phi1",
+                "phi2",
+                "position",
+                "normal",
+                "te",
+                "residual",
+                "iterations",
+                "status",
+            )
+        }
         for f in parts:
             parts[f][idx] = getattr(c2, f)[fixed]
         c = type(c)(formulation=c.formulation, **parts)

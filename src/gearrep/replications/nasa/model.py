@@ -11,8 +11,15 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["a_c_star_eq_2_4_1", "rho_t_bound_eq_2_7_1", "delta_alpha_eq_2_8_7_deg", "delta_1_eq_2_8_6",
-           "a_phi_eq_5_4_3", "a_phi_eq_5_4_12", "delta_l_eq_5_4_7"]
+__all__ = [
+    "a_c_star_eq_2_4_1",
+    "rho_t_bound_eq_2_7_1",
+    "delta_alpha_eq_2_8_7_deg",
+    "delta_1_eq_2_8_6",
+    "a_phi_eq_5_4_3",
+    "a_phi_eq_5_4_12",
+    "delta_l_eq_5_4_7",
+]
 
 
 def a_c_star_eq_2_4_1(a_c, alpha_n, beta):
@@ -48,9 +55,15 @@ def a_phi_eq_5_4_3(a_c, a_t, a_pl, r_pw, alpha_n, beta, P_n, N1, N2, l_t):
     a_pr = a_c - a_t
     m_t = 1 - 2 * a_t * l_t
     m_w = 1 - 2 * a_pl * r_pw
-    return (a_pl * a_pr * np.tan(alpha_n) * np.sin(alpha_n)
-            / (a_pl * m_t**2 * np.cos(beta) ** 2 + a_pr * m_w * np.sin(alpha_n) * np.tan(beta) ** 2)
-            * N1**2 / (2 * P_n * N2))
+    return (
+        a_pl
+        * a_pr
+        * np.tan(alpha_n)
+        * np.sin(alpha_n)
+        / (a_pl * m_t**2 * np.cos(beta) ** 2 + a_pr * m_w * np.sin(alpha_n) * np.tan(beta) ** 2)
+        * N1**2
+        / (2 * P_n * N2)
+    )
 
 
 def a_phi_eq_5_4_12(a_pl, alpha_n, beta, P_n, N1, N2):

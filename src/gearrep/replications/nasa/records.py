@@ -11,8 +11,16 @@ import pandas as pd
 
 from ... import checks as ck
 
-__all__ = ["Rule", "one", "evaluate", "check_records", "NOT_COMPUTED_DISK", "NOT_COMPUTED_HEIGHTS",
-           "NOT_COMPUTED_INPUT_RADII", "NOT_COMPUTED_SEC3"]
+__all__ = [
+    "Rule",
+    "one",
+    "evaluate",
+    "check_records",
+    "NOT_COMPUTED_DISK",
+    "NOT_COMPUTED_HEIGHTS",
+    "NOT_COMPUTED_INPUT_RADII",
+    "NOT_COMPUTED_SEC3",
+]
 
 
 class Rule:
@@ -24,21 +32,25 @@ class Rule:
         self.needs, self.fn = tuple(needs), fn
 
 
-
 NOT_COMPUTED_DISK = (
     "the disk-ground pinion (sec. 4, appendices A-B) is not computed: the report gives no grinding-disk radius or "
     "profile for the example (only the equivalent plunging coefficient a_d ~ a_pl sin(alpha_t)/sin(alpha_t + pi/N1), "
-    "eq 5.4.13); the worm case is computed")
+    "eq 5.4.13); the worm case is computed"
+)
 NOT_COMPUTED_HEIGHTS = (
     "tooth heights follow from the undercutting and pointing limits of sec. 2.4 / 3.3, which need the rack "
     "tooth thickness at the pitch line and the minimum top-land width used by the report: neither is printed "
-    "(sec. 2.4 only says a minimal top-land width was kept); the printed totals equal ha + hd")
+    "(sec. 2.4 only says a minimal top-land width was kept); the printed totals equal ha + hd"
+)
 NOT_COMPUTED_INPUT_RADII = (
     "versions 1 and 2 radii are design inputs of the circular-arc rack-cutters (refs. 1-4 of the report), not "
-    "results of a computation in the report; they are used here as inputs of Table 6.2.4 and 6.2.3")
-NOT_COMPUTED_SEC3 = ("the tooth height of the pinion concave-gear convex design (sec. 3.3) is not computed: it needs "
-                     "the undercutting and pointing analysis of the convex gear with the top land t_a = 0.3/P_n and "
-                     "the rack tooth thickness (not printed), which this replication does not implement")
+    "results of a computation in the report; they are used here as inputs of Table 6.2.4 and 6.2.3"
+)
+NOT_COMPUTED_SEC3 = (
+    "the tooth height of the pinion concave-gear convex design (sec. 3.3) is not computed: it needs "
+    "the undercutting and pointing analysis of the convex gear with the top land t_a = 0.3/P_n and "
+    "the rack tooth thickness (not printed), which this replication does not implement"
+)
 
 
 def one(df, **sel):

@@ -24,17 +24,29 @@ from . import model
 from .design import design_beta
 from .geometry import basics, contact, make_flank, make_pair, pair_at_Q, point_curvatures, report_principal
 
-__all__ = ["curvatures", "ellipse", "path_curvatures", "concavity", "transverse_section", "concave_pinion",
-           "sensitivity", "shifts", "rho_sweep", "parabola_relations"]
+__all__ = [
+    "curvatures",
+    "ellipse",
+    "path_curvatures",
+    "concavity",
+    "transverse_section",
+    "concave_pinion",
+    "sensitivity",
+    "shifts",
+    "rho_sweep",
+    "parabola_relations",
+]
 
 
 def _q_variants(d):
     """(case, beta, rho_c, rho_t) at Q: the design, the printed helix angle, the printed a_c, a_t."""
     Pn, _, beta, _ = basics(d)
     rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
-    return [("design", beta, rho_c, rho_t),
-            ("beta_printed", d["beta_printed_deg"] * DEG, rho_c, rho_t),
-            ("a_printed", beta, 1 / (2 * d["a_c_printed_per_in"]), 1 / (2 * d["a_t_printed_per_in"]))]
+    return [
+        ("design", beta, rho_c, rho_t),
+        ("beta_printed", d["beta_printed_deg"] * DEG, rho_c, rho_t),
+        ("a_printed", beta, 1 / (2 * d["a_c_printed_per_in"]), 1 / (2 * d["a_t_printed_per_in"])),
+    ]
 
 
 def curvatures(s: dict, d: dict) -> pd.DataFrame:
@@ -47,11 +59,21 @@ def curvatures(s: dict, d: dict) -> pd.DataFrame:
             cv = point_curvatures(make_flank(d, 1 / (2 * rho), an, l, b, m, s["tol"]))
             a_rel = np.array([cv["kI"][0], cv["kII"][0]])
             a_dg = np.array([cv["kI_dg"][0], cv["kII_dg"][0]])
-            rows.append(dict(case=name, member=m, beta_deg=np.degrees(b), rho_rack_in=rho,
-                             kappa_I_per_in=a_rel[0], kappa_II_per_in=a_rel[1],
-                             kappa_I_dg_per_in=a_dg[0], kappa_II_dg_per_in=a_dg[1],
-                             max_rel_diff=float(np.max(np.abs(a_rel - a_dg)) / np.max(np.abs(a_rel))),
-                             gaussian_per_in2=a_rel[0] * a_rel[1], sigma_to_rack_deg=cv["sigma_rack_deg"][0]))
+            rows.append(
+                dict(
+                    case=name,
+                    member=m,
+                    beta_deg=np.degrees(b),
+                    rho_rack_in=rho,
+                    kappa_I_per_in=a_rel[0],
+                    kappa_II_per_in=a_rel[1],
+                    kappa_I_dg_per_in=a_dg[0],
+                    kappa_II_dg_per_in=a_dg[1],
+                    max_rel_diff=float(np.max(np.abs(a_rel - a_dg)) / np.max(np.abs(a_rel))),
+                    gaussian_per_in2=a_rel[0] * a_rel[1],
+                    sigma_to_rack_deg=cv["sigma_rack_deg"][0],
+                )
+            )
     return pd.DataFrame(rows)
 
 
@@ -64,17 +86,43 @@ def ellipse(s: dict, d: dict) -> pd.DataFrame:
         cases = [(name, d["delta_in"])] + ([("delta_sec2.6", d["delta_s26_in"])] if name == "design" else [])
         for case, delta in cases:
             r = pair_at_Q(d, rc, rt, an, l, b, delta, s["tol"])
-            rows.append(dict(version=3, zone="single", case=case, alpha_n_deg=np.degrees(an), beta_deg=np.degrees(b),
-                             l_in=l, rho_pinion_in=rc, rho_gear_in=rt, delta_in=delta, **r))
+            rows.append(
+                dict(
+                    version=3,
+                    zone="single",
+                    case=case,
+                    alpha_n_deg=np.degrees(an),
+                    beta_deg=np.degrees(b),
+                    l_in=l,
+                    rho_pinion_in=rc,
+                    rho_gear_in=rt,
+                    delta_in=delta,
+                    **r,
+                )
+            )
     # versions 1 and 2 (circular arcs, centre of the pinion-addendum arc on the pitch line: l = rho)
     an12 = d["alpha_n_v12_deg"] * DEG
-    for version, zone, (rc, rt) in ((1, "single", d["rho_v1"]), (2, "pinion_addendum", d["rho_v2_add"]),
-                                    (2, "pinion_dedendum", d["rho_v2_ded"])):
+    for version, zone, (rc, rt) in (
+        (1, "single", d["rho_v1"]),
+        (2, "pinion_addendum", d["rho_v2_add"]),
+        (2, "pinion_dedendum", d["rho_v2_ded"]),
+    ):
         for name, b in (("design", design_beta(d)), ("beta_printed", d["beta_printed_deg"] * DEG)):
             r = pair_at_Q(d, rc, rt, an12, rc, b, d["delta_in"], s["tol"])
-            rows.append(dict(version=version, zone=zone, case=name, alpha_n_deg=np.degrees(an12),
-                             beta_deg=np.degrees(b), l_in=rc, rho_pinion_in=rc, rho_gear_in=rt,
-                             delta_in=d["delta_in"], **r))
+            rows.append(
+                dict(
+                    version=version,
+                    zone=zone,
+                    case=name,
+                    alpha_n_deg=np.degrees(an12),
+                    beta_deg=np.degrees(b),
+                    l_in=rc,
+                    rho_pinion_in=rc,
+                    rho_gear_in=rt,
+                    delta_in=d["delta_in"],
+                    **r,
+                )
+            )
     return pd.DataFrame(rows)
 
 
@@ -109,8 +157,17 @@ def concavity(s: dict, d: dict) -> pd.DataFrame:
     k_design = k_profile(d["rho_t_times_Pn"] / Pn)
     root = brentq(k_profile, 0.5 * bound, 2.0 * bound, xtol=1e-12)
     pin = point_curvatures(make_flank(d, Pn / (2 * d["rho_c_times_Pn"]), an, l, beta, "pinion", s["tol"]))
-    return pd.DataFrame([dict(bound_eq271_in=bound, rho_t_sign_change_in=root, rel_diff=(root - bound) / bound,
-                              kappa_profile_design_per_in=k_design, kappa_profile_pinion_sign=np.sign(pin["kII"][0]))])
+    return pd.DataFrame(
+        [
+            dict(
+                bound_eq271_in=bound,
+                rho_t_sign_change_in=root,
+                rel_diff=(root - bound) / bound,
+                kappa_profile_design_per_in=k_design,
+                kappa_profile_pinion_sign=np.sign(pin["kII"][0]),
+            )
+        ]
+    )
 
 
 def transverse_section(s: dict, d: dict) -> pd.DataFrame:
@@ -137,13 +194,31 @@ def transverse_section(s: dict, d: dict) -> pd.DataFrame:
     Mtx = np.column_stack([X * X, X * Y, Y * Y, X, Y, np.ones_like(X)])
     A, B, C = np.linalg.svd(Mtx)[2][-1][:3]
     disc = (B * B - 4 * A * C) / (A * A + B * B + C * C)
-    return pd.DataFrame([dict(a_c_per_in=a, a_star_eq241_per_in=a_star, half_curvature_at_Q_per_in=kappa / 2,
-                              rel_diff=kappa / 2 / a_star - 1, conic_discriminant_rel=disc, plane_error_in=plane_err,
-                              alpha_t_deg=np.degrees(alpha_t))])
+    return pd.DataFrame(
+        [
+            dict(
+                a_c_per_in=a,
+                a_star_eq241_per_in=a_star,
+                half_curvature_at_Q_per_in=kappa / 2,
+                rel_diff=kappa / 2 / a_star - 1,
+                conic_discriminant_rel=disc,
+                plane_error_in=plane_err,
+                alpha_t_deg=np.degrees(alpha_t),
+            )
+        ]
+    )
 
 
-_ELLIPSE_COLUMNS = ("kappa_I_1_per_in", "kappa_II_1_per_in", "kappa_I_2_per_in", "kappa_II_2_per_in", "major_2a_in",
-                    "minor_2b_in", "area_in2", "elliptic")
+_ELLIPSE_COLUMNS = (
+    "kappa_I_1_per_in",
+    "kappa_II_1_per_in",
+    "kappa_I_2_per_in",
+    "kappa_II_2_per_in",
+    "major_2a_in",
+    "minor_2b_in",
+    "area_in2",
+    "elliptic",
+)
 
 
 def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
@@ -159,11 +234,25 @@ def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
     for sc in (1, -1):
         for st in (1, -1):
             r = pair_at_Q(d, sc / (2 * ac), st / (2 * at), an, lc, beta, d["delta_in"], s["tol"])
-            rows.append(dict(design="sec3", sign_a_c=sc, sign_a_t=st, pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
-                             **{k: r[k] for k in _ELLIPSE_COLUMNS}))
+            rows.append(
+                dict(
+                    design="sec3",
+                    sign_a_c=sc,
+                    sign_a_t=st,
+                    pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
+                    **{k: r[k] for k in _ELLIPSE_COLUMNS},
+                )
+            )
     r = pair_at_Q(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, d["delta_in"], s["tol"])
-    rows.append(dict(design="sec2", sign_a_c=1, sign_a_t=1, pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
-                     **{k: r[k] for k in _ELLIPSE_COLUMNS}))
+    rows.append(
+        dict(
+            design="sec2",
+            sign_a_c=1,
+            sign_a_t=1,
+            pinion_concave=bool(r["kappa_II_1_per_in"] < 0),
+            **{k: r[k] for k in _ELLIPSE_COLUMNS},
+        )
+    )
     return pd.DataFrame(rows)
 
 
@@ -173,12 +262,22 @@ def _sensitivity_tca(s, d, version, step, dE, r1, r2, an, l, beta, h) -> dict:
     c = contact(pair, [0.0], s)
     u = float(c.u1[0])
     a = pair.flank1.rack.a
-    arc = (u * np.sqrt(1 + 4 * a * a * u * u) / 2 + np.arcsinh(2 * a * u) / (4 * a))
+    arc = u * np.sqrt(1 + 4 * a * a * u * u) / 2 + np.arcsinh(2 * a * u) / (4 * a)
     da = np.degrees(abs(np.arctan(2 * a * u)))
     ok = c.status[0] == Status.CONVERGED
-    return dict(version=version, step=step, delta_E_in=dE, method="tca", delta_alpha_deg=da if ok else np.nan,
-                shift_in=abs(arc) if ok else np.nan, h_active_in=h, delta_1=abs(arc) / h if ok else np.nan,
-                status=c.status_name[0], u1_in=u, alpha_sign=int(np.sign(u)))
+    return dict(
+        version=version,
+        step=step,
+        delta_E_in=dE,
+        method="tca",
+        delta_alpha_deg=da if ok else np.nan,
+        shift_in=abs(arc) if ok else np.nan,
+        h_active_in=h,
+        delta_1=abs(arc) / h if ok else np.nan,
+        status=c.status_name[0],
+        u1_in=u,
+        alpha_sign=int(np.sign(u)),
+    )
 
 
 def sensitivity(s: dict, d: dict) -> pd.DataFrame:
@@ -187,20 +286,39 @@ def sensitivity(s: dict, d: dict) -> pd.DataFrame:
     steps: printed 0.0001 mm (eq only), ``delta_E_table623_in``, 0.0001 in."""
     Pn, an3, beta, l3 = basics(d)
     an12 = d["alpha_n_v12_deg"] * DEG
-    versions = {1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
-                2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
-                3: ((d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn), an3, vertex_pitch_distance(an3, Pn), d["h_Pn"][3] / Pn)}
-    steps = {"printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN, "0.001in": s["delta_E_table623_in"],
-             "0.0001in": 0.0001}
+    versions = {
+        1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
+        2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
+        3: (
+            (d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn),
+            an3,
+            vertex_pitch_distance(an3, Pn),
+            d["h_Pn"][3] / Pn,
+        ),
+    }
+    steps = {
+        "printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN,
+        "0.001in": s["delta_E_table623_in"],
+        "0.0001in": 0.0001,
+    }
     rows = []
     for v, ((r1, r2), an, l, h) in versions.items():
         for sname, dE in steps.items():
             for sign, label in ((-1, "eq2.8.7_decrease"), (1, "eq2.8.7_increase")):
                 da = model.delta_alpha_eq_2_8_7_deg(an, dE, r1, r2, sign)
-                rows.append(dict(version=v, step=sname, delta_E_in=dE, method=label, delta_alpha_deg=da,
-                                 shift_in=r1 * np.radians(da), h_active_in=h,
-                                 delta_1=model.delta_1_eq_2_8_6(r1, da, h),
-                                 status="formula" if np.isfinite(da) else "no_solution"))
+                rows.append(
+                    dict(
+                        version=v,
+                        step=sname,
+                        delta_E_in=dE,
+                        method=label,
+                        delta_alpha_deg=da,
+                        shift_in=r1 * np.radians(da),
+                        h_active_in=h,
+                        delta_1=model.delta_1_eq_2_8_6(r1, da, h),
+                        status="formula" if np.isfinite(da) else "no_solution",
+                    )
+                )
             if sname != "printed_0.0001mm":
                 rows.append(_sensitivity_tca(s, d, v, sname, dE, r1, r2, an, l, beta, h))
     return pd.DataFrame(rows)
@@ -212,16 +330,29 @@ def shifts(s: dict, d: dict) -> pd.DataFrame:
     Pn, an, beta, l = basics(d)
     mis = s["misalignment_arcmin"] * ARCMIN
     rows = []
-    for name, kw in (("dE_fig1.10", dict(misalignment=Misalignment(d_E=s["delta_E_fig110_mm"] / MM_PER_IN))),
-                     ("dgamma_plus", dict(misalignment=Misalignment(d_gamma_out=mis))),
-                     ("dgamma_minus", dict(misalignment=Misalignment(d_gamma_out=-mis))),
-                     ("dlambda_helix_plus", dict(d_lambda=mis)),
-                     ("dlambda_helix_minus", dict(d_lambda=-mis)),
-                     ("dgamma_intersecting", dict(misalignment=Misalignment(d_gamma_in=mis)))):
-        pair = make_pair(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, tol=s["tol"],
-                         hand=s["pinion_hand"], **kw)
+    for name, kw in (
+        ("dE_fig1.10", dict(misalignment=Misalignment(d_E=s["delta_E_fig110_mm"] / MM_PER_IN))),
+        ("dgamma_plus", dict(misalignment=Misalignment(d_gamma_out=mis))),
+        ("dgamma_minus", dict(misalignment=Misalignment(d_gamma_out=-mis))),
+        ("dlambda_helix_plus", dict(d_lambda=mis)),
+        ("dlambda_helix_minus", dict(d_lambda=-mis)),
+        ("dgamma_intersecting", dict(misalignment=Misalignment(d_gamma_in=mis))),
+    ):
+        pair = make_pair(
+            d,
+            d["rho_c_times_Pn"] / Pn,
+            d["rho_t_times_Pn"] / Pn,
+            an,
+            l,
+            beta,
+            tol=s["tol"],
+            hand=s["pinion_hand"],
+            **kw,
+        )
         c = contact(pair, [0.0], s)
-        rows.append(dict(case=name, u1_in=float(c.u1[0]), status=c.status_name[0], profile_shift_in=abs(float(c.u1[0]))))
+        rows.append(
+            dict(case=name, u1_in=float(c.u1[0]), status=c.status_name[0], profile_shift_in=abs(float(c.u1[0])))
+        )
     return pd.DataFrame(rows)
 
 
@@ -236,8 +367,15 @@ def rho_sweep(s: dict, d: dict) -> pd.DataFrame:
         rt = rt_pn / Pn
         pair = make_pair(d, rc, rt, an, l, beta, misalignment=Misalignment(d_E=dE), tol=s["tol"], hand=s["pinion_hand"])
         c = contact(pair, [0.0], s)
-        rows.append(dict(rho_t_in=rt, rho_diff_in=rt - rc, delta_alpha_eq_deg=model.delta_alpha_eq_2_8_7_deg(an, dE, rc, rt),
-                         tca_shift_in=abs(float(c.u1[0])) if c.converged[0] else np.nan, status=c.status_name[0]))
+        rows.append(
+            dict(
+                rho_t_in=rt,
+                rho_diff_in=rt - rc,
+                delta_alpha_eq_deg=model.delta_alpha_eq_2_8_7_deg(an, dE, rc, rt),
+                tca_shift_in=abs(float(c.u1[0])) if c.converged[0] else np.nan,
+                status=c.status_name[0],
+            )
+        )
     return pd.DataFrame(rows)
 
 
@@ -247,11 +385,25 @@ def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
     Pn, an = d["P_n_per_in"], d["alpha_n_deg"] * DEG
     b = d["beta_s54_deg"] * DEG
     a_pl, r_pw = d["a_pl_per_in"], d["r_pw_in"]
-    a543 = model.a_phi_eq_5_4_3(d["a_c_printed_per_in"], d["a_t_printed_per_in"], a_pl, r_pw, an, b, Pn, d["N1"],
-                                d["N2"], vertex_pitch_distance(an, Pn))
+    a543 = model.a_phi_eq_5_4_3(
+        d["a_c_printed_per_in"],
+        d["a_t_printed_per_in"],
+        a_pl,
+        r_pw,
+        an,
+        b,
+        Pn,
+        d["N1"],
+        d["N2"],
+        vertex_pitch_distance(an, Pn),
+    )
     a5412 = model.a_phi_eq_5_4_12(a_pl, an, b, Pn, d["N1"], d["N2"])
     phi_end = np.pi / d["N1"]
     dl = model.delta_l_eq_5_4_7(s["misalignment_arcmin"] * ARCMIN, a_pl, r_pw, an, b)
-    return pd.DataFrame([dict(equation="5.4.3", a_phi_per_rad=a543, te_at_half_cycle_arcsec=a543 * phi_end**2 / ARCSEC),
-                         dict(equation="5.4.12", a_phi_per_rad=a5412, te_at_half_cycle_arcsec=a5412 * phi_end**2 / ARCSEC),
-                         dict(equation="5.4.7", a_phi_per_rad=np.nan, te_at_half_cycle_arcsec=np.nan, delta_l_in=dl)])
+    return pd.DataFrame(
+        [
+            dict(equation="5.4.3", a_phi_per_rad=a543, te_at_half_cycle_arcsec=a543 * phi_end**2 / ARCSEC),
+            dict(equation="5.4.12", a_phi_per_rad=a5412, te_at_half_cycle_arcsec=a5412 * phi_end**2 / ARCSEC),
+            dict(equation="5.4.7", a_phi_per_rad=np.nan, te_at_half_cycle_arcsec=np.nan, delta_l_in=dl),
+        ]
+    )

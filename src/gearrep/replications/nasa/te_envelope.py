@@ -56,8 +56,16 @@ def te_envelope(phi, te, z, per, face_width, drive, n_fine=400):
     x = np.unique(np.concatenate([x, np.array(extra, float)]))
     # the pair in contact: the upper envelope of the pairs' TE (of -TE for the opposite drive)
     sign = 1.0 if drive > 0 else -1.0
-    curves = meshing.pair_te_curves(phi[ok], sign * te[ok], per, x, pairs=ks, interpolation="cubic", tol=0.0,
-                                    engaged=lambda q: np.abs(fz(q)) <= 0.5 * face_width + 1e-12)
+    curves = meshing.pair_te_curves(
+        phi[ok],
+        sign * te[ok],
+        per,
+        x,
+        pairs=ks,
+        interpolation="cubic",
+        tol=0.0,
+        engaged=lambda q: np.abs(fz(q)) <= 0.5 * face_width + 1e-12,
+    )
     env, lead = meshing.upper_envelope(curves)
     anyc = np.isfinite(env)
     val = sign * env

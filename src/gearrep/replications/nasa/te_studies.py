@@ -51,11 +51,26 @@ def te_cycle(pair, s, face_width):
     conv = c.converged
     z = c.position[:, 2]
     drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
-    single = pd.DataFrame(dict(phi1_rad=phi, te_arcsec=c.te_arcsec, u1_in=c.u1, theta1_in=c.v1, u2_in=c.u2,
-                               theta2_in=c.v2, z_in=z, status=c.status_name,
-                               on_face=conv & (np.abs(z) <= 0.5 * face_width)))
-    info = dict(drive_sign=drive, te_max_arcsec=np.nan, interval_start_rad=np.nan, interval_end_rad=np.nan,
-                older_pair_keeps_contact=np.nan)
+    single = pd.DataFrame(
+        dict(
+            phi1_rad=phi,
+            te_arcsec=c.te_arcsec,
+            u1_in=c.u1,
+            theta1_in=c.v1,
+            u2_in=c.u2,
+            theta2_in=c.v2,
+            z_in=z,
+            status=c.status_name,
+            on_face=conv & (np.abs(z) <= 0.5 * face_width),
+        )
+    )
+    info = dict(
+        drive_sign=drive,
+        te_max_arcsec=np.nan,
+        interval_start_rad=np.nan,
+        interval_end_rad=np.nan,
+        older_pair_keeps_contact=np.nan,
+    )
     no_cycle = pd.DataFrame(columns=["phi1_rad", "te_arcsec", "tooth"])
     if not np.all(conv):
         return single, no_cycle, info
@@ -72,8 +87,12 @@ def te_cycle(pair, s, face_width):
     if not np.all(cc.converged):
         return single, no_cycle, info
     rows = [dict(phi1_rad=g + k * per, te_arcsec=t, tooth=k) for k in (-1, 0, 1) for g, t in zip(grid, cc.te_arcsec)]
-    info.update(te_max_arcsec=float(np.ptp(cc.te_arcsec)), interval_start_rad=lo, interval_end_rad=hi,
-                older_pair_keeps_contact=bool(older))
+    info.update(
+        te_max_arcsec=float(np.ptp(cc.te_arcsec)),
+        interval_start_rad=lo,
+        interval_end_rad=hi,
+        older_pair_keeps_contact=bool(older),
+    )
     return single, pd.DataFrame(rows), info
 
 
@@ -86,15 +105,23 @@ def _te_summary_row(name, single, cyc, info, face_width, axial_pitch) -> dict:
         rms2 = float(np.sqrt(np.mean((y - np.polyval(np.polyfit(x, y, 2), x)) ** 2)))
         jump = float(abs(y[-1] - y[0]))
     conv = single["status"] == "converged"
-    return dict(case=name, te_max_arcsec=info["te_max_arcsec"],
-                te_abs_max_single_arcsec=float(np.abs(t0["te_arcsec"]).max()) if len(t0) else np.nan,
-                jump_at_transfer_arcsec=jump, linear_fit_rms_arcsec=rms1, quadratic_fit_rms_arcsec=rms2,
-                u1_at_phi0_in=float(single.loc[single["phi1_rad"].abs().idxmin(), "u1_in"]),
-                u1_range_in=float(np.ptp(single.loc[conv, "u1_in"])) if conv.any() else np.nan,
-                all_converged=bool(conv.all()), drive_sign=info["drive_sign"],
-                older_pair_keeps_contact=info["older_pair_keeps_contact"],
-                interval_start_rad=info["interval_start_rad"], interval_end_rad=info["interval_end_rad"],
-                face_width_in=face_width, axial_pitch_in=axial_pitch)
+    return dict(
+        case=name,
+        te_max_arcsec=info["te_max_arcsec"],
+        te_abs_max_single_arcsec=float(np.abs(t0["te_arcsec"]).max()) if len(t0) else np.nan,
+        jump_at_transfer_arcsec=jump,
+        linear_fit_rms_arcsec=rms1,
+        quadratic_fit_rms_arcsec=rms2,
+        u1_at_phi0_in=float(single.loc[single["phi1_rad"].abs().idxmin(), "u1_in"]),
+        u1_range_in=float(np.ptp(single.loc[conv, "u1_in"])) if conv.any() else np.nan,
+        all_converged=bool(conv.all()),
+        drive_sign=info["drive_sign"],
+        older_pair_keeps_contact=info["older_pair_keeps_contact"],
+        interval_start_rad=info["interval_start_rad"],
+        interval_end_rad=info["interval_end_rad"],
+        face_width_in=face_width,
+        axial_pitch_in=axial_pitch,
+    )
 
 
 def face_width(s, d):
@@ -129,8 +156,11 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
         singles.append(single)
         cycles.append(cyc)
         summ.append(_te_summary_row(name, single, cyc, info, B, axial_pitch))
-    return {"te_single": pd.concat(singles, ignore_index=True), "te_cycle": pd.concat(cycles, ignore_index=True),
-            "te_summary": pd.DataFrame(summ)}
+    return {
+        "te_single": pd.concat(singles, ignore_index=True),
+        "te_cycle": pd.concat(cycles, ignore_index=True),
+        "te_summary": pd.DataFrame(summ),
+    }
 
 
 def _worm_case(s, d, name, kw, B):
@@ -150,25 +180,49 @@ def _worm_case(s, d, name, kw, B):
     use = c.converged & on_profile
     te_v = np.where(use, c.te_arcsec, np.nan)
     z = np.where(use, c.position[:, 2], np.nan)
-    single = pd.DataFrame(dict(case=name, phi1_rad=phi, te_arcsec=c.te_arcsec, psi=c.u1, l_in=c.v1,
-                               u_rack_in=u_c, x_b_in=x_b, on_profile=on_profile, theta2_in=c.v2,
-                               z_in=c.position[:, 2], status=c.status_name))
+    single = pd.DataFrame(
+        dict(
+            case=name,
+            phi1_rad=phi,
+            te_arcsec=c.te_arcsec,
+            psi=c.u1,
+            l_in=c.v1,
+            u_rack_in=u_c,
+            x_b_in=x_b,
+            on_profile=on_profile,
+            theta2_in=c.v2,
+            z_in=c.position[:, 2],
+            status=c.status_name,
+        )
+    )
     tmax, cyc, gaps = te_envelope(phi, te_v, z, per, B, drive)
     cyc.insert(0, "case", name)
     t0 = cyc[cyc["tooth"] == 0]
     a2 = np.polyfit(t0["phi1_rad"], t0["te_arcsec"], 2)[0] if len(t0) > 3 else np.nan
-    row = dict(case=name, te_max_arcsec=tmax, all_converged=bool(c.converged.all()),
-               n_converged=int(c.converged.sum()), n_on_profile=int(use.sum()), n_points=len(phi),
-               uncovered_points=gaps, drive_sign=drive,
-               u_rack_range_in=float(np.ptp(u_c[use])) if use.any() else np.nan,
-               parabola_a_phi_arcsec_per_rad2=a2, a_phi_per_rad=a2 * ARCSEC, face_width_in=B)
+    row = dict(
+        case=name,
+        te_max_arcsec=tmax,
+        all_converged=bool(c.converged.all()),
+        n_converged=int(c.converged.sum()),
+        n_on_profile=int(use.sum()),
+        n_points=len(phi),
+        uncovered_points=gaps,
+        drive_sign=drive,
+        u_rack_range_in=float(np.ptp(u_c[use])) if use.any() else np.nan,
+        parabola_a_phi_arcsec_per_rad2=a2,
+        a_phi_per_rad=a2 * ARCSEC,
+        face_width_in=B,
+    )
     if use.sum() > 3:
         # centre of the bearing contact: axial position of the contact at the vertex (minimum) of TE_0
         xs = np.linspace(phi[use].min(), phi[use].max(), 20001)
         fte = CubicSpline(phi[use], te_v[use])(xs)
         iv = int(np.argmax(fte) if drive > 0 else np.argmin(fte))
-        row.update(vertex_phi1_rad=float(xs[iv]), vertex_z_in=float(CubicSpline(phi[use], z[use])(xs[iv])),
-                   d_lambda_arcmin=float(kw.get("d_lambda", 0.0) / ARCMIN))
+        row.update(
+            vertex_phi1_rad=float(xs[iv]),
+            vertex_z_in=float(CubicSpline(phi[use], z[use])(xs[iv])),
+            d_lambda_arcmin=float(kw.get("d_lambda", 0.0) / ARCMIN),
+        )
     return single, cyc, row
 
 
@@ -188,9 +242,13 @@ def worm(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     drive with the lead correction of eq 5.4.7: ``worm_single``, ``worm_cycle``, ``worm_summary``."""
     mis = s["misalignment_arcmin"] * ARCMIN
     B, _ = face_width(s, d)
-    cases = {"worm_aligned": dict(), "worm_dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
-             "worm_dgamma_minus": dict(misalignment=Misalignment(d_gamma_out=-mis)),
-             "worm_dlambda_plus": dict(d_lambda=mis), "worm_dlambda_minus": dict(d_lambda=-mis)}
+    cases = {
+        "worm_aligned": dict(),
+        "worm_dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
+        "worm_dgamma_minus": dict(misalignment=Misalignment(d_gamma_out=-mis)),
+        "worm_dlambda_plus": dict(d_lambda=mis),
+        "worm_dlambda_minus": dict(d_lambda=-mis),
+    }
     singles, cycles, summ = [], [], []
     for name, kw in cases.items():
         single, cyc, row = _worm_case(s, d, name, kw, B)
@@ -199,5 +257,8 @@ def worm(s: dict, d: dict) -> dict[str, pd.DataFrame]:
         summ.append(row)
     kw = dict(misalignment=Misalignment(d_gamma_out=mis), d_lambda=float(_lead_correction(d, summ)))
     single, cyc, row = _worm_case(s, d, "worm_dgamma_plus_lead_corrected", kw, B)
-    return {"worm_single": pd.concat(singles + [single], ignore_index=True),
-            "worm_cycle": pd.concat(cycles + [cyc], ignore_index=True), "worm_summary": pd.DataFrame(summ + [row])}
+    return {
+        "worm_single": pd.concat(singles + [single], ignore_index=True),
+        "worm_cycle": pd.concat(cycles + [cyc], ignore_index=True),
+        "worm_summary": pd.DataFrame(summ + [row]),
+    }

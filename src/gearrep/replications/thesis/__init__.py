@@ -56,37 +56,73 @@ _A2 = st.number(None, "1", "", gt=0, lt=1)
 
 SETTINGS = st.declare(
     seed=st.integer(20231019, "1", "random starts: numpy default_rng([seed, stream])", ge=0),
-    tol=st.number(1.0e-13, "mm", "Newton residual norm (mm / unit normals); 1e-13 keeps both formulations within "
-                  "1e-9 mm (bench: fastest meeting the target); a converged point must be a contact", gt=0, le=1e-6),
+    tol=st.number(
+        1.0e-13,
+        "mm",
+        "Newton residual norm (mm / unit normals); 1e-13 keeps both formulations within "
+        "1e-9 mm (bench: fastest meeting the target); a converged point must be a contact",
+        gt=0,
+        le=1e-6,
+    ),
     maxiter=st.integer(50, "1", "Newton iteration limit", ge=1, le=1000),
-    match_tol_mm=st.number(1.0e-6, "mm", "a converged start is the reference contact if |du|, |dv| are below this",
-                           gt=0),
+    match_tol_mm=st.number(
+        1.0e-6, "mm", "a converged start is the reference contact if |du|, |dv| are below this", gt=0
+    ),
     match_tol_rad=st.number(1.0e-8, "rad", "... and |dphi2| (mod 2 pi) below this", gt=0),
     agree_tol_mm=st.number(1.0e-9, "mm", "the two formulations' reference contacts must agree to this", gt=0),
     agree_tol_rad=st.number(1.0e-10, "rad", "... and in phi2 to this", gt=0),
-    domain_margin=st.number(1.0e-6, "1", "domain-kept Newton: u limits moved in by this fraction of the flank height "
-                            "(the involute cusp at u = r_b)", gt=0, lt=0.5),
-    n_starts=st.integer(5000, "1", "Table 10 random starts (as in the thesis; bench: 2000 already meets the 0.18 pp "
-                        "target, 5000 costs 0.1 s)", ge=10, le=100000),
-    n_starts_sec61=st.integer(1000, "1", "sec 6.1 and Table 9 studies (as in the thesis)", ge=10,
-                                le=100000),
-    n_starts_window=st.integer(1000, "1", "phi2-window sweep (sampling error ~1 pp, enough for the curve)",
-                                 ge=10, le=100000),
-    primary_phi2_window_rad=st.number(_TWO_PI, "rad", "Table 10: phi2 start over a full turn (not stated in the "
-                                      "thesis)", gt=0, le=_TWO_PI),
-    phi2_windows_rad=st.array([0.05, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 2.0, 2.5, np.pi, 4.0, 5.0], "rad",
-                              "widths of the phi2-window sweep (a width equal to primary_phi2_window_rad is the "
-                              "Table 10 row itself and is not rerun)", _WINDOW),
+    domain_margin=st.number(
+        1.0e-6,
+        "1",
+        "domain-kept Newton: u limits moved in by this fraction of the flank height (the involute cusp at u = r_b)",
+        gt=0,
+        lt=0.5,
+    ),
+    n_starts=st.integer(
+        5000,
+        "1",
+        "Table 10 random starts (as in the thesis; bench: 2000 already meets the 0.18 pp target, 5000 costs 0.1 s)",
+        ge=10,
+        le=100000,
+    ),
+    n_starts_sec61=st.integer(1000, "1", "sec 6.1 and Table 9 studies (as in the thesis)", ge=10, le=100000),
+    n_starts_window=st.integer(
+        1000, "1", "phi2-window sweep (sampling error ~1 pp, enough for the curve)", ge=10, le=100000
+    ),
+    primary_phi2_window_rad=st.number(
+        _TWO_PI, "rad", "Table 10: phi2 start over a full turn (not stated in the thesis)", gt=0, le=_TWO_PI
+    ),
+    phi2_windows_rad=st.array(
+        [0.05, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 2.0, 2.5, np.pi, 4.0, 5.0],
+        "rad",
+        "widths of the phi2-window sweep (a width equal to primary_phi2_window_rad is the "
+        "Table 10 row itself and is not rerun)",
+        _WINDOW,
+    ),
     timing_loop_n=st.integer(25, "1", "one-start-per-call timing loop", ge=1, le=10000),
-    te_n_points=st.integer(61, "1", "TE grid points per mesh cycle (bench: no grid meets 5e-8 arcsec; knee at 41, 61 "
-                           "kept for the curves)", ge=5, le=2001),
+    te_n_points=st.integer(
+        61,
+        "1",
+        "TE grid points per mesh cycle (bench: no grid meets 5e-8 arcsec; knee at 41, 61 kept for the curves)",
+        ge=5,
+        le=2001,
+    ),
     crowning_log_a2=st.number(0.9, "1", "eq (12) a2, not printed in the thesis", gt=0, lt=1),
-    crowning_log_a2_sensitivity=st.array([0.5, 0.9, 0.99], "1", "a2 values of the logarithmic-crown sensitivity "
-                                         "rows (te_sensitivity.csv)", _A2),
-    crowning_rows=st.array([1, 2, 3], "1", "rows of Tables 3-4 computed (1 = first printed row; row 1 is needed by "
-                           "the crowning areas)", st.integer(None, "1", "", ge=1, le=3), max_items=3),
-    te_pivot=st.choice("pitch_point", ("pitch_point", "axis"),
-                       "misalignment pivot for the TE studies: pitch_point or axis (member 2's mid-face axis point)"),
+    crowning_log_a2_sensitivity=st.array(
+        [0.5, 0.9, 0.99], "1", "a2 values of the logarithmic-crown sensitivity rows (te_sensitivity.csv)", _A2
+    ),
+    crowning_rows=st.array(
+        [1, 2, 3],
+        "1",
+        "rows of Tables 3-4 computed (1 = first printed row; row 1 is needed by the crowning areas)",
+        st.integer(None, "1", "", ge=1, le=3),
+        max_items=3,
+    ),
+    te_pivot=st.choice(
+        "pitch_point",
+        ("pitch_point", "axis"),
+        "misalignment pivot for the TE studies: pitch_point or axis (member 2's mid-face axis point)",
+    ),
 )
 
 DESIGN_DATA = ("params_003_*.csv",)
@@ -94,19 +130,44 @@ CHECK_DATA = ("values_003_*.csv", "claims_003.csv")
 
 _DIR = "thesis"
 JOBS = {
-    "convergence": Job(convergence_tables, {n: f"{_DIR}/{n}.csv" for n in (
-        "convergence", "convergence_detail", "agreement", "references", "starts_table10", "starts_sec61",
-        "starts_helical", "timing")},
-        "every convergence study, its per-start tables, the verified references and the Table 10 timing"),
-    "te": Job(te_tables, {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
-              "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max"),
-    "te_sensitivity": Job(te_sensitivity, {"te_sensitivity": f"{_DIR}/te_sensitivity.csv"},
-                          "log-crown a2 and misalignment pivot sensitivity"),
-    "crowning_areas": Job(crowning_areas_table, {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
-                          "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)"),
+    "convergence": Job(
+        convergence_tables,
+        {
+            n: f"{_DIR}/{n}.csv"
+            for n in (
+                "convergence",
+                "convergence_detail",
+                "agreement",
+                "references",
+                "starts_table10",
+                "starts_sec61",
+                "starts_helical",
+                "timing",
+            )
+        },
+        "every convergence study, its per-start tables, the verified references and the Table 10 timing",
+    ),
+    "te": Job(
+        te_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
+        "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max",
+    ),
+    "te_sensitivity": Job(
+        te_sensitivity,
+        {"te_sensitivity": f"{_DIR}/te_sensitivity.csv"},
+        "log-crown a2 and misalignment pivot sensitivity",
+    ),
+    "crowning_areas": Job(
+        crowning_areas_table,
+        {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
+        "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)",
+    ),
     "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
-    "protocol": Job(protocol_table, {"protocol": f"{_DIR}/protocol.csv", "run_info": f"{_DIR}/run_info.csv"},
-                    "the convergence protocol as run and the settings used"),
+    "protocol": Job(
+        protocol_table,
+        {"protocol": f"{_DIR}/protocol.csv", "run_info": f"{_DIR}/run_info.csv"},
+        "the convergence protocol as run and the settings used",
+    ),
 }
 
 CHECK_OUTPUTS = {"checks": "checks/thesis.csv"}
@@ -124,8 +185,9 @@ REPORT_FIGURES = ("window", "clouds")
 def validate(settings: dict, design: Design) -> None:
     """Cross-field checks: Tables 3-4 row 1 must be computed (the crowning areas and claims use it)."""
     if 1 not in settings["crowning_rows"]:
-        raise st.SettingError(f"thesis.crowning_rows: got {settings['crowning_rows']!r}; allowed: a subset of "
-                              "[1, 2, 3] containing 1")
+        raise st.SettingError(
+            f"thesis.crowning_rows: got {settings['crowning_rows']!r}; allowed: a subset of [1, 2, 3] containing 1"
+        )
 
 
 def run(settings: dict, design: Design, jobs=None) -> dict:
@@ -135,11 +197,42 @@ def run(settings: dict, design: Design, jobs=None) -> dict:
 
 
 __all__ = [
-    "SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
-    "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate",
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
     # the study's building blocks (used by the tests and the notebook)
-    "Design", "design_pair", "pair_40_37", "misalignment", "TABLE34", "ThesisFrame", "wrap", "profile_crowning",
-    "crowning_object", "crown_curvature", "Reference", "reference_contact", "study_reference", "classify",
-    "run_variant", "rng", "STREAMS", "OUTCOMES", "te_study", "first_order_te", "fact_key", "CLAIMS",
-    "claim_verdicts", "conv_row",
+    "Design",
+    "design_pair",
+    "pair_40_37",
+    "misalignment",
+    "TABLE34",
+    "ThesisFrame",
+    "wrap",
+    "profile_crowning",
+    "crowning_object",
+    "crown_curvature",
+    "Reference",
+    "reference_contact",
+    "study_reference",
+    "classify",
+    "run_variant",
+    "rng",
+    "STREAMS",
+    "OUTCOMES",
+    "te_study",
+    "first_order_te",
+    "fact_key",
+    "CLAIMS",
+    "claim_verdicts",
+    "conv_row",
 ]

@@ -43,8 +43,9 @@ def bench_cases(settings: dict, design: Design) -> dict:
         out, _, _, _ = run_variant(pair, ref, st, "plain", p)
         return 100.0 * float(np.mean(out == "correct"))
 
-    st_tol = draw_starts(pair, 400, np.random.default_rng([int(p["seed"]), 99]),
-                         phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi))
+    st_tol = draw_starts(
+        pair, 400, np.random.default_rng([int(p["seed"]), 99]), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi)
+    )
 
     def run_tol(s):
         q = dict(p, tol=float(s["tol"]))
@@ -60,26 +61,41 @@ def bench_cases(settings: dict, design: Design) -> dict:
     d = design.pairs["helical_40_37"]
     amount = TABLE34[("in", -0.2)]["circular"][0]
     base = pair_40_37(design)
-    te_pair = pair_40_37(design, crowning_object("circular", amount, d["face_width"], float(p["crowning_log_a2"])),
-                         misalignment("in", -0.2 * DEG, base, p["te_pivot"]))
+    te_pair = pair_40_37(
+        design,
+        crowning_object("circular", amount, d["face_width"], float(p["crowning_log_a2"])),
+        misalignment("in", -0.2 * DEG, base, p["te_pivot"]),
+    )
 
     def run_te(s):
         return te_study(te_pair, int(s["te_n_points"]))["te_extreme"] / ARCSEC
 
     return {
         "rate_n_starts": {
-            "run": run_rate, "settings": [{"n_starts": n} for n in (250, 500, 1000, 2000, 5000)],
-            "reference": {"n_starts": 20000}, "error": lambda a, b: abs(a - b), "error_unit": "percentage points",
-            "error_target": 0.1 * BENCH_RATE_TOL_PCT, "current": {"n_starts": p["n_starts"]},
+            "run": run_rate,
+            "settings": [{"n_starts": n} for n in (250, 500, 1000, 2000, 5000)],
+            "reference": {"n_starts": 20000},
+            "error": lambda a, b: abs(a - b),
+            "error_unit": "percentage points",
+            "error_target": 0.1 * BENCH_RATE_TOL_PCT,
+            "current": {"n_starts": p["n_starts"]},
         },
         "newton_tol": {
-            "run": run_tol, "settings": [{"tol": t} for t in (1e-6, 1e-8, 1e-10, 1e-12, 1e-13)],
-            "reference": {"tol": 1e-14}, "error": err_tol, "error_unit": "mm",
-            "error_target": 0.1 * BENCH_AGREE_MM, "current": {"tol": p["tol"]},
+            "run": run_tol,
+            "settings": [{"tol": t} for t in (1e-6, 1e-8, 1e-10, 1e-12, 1e-13)],
+            "reference": {"tol": 1e-14},
+            "error": err_tol,
+            "error_unit": "mm",
+            "error_target": 0.1 * BENCH_AGREE_MM,
+            "current": {"tol": p["tol"]},
         },
         "te_grid": {
-            "run": run_te, "settings": [{"te_n_points": n} for n in (11, 21, 41, 61, 121)],
-            "reference": {"te_n_points": 241}, "error": lambda a, b: abs(a - b), "error_unit": "arcsec",
-            "error_target": 0.1 * BENCH_TE_TOL_ARCSEC, "current": {"te_n_points": p["te_n_points"]},
+            "run": run_te,
+            "settings": [{"te_n_points": n} for n in (11, 21, 41, 61, 121)],
+            "reference": {"te_n_points": 241},
+            "error": lambda a, b: abs(a - b),
+            "error_unit": "arcsec",
+            "error_target": 0.1 * BENCH_TE_TOL_ARCSEC,
+            "current": {"te_n_points": p["te_n_points"]},
         },
     }

@@ -16,8 +16,10 @@ import pandas as pd
 
 from .design import Design, design_pair
 
-NOT_COMPUTED_STRESS = ("stress ratios (Hertz, thesis eq 15-25) are not part of this replication; the contact "
-                       "ellipse and Hertz pressure belong to gearrep.ellipse")
+NOT_COMPUTED_STRESS = (
+    "stress ratios (Hertz, thesis eq 15-25) are not part of this replication; the contact "
+    "ellipse and Hertz pressure belong to gearrep.ellipse"
+)
 
 
 def verdict(confirm: bool, refute: bool, evidence: str):
@@ -110,11 +112,18 @@ def _reduced_except_edge(c: Context):
     lo_u, hi_u = pair.lower1[0], pair.upper1[0]
     b = c.design.pairs["spur_52_72"]["face_width"]
     bad = st[st["outcome_reduced"] != "correct"]
-    near = (((bad["u1_0_mm"] - lo_u) <= 0.05 * (hi_u - lo_u)) | ((hi_u - bad["u1_0_mm"]) <= 0.05 * (hi_u - lo_u))
-            | (bad["v1_0_thesis_mm"] <= 0.05 * b) | (b - bad["v1_0_thesis_mm"] <= 0.05 * b))
-    return verdict(red["correct_pct"] >= 99.5 and bool(near.all()), red["correct_pct"] < 99 or not near.all(),
-                   f"reduced, plain Newton, {int(red['n_starts'])} starts: {red['correct_pct']:.2f} % correct; "
-                   f"{len(bad)} failing starts, {int(near.sum())} of them within 5 % of a flank boundary")
+    near = (
+        ((bad["u1_0_mm"] - lo_u) <= 0.05 * (hi_u - lo_u))
+        | ((hi_u - bad["u1_0_mm"]) <= 0.05 * (hi_u - lo_u))
+        | (bad["v1_0_thesis_mm"] <= 0.05 * b)
+        | (b - bad["v1_0_thesis_mm"] <= 0.05 * b)
+    )
+    return verdict(
+        red["correct_pct"] >= 99.5 and bool(near.all()),
+        red["correct_pct"] < 99 or not near.all(),
+        f"reduced, plain Newton, {int(red['n_starts'])} starts: {red['correct_pct']:.2f} % correct; "
+        f"{len(bad)} failing starts, {int(near.sum())} of them within 5 % of a flank boundary",
+    )
 
 
 def _conventional_slower(c: Context):
@@ -122,11 +131,13 @@ def _conventional_slower(c: Context):
     it_ratio = plain["mean_iterations"] / red["mean_iterations"]
     t_ratio = (plain["seconds_per_solve"] / plain["correct_pct"]) / (red["seconds_per_solve"] / red["correct_pct"])
     return verdict(
-        it_ratio >= 1.3 and t_ratio >= 1.5, it_ratio <= 1.0 or t_ratio <= 1.0,
+        it_ratio >= 1.3 and t_ratio >= 1.5,
+        it_ratio <= 1.0 or t_ratio <= 1.0,
         f"spur 52/72, same starts: mean iterations over correct starts conventional/reduced = "
         f"{plain['mean_iterations']:.2f}/{red['mean_iterations']:.2f} = {it_ratio:.2f}; time per correct point "
         f"(failed starts replaced) ratio = {t_ratio:.2f} (thesis 1.38 and 3.62); our plain Newton iterations "
-        "count only the correct starts, which converge quickly")
+        "count only the correct starts, which converge quickly",
+    )
 
 
 def _phi2_start_decides(c: Context):
@@ -135,14 +146,18 @@ def _phi2_start_decides(c: Context):
     mono = all(b_ >= a_ - 2 * se(0.5 * (a_ + b_), n6) for (_, a_), (_, b_) in zip(g, g[1:]))
     r0, r11, r12 = g[0][1], g[1][1], g[3][1]
     listing = ", ".join(f"{x:g}: {r:.1f} %" for x, r in g)
-    return verdict(mono and r0 < 5 and r12 >= 90, r0 > 20 or r12 < r11 - 2 * se(0.5 * (r11 + r12), n6),
-                   f"plain conventional Newton, {n6} starts, phi2 guess (thesis frame) -> correct rate: {listing}")
+    return verdict(
+        mono and r0 < 5 and r12 >= 90,
+        r0 > 20 or r12 < r11 - 2 * se(0.5 * (r11 + r12), n6),
+        f"plain conventional Newton, {n6} starts, phi2 guess (thesis frame) -> correct rate: {listing}",
+    )
 
 
 def _almost_all_at_12(c: Context):
     r12 = c.guesses[3][1]
-    return verdict(r12 >= 95, r12 < 90, f"plain Newton from phi2 = -1.2 rad, u2, v2 mid-point: {r12:.1f} % of "
-                                        f"{c.n6} correct")
+    return verdict(
+        r12 >= 95, r12 < 90, f"plain Newton from phi2 = -1.2 rad, u2, v2 mid-point: {r12:.1f} % of {c.n6} correct"
+    )
 
 
 def _random_phi2_fails(c: Context):
@@ -157,17 +172,23 @@ def _misalignment_small_effect(c: Context):
     if not mis:
         return None
     ra, rm = c.rate("spur_25_25_window_thesis"), c.rate(mis[0])
-    return verdict(abs(ra - rm) < 5, abs(ra - rm) > 10,
-                   f"plain Newton, phi2 in (-1.7, -1.0): aligned {ra:.1f} %, {mis[0]} {rm:.1f} % (difference "
-                   f"{abs(ra - rm):.1f} percentage points)")
+    return verdict(
+        abs(ra - rm) < 5,
+        abs(ra - rm) > 10,
+        f"plain Newton, phi2 in (-1.7, -1.0): aligned {ra:.1f} %, {mis[0]} {rm:.1f} % (difference "
+        f"{abs(ra - rm):.1f} percentage points)",
+    )
 
 
 def _helical_more_iterations(c: Context):
     if not (c.conv["case"] == "helical_25_77_maxiter_x4").any():
         return None
     a_, b_ = c.rate("helical_25_77"), c.rate("helical_25_77_maxiter_x4")
-    return verdict(abs(b_ - a_) < 1, b_ - a_ > 5,
-                   f"helical 25/77, plain Newton, same starts: {a_:.1f} % with the iteration limit, {b_:.1f} % with 4 x")
+    return verdict(
+        abs(b_ - a_) < 1,
+        b_ - a_ > 5,
+        f"helical 25/77, plain Newton, same starts: {a_:.1f} % with the iteration limit, {b_:.1f} % with 4 x",
+    )
 
 
 def _helical_random_phi2_fails(c: Context):
@@ -181,17 +202,27 @@ def _helical_random_phi2_fails(c: Context):
 def _wrong_roots_exist(c: Context):
     cv = c.conv[c.conv["formulation"] == "conventional"]
     wr = cv[cv["wrong_root_pct"] > 0]
-    top = (f", largest {wr['wrong_root_pct'].max():.2f} % ({wr.loc[wr['wrong_root_pct'].idxmax(), 'case']}, "
-           f"{wr.loc[wr['wrong_root_pct'].idxmax(), 'variant']})" if len(wr) else "")
+    top = (
+        f", largest {wr['wrong_root_pct'].max():.2f} % ({wr.loc[wr['wrong_root_pct'].idxmax(), 'case']}, "
+        f"{wr.loc[wr['wrong_root_pct'].idxmax(), 'variant']})"
+        if len(wr)
+        else ""
+    )
     return verdict(len(wr) > 0, len(wr) == 0, f"{len(wr)} conventional studies with wrong-root share > 0" + top)
 
 
 def _conventional_about_30(c: Context):
     rp = float(c.row("spur_52_72", "plain", c.full)["correct_pct"])
-    half = c.rate("spur_52_72", "plain", float(np.pi)) if np.isclose(c.conv["phi2_window_rad"], np.pi).any() \
+    half = (
+        c.rate("spur_52_72", "plain", float(np.pi))
+        if np.isclose(c.conv["phi2_window_rad"], np.pi).any()
         else float("nan")
-    return verdict(15 <= rp <= 45, rp < 5 or rp > 60,
-                   f"plain conventional Newton, spur 52/72, phi2 over a full turn: {rp:.2f} % (half turn {half:.2f} %)")
+    )
+    return verdict(
+        15 <= rp <= 45,
+        rp < 5 or rp > 60,
+        f"plain conventional Newton, spur 52/72, phi2 over a full turn: {rp:.2f} % (half turn {half:.2f} %)",
+    )
 
 
 def _reduced_about_100(c: Context):
@@ -199,14 +230,21 @@ def _reduced_about_100(c: Context):
     cases += c.cases("helical_25_77_inplane", without="_full_turn")
     rr = {k: c.row(k, "reduced") for k in cases}
     pc = {k: c.row(k, "plain", c.full if k == "spur_52_72" else None) for k in cases}
-    tpc = {k: (rr[k]["seconds_per_solve"] / max(rr[k]["correct_pct"], 1e-9),
-               pc[k]["seconds_per_solve"] / max(pc[k]["correct_pct"], 1e-9)) for k in cases}
+    tpc = {
+        k: (
+            rr[k]["seconds_per_solve"] / max(rr[k]["correct_pct"], 1e-9),
+            pc[k]["seconds_per_solve"] / max(pc[k]["correct_pct"], 1e-9),
+        )
+        for k in cases
+    }
     return verdict(
         all(rr[k]["correct_pct"] >= 99 and tpc[k][0] < tpc[k][1] for k in cases),
         any(rr[k]["correct_pct"] < 95 or tpc[k][0] > tpc[k][1] for k in cases),
-        "reduced plain Newton correct rate: " + ", ".join(f"{k} {rr[k]['correct_pct']:.1f} %" for k in cases)
+        "reduced plain Newton correct rate: "
+        + ", ".join(f"{k} {rr[k]['correct_pct']:.1f} %" for k in cases)
         + "; failures are starts where eq 40 has no flank-2 point (25/25) and Newton steps along the flat contact "
-        "line (helical); the robust start gives 100 % in every case")
+        "line (helical); the robust start gives 100 % in every case",
+    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -234,8 +272,9 @@ def spur_state(c: Context, crown: float, plane: str):
     inside = np.nan
     if curves is not None:
         b_sp = c.design.pairs["spur_25_25_m1"]["face_width"]
-        k = curves[(curves["case"] == "spur_25_25_m1") & np.isclose(curves["crown_amount"], crown)
-                   & (curves["plane"] == plane)]
+        k = curves[
+            (curves["case"] == "spur_25_25_m1") & np.isclose(curves["crown_amount"], crown) & (curves["plane"] == plane)
+        ]
         if len(k):
             inside = bool((np.abs(k["v1_thesis_mm"] - 0.5 * b_sp) < 0.5 * b_sp).all())
     return dict(gap=gap, jump_rel=jump_rel, r2=r2, inside=inside, jump=float(r["jump_arcsec"]), range=rng_)
@@ -244,8 +283,10 @@ def spur_state(c: Context, crown: float, plane: str):
 def _fmt(s_):
     if s_ is None:
         return "n/a"
-    return (f"gap={s_['gap']}, jump {s_['jump']:.3g} arcsec = {100 * s_['jump_rel']:.1f} % of range "
-            f"{s_['range']:.3g} arcsec, quadratic R^2 {s_['r2']:.4f}")
+    return (
+        f"gap={s_['gap']}, jump {s_['jump']:.3g} arcsec = {100 * s_['jump_rel']:.1f} % of range "
+        f"{s_['range']:.3g} arcsec, quadratic R^2 {s_['r2']:.4f}"
+    )
 
 
 def _crown_decides_continuity(c: Context):
@@ -256,10 +297,12 @@ def _crown_decides_continuity(c: Context):
     disc = [s_["gap"] or s_["jump_rel"] > 0.01 for s_ in (lo_c, lo_o)]
     cont = [not s_["gap"] and s_["jump_rel"] <= 0.01 and s_["r2"] > 0.99 for s_ in (hi_c, hi_o)]
     return verdict(
-        all(disc) and all(cont), not all(disc) or any(s_["gap"] or s_["jump_rel"] > 0.01 for s_ in (hi_c, hi_o)),
+        all(disc) and all(cont),
+        not all(disc) or any(s_["gap"] or s_["jump_rel"] > 0.01 for s_ in (hi_c, hi_o)),
         f"spur 25/25 m = 1, 17.5 mrad: a1 = 0.00125 in-plane {_fmt(lo_c)}; out-of-plane {_fmt(lo_o)}; "
         f"a1 = 0.01675 in-plane {_fmt(hi_c)}; out-of-plane {_fmt(hi_o)}. In our TCA the TE of one pair is nearly "
-        "linear along the path at 17.5 mrad (sawtooth cycle: jump ~ cycle range), whatever the crown amount")
+        "linear along the path at 17.5 mrad (sawtooth cycle: jump ~ cycle range), whatever the crown amount",
+    )
 
 
 def _edge_free_but_discontinuous(c: Context):
@@ -268,8 +311,12 @@ def _edge_free_but_discontinuous(c: Context):
         return None
     ok = all((s_["inside"] is True) and not s_["gap"] and s_["jump_rel"] > 0.01 for s_ in mid)
     bad = any(s_["gap"] or s_["inside"] is False or s_["jump_rel"] <= 0.01 for s_ in mid)
-    return verdict(ok, bad and not ok, f"a1 = 0.0025, 17.5 mrad: in-plane {_fmt(mid[0])}, contact inside the face "
-                                       f"{mid[0]['inside']}; out-of-plane {_fmt(mid[1])}, inside {mid[1]['inside']}")
+    return verdict(
+        ok,
+        bad and not ok,
+        f"a1 = 0.0025, 17.5 mrad: in-plane {_fmt(mid[0])}, contact inside the face "
+        f"{mid[0]['inside']}; out-of-plane {_fmt(mid[1])}, inside {mid[1]['inside']}",
+    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -285,10 +332,13 @@ def _log_smallest_te(c: Context):
         order_ok += bool(t["logarithmic"] < t["circular"] < t["parabolic"])
         log_small += bool(t["logarithmic"] < min(t["circular"], t["parabolic"]))
     n_g = grp.ngroups
-    return verdict(order_ok == n_g, log_small <= n_g / 2,
-                   f"|TE_max| log < circular < parabolic in {order_ok} of {n_g} (plane, angle, row) cases; logarithmic "
-                   f"smallest in {log_small}; the differences are small because the misalignment's rigid-body term "
-                   "dominates the helical TE")
+    return verdict(
+        order_ok == n_g,
+        log_small <= n_g / 2,
+        f"|TE_max| log < circular < parabolic in {order_ok} of {n_g} (plane, angle, row) cases; logarithmic "
+        f"smallest in {log_small}; the differences are small because the misalignment's rigid-body term "
+        "dominates the helical TE",
+    )
 
 
 def _shift_grows(c: Context):
@@ -298,9 +348,12 @@ def _shift_grows(c: Context):
     for (kind, plane), d in c.row1.groupby(["crown_kind", "plane"]):
         s_ = d.sort_values("ang")["abs_shift"].to_numpy()
         grows.append((kind, plane, bool(np.all(np.diff(s_) > 0)), s_))
-    return verdict(all(x[2] for x in grows), not all(x[2] for x in grows),
-                   "|contact shift| at 0.05/0.1/0.2 deg (row 1): " + "; ".join(
-                       f"{k} {p_}: " + "/".join(f"{x:.3g}" for x in s_) + " mm" for k, p_, _, s_ in grows))
+    return verdict(
+        all(x[2] for x in grows),
+        not all(x[2] for x in grows),
+        "|contact shift| at 0.05/0.1/0.2 deg (row 1): "
+        + "; ".join(f"{k} {p_}: " + "/".join(f"{x:.3g}" for x in s_) + " mm" for k, p_, _, s_ in grows),
+    )
 
 
 def _circular_closest_in_plane(c: Context):
@@ -310,11 +363,20 @@ def _circular_closest_in_plane(c: Context):
     smallest = {a: inp[inp["ang"] == a].set_index("crown_kind")["abs_shift"] for a in sorted(inp["ang"].unique())}
     want = {0.05: "logarithmic", 0.1: "circular", 0.2: "circular"}
     conf = all(s_.idxmin() == want.get(round(a, 3), s_.idxmin()) for a, s_ in smallest.items())
-    ref_ = any(s_.idxmin() != want[round(a, 3)] and s_[want[round(a, 3)]] > 1.05 * s_.min()
-               for a, s_ in smallest.items() if round(a, 3) in want)
-    return verdict(conf, ref_, "in-plane |shift| (row 1): " + "; ".join(
-        f"{a:g} deg: " + ", ".join(f"{k} {x:.4g}" for k, x in s_.items()) + f" mm (smallest {s_.idxmin()})"
-        for a, s_ in smallest.items()))
+    ref_ = any(
+        s_.idxmin() != want[round(a, 3)] and s_[want[round(a, 3)]] > 1.05 * s_.min()
+        for a, s_ in smallest.items()
+        if round(a, 3) in want
+    )
+    return verdict(
+        conf,
+        ref_,
+        "in-plane |shift| (row 1): "
+        + "; ".join(
+            f"{a:g} deg: " + ", ".join(f"{k} {x:.4g}" for k, x in s_.items()) + f" mm (smallest {s_.idxmin()})"
+            for a, s_ in smallest.items()
+        ),
+    )
 
 
 def _log_farthest_out_of_plane(c: Context):
@@ -324,8 +386,11 @@ def _log_farthest_out_of_plane(c: Context):
     if len(o2) != 3:
         return None
     others = o2.drop("logarithmic")
-    return verdict(bool(o2["logarithmic"] > 1.1 * others.max()), bool(o2["logarithmic"] < others.max()),
-                   "out-of-plane 0.2 deg |shift| (row 1): " + ", ".join(f"{k} {x:.3g} mm" for k, x in o2.items()))
+    return verdict(
+        bool(o2["logarithmic"] > 1.1 * others.max()),
+        bool(o2["logarithmic"] < others.max()),
+        "out-of-plane 0.2 deg |shift| (row 1): " + ", ".join(f"{k} {x:.3g} mm" for k, x in o2.items()),
+    )
 
 
 def _out_of_plane_shift_larger(c: Context):
@@ -335,8 +400,11 @@ def _out_of_plane_shift_larger(c: Context):
     if len(o2) != 3 or len(i2) != 3:
         return None
     ratio = o2 / i2
-    return verdict(bool((ratio > 3).all()), bool((o2 <= i2).any()),
-                   "0.2 deg |shift| out/in (row 1): " + ", ".join(f"{k} {x:.3g}" for k, x in ratio.items()))
+    return verdict(
+        bool((ratio > 3).all()),
+        bool((o2 <= i2).any()),
+        "0.2 deg |shift| out/in (row 1): " + ", ".join(f"{k} {x:.3g}" for k, x in ratio.items()),
+    )
 
 
 def _out_of_plane_worse(c: Context):
@@ -347,11 +415,14 @@ def _out_of_plane_worse(c: Context):
         d = d.set_index("plane")
         if {"in", "out"} <= set(d.index):
             tot += 1
-            worse += bool(d.loc["out", "abs_te"] > d.loc["in", "abs_te"]
-                          and d.loc["out", "abs_shift"] > d.loc["in", "abs_shift"])
-    return verdict(tot > 0 and worse == tot, worse < tot / 2,
-                   f"|TE_max| and |shift| larger out-of-plane than in-plane in {worse} of {tot} (crown, angle) cases "
-                   "(row 1)")
+            worse += bool(
+                d.loc["out", "abs_te"] > d.loc["in", "abs_te"] and d.loc["out", "abs_shift"] > d.loc["in", "abs_shift"]
+            )
+    return verdict(
+        tot > 0 and worse == tot,
+        worse < tot / 2,
+        f"|TE_max| and |shift| larger out-of-plane than in-plane in {worse} of {tot} (crown, angle) cases (row 1)",
+    )
 
 
 def _log_area_smallest(c: Context):
@@ -365,11 +436,17 @@ def _log_area_smallest(c: Context):
 
     red_ = {pl: 100 * (1 - abs(a.loc[pl, "S_l"]) / others(pl)) for pl in a.index}
     smaller = all(abs(a.loc[pl, "S_l"]) < others(pl) for pl in a.index)
-    return verdict(smaller and red_["out"] > red_["in"], not smaller,
-                   "TE areas at 0.2 deg (row 1, one rule): " + "; ".join(
-                       f"{pl}: S_c {a.loc[pl, 'S_c']:.4g}, S_p {a.loc[pl, 'S_p']:.4g}, S_l {a.loc[pl, 'S_l']:.4g} "
-                       f"(|S_l| {red_[pl]:.1f} % below the smaller other)" for pl in a.index)
-                   + "; the printed row-1 log amount out-of-plane (0.046) is far weaker than the others")
+    return verdict(
+        smaller and red_["out"] > red_["in"],
+        not smaller,
+        "TE areas at 0.2 deg (row 1, one rule): "
+        + "; ".join(
+            f"{pl}: S_c {a.loc[pl, 'S_c']:.4g}, S_p {a.loc[pl, 'S_p']:.4g}, S_l {a.loc[pl, 'S_l']:.4g} "
+            f"(|S_l| {red_[pl]:.1f} % below the smaller other)"
+            for pl in a.index
+        )
+        + "; the printed row-1 log amount out-of-plane (0.046) is far weaker than the others",
+    )
 
 
 def _reason(text: str):
@@ -385,7 +462,8 @@ CLAIMS = {
     "003-S6.1-misalignment_small_effect": _misalignment_small_effect,
     "003-S6.1-path_points_fail_despite_close_guess": _reason(
         "not evaluated: the path study with phi2 guesses offset by 0.03..0.3 rad along the path is not run; the "
-        "fixed-guess study (0 % at -1.1 rad, 100 % at -1.2 rad) shows the same mechanism"),
+        "fixed-guess study (0 % at -1.1 rad, 100 % at -1.2 rad) shows the same mechanism"
+    ),
     "003-S6.1-helical_more_iterations_no_help": _helical_more_iterations,
     "003-S6.1-helical_random_phi2_fails": _helical_random_phi2_fails,
     "003-S6.1-wrong_roots_exist": _wrong_roots_exist,
@@ -395,11 +473,13 @@ CLAIMS = {
     "003-S4.1-crown_0.0025_edge_free_but_discontinuous": _edge_free_but_discontinuous,
     "003-C6-spur_log_crown_smaller_TE": _reason(
         "not evaluated: the spur study (sec 4.1) runs parabolic crowning only; logarithmic crowning is run on the "
-        "helical 40/37 pair (Tables 3-4)"),
+        "helical 40/37 pair (Tables 3-4)"
+    ),
     "003-T3-crowning_needed_falls_with_misalignment": _reason(
         "not evaluated: needs the smallest amount giving a continuous TE; in our TCA the helical 40/37 TE is never "
         "continuous with the printed amounts (te_summary.continuous), the rigid-body term of the misalignment "
-        "dominates, so no search for a sufficient amount was run"),
+        "dominates, so no search for a sufficient amount was run"
+    ),
     "003-T3-log_smallest_te_then_circular": _log_smallest_te,
     "003-S4.2-shift_grows_with_misalignment": _shift_grows,
     "003-S4.2-circular_closest_in_plane": _circular_closest_in_plane,
@@ -409,7 +489,8 @@ CLAIMS = {
     "003-S4.2-log_area_smallest": _log_area_smallest,
     "003-C6-helical_shift_much_larger_than_spur": _reason(
         "not evaluated: the spur study runs at 17.5 mrad (1.0 deg), the helical one at 0.05-0.2 deg; no common angle "
-        "with comparable crowning was run"),
+        "with comparable crowning was run"
+    ),
     "003-S4.2-log_highest_stress_ratio_0.2": _reason(NOT_COMPUTED_STRESS),
 }
 

@@ -36,11 +36,31 @@ OUTCOMES = ("correct", "wrong_root", "not_converged", "singular", "diverged")
 #: variants that use the phi2 start (the others derive phi2 from (u1, v1))
 USES_PHI2_START = ("plain", "damped", "domain")
 #: one random stream per study: default_rng([seed, stream])
-STREAMS = {"table10": 1, "window": 2, "sec61_guess": 3, "sec61_window": 4, "sec61_misaligned": 5,
-           "helical": 6, "helical_misaligned": 7, "sec61_printed": 8, "helical_sensitivity": 9,
-           "sec61_full_turn": 10, "helical_full_turn": 11, "helical_misaligned_full_turn": 12}
-CONVERGENCE_COLUMNS = ["case", "formulation", "variant", "n_starts", "phi2_window_rad", "correct_pct",
-                       "wrong_root_pct", "mean_iterations", "seconds_per_solve"]
+STREAMS = {
+    "table10": 1,
+    "window": 2,
+    "sec61_guess": 3,
+    "sec61_window": 4,
+    "sec61_misaligned": 5,
+    "helical": 6,
+    "helical_misaligned": 7,
+    "sec61_printed": 8,
+    "helical_sensitivity": 9,
+    "sec61_full_turn": 10,
+    "helical_full_turn": 11,
+    "helical_misaligned_full_turn": 12,
+}
+CONVERGENCE_COLUMNS = [
+    "case",
+    "formulation",
+    "variant",
+    "n_starts",
+    "phi2_window_rad",
+    "correct_pct",
+    "wrong_root_pct",
+    "mean_iterations",
+    "seconds_per_solve",
+]
 EQUATION_ABLATION = {"plain_six": ("plain", "six"), "plain_drop_nz": ("plain", "drop_nz")}
 
 
@@ -77,8 +97,9 @@ def reference_contact(pair: GearPair, phi1: float, tol: float = 1e-12, agree_mm=
     x = c.unknowns("conventional")[0]
     _, n1 = pair.member1(x[:1], x[1:2], phi1)
     drop = int(np.argmax(np.abs(n1[0])))
-    r = solve_conventional(pair, phi1, seed_from_reduced(pair, phi1, x[:1], x[1:2]), variant="damped", drop=drop,
-                           tol=tol, maxiter=100)
+    r = solve_conventional(
+        pair, phi1, seed_from_reduced(pair, phi1, x[:1], x[1:2]), variant="damped", drop=drop, tol=tol, maxiter=100
+    )
     if r.status[0] != Status.CONVERGED:
         raise ValueError(f"conventional reference did not converge at phi1 = {phi1!r}")
     ref = Reference(phi1=float(phi1), x=x, x_conventional=r.x[0].copy(), drop=drop)
@@ -89,8 +110,9 @@ def reference_contact(pair: GearPair, phi1: float, tol: float = 1e-12, agree_mm=
 
 def study_reference(s: dict, pair: GearPair, phi1_thesis: float) -> tuple[ThesisFrame, Reference]:
     fr = ThesisFrame.of(pair)
-    return fr, reference_contact(pair, fr.phi1_from_thesis(phi1_thesis), tol=s["tol"], agree_mm=s["agree_tol_mm"],
-                                 agree_rad=s["agree_tol_rad"])
+    return fr, reference_contact(
+        pair, fr.phi1_from_thesis(phi1_thesis), tol=s["tol"], agree_mm=s["agree_tol_mm"], agree_rad=s["agree_tol_rad"]
+    )
 
 
 def classify(pair: GearPair, x, status, ref: Reference, tol_mm=1e-6, tol_rad=1e-8) -> np.ndarray:
@@ -117,8 +139,17 @@ def classify(pair: GearPair, x, status, ref: Reference, tol_mm=1e-6, tol_rad=1e-
 def run_variant(pair: GearPair, ref: Reference, starts: np.ndarray, variant: str, s: dict, equations: str = "five"):
     """Solve all ``starts`` with ``variant``; returns (outcomes, iterations, x, seconds)."""
     t0 = time.perf_counter()
-    x, status, iters = solve_variant(pair, ref.phi1, starts, variant, equations=equations, drop=ref.drop,
-                                     tol=s["tol"], maxiter=s["maxiter"], margin=s["domain_margin"])
+    x, status, iters = solve_variant(
+        pair,
+        ref.phi1,
+        starts,
+        variant,
+        equations=equations,
+        drop=ref.drop,
+        tol=s["tol"],
+        maxiter=s["maxiter"],
+        margin=s["domain_margin"],
+    )
     sec = time.perf_counter() - t0
     return classify(pair, x, status, ref, s["match_tol_mm"], s["match_tol_rad"]), iters, x, sec
 
@@ -130,9 +161,17 @@ def formulation(variant: str) -> str:
 def summarise(case, form, variant, outcomes, iters, sec, window, **extra) -> dict:
     n = len(outcomes)
     ok = outcomes == "correct"
-    row = dict(case=case, formulation=form, variant=variant, n_starts=n, phi2_window_rad=window,
-               correct_pct=100.0 * ok.mean(), wrong_root_pct=100.0 * np.mean(outcomes == "wrong_root"),
-               mean_iterations=float(np.mean(iters[ok])) if ok.any() else np.nan, seconds_per_solve=sec / n)
+    row = dict(
+        case=case,
+        formulation=form,
+        variant=variant,
+        n_starts=n,
+        phi2_window_rad=window,
+        correct_pct=100.0 * ok.mean(),
+        wrong_root_pct=100.0 * np.mean(outcomes == "wrong_root"),
+        mean_iterations=float(np.mean(iters[ok])) if ok.any() else np.nan,
+        seconds_per_solve=sec / n,
+    )
     for o in OUTCOMES[2:]:
         row[f"{o}_pct"] = 100.0 * np.mean(outcomes == o)
     row.update(extra)
@@ -150,8 +189,19 @@ class StudyResult:
     pair: GearPair
 
 
-def convergence_study(label: str, pair: GearPair, ref: Reference, starts: np.ndarray, variants, s: dict, *,
-                      window: float, study: str, start_rule: str, equations: dict | None = None) -> StudyResult:
+def convergence_study(
+    label: str,
+    pair: GearPair,
+    ref: Reference,
+    starts: np.ndarray,
+    variants,
+    s: dict,
+    *,
+    window: float,
+    study: str,
+    start_rule: str,
+    equations: dict | None = None,
+) -> StudyResult:
     """Run ``variants`` on the same ``starts``; ``equations`` maps a variant label to (variant, equations)
     for equation-choice ablations (e.g. ``{"plain_six": ("plain", "six")}``)."""
     rows, outcomes = [], {}
@@ -159,8 +209,20 @@ def convergence_study(label: str, pair: GearPair, ref: Reference, starts: np.nda
     for lab, v, eq in jobs:
         out, it, x, sec = run_variant(pair, ref, starts, v, s, equations=eq)
         w = window if v in USES_PHI2_START else np.nan
-        rows.append(summarise(label, formulation(v), lab, out, it, sec, w, study=study, start_rule=start_rule,
-                              equations=eq if formulation(v) == "conventional" else "n1 x n2 (2 of 3)"))
+        rows.append(
+            summarise(
+                label,
+                formulation(v),
+                lab,
+                out,
+                it,
+                sec,
+                w,
+                study=study,
+                start_rule=start_rule,
+                equations=eq if formulation(v) == "conventional" else "n1 x n2 (2 of 3)",
+            )
+        )
         outcomes[lab] = (out, x, it)
     return StudyResult(rows=rows, starts=starts, outcomes=outcomes, ref=ref, pair=pair)
 
@@ -177,24 +239,41 @@ def agreement_rows(res: StudyResult, label: str) -> list:
         o_r, x_r, _ = res.outcomes[other]
         both = (o == "correct") & (o_r == "correct")
         if not both.any():
-            rows.append(dict(case=label, variant=lab, against=other, n_compared=0, max_diff_mm=np.nan,
-                             max_diff_rad=np.nan))
+            rows.append(
+                dict(case=label, variant=lab, against=other, n_compared=0, max_diff_mm=np.nan, max_diff_rad=np.nan)
+            )
             continue
         d = np.abs(x[both, :4] - x_r[both, :4])
         dphi = np.abs(wrap(x[both, 4] - x_r[both, 4]))
-        rows.append(dict(case=label, variant=lab, against=other, n_compared=int(both.sum()),
-                         max_diff_mm=float(d.max()), max_diff_rad=float(dphi.max())))
+        rows.append(
+            dict(
+                case=label,
+                variant=lab,
+                against=other,
+                n_compared=int(both.sum()),
+                max_diff_mm=float(d.max()),
+                max_diff_rad=float(dphi.max()),
+            )
+        )
     return rows
 
 
 def reference_row(label: str, ref: Reference, frame: ThesisFrame) -> dict:
     x = ref.x
-    return dict(case=label, phi1_rad=ref.phi1, phi1_thesis_rad=float(frame.phi1_to_thesis(ref.phi1)),
-                u1_mm=x[0], v1_thesis_mm=float(frame.v_to_thesis(x[1])), u2_mm=x[2],
-                v2_thesis_mm=float(frame.v_to_thesis(x[3])), phi2_rad=x[4],
-                phi2_thesis_rad=float(frame.phi2_to_thesis(x[4])),
-                conventional_minus_reduced_mm=ref.max_diff_mm, conventional_minus_reduced_rad=ref.diff_rad,
-                dropped_normal_component="xyz"[ref.drop])
+    return dict(
+        case=label,
+        phi1_rad=ref.phi1,
+        phi1_thesis_rad=float(frame.phi1_to_thesis(ref.phi1)),
+        u1_mm=x[0],
+        v1_thesis_mm=float(frame.v_to_thesis(x[1])),
+        u2_mm=x[2],
+        v2_thesis_mm=float(frame.v_to_thesis(x[3])),
+        phi2_rad=x[4],
+        phi2_thesis_rad=float(frame.phi2_to_thesis(x[4])),
+        conventional_minus_reduced_mm=ref.max_diff_mm,
+        conventional_minus_reduced_rad=ref.diff_rad,
+        dropped_normal_component="xyz"[ref.drop],
+    )
 
 
 @dataclass
@@ -228,8 +307,18 @@ def table10_studies(s: dict, design: Design, out: Collected) -> None:
     pair, fr, ref, st = table10_starts(s, design)
     out.refs.append(reference_row("spur_52_72", ref, fr))
     w0 = float(s["primary_phi2_window_rad"])
-    r = convergence_study("spur_52_72", pair, ref, st, ALL_VARIANTS, s, window=w0, study="Table 10",
-                          start_rule=TABLE10_RULE, equations=EQUATION_ABLATION)
+    r = convergence_study(
+        "spur_52_72",
+        pair,
+        ref,
+        st,
+        ALL_VARIANTS,
+        s,
+        window=w0,
+        study="Table 10",
+        start_rule=TABLE10_RULE,
+        equations=EQUATION_ABLATION,
+    )
     out.rows += r.rows
     out.agree += agreement_rows(r, "spur_52_72")
     out.details["table10"] = r
@@ -237,9 +326,17 @@ def table10_studies(s: dict, design: Design, out: Collected) -> None:
     st_mid = st.copy()
     st_mid[:, 2] = 0.5 * (pair.lower2[0] + pair.upper2[0])
     st_mid[:, 3] = 0.5 * (pair.lower2[1] + pair.upper2[1])
-    out.rows += convergence_study("spur_52_72_uv2_midpoint", pair, ref, st_mid, USES_PHI2_START, s, window=w0,
-                                  study="Table 10 (start-rule sensitivity)",
-                                  start_rule="as Table 10 but u2,v2 at the mid-point of flank 2").rows
+    out.rows += convergence_study(
+        "spur_52_72_uv2_midpoint",
+        pair,
+        ref,
+        st_mid,
+        USES_PHI2_START,
+        s,
+        window=w0,
+        study="Table 10 (start-rule sensitivity)",
+        start_rule="as Table 10 but u2,v2 at the mid-point of flank 2",
+    ).rows
     # phi2 window sweep: same uniform draws, scaled to each window (the primary window is the Table 10 row)
     base = draw_starts(pair, int(s["n_starts_window"]), rng(s, "window"), phi2_window=(-0.5, 0.5))
     for w in s["phi2_windows_rad"]:
@@ -247,8 +344,17 @@ def table10_studies(s: dict, design: Design, out: Collected) -> None:
             continue
         stw = base.copy()
         stw[:, 4] = ref.x[4] + base[:, 4] * w
-        out.rows += convergence_study("spur_52_72", pair, ref, stw, USES_PHI2_START, s, window=float(w),
-                                      study="phi2 window sweep", start_rule="as Table 10, window width varied").rows
+        out.rows += convergence_study(
+            "spur_52_72",
+            pair,
+            ref,
+            stw,
+            USES_PHI2_START,
+            s,
+            window=float(w),
+            study="phi2 window sweep",
+            start_rule="as Table 10, window width varied",
+        ).rows
 
 
 def sec61_guess_studies(s, design, pair, fr, ref, out: Collected) -> None:
@@ -258,9 +364,16 @@ def sec61_guess_studies(s, design, pair, fr, ref, out: Collected) -> None:
         stg = base.copy()
         stg[:, 4] = fr.phi2_from_thesis(g)
         out.rows += convergence_study(
-            f"spur_25_25_guess_{g:+.2f}rad", pair, ref, stg, USES_PHI2_START, s, window=0.0,
+            f"spur_25_25_guess_{g:+.2f}rad",
+            pair,
+            ref,
+            stg,
+            USES_PHI2_START,
+            s,
+            window=0.0,
             study="sec 6.1 fixed phi2 guess",
-            start_rule=f"u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 = {g} rad (thesis frame)").rows
+            start_rule=f"u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 = {g} rad (thesis frame)",
+        ).rows
 
 
 def sec61_printed_flank_studies(s, design, pair, fr, ref, win, out: Collected) -> None:
@@ -273,16 +386,31 @@ def sec61_printed_flank_studies(s, design, pair, fr, ref, win, out: Collected) -
     v1p = g.uniform(pair.lower1[1], pair.upper1[1], n6)
     php = g.uniform(*win, n6)
     stp = np.column_stack([u1p, v1p, np.full(n6, rb + 0.5 * m), np.zeros(n6), php])
-    out.rows += convergence_study("spur_25_25_window_thesis_table1_printed", pair, ref, stp, USES_PHI2_START, s,
-                                  window=hi_t - lo_t, study="sec 6.1 phi2 window (start-domain sensitivity)",
-                                  start_rule="as sec 6.1 window but u1 uniform on [r_b, r_b + m] and u2 = r_b + m/2 "
-                                             "(Table 1 as printed)").rows
+    out.rows += convergence_study(
+        "spur_25_25_window_thesis_table1_printed",
+        pair,
+        ref,
+        stp,
+        USES_PHI2_START,
+        s,
+        window=hi_t - lo_t,
+        study="sec 6.1 phi2 window (start-domain sensitivity)",
+        start_rule="as sec 6.1 window but u1 uniform on [r_b, r_b + m] and u2 = r_b + m/2 (Table 1 as printed)",
+    ).rows
     for gs in design.sec61_phi2_guesses_thesis:
         stg = stp.copy()
         stg[:, 4] = fr.phi2_from_thesis(gs)
-        out.rows += convergence_study(f"spur_25_25_guess_{gs:+.2f}rad_table1_printed", pair, ref, stg, ("plain",), s,
-                                      window=0.0, study="sec 6.1 fixed phi2 guess (start-domain sensitivity)",
-                                      start_rule="as the fixed-guess study with the Table 1 flank as printed").rows
+        out.rows += convergence_study(
+            f"spur_25_25_guess_{gs:+.2f}rad_table1_printed",
+            pair,
+            ref,
+            stg,
+            ("plain",),
+            s,
+            window=0.0,
+            study="sec 6.1 fixed phi2 guess (start-domain sensitivity)",
+            start_rule="as the fixed-guess study with the Table 1 flank as printed",
+        ).rows
 
 
 def sec61_studies(s: dict, design: Design, out: Collected) -> None:
@@ -296,29 +424,56 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
     lo_t, hi_t = design.sec61_phi2_window_thesis
     win = fr.window_from_thesis(lo_t, hi_t)
     stw = draw_starts(pair, n6, rng(s, "sec61_window"), phi2_window=win, uv2="midpoint")
-    r = convergence_study("spur_25_25_window_thesis", pair, ref, stw, ALL_VARIANTS, s, window=hi_t - lo_t,
-                          study="sec 6.1 phi2 window",
-                          start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)")
+    r = convergence_study(
+        "spur_25_25_window_thesis",
+        pair,
+        ref,
+        stw,
+        ALL_VARIANTS,
+        s,
+        window=hi_t - lo_t,
+        study="sec 6.1 phi2 window",
+        start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)",
+    )
     out.rows += r.rows
     out.agree += agreement_rows(r, "spur_25_25_window_thesis")
     out.details["sec61"] = r
     sec61_printed_flank_studies(s, design, pair, fr, ref, win, out)
     # the widest reading of "random phi2" (claim 003-S6.1-random_phi2_fails): a full turn
-    stf = draw_starts(pair, n6, rng(s, "sec61_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi),
-                      uv2="midpoint")
-    out.rows += convergence_study("spur_25_25_full_turn", pair, ref, stf, ("plain",), s, window=2 * np.pi,
-                                  study="sec 6.1 random phi2 (full turn)",
-                                  start_rule="u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 uniform on a full turn").rows
+    stf = draw_starts(
+        pair, n6, rng(s, "sec61_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi), uv2="midpoint"
+    )
+    out.rows += convergence_study(
+        "spur_25_25_full_turn",
+        pair,
+        ref,
+        stf,
+        ("plain",),
+        s,
+        window=2 * np.pi,
+        study="sec 6.1 random phi2 (full turn)",
+        start_rule="u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 uniform on a full turn",
+    ).rows
     deg = design.sec61_misalignment_deg
     pair_m = design_pair(design, "spur_25_25", misalignment=Misalignment(d_gamma_in=float(deg) * DEG))
     fr_m = ThesisFrame.of(pair_m)
     ref_m = reference_contact(pair_m, ref.phi1, tol=s["tol"], agree_mm=s["agree_tol_mm"], agree_rad=s["agree_tol_rad"])
     lab = f"spur_25_25_inplane_{deg:g}deg"
     out.refs.append(reference_row(lab, ref_m, fr_m))
-    stm = draw_starts(pair_m, n6, rng(s, "sec61_misaligned"), phi2_window=fr_m.window_from_thesis(lo_t, hi_t),
-                      uv2="midpoint")
-    r = convergence_study(lab, pair_m, ref_m, stm, ALL_VARIANTS, s, window=hi_t - lo_t, study="sec 6.1 misaligned",
-                          start_rule=f"as sec 6.1 window; in-plane misalignment {deg} deg")
+    stm = draw_starts(
+        pair_m, n6, rng(s, "sec61_misaligned"), phi2_window=fr_m.window_from_thesis(lo_t, hi_t), uv2="midpoint"
+    )
+    r = convergence_study(
+        lab,
+        pair_m,
+        ref_m,
+        stm,
+        ALL_VARIANTS,
+        s,
+        window=hi_t - lo_t,
+        study="sec 6.1 misaligned",
+        start_rule=f"as sec 6.1 window; in-plane misalignment {deg} deg",
+    )
     out.rows += r.rows
     out.agree += agreement_rows(r, lab)
 
@@ -334,28 +489,58 @@ def helical_studies(s: dict, design: Design, out: Collected) -> None:
         lab = "helical_25_77" if mis is None else f"helical_25_77_inplane_{arcmin:g}arcmin"
         out.refs.append(reference_row(lab, ref, fr))
         sth = draw_starts(pair, n6, rng(s, key), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2="midpoint")
-        r = convergence_study(lab, pair, ref, sth, ALL_VARIANTS, s, window=hi_t - lo_t, study="Table 9 helical",
-                              start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)")
+        r = convergence_study(
+            lab,
+            pair,
+            ref,
+            sth,
+            ALL_VARIANTS,
+            s,
+            window=hi_t - lo_t,
+            study="Table 9 helical",
+            start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)",
+        )
         out.rows += r.rows
         out.agree += agreement_rows(r, lab)
         out.details[key] = r
         if mis is None:  # claim 003-S6.1-helical_more_iterations_no_help: same starts, iteration limit x 4
             s4 = dict(s, maxiter=4 * int(s["maxiter"]))
-            out.rows += convergence_study(f"{lab}_maxiter_x4", pair, ref, sth, ("plain",), s4, window=hi_t - lo_t,
-                                          study="Table 9 helical (iteration limit x 4)",
-                                          start_rule=f"as {lab}, iteration limit {s4['maxiter']}").rows
+            out.rows += convergence_study(
+                f"{lab}_maxiter_x4",
+                pair,
+                ref,
+                sth,
+                ("plain",),
+                s4,
+                window=hi_t - lo_t,
+                study="Table 9 helical (iteration limit x 4)",
+                start_rule=f"as {lab}, iteration limit {s4['maxiter']}",
+            ).rows
         # claim 003-S6.1-helical_random_phi2_fails: phi2 uniform on a full turn
-        stf = draw_starts(pair, n6, rng(s, key + "_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi),
-                          uv2="midpoint")
-        out.rows += convergence_study(f"{lab}_full_turn", pair, ref, stf, ("plain",), s, window=2 * np.pi,
-                                      study="Table 9 helical random phi2 (full turn)",
-                                      start_rule="u1,v1 uniform; u2,v2 mid-point; phi2 uniform on a full turn").rows
+        stf = draw_starts(
+            pair, n6, rng(s, key + "_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi), uv2="midpoint"
+        )
+        out.rows += convergence_study(
+            f"{lab}_full_turn",
+            pair,
+            ref,
+            stf,
+            ("plain",),
+            s,
+            window=2 * np.pi,
+            study="Table 9 helical random phi2 (full turn)",
+            start_rule="u1,v1 uniform; u2,v2 mid-point; phi2 uniform on a full turn",
+        ).rows
 
 
-HELICAL_READINGS = [("uv2_uniform", 1.0, "true", "uniform", "five"), ("equations_six", 1.0, "true", "midpoint", "six"),
-                    ("equations_drop_nz", 1.0, "true", "midpoint", "drop_nz"),
-                    ("crown_x10", 10.0, "true", "midpoint", "five"), ("crown_x0.1", 0.1, "true", "midpoint", "five"),
-                    ("helix_eq58", 1.0, "asin", "midpoint", "five")]
+HELICAL_READINGS = [
+    ("uv2_uniform", 1.0, "true", "uniform", "five"),
+    ("equations_six", 1.0, "true", "midpoint", "six"),
+    ("equations_drop_nz", 1.0, "true", "midpoint", "drop_nz"),
+    ("crown_x10", 10.0, "true", "midpoint", "five"),
+    ("crown_x0.1", 0.1, "true", "midpoint", "five"),
+    ("helix_eq58", 1.0, "asin", "midpoint", "five"),
+]
 
 
 def helical_sensitivity(s: dict, design: Design) -> list:
@@ -367,25 +552,50 @@ def helical_sensitivity(s: dict, design: Design) -> list:
     n = max(10, int(s["n_starts_sec61"]) // 2)
     rows = []
     for lab, scale, form, uv2, eq in HELICAL_READINGS:
-        pair = helical_pair(d["n1"], d["n2"], d["module"], d["pressure_angle_deg"] * DEG, d["helix_angle_deg"] * DEG,
-                            d["face_width"], hand1=d["hand1"], profile_crown1=scale * d["profile_crown1"],
-                            profile_crown2=scale * d["profile_crown2"], helix_form=form)
+        pair = helical_pair(
+            d["n1"],
+            d["n2"],
+            d["module"],
+            d["pressure_angle_deg"] * DEG,
+            d["helix_angle_deg"] * DEG,
+            d["face_width"],
+            hand1=d["hand1"],
+            profile_crown1=scale * d["profile_crown1"],
+            profile_crown2=scale * d["profile_crown2"],
+            helix_form=form,
+        )
         try:
             fr, ref = study_reference(s, pair, d["phi1_thesis"])
         except ValueError:
             continue
         st = draw_starts(pair, n, rng(s, "helical_sensitivity"), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2=uv2)
-        rows += convergence_study(f"helical_25_77_{lab}", pair, ref, st, (), s, window=hi_t - lo_t,
-                                  study="Table 9 helical (sensitivity)", start_rule=f"thesis window; {lab}",
-                                  equations={"plain" if eq == "five" else f"plain_{eq}": ("plain", eq)}).rows
+        rows += convergence_study(
+            f"helical_25_77_{lab}",
+            pair,
+            ref,
+            st,
+            (),
+            s,
+            window=hi_t - lo_t,
+            study="Table 9 helical (sensitivity)",
+            start_rule=f"thesis window; {lab}",
+            equations={"plain" if eq == "five" else f"plain_{eq}": ("plain", eq)},
+        ).rows
     return rows
 
 
 def starts_table(res: StudyResult, frame: ThesisFrame) -> pd.DataFrame:
     """Per-start table of a study: the start (thesis frame too) and the outcome of every variant."""
     st = res.starts
-    df = pd.DataFrame(dict(u1_0_mm=st[:, 0], v1_0_thesis_mm=frame.v_to_thesis(st[:, 1]), u2_0_mm=st[:, 2],
-                           v2_0_thesis_mm=frame.v_to_thesis(st[:, 3]), phi2_0_thesis_rad=frame.phi2_to_thesis(st[:, 4])))
+    df = pd.DataFrame(
+        dict(
+            u1_0_mm=st[:, 0],
+            v1_0_thesis_mm=frame.v_to_thesis(st[:, 1]),
+            u2_0_mm=st[:, 2],
+            v2_0_thesis_mm=frame.v_to_thesis(st[:, 3]),
+            phi2_0_thesis_rad=frame.phi2_to_thesis(st[:, 4]),
+        )
+    )
     for lab, (o, x, it) in res.outcomes.items():
         df[f"outcome_{lab}"] = o
         df[f"iterations_{lab}"] = it
@@ -404,8 +614,12 @@ def convergence_tables(s: dict, design: Design) -> dict:
     helical_studies(s, design, out)
     out.rows += helical_sensitivity(s, design)
     detail = pd.DataFrame(out.rows)
-    tables = dict(convergence=detail[CONVERGENCE_COLUMNS].copy(), convergence_detail=detail,
-                  agreement=pd.DataFrame(out.agree), references=pd.DataFrame(out.refs))
+    tables = dict(
+        convergence=detail[CONVERGENCE_COLUMNS].copy(),
+        convergence_detail=detail,
+        agreement=pd.DataFrame(out.agree),
+        references=pd.DataFrame(out.refs),
+    )
     for name, key in (("starts_table10", "table10"), ("starts_sec61", "sec61"), ("starts_helical", "helical")):
         res = out.details[key]
         tables[name] = starts_table(res, ThesisFrame.of(res.pair))
@@ -423,21 +637,31 @@ def timing_table(s: dict, res: StudyResult) -> pd.DataFrame:
     study ``res`` and a loop of single-start calls (the way a per-point solver such as
     Mathematica's FindRoot is used)."""
     pair, ref = res.pair, res.ref
-    st = res.starts[:int(s["timing_loop_n"])]
+    st = res.starts[: int(s["timing_loop_n"])]
     rows = []
     for lab in TIMED_VARIANTS:
         batch = next(r for r in res.rows if r["variant"] == lab)
         t0 = time.perf_counter()
         for i in range(len(st)):
-            run_variant(pair, ref, st[i:i + 1], lab, s)
+            run_variant(pair, ref, st[i : i + 1], lab, s)
         loop = (time.perf_counter() - t0) / len(st)
         thesis_total = THESIS_TABLE10_TOTAL_S[batch["formulation"]]
         ok = batch["correct_pct"] > 0
-        rows.append(dict(case=batch["case"], formulation=batch["formulation"], variant=lab,
-                         seconds_per_solve_batch=batch["seconds_per_solve"], seconds_per_solve_loop=loop,
-                         n_loop=len(st), correct_pct=batch["correct_pct"],
-                         seconds_per_correct_solve_batch=batch["seconds_per_solve"] * 100.0 / batch["correct_pct"]
-                         if ok else np.nan,
-                         seconds_per_correct_solve_loop=loop * 100.0 / batch["correct_pct"] if ok else np.nan,
-                         thesis_total_s_5000=thesis_total, thesis_seconds_per_correct_point=thesis_total / 5000))
+        rows.append(
+            dict(
+                case=batch["case"],
+                formulation=batch["formulation"],
+                variant=lab,
+                seconds_per_solve_batch=batch["seconds_per_solve"],
+                seconds_per_solve_loop=loop,
+                n_loop=len(st),
+                correct_pct=batch["correct_pct"],
+                seconds_per_correct_solve_batch=batch["seconds_per_solve"] * 100.0 / batch["correct_pct"]
+                if ok
+                else np.nan,
+                seconds_per_correct_solve_loop=loop * 100.0 / batch["correct_pct"] if ok else np.nan,
+                thesis_total_s_5000=thesis_total,
+                thesis_seconds_per_correct_point=thesis_total / 5000,
+            )
+        )
     return pd.DataFrame(rows)

@@ -50,29 +50,44 @@ def _table(published, example: str) -> dict:
 
 def params_from_published(published) -> Design:
     """The :class:`Design` from the seed-003 params tables of ``published`` (Published)."""
-    t = {name: _table(published, name) for name in
-         ("spur_52_72", "spur_25_25", "helical_25_77", "spur_25_25_m1", "helical_40_37")}
+    t = {
+        name: _table(published, name)
+        for name in ("spur_52_72", "spur_25_25", "helical_25_77", "spur_25_25_m1", "helical_40_37")
+    }
     phi1_t = READINGS["phi1_thesis"]
 
     def gear(d):
-        return dict(n1=int(d["N1"]), n2=int(d["N2"]), module=float(d["module"]),
-                    pressure_angle_deg=float(d["pressure_angle"]), face_width=float(d["face_width"]))
+        return dict(
+            n1=int(d["N1"]),
+            n2=int(d["N2"]),
+            module=float(d["module"]),
+            pressure_angle_deg=float(d["pressure_angle"]),
+            face_width=float(d["face_width"]),
+        )
 
-    s52, s25, h25, m1, h40 = (t[k] for k in ("spur_52_72", "spur_25_25", "helical_25_77", "spur_25_25_m1",
-                                             "helical_40_37"))
+    s52, s25, h25, m1, h40 = (
+        t[k] for k in ("spur_52_72", "spur_25_25", "helical_25_77", "spur_25_25_m1", "helical_40_37")
+    )
     a_p = float(s25["a_p"])
     pairs = {
-        "spur_52_72": dict(gear(s52), crown1=float(s52["a_1"]), crown2=READINGS["spur_52_72_crown2"],
-                           phi1_thesis=phi1_t),
-        "spur_25_25": dict(gear(s25), crown1=a_p, crown2=a_p if READINGS["spur_25_25_crown_on_both"] else 0.0,
-                           phi1_thesis=phi1_t),
-        "helical_25_77": dict(gear(h25), helix_angle_deg=float(h25["helix_angle"]),
-                              profile_crown1=float(h25["profile_crowning_1"]),
-                              profile_crown2=float(h25["profile_crowning_2"]),
-                              hand1=READINGS["hand1_helical_25_77"], phi1_thesis=phi1_t),
+        "spur_52_72": dict(
+            gear(s52), crown1=float(s52["a_1"]), crown2=READINGS["spur_52_72_crown2"], phi1_thesis=phi1_t
+        ),
+        "spur_25_25": dict(
+            gear(s25), crown1=a_p, crown2=a_p if READINGS["spur_25_25_crown_on_both"] else 0.0, phi1_thesis=phi1_t
+        ),
+        "helical_25_77": dict(
+            gear(h25),
+            helix_angle_deg=float(h25["helix_angle"]),
+            profile_crown1=float(h25["profile_crowning_1"]),
+            profile_crown2=float(h25["profile_crowning_2"]),
+            hand1=READINGS["hand1_helical_25_77"],
+            phi1_thesis=phi1_t,
+        ),
         "spur_25_25_m1": gear(m1),
-        "helical_40_37": dict(gear(h40), helix_angle_deg=float(h40["helix_angle"]),
-                              hand1=READINGS["hand1_helical_40_37"]),
+        "helical_40_37": dict(
+            gear(h40), helix_angle_deg=float(h40["helix_angle"]), hand1=READINGS["hand1_helical_40_37"]
+        ),
     }
     mrad_in, mrad_out = float(m1["misalignment_in_plane_mrad"]), float(m1["misalignment_out_of_plane_mrad"])
     if mrad_in != mrad_out:
@@ -92,8 +107,9 @@ def params_from_published(published) -> Design:
 # ----------------------------------------------------------------------------------------------
 # gear pairs
 # ----------------------------------------------------------------------------------------------
-def spur_pair(n1, n2, module, pressure_angle, face_width, *, crowning1=None, crowning2=None,
-              misalignment=None) -> GearPair:
+def spur_pair(
+    n1, n2, module, pressure_angle, face_width, *, crowning1=None, crowning2=None, misalignment=None
+) -> GearPair:
     """Standard spur pair (side -1 flanks, standard centre distance), crowning objects or None."""
     g1 = InvoluteGearData(n1, module, pressure_angle, face_width)
     g2 = InvoluteGearData(n2, module, pressure_angle, face_width)
@@ -101,15 +117,35 @@ def spur_pair(n1, n2, module, pressure_angle, face_width, *, crowning1=None, cro
     return GearPair(f1, f2, n1, n2, g1.r_p + g2.r_p, misalignment=misalignment)
 
 
-def helical_pair(n1, n2, module, pressure_angle, helix_angle, face_width, *, hand1=1, crowning1=None,
-                 profile_crown1=0.0, profile_crown2=0.0, misalignment=None, helix_form="true") -> GearPair:
+def helical_pair(
+    n1,
+    n2,
+    module,
+    pressure_angle,
+    helix_angle,
+    face_width,
+    *,
+    hand1=1,
+    crowning1=None,
+    profile_crown1=0.0,
+    profile_crown2=0.0,
+    misalignment=None,
+    helix_form="true",
+) -> GearPair:
     """Standard helical pair (normal module and pressure angle, opposite hands; ``helix_form``
     "true" helicoids or "asin", eq 58 as printed)."""
     g1 = InvoluteGearData(n1, module, pressure_angle, face_width, helix_angle)
     g2 = InvoluteGearData(n2, module, pressure_angle, face_width, helix_angle)
-    f1, f2 = mating_flanks(g1, g2, side=-1, hand1=hand1, crowning1=crowning1,
-                           relief1=profile_crowning(g1, profile_crown1), relief2=profile_crowning(g2, profile_crown2),
-                           helix_form=helix_form)
+    f1, f2 = mating_flanks(
+        g1,
+        g2,
+        side=-1,
+        hand1=hand1,
+        crowning1=crowning1,
+        relief1=profile_crowning(g1, profile_crown1),
+        relief2=profile_crowning(g2, profile_crown2),
+        helix_form=helix_form,
+    )
     return GearPair(f1, f2, n1, n2, g1.r_p + g2.r_p, misalignment=misalignment)
 
 
@@ -118,29 +154,55 @@ def design_pair(design: Design, name: str, misalignment=None) -> GearPair:
     d = design.pairs[name]
     alpha = d["pressure_angle_deg"] * DEG
     if name == "helical_25_77":
-        return helical_pair(d["n1"], d["n2"], d["module"], alpha, d["helix_angle_deg"] * DEG, d["face_width"],
-                            hand1=d["hand1"], profile_crown1=d["profile_crown1"], profile_crown2=d["profile_crown2"],
-                            misalignment=misalignment)
+        return helical_pair(
+            d["n1"],
+            d["n2"],
+            d["module"],
+            alpha,
+            d["helix_angle_deg"] * DEG,
+            d["face_width"],
+            hand1=d["hand1"],
+            profile_crown1=d["profile_crown1"],
+            profile_crown2=d["profile_crown2"],
+            misalignment=misalignment,
+        )
     if name == "helical_40_37":
         return pair_40_37(design, None, misalignment)
     c1 = ParabolicCrowning(d["crown1"]) if d.get("crown1", 0) > 0 else None
     c2 = ParabolicCrowning(d["crown2"]) if d.get("crown2", 0) > 0 else None
-    return spur_pair(d["n1"], d["n2"], d["module"], alpha, d["face_width"], crowning1=c1, crowning2=c2,
-                     misalignment=misalignment)
+    return spur_pair(
+        d["n1"], d["n2"], d["module"], alpha, d["face_width"], crowning1=c1, crowning2=c2, misalignment=misalignment
+    )
 
 
 def pair_40_37(design: Design, crowning=None, mis=None) -> GearPair:
     """Helical 40/37 of Tables 2-4 with a lead crown on the pinion."""
     d = design.pairs["helical_40_37"]
-    return helical_pair(d["n1"], d["n2"], d["module"], d["pressure_angle_deg"] * DEG, d["helix_angle_deg"] * DEG,
-                        d["face_width"], hand1=d["hand1"], crowning1=crowning, misalignment=mis)
+    return helical_pair(
+        d["n1"],
+        d["n2"],
+        d["module"],
+        d["pressure_angle_deg"] * DEG,
+        d["helix_angle_deg"] * DEG,
+        d["face_width"],
+        hand1=d["hand1"],
+        crowning1=crowning,
+        misalignment=mis,
+    )
 
 
 def pair_spur_m1(design: Design, crown, mis=None) -> GearPair:
     """Spur 25/25, m = 1 of sec 4.1 with a parabolic crown ``crown`` on gear 1 (or none)."""
     d = design.pairs["spur_25_25_m1"]
-    return spur_pair(d["n1"], d["n2"], d["module"], d["pressure_angle_deg"] * DEG, d["face_width"],
-                     crowning1=ParabolicCrowning(crown) if crown else None, misalignment=mis)
+    return spur_pair(
+        d["n1"],
+        d["n2"],
+        d["module"],
+        d["pressure_angle_deg"] * DEG,
+        d["face_width"],
+        crowning1=ParabolicCrowning(crown) if crown else None,
+        misalignment=mis,
+    )
 
 
 def misalignment(plane: str, angle: float, pair: GearPair | None = None, pivot: str = "axis") -> Misalignment:
@@ -171,16 +233,34 @@ def misalignment(plane: str, angle: float, pair: GearPair | None = None, pivot: 
 #: (circular c_c [mm], parabolic c_1 [1/mm], logarithmic a_1 [mm]); inputs of the TE study (they
 #: are values_003_T3/T4.csv rows of quantity crown_amount; a test keeps both equal).
 TABLE34 = {
-    ("in", -0.05): {"circular": [2.398, 2.400, 2.565], "parabolic": [0.0227, 0.0233, 0.0240],
-                    "logarithmic": [2.515, 2.600, 2.669]},
-    ("in", -0.1): {"circular": [1.104, 1.150, 1.173], "parabolic": [0.0110, 0.0113, 0.0115],
-                   "logarithmic": [1.201, 1.236, 1.275]},
-    ("in", -0.2): {"circular": [0.507, 0.520, 0.535], "parabolic": [0.0051, 0.0052, 0.0053],
-                   "logarithmic": [0.537, 0.553, 0.572]},
-    ("out", 0.05): {"circular": [0.804, 0.830, 0.853], "parabolic": [0.00799, 0.00820, 0.00847],
-                    "logarithmic": [0.873, 0.900, 0.927]},
-    ("out", 0.1): {"circular": [0.360, 0.370, 0.381], "parabolic": [0.00359, 0.00370, 0.00380],
-                   "logarithmic": [0.368, 0.380, 0.393]},
-    ("out", 0.2): {"circular": [0.143, 0.146, 0.150], "parabolic": [0.00143, 0.00146, 0.00150],
-                   "logarithmic": [0.046, 0.055, 0.081]},
+    ("in", -0.05): {
+        "circular": [2.398, 2.400, 2.565],
+        "parabolic": [0.0227, 0.0233, 0.0240],
+        "logarithmic": [2.515, 2.600, 2.669],
+    },
+    ("in", -0.1): {
+        "circular": [1.104, 1.150, 1.173],
+        "parabolic": [0.0110, 0.0113, 0.0115],
+        "logarithmic": [1.201, 1.236, 1.275],
+    },
+    ("in", -0.2): {
+        "circular": [0.507, 0.520, 0.535],
+        "parabolic": [0.0051, 0.0052, 0.0053],
+        "logarithmic": [0.537, 0.553, 0.572],
+    },
+    ("out", 0.05): {
+        "circular": [0.804, 0.830, 0.853],
+        "parabolic": [0.00799, 0.00820, 0.00847],
+        "logarithmic": [0.873, 0.900, 0.927],
+    },
+    ("out", 0.1): {
+        "circular": [0.360, 0.370, 0.381],
+        "parabolic": [0.00359, 0.00370, 0.00380],
+        "logarithmic": [0.368, 0.380, 0.393],
+    },
+    ("out", 0.2): {
+        "circular": [0.143, 0.146, 0.150],
+        "parabolic": [0.00143, 0.00146, 0.00150],
+        "logarithmic": [0.046, 0.055, 0.081],
+    },
 }

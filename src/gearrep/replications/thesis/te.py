@@ -54,16 +54,28 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
         lin_slope, parab = float(c1), float(abs(c2) * (0.5 * p1) ** 2)
     else:
         lin_slope = parab = np.nan
-    return dict(phi1=phi, te=te, ok=ok, u1=c.u1, v1=c.v1, u2=c.u2, v2=c.v2, cycle_phi1=cyc, cycle_te=env,
-                continuous=bool(fin.all() and jump_arcsec <= JUMP_TOL_ARCSEC),
-                te_extreme=float(env[fin][np.argmax(np.abs(env[fin]))]) if fin.any() else np.nan,
-                area=float(np.trapezoid(env, cyc)) if fin.all() else np.nan, jump_arcsec=jump_arcsec,
-                te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
-                v1_at_pitch=float(c.v1[i0]) if i0 is not None else np.nan,
-                te_at_pitch=float(te[i0]) if i0 is not None else np.nan,
-                env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
-                te_linear_slope=lin_slope, te_parabolic_part=parab,
-                engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan))
+    return dict(
+        phi1=phi,
+        te=te,
+        ok=ok,
+        u1=c.u1,
+        v1=c.v1,
+        u2=c.u2,
+        v2=c.v2,
+        cycle_phi1=cyc,
+        cycle_te=env,
+        continuous=bool(fin.all() and jump_arcsec <= JUMP_TOL_ARCSEC),
+        te_extreme=float(env[fin][np.argmax(np.abs(env[fin]))]) if fin.any() else np.nan,
+        area=float(np.trapezoid(env, cyc)) if fin.all() else np.nan,
+        jump_arcsec=jump_arcsec,
+        te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
+        v1_at_pitch=float(c.v1[i0]) if i0 is not None else np.nan,
+        te_at_pitch=float(te[i0]) if i0 is not None else np.nan,
+        env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
+        te_linear_slope=lin_slope,
+        te_parabolic_part=parab,
+        engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan),
+    )
 
 
 def first_order_te(pair_aligned: GearPair, plane: str, angle: float, c: float, n_line: int = 9) -> dict:
@@ -82,8 +94,14 @@ def first_order_te(pair_aligned: GearPair, plane: str, angle: float, c: float, n
     hw = 0.25 * g1.face_width
     v = np.linspace(-hw, hw, n_line)
     with np.errstate(invalid="ignore", divide="ignore"):
-        cpt = solve_contact(pair_aligned, np.zeros(n_line), np.column_stack([np.full(n_line, g1.r_p), v]),
-                            formulation="reduced", v1=v, tol=1e-12)
+        cpt = solve_contact(
+            pair_aligned,
+            np.zeros(n_line),
+            np.column_stack([np.full(n_line, g1.r_p), v]),
+            formulation="reduced",
+            v1=v,
+            tol=1e-12,
+        )
     P, n = cpt.position, cpt.normal
     disp = angle * np.einsum("ij,ij->i", -n, np.cross(a, P - pair_aligned.O2))
     ok = np.isfinite(disp)
@@ -92,35 +110,64 @@ def first_order_te(pair_aligned: GearPair, plane: str, angle: float, c: float, n
     return dict(lead_error=e, v_shift=e / (2 * k), te=e * e / (4 * k) / (g2.r_b * cb))
 
 
-
 def _te_rows(label, kind, amount, plane, angle_deg, pair, res, fo, frame):
-    return dict(case=label, crown_kind=kind, crown_amount=amount, plane=plane, misalignment_deg=angle_deg,
-                te_max_arcsec=res["te_extreme"] / ARCSEC, te_max_thesis_sign_arcsec=-res["te_extreme"] / ARCSEC,
-                continuous=res["continuous"], jump_arcsec=res["jump_arcsec"],
-                te_pair_min_arcsec=res["te_pair_range"][0] / ARCSEC, te_pair_max_arcsec=res["te_pair_range"][1] / ARCSEC,
-                te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan,
-                v1_shift_mm=res["v1_at_pitch"], first_order_te_arcsec=fo["te"] / ARCSEC if fo else np.nan,
-                first_order_v_shift_mm=fo["v_shift"] if fo else np.nan,
-                lead_error_rad=fo["lead_error"] if fo else np.nan,
-                engagement_begin_rad=res["engagement"][0], engagement_end_rad=res["engagement"][1],
-                te_at_pitch_arcsec=res["te_at_pitch"] / ARCSEC, te_cycle_pp_arcsec=res["env_pp"] / ARCSEC,
-                te_linear_slope_arcsec_per_rad=res["te_linear_slope"] / ARCSEC,
-                te_parabolic_part_arcsec=res["te_parabolic_part"] / ARCSEC)
+    return dict(
+        case=label,
+        crown_kind=kind,
+        crown_amount=amount,
+        plane=plane,
+        misalignment_deg=angle_deg,
+        te_max_arcsec=res["te_extreme"] / ARCSEC,
+        te_max_thesis_sign_arcsec=-res["te_extreme"] / ARCSEC,
+        continuous=res["continuous"],
+        jump_arcsec=res["jump_arcsec"],
+        te_pair_min_arcsec=res["te_pair_range"][0] / ARCSEC,
+        te_pair_max_arcsec=res["te_pair_range"][1] / ARCSEC,
+        te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan,
+        v1_shift_mm=res["v1_at_pitch"],
+        first_order_te_arcsec=fo["te"] / ARCSEC if fo else np.nan,
+        first_order_v_shift_mm=fo["v_shift"] if fo else np.nan,
+        lead_error_rad=fo["lead_error"] if fo else np.nan,
+        engagement_begin_rad=res["engagement"][0],
+        engagement_end_rad=res["engagement"][1],
+        te_at_pitch_arcsec=res["te_at_pitch"] / ARCSEC,
+        te_cycle_pp_arcsec=res["env_pp"] / ARCSEC,
+        te_linear_slope_arcsec_per_rad=res["te_linear_slope"] / ARCSEC,
+        te_parabolic_part_arcsec=res["te_parabolic_part"] / ARCSEC,
+    )
 
 
 def _curve_rows(label, kind, amount, plane, angle_deg, res, frame):
     ok = res["ok"]
-    return pd.DataFrame(dict(case=label, crown_kind=kind, crown_amount=amount, plane=plane,
-                             misalignment_deg=angle_deg, phi1_rad=res["phi1"][ok],
-                             te_pair_arcsec=res["te"][ok] / ARCSEC, u1_mm=res["u1"][ok],
-                             v1_thesis_mm=frame.v_to_thesis(res["v1"][ok]), u2_mm=res["u2"][ok],
-                             v2_thesis_mm=frame.v_to_thesis(res["v2"][ok])))
+    return pd.DataFrame(
+        dict(
+            case=label,
+            crown_kind=kind,
+            crown_amount=amount,
+            plane=plane,
+            misalignment_deg=angle_deg,
+            phi1_rad=res["phi1"][ok],
+            te_pair_arcsec=res["te"][ok] / ARCSEC,
+            u1_mm=res["u1"][ok],
+            v1_thesis_mm=frame.v_to_thesis(res["v1"][ok]),
+            u2_mm=res["u2"][ok],
+            v2_thesis_mm=frame.v_to_thesis(res["v2"][ok]),
+        )
+    )
 
 
 def _cycle_rows(label, kind, amount, plane, angle_deg, res):
-    return pd.DataFrame(dict(case=label, crown_kind=kind, crown_amount=amount, plane=plane, misalignment_deg=angle_deg,
-                             phi1_rad=res["cycle_phi1"], te_arcsec=res["cycle_te"] / ARCSEC))
-
+    return pd.DataFrame(
+        dict(
+            case=label,
+            crown_kind=kind,
+            crown_amount=amount,
+            plane=plane,
+            misalignment_deg=angle_deg,
+            phi1_rad=res["cycle_phi1"],
+            te_arcsec=res["cycle_te"] / ARCSEC,
+        )
+    )
 
 
 #: candidate readings of the thesis's "maximum TE" (Tables 3-4), see :func:`te_readings`
@@ -128,19 +175,19 @@ TE_READINGS = {
     "env_max_arcsec": "largest |TE| transmitted over one cycle, pivot at the pitch point (our te_max) [arcsec]",
     "cycle_pp_arcsec": "peak-to-peak of the transmitted TE over one cycle, pitch-point pivot [arcsec]",
     "pair_linear_half_period_arcsec": "|linear part| of one pair's TE (least-squares quadratic over its engagement) "
-                                      "times half a period pi/N1, pitch-point pivot [arcsec]",
+    "times half a period pi/N1, pitch-point pivot [arcsec]",
     "parabolic_part_arcsec": "parabolic part only: |c2| (T/2)^2 of the same quadratic, T = 2 pi/N1 [arcsec]",
     "crown_first_order_arcsec": "crown term alone, first order e^2/(4 c r_b2 cos^2 beta_b) [arcsec]",
     "pair_at_pitch_arcsec": "TE of one pair at the pitch-point position, pitch-point pivot [arcsec]",
     "axis_pivot_rigid_arcsec": "rigid-body TE of the member-2 axis pivot (mid-face on its axis): in-plane the axial "
-                               "shift r_p2 sin(angle) times tan(beta)/r_p2; out-of-plane none [arcsec]",
+    "shift r_p2 sin(angle) times tan(beta)/r_p2; out-of-plane none [arcsec]",
     "face_end_rigid_arcsec": "rigid-body TE of a pivot at a face end (lever b/2), member 2 turned, gear angle (eq 14): "
-                             "(b/2) sin(angle)/r_p2, in-plane times tan(alpha_t) [arcsec]",
+    "(b/2) sin(angle)/r_p2, in-plane times tan(alpha_t) [arcsec]",
     "face_end_tca_plus_arcsec": "our TCA, pivot at the face end z = +b/2 of member 2, one pair at the pitch-point "
-                                "position [arcsec]",
+    "position [arcsec]",
     "face_end_tca_minus_arcsec": "same, pivot at the face end z = -b/2 [arcsec]",
     "face_end_rigid_pinion_mrad": "face-end rigid-body TE expressed as pinion angle (r_p1 instead of r_p2, i.e. eq 14 "
-                                  "times N2/N1) in 1e-3 rad (the thesis states its misalignments in mrad) [mrad]",
+    "times N2/N1) in 1e-3 rad (the thesis states its misalignments in mrad) [mrad]",
     "face_end_rigid_pinion_mrad_transverse_module": "same with a transverse module 1 (r_p1 = N1/2 = 20 mm) [mrad]",
     "face_end_tca_plus_pinion_mrad": "face_end_tca_plus as pinion angle in 1e-3 rad [mrad]",
     "face_end_tca_minus_pinion_mrad": "face_end_tca_minus as pinion angle in 1e-3 rad [mrad]",
@@ -187,9 +234,13 @@ def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFra
             m = misalignment(r.plane, r.misalignment_deg * DEG, base, "pitch_point")
             hz, a = sgn * half_b, r.misalignment_deg * DEG
             # pivot Q = C + (0, 0, hz): extra translation (I - R)(Q - C) of member 2
-            m = (Misalignment(d_gamma_in=m.d_gamma_in, d_E=m.d_E - hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a)))
-                 if r.plane == "in" else
-                 Misalignment(d_gamma_out=m.d_gamma_out, d_H=m.d_H + hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a))))
+            m = (
+                Misalignment(d_gamma_in=m.d_gamma_in, d_E=m.d_E - hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a)))
+                if r.plane == "in"
+                else Misalignment(
+                    d_gamma_out=m.d_gamma_out, d_H=m.d_H + hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a))
+                )
+            )
             tca[name] = _te_at_pitch_position(pair_40_37(design, crown, m), tol=float(s["tol"]))
         vals = {
             "env_max_arcsec": abs(r.te_max_arcsec),
@@ -208,23 +259,43 @@ def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFra
             "face_end_tca_minus_pinion_mrad": abs(tca["minus"]) * g2.r_p / g1.r_p * 1e3,
         }
         for k, v in vals.items():
-            rows.append(dict(table=r.table, plane=r.plane, misalignment_deg=r.misalignment_deg, crown_kind=r.crown_kind,
-                             table_row=int(r.table_row), crown_amount=r.crown_amount, reading=k, value_abs=float(v),
-                             unit="mrad" if "mrad" in k else "arcsec",
-                             description=TE_READINGS[k]))
+            rows.append(
+                dict(
+                    table=r.table,
+                    plane=r.plane,
+                    misalignment_deg=r.misalignment_deg,
+                    crown_kind=r.crown_kind,
+                    table_row=int(r.table_row),
+                    crown_amount=r.crown_amount,
+                    reading=k,
+                    value_abs=float(v),
+                    unit="mrad" if "mrad" in k else "arcsec",
+                    description=TE_READINGS[k],
+                )
+            )
     return pd.DataFrame(rows)
 
 
 def crowning_areas(te_summary: pd.DataFrame) -> pd.DataFrame:
     """TE areas S_c, S_p, S_l at 0.2 deg (first row of Tables 3-4), thesis sign, and their ratios."""
-    t = te_summary[(te_summary["case"] == "helical_40_37") & (te_summary["misalignment_deg"].abs() == 0.2)
-                   & (te_summary["table_row"] == 1)]
+    t = te_summary[
+        (te_summary["case"] == "helical_40_37")
+        & (te_summary["misalignment_deg"].abs() == 0.2)
+        & (te_summary["table_row"] == 1)
+    ]
     rows = []
     for plane, g in t.groupby("plane"):
         s = {r.crown_kind: -r.te_area_arcsec_rad for r in g.itertuples()}
-        rows.append(dict(plane=plane, S_c=s.get("circular"), S_p=s.get("parabolic"), S_l=s.get("logarithmic"),
-                         l_vs_p_pct=100 * (abs(s["logarithmic"]) / abs(s["parabolic"]) - 1),
-                         l_vs_c_pct=100 * (abs(s["logarithmic"]) / abs(s["circular"]) - 1)))
+        rows.append(
+            dict(
+                plane=plane,
+                S_c=s.get("circular"),
+                S_p=s.get("parabolic"),
+                S_l=s.get("logarithmic"),
+                l_vs_p_pct=100 * (abs(s["logarithmic"]) / abs(s["parabolic"]) - 1),
+                l_vs_c_pct=100 * (abs(s["logarithmic"]) / abs(s["circular"]) - 1),
+            )
+        )
     return pd.DataFrame(rows)
 
 
@@ -260,8 +331,11 @@ def table34_te(s: dict, design: Design, select=None):
             for i, amount in enumerate(amounts):
                 if i + 1 not in s["crowning_rows"] or (select is not None and not select(plane, ang_deg, i + 1)):
                     continue
-                pair = pair_40_37(design, crowning_object(kind, amount, b, a2),
-                                  misalignment(plane, ang_deg * DEG, base, s["te_pivot"]))
+                pair = pair_40_37(
+                    design,
+                    crowning_object(kind, amount, b, a2),
+                    misalignment(plane, ang_deg * DEG, base, s["te_pivot"]),
+                )
                 fr = ThesisFrame.of(pair)
                 res = te_study(pair, n)
                 fo = first_order_te(base, plane, ang_deg * DEG, crown_curvature(kind, amount, b, a2))
@@ -281,8 +355,12 @@ def te_tables(s: dict, design: Design) -> dict:
     s1, c1, y1 = spur_te(s, design)
     s2, c2, y2 = table34_te(s, design)
     summary = pd.DataFrame(s1 + s2)
-    return dict(te_summary=summary, te_curves=pd.concat(c1 + c2, ignore_index=True),
-                te_cycle=pd.concat(y1 + y2, ignore_index=True), te_readings=readings_of(s, design, summary))
+    return dict(
+        te_summary=summary,
+        te_curves=pd.concat(c1 + c2, ignore_index=True),
+        te_cycle=pd.concat(y1 + y2, ignore_index=True),
+        te_readings=readings_of(s, design, summary),
+    )
 
 
 def te_sensitivity(s: dict, design: Design) -> dict:
@@ -301,12 +379,26 @@ def te_sensitivity(s: dict, design: Design) -> dict:
             if abs(ang_deg) != 0.2:
                 continue
             amount = kinds[kind][0]
-            res = te_study(pair_40_37(design, crowning_object(kind, amount, b, a2s),
-                                      misalignment(plane, ang_deg * DEG, base, pivot)), n)
-            sens.append(dict(crown_kind=kind, plane=plane, misalignment_deg=ang_deg, crown_amount=amount, log_a2=a2s,
-                             pivot=pivot, te_max_arcsec=res["te_extreme"] / ARCSEC, continuous=res["continuous"],
-                             jump_arcsec=res["jump_arcsec"],
-                             te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan))
+            res = te_study(
+                pair_40_37(
+                    design, crowning_object(kind, amount, b, a2s), misalignment(plane, ang_deg * DEG, base, pivot)
+                ),
+                n,
+            )
+            sens.append(
+                dict(
+                    crown_kind=kind,
+                    plane=plane,
+                    misalignment_deg=ang_deg,
+                    crown_amount=amount,
+                    log_a2=a2s,
+                    pivot=pivot,
+                    te_max_arcsec=res["te_extreme"] / ARCSEC,
+                    continuous=res["continuous"],
+                    jump_arcsec=res["jump_arcsec"],
+                    te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan,
+                )
+            )
     return dict(te_sensitivity=pd.DataFrame(sens))
 
 

@@ -25,31 +25,70 @@ from .checks import SURVIVING, check_records
 from .claims import normalise
 from .studies import TABLE_COLUMNS, TABLES, curvature_tables, direct_curvatures, l1_grid
 
-__all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
-           "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "merged", "TABLES",
-           "TABLE_COLUMNS", "SURVIVING", "curvature_tables", "direct_curvatures", "l1_grid", "normalise"]
+__all__ = [
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
+    "Design",
+    "merged",
+    "TABLES",
+    "TABLE_COLUMNS",
+    "SURVIVING",
+    "curvature_tables",
+    "direct_curvatures",
+    "l1_grid",
+    "normalise",
+]
 
 SEED = "000"
 
 _n, _i = _s.number, _s.integer
 SETTINGS = _s.declare(
-    tol=_n(1e-12, "mm", "meshing residual, scaled by max(1, R_c/100 mm); bench: 1e-10 moves k by 2e-11 1/mm "
-           "(> 5e-12 target), 1e-12 by 4e-14", ge=1e-15, le=1e-6),
+    tol=_n(
+        1e-12,
+        "mm",
+        "meshing residual, scaled by max(1, R_c/100 mm); bench: 1e-10 moves k by 2e-11 1/mm "
+        "(> 5e-12 target), 1e-12 by 4e-14",
+        ge=1e-15,
+        le=1e-6,
+    ),
     maxiter=_i(50, "1", "Newton iterations of the meshing solves", ge=1, le=1000),
-    fd_step_l_mm=_n(1e-3, "mm", "l step of the direct method (a) (tangential second derivatives only); bench: every "
-                    "step from 1e-4 to 0.1 mm gives 4.57e-12 relative (the floor), same time", ge=1e-6, le=0.1),
+    fd_step_l_mm=_n(
+        1e-3,
+        "mm",
+        "l step of the direct method (a) (tangential second derivatives only); bench: every "
+        "step from 1e-4 to 0.1 mm gives 4.57e-12 relative (the floor), same time",
+        ge=1e-6,
+        le=0.1,
+    ),
     fd_step_psi_rad=_n(1e-4, "rad", "psi step of the direct method (a)", ge=1e-8, le=1e-2),
     dl_mm=_n(1e-4, "mm", "central-difference step of d(value)/d(l1) for the rounded-l1 allowance", ge=1e-7, le=1e-2),
     face_n_l=_i(7, "1", "curvature across the face: l1 values", ge=2, le=201),
     face_n_z=_i(21, "1", "curvature across the face: Z_f values", ge=3, le=401),
-    rc_sweep_mm=_s.array([50.0, 110.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0, 50000.0], "mm",
-                         "R_c sweep towards the spur limit (evaluated in increasing order)",
-                         _n(None, "mm", "", ge=1.0), min_items=2),
+    rc_sweep_mm=_s.array(
+        [50.0, 110.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0, 20000.0, 50000.0],
+        "mm",
+        "R_c sweep towards the spur limit (evaluated in increasing order)",
+        _n(None, "mm", "", ge=1.0),
+        min_items=2,
+    ),
     undercut_n_l=_i(61, "1", "l1 samples of the singular-point scan", ge=3, le=2001),
-    ellipse_pairs=_s.array([[110.0, 110.0], [110.0, 111.0], [110.0, 113.0]], "mm",
-                           "(R_cp, R_cg) of the mid-face pitch-point ellipses (informative; 110/111 kept from the "
-                           "workflow configuration)",
-                           _s.array(None, "mm", "", _n(None, "mm", "", ge=1.0), min_items=2, max_items=2)),
+    ellipse_pairs=_s.array(
+        [[110.0, 110.0], [110.0, 111.0], [110.0, 113.0]],
+        "mm",
+        "(R_cp, R_cg) of the mid-face pitch-point ellipses (informative; 110/111 kept from the workflow configuration)",
+        _s.array(None, "mm", "", _n(None, "mm", "", ge=1.0), min_items=2, max_items=2),
+    ),
 )
 
 DESIGN_DATA = ["params_000_*.csv", "values_000_T4.3.csv"]
@@ -102,26 +141,38 @@ def params_from_published(published) -> Design:
 
     n_rows, decimals = _rows_of_table(published.values, "Table 4.3")
     d = Design(
-        module_mm=val("5.1", "hob_normal_module"), pressure_angle_deg=val("5.1", "hob_normal_pressure_angle"),
-        hob_pitch_radius_mm=val("5.1", "hob_pitch_radius"), n_teeth=int(val("5.1", "N_pinion")),
-        tip_radius_mm=val("5.1", "pinion_outside_diameter") / 2, R_c_small_mm=val("4.1", "R_c"),
-        R_c_large_mm=val("4.2", "R_c"), l1_end_mm=val("4.1", "l1_working_start"),
-        face_width_mm=val("5.1", "pinion_face_width"), ellipse_n_gear=int(val("5.1", "N_gear")),
+        module_mm=val("5.1", "hob_normal_module"),
+        pressure_angle_deg=val("5.1", "hob_normal_pressure_angle"),
+        hob_pitch_radius_mm=val("5.1", "hob_pitch_radius"),
+        n_teeth=int(val("5.1", "N_pinion")),
+        tip_radius_mm=val("5.1", "pinion_outside_diameter") / 2,
+        R_c_small_mm=val("4.1", "R_c"),
+        R_c_large_mm=val("4.2", "R_c"),
+        l1_end_mm=val("4.1", "l1_working_start"),
+        face_width_mm=val("5.1", "pinion_face_width"),
+        ellipse_n_gear=int(val("5.1", "N_gear")),
         ellipse_delta_mm=val("5.3", "separation_threshold"),
         ellipse_pressure_angles_deg=(val("5.1", "fig5_7_pressure_angle_1"), val("5.1", "fig5_7_pressure_angle_2")),
-        n_rows=n_rows, l1_printed_decimals=decimals)
+        n_rows=n_rows,
+        l1_printed_decimals=decimals,
+    )
     _check_design(d)
     return d
 
 
 def _check_design(d: Design) -> None:
     r_p = 0.5 * d.module_mm * d.n_teeth
-    for name, v, lo, hi in (("module_mm", d.module_mm, 0.1, 100.0), ("pressure_angle_deg", d.pressure_angle_deg, 5, 40),
-                            ("hob_pitch_radius_mm", d.hob_pitch_radius_mm, d.module_mm, 1000.0),
-                            ("tip_radius_mm", d.tip_radius_mm, r_p, r_p + 3 * d.module_mm),
-                            ("R_c_small_mm", d.R_c_small_mm, 1.0, 1e7), ("R_c_large_mm", d.R_c_large_mm, 1.0, 1e7),
-                            ("l1_end_mm", d.l1_end_mm, 0.0, 100.0), ("face_width_mm", d.face_width_mm, 0.1, 1000.0),
-                            ("ellipse_delta_mm", d.ellipse_delta_mm, 1e-7, 1.0)):
+    for name, v, lo, hi in (
+        ("module_mm", d.module_mm, 0.1, 100.0),
+        ("pressure_angle_deg", d.pressure_angle_deg, 5, 40),
+        ("hob_pitch_radius_mm", d.hob_pitch_radius_mm, d.module_mm, 1000.0),
+        ("tip_radius_mm", d.tip_radius_mm, r_p, r_p + 3 * d.module_mm),
+        ("R_c_small_mm", d.R_c_small_mm, 1.0, 1e7),
+        ("R_c_large_mm", d.R_c_large_mm, 1.0, 1e7),
+        ("l1_end_mm", d.l1_end_mm, 0.0, 100.0),
+        ("face_width_mm", d.face_width_mm, 0.1, 1000.0),
+        ("ellipse_delta_mm", d.ellipse_delta_mm, 1e-7, 1.0),
+    ):
         if not (np.isfinite(v) and lo <= v <= hi):
             raise ValueError(f"tseng_curvature design: {name} = {v!r} outside [{lo:g}, {hi:g}]")
 
@@ -158,12 +209,23 @@ def _table_job(tab, name):
 
 _TABLE_NAMES = {f"curvature_table_{t.replace('.', '_')}": t for t in TABLES}
 JOBS = {
-    **{name: Job(_table_job(tab, name), {name: f"tseng/{name}.csv"}, f"Table {tab} alone")
-       for name, tab in _TABLE_NAMES.items()},
-    **{name: Job(_job(getattr(studies, fn), name), {name: f"tseng_curvature/{name}.csv"}, getattr(studies, fn).__doc__)
-       for name, fn in (("curvature_detail", "detail"), ("conventions", "conventions"), ("assignment", "assignment"),
-                        ("variants", "variants"), ("face", "face"), ("rc_sweep", "rc_sweep"),
-                        ("undercut", "undercut"), ("ellipses", "ellipses"))},
+    **{
+        name: Job(_table_job(tab, name), {name: f"tseng/{name}.csv"}, f"Table {tab} alone")
+        for name, tab in _TABLE_NAMES.items()
+    },
+    **{
+        name: Job(_job(getattr(studies, fn), name), {name: f"tseng_curvature/{name}.csv"}, getattr(studies, fn).__doc__)
+        for name, fn in (
+            ("curvature_detail", "detail"),
+            ("conventions", "conventions"),
+            ("assignment", "assignment"),
+            ("variants", "variants"),
+            ("face", "face"),
+            ("rc_sweep", "rc_sweep"),
+            ("undercut", "undercut"),
+            ("ellipses", "ellipses"),
+        )
+    },
 }
 
 CHECK_OUTPUTS = {"checks": "checks/tseng_curvature.csv"}
@@ -209,16 +271,29 @@ def bench_cases(settings: dict, design: Design) -> dict:
         out = []
         for tab, (flank, key) in TABLES.items():
             ks, kq = direct_curvatures(p, flank, p[key], grid)
-            out.append(np.c_[ks / exact[tab]["k_s_per_mm"].to_numpy() - 1, kq / exact[tab]["k_q_per_mm"].to_numpy() - 1])
+            out.append(
+                np.c_[ks / exact[tab]["k_s_per_mm"].to_numpy() - 1, kq / exact[tab]["k_q_per_mm"].to_numpy() - 1]
+            )
         return np.concatenate(out)
 
     steps = [{"fd_step_l_mm": h, "fd_step_psi_rad": h / 10} for h in (1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 1e-4)]
     return {
-        "four_tables": {"run": run_tables, "settings": [{"tol": t} for t in (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)],
-                        "reference": {"tol": 1e-13}, "error": lambda res, ref: float(np.max(np.abs(res - ref))),
-                        "error_unit": "per_mm", "error_target": 0.1 * 0.5e-10, "current": {"tol": base["tol"]}},
-        "direct_method": {"run": run_direct, "settings": steps, "reference": steps[-2],
-                          "error": lambda res, _ref: float(np.max(np.abs(res))), "error_unit": "relative",
-                          "error_target": 1e-8,
-                          "current": {"fd_step_l_mm": base["fd_step_l_mm"], "fd_step_psi_rad": base["fd_step_psi_rad"]}},
+        "four_tables": {
+            "run": run_tables,
+            "settings": [{"tol": t} for t in (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)],
+            "reference": {"tol": 1e-13},
+            "error": lambda res, ref: float(np.max(np.abs(res - ref))),
+            "error_unit": "per_mm",
+            "error_target": 0.1 * 0.5e-10,
+            "current": {"tol": base["tol"]},
+        },
+        "direct_method": {
+            "run": run_direct,
+            "settings": steps,
+            "reference": steps[-2],
+            "error": lambda res, _ref: float(np.max(np.abs(res))),
+            "error_unit": "relative",
+            "error_target": 1e-8,
+            "current": {"fd_step_l_mm": base["fd_step_l_mm"], "fd_step_psi_rad": base["fd_step_psi_rad"]},
+        },
     }

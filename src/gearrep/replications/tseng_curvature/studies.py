@@ -19,9 +19,26 @@ from ...ellipse import elastic_ellipse_from_relative
 from ...solve import status_names
 from ...surfaces.hob import GeneratedGear, ZAHob
 
-__all__ = ["TABLES", "TABLE_COLUMNS", "hob", "gear", "l1_grid", "evaluate_rows", "direct_curvatures",
-           "curvature_tables", "curvature_table", "detail", "conventions", "assignment", "variants", "face",
-           "rc_sweep", "undercut", "ellipses", "pitch_l"]
+__all__ = [
+    "TABLES",
+    "TABLE_COLUMNS",
+    "hob",
+    "gear",
+    "l1_grid",
+    "evaluate_rows",
+    "direct_curvatures",
+    "curvature_tables",
+    "curvature_table",
+    "detail",
+    "conventions",
+    "assignment",
+    "variants",
+    "face",
+    "rc_sweep",
+    "undercut",
+    "ellipses",
+    "pitch_l",
+]
 
 TABLES = {  # table -> (flank, R_c key)
     "4.2": ("L", "R_c_small_mm"),
@@ -34,8 +51,12 @@ TABLE_COLUMNS = ["l1_mm", "k_s_per_mm", "e_s_x", "e_s_y", "e_s_z", "k_q_per_mm",
 
 def hob(p: dict, variant: str = "axial", pressure_angle_deg: float | None = None) -> ZAHob:
     a = p["pressure_angle_deg"] if pressure_angle_deg is None else pressure_angle_deg
-    return ZAHob(module_mm=p["module_mm"], pressure_angle_rad=float(np.radians(a)),
-                 pitch_radius_mm=p["hob_pitch_radius_mm"], variant=variant)
+    return ZAHob(
+        module_mm=p["module_mm"],
+        pressure_angle_rad=float(np.radians(a)),
+        pitch_radius_mm=p["hob_pitch_radius_mm"],
+        variant=variant,
+    )
 
 
 def solve_tol(p: dict, R_c_mm: float) -> float:
@@ -46,8 +67,7 @@ def solve_tol(p: dict, R_c_mm: float) -> float:
 def gear(p: dict, flank: str, R_c_mm: float, variant: str = "axial", **kw) -> GeneratedGear:
     kw.setdefault("n_teeth", p["n_teeth"])
     h = kw.pop("hob", None) or hob(p, variant)
-    return GeneratedGear.flank(flank, hob=h, R_c_mm=float(R_c_mm), tol=solve_tol(p, R_c_mm), maxiter=p["maxiter"],
-                               **kw)
+    return GeneratedGear.flank(flank, hob=h, R_c_mm=float(R_c_mm), tol=solve_tol(p, R_c_mm), maxiter=p["maxiter"], **kw)
 
 
 def l1_grid(p: dict, variant: str = "axial") -> tuple[np.ndarray, object]:
@@ -122,20 +142,39 @@ def detail(p: dict) -> pd.DataFrame:
         ks_a, kq_a = direct_curvatures(p, flank, Rc, grid)
         r = np.hypot(c.point[:, 0], c.point[:, 1])
         for i in range(len(grid)):
-            rec = {"table": tab, "flank": f"Sigma_2{flank}", "R_c_mm": Rc, "row": i,
-                   "l1_grid_mm": grid[i], "l1_printed_mm": l_pr[i],
-                   "x_mm": c.point[i, 0], "y_mm": c.point[i, 1], "z_mm": c.point[i, 2], "radius_mm": r[i],
-                   "psi_rad": c.result.param("psi")[i], "phi_rad": c.result.params[i, 1],
-                   "theta_rad": c.result.param("theta")[i],
-                   "status": status_names(c.result.status)[i], "residual": c.result.residual[i],
-                   "singular_measure": c.result.singular_measure[i],
-                   "k_s_direct_per_mm": ks_a[i], "k_q_direct_per_mm": kq_a[i],
-                   "k_s_seed_method_per_mm": float(c.k_s_two_parameter[i] if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
-                                                   else c.k_q_two_parameter[i]),
-                   "k_q_seed_method_per_mm": float(c.k_q_two_parameter[i] if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
-                                                   else c.k_s_two_parameter[i]),
-                   "sigma_seed_deg": np.degrees(c.sigma_two_parameter[i]),
-                   "k_f_hob_per_mm": c.generated.k_f[i], "k_h_hob_per_mm": c.generated.k_h[i]}
+            rec = {
+                "table": tab,
+                "flank": f"Sigma_2{flank}",
+                "R_c_mm": Rc,
+                "row": i,
+                "l1_grid_mm": grid[i],
+                "l1_printed_mm": l_pr[i],
+                "x_mm": c.point[i, 0],
+                "y_mm": c.point[i, 1],
+                "z_mm": c.point[i, 2],
+                "radius_mm": r[i],
+                "psi_rad": c.result.param("psi")[i],
+                "phi_rad": c.result.params[i, 1],
+                "theta_rad": c.result.param("theta")[i],
+                "status": status_names(c.result.status)[i],
+                "residual": c.result.residual[i],
+                "singular_measure": c.result.singular_measure[i],
+                "k_s_direct_per_mm": ks_a[i],
+                "k_q_direct_per_mm": kq_a[i],
+                "k_s_seed_method_per_mm": float(
+                    c.k_s_two_parameter[i]
+                    if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
+                    else c.k_q_two_parameter[i]
+                ),
+                "k_q_seed_method_per_mm": float(
+                    c.k_q_two_parameter[i]
+                    if abs(c.k_s_two_parameter[i] - c.k_s[i]) <= abs(c.k_q_two_parameter[i] - c.k_s[i])
+                    else c.k_s_two_parameter[i]
+                ),
+                "sigma_seed_deg": np.degrees(c.sigma_two_parameter[i]),
+                "k_f_hob_per_mm": c.generated.k_f[i],
+                "k_h_hob_per_mm": c.generated.k_h[i],
+            }
             for j, q in enumerate(("k_s", "e_s_x", "e_s_y", "e_s_z", "k_q", "e_q_x", "e_q_y", "e_q_z")):
                 rec[f"{q}_grid"] = cg[i, j]
                 rec[f"{q}_printed_l"] = cp[i, j]
@@ -143,10 +182,12 @@ def detail(p: dict) -> pd.DataFrame:
             rows.append(rec)
     d = pd.DataFrame(rows)
     d["rel_diff_direct_vs_relations"] = np.maximum(
-        np.abs(d["k_s_direct_per_mm"] / d["k_s_grid"] - 1), np.abs(d["k_q_direct_per_mm"] / d["k_q_grid"] - 1))
+        np.abs(d["k_s_direct_per_mm"] / d["k_s_grid"] - 1), np.abs(d["k_q_direct_per_mm"] / d["k_q_grid"] - 1)
+    )
     d["rel_diff_direct_vs_seed_method"] = np.maximum(
         np.abs(d["k_s_direct_per_mm"] / d["k_s_seed_method_per_mm"] - 1),
-        np.abs(d["k_q_direct_per_mm"] / d["k_q_seed_method_per_mm"] - 1))
+        np.abs(d["k_q_direct_per_mm"] / d["k_q_seed_method_per_mm"] - 1),
+    )
     return d
 
 
@@ -158,16 +199,29 @@ def assignment(p: dict) -> pd.DataFrame:
     for side in (1, -1):
         for arc in (-1, 1):
             for key in ("R_c_small_mm", "R_c_large_mm"):
-                g = GeneratedGear(hob=hob(p), n_teeth=p["n_teeth"], R_c_mm=p[key], side=side, arc_centre=arc,
-                                  tol=solve_tol(p, p[key]))
+                g = GeneratedGear(
+                    hob=hob(p), n_teeth=p["n_teeth"], R_c_mm=p[key], side=side, arc_centre=arc, tol=solve_tol(p, p[key])
+                )
                 c = g.curvatures(grid[[0, -1]])
-                rows.append({"side": side, "arc_centre": arc, "R_c_mm": p[key],
-                             "all_converged": bool(np.all(c.result.converged)),
-                             "flank_shape": "convex" if c.k_s[0] * c.k_q[0] > 0 else "concave",
-                             "k_s_tip_per_mm": c.k_s[0], "k_s_last_per_mm": c.k_s[1],
-                             "k_q_tip_per_mm": c.k_q[0], "k_q_last_per_mm": c.k_q[1],
-                             "note": ("tables' convention" if arc == -1 else "arc centre on the other side "
-                                      "(tests/unit/_envelope_cases.py::hob_case for side +1, R_c 110)")})
+                rows.append(
+                    {
+                        "side": side,
+                        "arc_centre": arc,
+                        "R_c_mm": p[key],
+                        "all_converged": bool(np.all(c.result.converged)),
+                        "flank_shape": "convex" if c.k_s[0] * c.k_q[0] > 0 else "concave",
+                        "k_s_tip_per_mm": c.k_s[0],
+                        "k_s_last_per_mm": c.k_s[1],
+                        "k_q_tip_per_mm": c.k_q[0],
+                        "k_q_last_per_mm": c.k_q[1],
+                        "note": (
+                            "tables' convention"
+                            if arc == -1
+                            else "arc centre on the other side "
+                            "(tests/unit/_envelope_cases.py::hob_case for side +1, R_c 110)"
+                        ),
+                    }
+                )
     return pd.DataFrame(rows)
 
 
@@ -179,11 +233,20 @@ def variants(p: dict) -> pd.DataFrame:
     for tab in TABLES:
         a, b = tabs_axial[tab], tp[tab]
         for i in range(len(a)):
-            rows.append({"table": tab, "row": i, "l1_axial_mm": a["l1_mm"][i], "l1_printed_variant_mm": b["l1_mm"][i],
-                         "k_s_axial_per_mm": a["k_s_per_mm"][i], "k_s_printed_eq_per_mm": b["k_s_per_mm"][i],
-                         "k_q_axial_per_mm": a["k_q_per_mm"][i], "k_q_printed_eq_per_mm": b["k_q_per_mm"][i],
-                         "k_q_rel_diff": b["k_q_per_mm"][i] / a["k_q_per_mm"][i] - 1,
-                         "k_s_rel_diff": b["k_s_per_mm"][i] / a["k_s_per_mm"][i] - 1})
+            rows.append(
+                {
+                    "table": tab,
+                    "row": i,
+                    "l1_axial_mm": a["l1_mm"][i],
+                    "l1_printed_variant_mm": b["l1_mm"][i],
+                    "k_s_axial_per_mm": a["k_s_per_mm"][i],
+                    "k_s_printed_eq_per_mm": b["k_s_per_mm"][i],
+                    "k_q_axial_per_mm": a["k_q_per_mm"][i],
+                    "k_q_printed_eq_per_mm": b["k_q_per_mm"][i],
+                    "k_q_rel_diff": b["k_q_per_mm"][i] / a["k_q_per_mm"][i] - 1,
+                    "k_s_rel_diff": b["k_s_per_mm"][i] / a["k_s_per_mm"][i] - 1,
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -206,11 +269,22 @@ def face(p: dict) -> pd.DataFrame:
         det_mid = np.sign(g.solve(ls, 0.0).litvin_det)
         beyond = (np.sign(c.result.litvin_det).reshape(L.shape) != det_mid[:, None]).reshape(-1)
         for i in range(L.size):
-            rows.append({"flank": f"Sigma_2{flank}", "R_c_mm": Rc, "l1_mm": L.reshape(-1)[i], "psi_rad": PS.reshape(-1)[i],
-                         "Z_f_mm": c.point[i, 2], "radius_mm": np.hypot(*c.point[i, :2]),
-                         "k_s_per_mm": c.k_s[i], "k_q_per_mm": c.k_q[i], "e_s_z": c.e_s[i, 2],
-                         "status": status_names(c.result.status)[i], "singular_measure": c.result.singular_measure[i],
-                         "beyond_limit_line": bool(beyond[i])})
+            rows.append(
+                {
+                    "flank": f"Sigma_2{flank}",
+                    "R_c_mm": Rc,
+                    "l1_mm": L.reshape(-1)[i],
+                    "psi_rad": PS.reshape(-1)[i],
+                    "Z_f_mm": c.point[i, 2],
+                    "radius_mm": np.hypot(*c.point[i, :2]),
+                    "k_s_per_mm": c.k_s[i],
+                    "k_q_per_mm": c.k_q[i],
+                    "e_s_z": c.e_s[i, 2],
+                    "status": status_names(c.result.status)[i],
+                    "singular_measure": c.result.singular_measure[i],
+                    "beyond_limit_line": bool(beyond[i]),
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -225,10 +299,18 @@ def rc_sweep(p: dict) -> pd.DataFrame:
         for Rc in sorted(float(r) for r in p["rc_sweep_mm"]) + [np.inf]:  # inf: the spur gear cut by the same hob
             c = gear(p, flank, Rc).curvatures(ls)
             for i, lab in enumerate(labels):
-                rows.append({"flank": f"Sigma_2{flank}", "R_c_mm": Rc, "row": lab, "l1_mm": ls[i],
-                             "k_s_per_mm": c.k_s[i], "k_q_per_mm": c.k_q[i],
-                             "R_c_times_k_s": Rc * c.k_s[i] if np.isfinite(Rc) else np.nan,
-                             "status": status_names(c.result.status)[i]})
+                rows.append(
+                    {
+                        "flank": f"Sigma_2{flank}",
+                        "R_c_mm": Rc,
+                        "row": lab,
+                        "l1_mm": ls[i],
+                        "k_s_per_mm": c.k_s[i],
+                        "k_q_per_mm": c.k_q[i],
+                        "R_c_times_k_s": Rc * c.k_s[i] if np.isfinite(Rc) else np.nan,
+                        "status": status_names(c.result.status)[i],
+                    }
+                )
     return pd.DataFrame(rows)
 
 
@@ -266,13 +348,24 @@ def undercut(p: dict) -> pd.DataFrame:
                     l_sing = ls[i] - det[i] * (ls[i + 1] - ls[i]) / (det[i + 1] - det[i])
                     pt, _, r2 = g.points(np.array([l_sing]), ps)
                     r_sing, z_sing = float(np.hypot(pt[0, 0], pt[0, 1])), float(pt[0, 2])
-                rows.append({"flank": f"Sigma_2{flank}", "R_c_mm": Rc, "psi_rad": ps,
-                             "Z_f_mm_at_last_row": float(g.points(ls[-1:], ps)[0][0, 2]), "n_points": len(ls),
-                             "l1_from_mm": ls[0], "l1_to_mm": ls[-1],
-                             "all_converged": bool(np.all(rec.converged)),
-                             "min_singular_measure": float(np.nanmin(rec.singular_measure)),
-                             "det_sign_changes": int(len(ch)), "any_singular": bool(np.any(rec.singular)),
-                             "l1_singular_mm": l_sing, "radius_singular_mm": r_sing, "Z_f_singular_mm": z_sing})
+                rows.append(
+                    {
+                        "flank": f"Sigma_2{flank}",
+                        "R_c_mm": Rc,
+                        "psi_rad": ps,
+                        "Z_f_mm_at_last_row": float(g.points(ls[-1:], ps)[0][0, 2]),
+                        "n_points": len(ls),
+                        "l1_from_mm": ls[0],
+                        "l1_to_mm": ls[-1],
+                        "all_converged": bool(np.all(rec.converged)),
+                        "min_singular_measure": float(np.nanmin(rec.singular_measure)),
+                        "det_sign_changes": int(len(ch)),
+                        "any_singular": bool(np.any(rec.singular)),
+                        "l1_singular_mm": l_sing,
+                        "radius_singular_mm": r_sing,
+                        "Z_f_singular_mm": z_sing,
+                    }
+                )
     return pd.DataFrame(rows)
 
 
@@ -287,7 +380,9 @@ def ellipses(p: dict) -> pd.DataFrame:
         h = hob(p, pressure_angle_deg=a_deg)
         for Rcp, Rcg in p["ellipse_pairs"]:
             pin = GeneratedGear(hob=h, n_teeth=p["n_teeth"], R_c_mm=Rcp, side=1, arc_centre=-1, tol=solve_tol(p, Rcp))
-            gr = GeneratedGear(hob=h, n_teeth=p["ellipse_n_gear"], R_c_mm=Rcg, side=1, arc_centre=1, tol=solve_tol(p, Rcg))
+            gr = GeneratedGear(
+                hob=h, n_teeth=p["ellipse_n_gear"], R_c_mm=Rcg, side=1, arc_centre=1, tol=solve_tol(p, Rcg)
+            )
             lp = pin.l_at_radius(0.5 * p["module_mm"] * p["n_teeth"]).x[0, 0]
             lg = gr.l_at_radius(0.5 * p["module_mm"] * p["ellipse_n_gear"]).x[0, 0]
             c1 = pin.curvatures(np.array([lp]))
@@ -304,41 +399,78 @@ def ellipses(p: dict) -> pd.DataFrame:
             kap_prof = -(kq1 + kq2)
             line = abs(kap_trace) <= 1e-12 * abs(kap_prof)  # identical trace curvatures: line contact
             ok = kap_trace > 0 and kap_prof > 0 and not line
-            e = elastic_ellipse_from_relative(max(kap_prof, kap_trace), min(kap_prof, kap_trace), p["ellipse_delta_mm"]) \
-                if ok else None
-            rows.append({"pressure_angle_deg": a_deg, "R_cp_mm": Rcp, "R_cg_mm": Rcg,
-                         "l_pinion_mm": lp, "l_gear_mm": lg,
-                         "k_s_pinion_out_per_mm": ks1, "k_q_pinion_out_per_mm": kq1,
-                         "k_s_gear_out_per_mm": ks2, "k_q_gear_out_per_mm": kq2,
-                         "kappa_trace_per_mm": kap_trace, "kappa_profile_per_mm": kap_prof,
-                         "a_over_b": float(np.sqrt(kap_prof / kap_trace)) if ok else np.nan,
-                         "major_axis_2a_mm": float(2 * np.max([e.a, e.b])) if ok else np.nan,
-                         "minor_axis_2b_mm": float(2 * np.min([e.a, e.b])) if ok else np.nan,
-                         "delta_mm": p["ellipse_delta_mm"],
-                         "contact": "line (trace curvatures equal)" if line else ("point" if ok else "no ellipse")})
+            e = (
+                elastic_ellipse_from_relative(max(kap_prof, kap_trace), min(kap_prof, kap_trace), p["ellipse_delta_mm"])
+                if ok
+                else None
+            )
+            rows.append(
+                {
+                    "pressure_angle_deg": a_deg,
+                    "R_cp_mm": Rcp,
+                    "R_cg_mm": Rcg,
+                    "l_pinion_mm": lp,
+                    "l_gear_mm": lg,
+                    "k_s_pinion_out_per_mm": ks1,
+                    "k_q_pinion_out_per_mm": kq1,
+                    "k_s_gear_out_per_mm": ks2,
+                    "k_q_gear_out_per_mm": kq2,
+                    "kappa_trace_per_mm": kap_trace,
+                    "kappa_profile_per_mm": kap_prof,
+                    "a_over_b": float(np.sqrt(kap_prof / kap_trace)) if ok else np.nan,
+                    "major_axis_2a_mm": float(2 * np.max([e.a, e.b])) if ok else np.nan,
+                    "minor_axis_2b_mm": float(2 * np.min([e.a, e.b])) if ok else np.nan,
+                    "delta_mm": p["ellipse_delta_mm"],
+                    "contact": "line (trace curvatures equal)" if line else ("point" if ok else "no ellipse"),
+                }
+            )
     return pd.DataFrame(rows)
-
-
 
 
 def conventions(p: dict) -> pd.DataFrame:
     """The conventions of the tables (tip and pitch l_1, hob data, frames, signs), as computed."""
     grid, tip = l1_grid(p)
     g = gear(p, "R", p["R_c_small_mm"])
-    return pd.DataFrame([
-        {"item": "tip_l1_mm", "value": f"{grid[0]:.10f}",
-         "note": f"l at r = {p['tip_radius_mm']} mm (Newton residual {tip.residual[0]:.1e})"},
-        {"item": "pitch_l1_mm", "value": f"{pitch_l(p):.10f}", "note": "l at the pitch radius (mid-face)"},
-        {"item": "lead_angle_deg", "value": f"{np.degrees(g.hob.lead_angle_rad):.6f}",
-         "note": "asin(m / (2 r_h)); Table 5.1 prints 2.866"},
-        {"item": "apex_radius_mm", "value": f"{g.hob.apex_radius_mm:.6f}", "note": "r_t = r_h - (pi m / 4) / tan(alpha_n)"},
-        {"item": "lead_per_rad_mm", "value": f"{g.hob.lead_per_rad_mm:.8f}", "note": "P_1 = m / (2 cos lambda)"},
-        {"item": "frame", "value": "S_f = S_2 turned by pi/N about Z", "note": "X_f = tooth centre line; Sigma_2R on +Y_f"},
-        {"item": "curvature_sign", "value": "hob normal unit(r_l x r_phi) (eq 4.41)",
-         "note": "into the tooth on Sigma_2R, out of it on Sigma_2L"},
-        {"item": "direction_orientation", "value": "e_s.Z_f > 0; e_q = n_out x e_s", "note": "read off the printed tables"},
-        {"item": "arc_centre", "value": "-1", "note": "upper-sign thread -> convex Sigma_2R"},
-        {"item": "hob_variant", "value": "axial (true ZA)", "note": "eq 4.40 without beta in the profile terms"},
-        {"item": "l1_rows", "value": f"{p['n_rows']} equal steps tip .. {p['l1_end_mm']}",
-         "note": f"printed to {p['l1_printed_decimals']} decimals"},
-    ])
+    return pd.DataFrame(
+        [
+            {
+                "item": "tip_l1_mm",
+                "value": f"{grid[0]:.10f}",
+                "note": f"l at r = {p['tip_radius_mm']} mm (Newton residual {tip.residual[0]:.1e})",
+            },
+            {"item": "pitch_l1_mm", "value": f"{pitch_l(p):.10f}", "note": "l at the pitch radius (mid-face)"},
+            {
+                "item": "lead_angle_deg",
+                "value": f"{np.degrees(g.hob.lead_angle_rad):.6f}",
+                "note": "asin(m / (2 r_h)); Table 5.1 prints 2.866",
+            },
+            {
+                "item": "apex_radius_mm",
+                "value": f"{g.hob.apex_radius_mm:.6f}",
+                "note": "r_t = r_h - (pi m / 4) / tan(alpha_n)",
+            },
+            {"item": "lead_per_rad_mm", "value": f"{g.hob.lead_per_rad_mm:.8f}", "note": "P_1 = m / (2 cos lambda)"},
+            {
+                "item": "frame",
+                "value": "S_f = S_2 turned by pi/N about Z",
+                "note": "X_f = tooth centre line; Sigma_2R on +Y_f",
+            },
+            {
+                "item": "curvature_sign",
+                "value": "hob normal unit(r_l x r_phi) (eq 4.41)",
+                "note": "into the tooth on Sigma_2R, out of it on Sigma_2L",
+            },
+            {
+                "item": "direction_orientation",
+                "value": "e_s.Z_f > 0; e_q = n_out x e_s",
+                "note": "read off the printed tables",
+            },
+            {"item": "arc_centre", "value": "-1", "note": "upper-sign thread -> convex Sigma_2R"},
+            {"item": "hob_variant", "value": "axial (true ZA)", "note": "eq 4.40 without beta in the profile terms"},
+            {
+                "item": "l1_rows",
+                "value": f"{p['n_rows']} equal steps tip .. {p['l1_end_mm']}",
+                "note": f"printed to {p['l1_printed_decimals']} decimals",
+            },
+        ]
+    )

@@ -30,38 +30,105 @@ from .contact import KE_COLUMNS, Assembly, Pair, continue_to, ke_table, make_pai
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
 
-__all__ = ["SEED", "SETTINGS", "DESIGN_DATA", "CHECK_DATA", "params_from_published", "JOBS", "run", "checks",
-           "CHECK_OUTPUTS", "FIGURES", "REPORT_FIGURES", "bench_cases", "validate", "Design", "TABLE_EXAMPLE",
-           "KE_COLUMNS", "SURVIVING", "CHECK_PREFIXES", "Assembly", "Pair", "ContactPath", "make_pair", "solve_points",
-           "predict", "continue_to", "trace_path", "physical_contact", "ke_table", "compute_case", "phi1_grid",
-           "contact_ellipses", "pitch_point_ratio", "topology_pattern"]
+__all__ = [
+    "SEED",
+    "SETTINGS",
+    "DESIGN_DATA",
+    "CHECK_DATA",
+    "params_from_published",
+    "JOBS",
+    "run",
+    "checks",
+    "CHECK_OUTPUTS",
+    "FIGURES",
+    "REPORT_FIGURES",
+    "bench_cases",
+    "validate",
+    "Design",
+    "TABLE_EXAMPLE",
+    "KE_COLUMNS",
+    "SURVIVING",
+    "CHECK_PREFIXES",
+    "Assembly",
+    "Pair",
+    "ContactPath",
+    "make_pair",
+    "solve_points",
+    "predict",
+    "continue_to",
+    "trace_path",
+    "physical_contact",
+    "ke_table",
+    "compute_case",
+    "phi1_grid",
+    "contact_ellipses",
+    "pitch_point_ratio",
+    "topology_pattern",
+]
 
 SEED = "000"
 
 _n, _i = _s.number, _s.integer
 SETTINGS = _s.declare(
-    tol=_n(1e-11, "mm", "residual of the 9-equation TCA system (mm / unit normals); bench: 1e-8 already meets the KE "
-           "target, 1e-11 kept so that no check sits within the solver error of its printed-precision boundary",
-           gt=0.0, le=1e-6),
+    tol=_n(
+        1e-11,
+        "mm",
+        "residual of the 9-equation TCA system (mm / unit normals); bench: 1e-8 already meets the KE "
+        "target, 1e-11 kept so that no check sits within the solver error of its printed-precision boundary",
+        gt=0.0,
+        le=1e-6,
+    ),
     phi1_start_deg=_n(-10.0, "deg", "Tables 5.2-5.9: phi1' from -10 deg", ge=-30.0, le=0.0),
     phi1_end_deg=_n(10.0, "deg", "Tables 5.2-5.9: phi1' to +10 deg", ge=0.0, le=30.0),
-    phi1_step_deg=_n(2.0, "deg", "Tables 5.2-5.9: phi1' in 2-deg steps (the grid must hit 0, the tables' zero of KE)",
-                     gt=0.0, le=60.0),
-    continuation_steps=_i(4, "1", "assembly errors (and R_cg 113 -> 110 for Tables 5.2/5.3) in this many "
-                          "warm-started solves (1 step fails for Table 5.3)", ge=1, le=100),
-    sensitivity_step_mm=_n(0.01, "mm", "central-difference step in R_cp, R_cg for the ill-conditioning of Z",
-                           gt=0.0, le=1.0),
-    hob_radii_mm=_s.array([25.0, 30.0, 40.0, 50.0, 60.0], "mm", "Fig 5.5 sweep of the hob pitch radius",
-                          _n(None, "mm", "", ge=10.0, le=500.0), min_items=2),
+    phi1_step_deg=_n(
+        2.0,
+        "deg",
+        "Tables 5.2-5.9: phi1' in 2-deg steps (the grid must hit 0, the tables' zero of KE)",
+        gt=0.0,
+        le=60.0,
+    ),
+    continuation_steps=_i(
+        4,
+        "1",
+        "assembly errors (and R_cg 113 -> 110 for Tables 5.2/5.3) in this many "
+        "warm-started solves (1 step fails for Table 5.3)",
+        ge=1,
+        le=100,
+    ),
+    sensitivity_step_mm=_n(
+        0.01, "mm", "central-difference step in R_cp, R_cg for the ill-conditioning of Z", gt=0.0, le=1.0
+    ),
+    hob_radii_mm=_s.array(
+        [25.0, 30.0, 40.0, 50.0, 60.0],
+        "mm",
+        "Fig 5.5 sweep of the hob pitch radius",
+        _n(None, "mm", "", ge=10.0, le=500.0),
+        min_items=2,
+    ),
     contact_ratio_window_deg=_n(30.0, "deg", "search window of the tip crossings (eq 5.13)", ge=10.0, le=60.0),
-    ellipse_R_cp_mm=_s.array([55.0, 110.0, 220.0, 440.0], "mm", "Fig 5.7: a/b at the pitch point against R_c",
-                             _n(None, "mm", "", ge=20.0, le=1e5), min_items=2),
-    ellipse_R_gap_mm=_n(1.0, "mm", "Fig 5.7 pairing R_cg = R_cp + 1 mm (our reconstruction, the text gives no R_cg)",
-                        gt=0.0, le=100.0),
-    topology_phi1_deg=_s.array([-8.0, 0.0, 8.0], "deg", "Fig 5.8: surface-topology pattern at these points of the "
-                               "Example 5.3 path (on the phi1' grid)", _n(None, "deg", "", ge=-30.0, le=30.0)),
-    topology_n_dirs=_i(8, "1", "tangent-plane directions per point (a multiple of 4: both ellipse axes included; "
-                       "~0.3 s per point)", ge=4, le=360),
+    ellipse_R_cp_mm=_s.array(
+        [55.0, 110.0, 220.0, 440.0],
+        "mm",
+        "Fig 5.7: a/b at the pitch point against R_c",
+        _n(None, "mm", "", ge=20.0, le=1e5),
+        min_items=2,
+    ),
+    ellipse_R_gap_mm=_n(
+        1.0, "mm", "Fig 5.7 pairing R_cg = R_cp + 1 mm (our reconstruction, the text gives no R_cg)", gt=0.0, le=100.0
+    ),
+    topology_phi1_deg=_s.array(
+        [-8.0, 0.0, 8.0],
+        "deg",
+        "Fig 5.8: surface-topology pattern at these points of the Example 5.3 path (on the phi1' grid)",
+        _n(None, "deg", "", ge=-30.0, le=30.0),
+    ),
+    topology_n_dirs=_i(
+        8,
+        "1",
+        "tangent-plane directions per point (a multiple of 4: both ellipse axes included; ~0.3 s per point)",
+        ge=4,
+        le=360,
+    ),
 )
 
 DESIGN_DATA = ["params_000_*.csv"]
@@ -77,8 +144,14 @@ def _cases(params: pd.DataFrame) -> dict:
         raise ValueError("published params lack the rows of params_000_examples.csv")
     out = {}
     for ex, g in sel.groupby(sel["example"].astype(str)):
-        d = {"R_cp_mm": np.nan, "R_cg_mm": np.nan, "dgamma_h_arcmin": 0.0, "dgamma_v_arcmin": 0.0,
-             "dC_mm": 0.0, "dZ_mm": 0.0}
+        d = {
+            "R_cp_mm": np.nan,
+            "R_cg_mm": np.nan,
+            "dgamma_h_arcmin": 0.0,
+            "dgamma_v_arcmin": 0.0,
+            "dC_mm": 0.0,
+            "dZ_mm": 0.0,
+        }
         for _, r in g.iterrows():
             v = float(r["value"]) if pd.notna(r["value"]) and str(r["value"]) != "" else 0.0
             name, unit = str(r["parameter"]), str(r["unit"])
@@ -153,13 +226,30 @@ def _one(fn, name):
 
 _KE = {f"ke_table_5_{i}": f"5.{i}" for i in range(2, 10)}
 JOBS = {
-    **{name: Job(partial(_ke_job, example=TABLE_EXAMPLE[tab], name=name), {name: f"tseng/{name}.csv"},
-                 f"Table {tab} (Example {TABLE_EXAMPLE[tab]}) alone") for name, tab in _KE.items()},
-    "ke_example_5_3": Job(partial(_ke_job, example="5.3", name="ke_example_5_3"),
-                          {"ke_example_5_3": "tseng/ke_example_5_3.csv"}, "Example 5.3 (ideal 110/113, no table)"),
-    **{name: Job(_one(getattr(studies, name), name), {name: f"tseng_tca/{name}.csv"}, getattr(studies, name).__doc__)
-       for name in ("sensitivity", "contact_ratio", "ke_vs_hob_radius", "ellipses_example_5_3", "ellipse_ratio",
-                    "topology_example_5_3")},
+    **{
+        name: Job(
+            partial(_ke_job, example=TABLE_EXAMPLE[tab], name=name),
+            {name: f"tseng/{name}.csv"},
+            f"Table {tab} (Example {TABLE_EXAMPLE[tab]}) alone",
+        )
+        for name, tab in _KE.items()
+    },
+    "ke_example_5_3": Job(
+        partial(_ke_job, example="5.3", name="ke_example_5_3"),
+        {"ke_example_5_3": "tseng/ke_example_5_3.csv"},
+        "Example 5.3 (ideal 110/113, no table)",
+    ),
+    **{
+        name: Job(_one(getattr(studies, name), name), {name: f"tseng_tca/{name}.csv"}, getattr(studies, name).__doc__)
+        for name in (
+            "sensitivity",
+            "contact_ratio",
+            "ke_vs_hob_radius",
+            "ellipses_example_5_3",
+            "ellipse_ratio",
+            "topology_example_5_3",
+        )
+    },
 }
 
 CHECK_OUTPUTS = {"checks": "checks/tseng_tca.csv"}
@@ -203,8 +293,14 @@ def bench_cases(settings: dict, design: Design) -> dict[str, dict]:
     current = {"tol": settings["tol"], "continuation_steps": settings["continuation_steps"]}
     common = {"run": run_one, "settings": grid, "reference": reference, "error_target": 5e-5, "current": current}
     return {
-        "ke_table_5_4_KE": {**common, "error": lambda r, ref: float(np.max(np.abs(r["KE_arcsec"] - ref["KE_arcsec"]))),
-                            "error_unit": "arcsec"},
-        "ke_table_5_4_Zp": {**common, "error": lambda r, ref: float(np.max(np.abs(r["Z_p_mm"] - ref["Z_p_mm"]))),
-                            "error_unit": "mm"},
+        "ke_table_5_4_KE": {
+            **common,
+            "error": lambda r, ref: float(np.max(np.abs(r["KE_arcsec"] - ref["KE_arcsec"]))),
+            "error_unit": "arcsec",
+        },
+        "ke_table_5_4_Zp": {
+            **common,
+            "error": lambda r, ref: float(np.max(np.abs(r["Z_p_mm"] - ref["Z_p_mm"]))),
+            "error_unit": "mm",
+        },
     }

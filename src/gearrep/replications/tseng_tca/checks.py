@@ -13,8 +13,14 @@ from .contact import N_PINION
 
 __all__ = ["check_records", "SURVIVING", "CHECK_PREFIXES"]
 
-_QUANTITY_COLUMN = {"phi2": "phi2_deg", "l_p": "l_p_mm", "Z_p": "Z_p_mm", "l_g": "l_g_mm",
-                    "Z_g": "Z_g_mm", "KE": "KE_arcsec"}
+_QUANTITY_COLUMN = {
+    "phi2": "phi2_deg",
+    "l_p": "l_p_mm",
+    "Z_p": "Z_p_mm",
+    "l_g": "l_g_mm",
+    "Z_g": "Z_g_mm",
+    "KE": "KE_arcsec",
+}
 SURVIVING = ("5.3", "5.4", "5.7", "5.8", "5.9")
 CHECK_PREFIXES = ("000-T5", "000-text", "000-Ex5", "000-Fig5", "000-KE", "000-dC", "000-Rc")
 
@@ -22,30 +28,39 @@ CHECK_PREFIXES = ("000-T5", "000-text", "000-Ex5", "000-Fig5", "000-KE", "000-dC
 def _position_note(q, row, s, computed, pub) -> str:
     dz = float(s["dZ_p_dR_cg"] if q == "Z_p" else s["dZ_g_dR_cg"] if q == "Z_g" else s["dl_p_dR_cg"])
     err = computed - float(pub["value"])
-    return (f"ill-conditioning: d{q}/dR_cg = {dz:.4g} mm/mm, so the error {err:+.4f} mm equals a "
-            f"change of R_cg by {err / dz:+.4g} mm; Jacobian condition {float(s['jacobian_cond']):.3g}; "
-            f"a TCA residual of 1e-6 leaves Z_p free within +-{float(s['Z_p_band_at_residual_1e-6_mm']):.4f} mm; "
-            f"the tangency search across the face (physical_contact) finds {int(row['n_tangencies'])} "
-            "distinct tangency(ies) at this phi1', so the offset is not a choice between roots")
+    return (
+        f"ill-conditioning: d{q}/dR_cg = {dz:.4g} mm/mm, so the error {err:+.4f} mm equals a "
+        f"change of R_cg by {err / dz:+.4g} mm; Jacobian condition {float(s['jacobian_cond']):.3g}; "
+        f"a TCA residual of 1e-6 leaves Z_p free within +-{float(s['Z_p_band_at_residual_1e-6_mm']):.4f} mm; "
+        f"the tangency search across the face (physical_contact) finds {int(row['n_tangencies'])} "
+        "distinct tangency(ies) at this phi1', so the offset is not a choice between roots"
+    )
 
 
 def _ke_note(tab, pub, row, sens, values, phi1) -> str:
     zp = values[(values["source"] == f"Table {tab}") & (values["quantity"] == "Z_p") & (values["row"] == pub["row"])]
     s = row_at(sens, phi1) if len(sens) else None
-    where = (f"our contact lies {float(row['Z_p_mm']) - float(zp['value'].iloc[0]):+.4f} mm from the printed "
-             "Z_p along the face (the ill-conditioned direction, see this row's Z_p record)"
-             if len(zp) else "the printed Z_p of this row did not survive")
-    return (f"KE of the contact the TCA finds ({int(row['n_tangencies'])} distinct tangency(ies) at this "
-            f"phi1'); {where}; with near-equal lengthwise curvatures the KE depends on where along the "
-            "face the contact sits, and the Jacobian condition here is "
-            f"{float(s['jacobian_cond']) if s is not None else float(row['jacobian_cond']):.3g}")
+    where = (
+        f"our contact lies {float(row['Z_p_mm']) - float(zp['value'].iloc[0]):+.4f} mm from the printed "
+        "Z_p along the face (the ill-conditioned direction, see this row's Z_p record)"
+        if len(zp)
+        else "the printed Z_p of this row did not survive"
+    )
+    return (
+        f"KE of the contact the TCA finds ({int(row['n_tangencies'])} distinct tangency(ies) at this "
+        f"phi1'); {where}; with near-equal lengthwise curvatures the KE depends on where along the "
+        "face the contact sits, and the Jacobian condition here is "
+        f"{float(s['jacobian_cond']) if s is not None else float(row['jacobian_cond']):.3g}"
+    )
 
 
 def _zg_sign_note(computed, pub, note) -> str:
-    return ("Z_g is the contact's axial coordinate in the gear frame of eq 5.3 (z_f - dZ). The "
-            f"printed sign is the opposite of ours (|computed| - |printed| = "
-            f"{abs(computed) - abs(float(pub['value'])):+.4f} mm): in the two tables with dZ != 0 "
-            "the printed Z_g has the reversed sign, in the three with dZ = 0 not (data/errata.csv). " + note)
+    return (
+        "Z_g is the contact's axial coordinate in the gear frame of eq 5.3 (z_f - dZ). The "
+        f"printed sign is the opposite of ours (|computed| - |printed| = "
+        f"{abs(computed) - abs(float(pub['value'])):+.4f} mm): in the two tables with dZ != 0 "
+        "the printed Z_g has the reversed sign, in the three with dZ = 0 not (data/errata.csv). " + note
+    )
 
 
 def _value_records(tables, values) -> list[dict]:
@@ -73,15 +88,20 @@ def _value_records(tables, values) -> list[dict]:
 def _text_contact_ratio(tables, pub):
     cr = tables["contact_ratio"]
     m_c = float(cr["contact_ratio"].iloc[0])
-    return _checks.compare_value(pub, m_c, note=(
-        "eq 5.13 with the angular pitch 2 pi/N_p (erratum); phi1_B, phi1_E where the contact of "
-        f"the ideal 110/110 pair reaches the gear tip (r = 63) and the pinion tip (r = 33): "
-        f"{cr['phi1_deg'].iloc[1]:.4f} and {cr['phi1_deg'].iloc[0]:.4f} deg. A standard 20/40 "
-        "spur pair (straight-sided rack) has 1.635 by the closed form; the printed value needs a "
-        f"{(m_c - float(pub['value'])) * 360.0 / N_PINION:.2f} deg shorter arc. "
-        "The contact followed is the physical one (physical_contact): for this almost-line contact the "
-        "symmetric off-mid-face tangencies at phi1' < 5 deg, which reach the pinion tip 0.04 deg earlier "
-        "than the mid-face root would (1.6387 with the mid-face root)"))
+    return _checks.compare_value(
+        pub,
+        m_c,
+        note=(
+            "eq 5.13 with the angular pitch 2 pi/N_p (erratum); phi1_B, phi1_E where the contact of "
+            f"the ideal 110/110 pair reaches the gear tip (r = 63) and the pinion tip (r = 33): "
+            f"{cr['phi1_deg'].iloc[1]:.4f} and {cr['phi1_deg'].iloc[0]:.4f} deg. A standard 20/40 "
+            "spur pair (straight-sided rack) has 1.635 by the closed form; the printed value needs a "
+            f"{(m_c - float(pub['value'])) * 360.0 / N_PINION:.2f} deg shorter arc. "
+            "The contact followed is the physical one (physical_contact): for this almost-line contact the "
+            "symmetric off-mid-face tangencies at phi1' < 5 deg, which reach the pinion tip 0.04 deg earlier "
+            "than the mid-face root would (1.6387 with the mid-face root)"
+        ),
+    )
 
 
 def _text_largest_z(tables, pub):
@@ -90,16 +110,21 @@ def _text_largest_z(tables, pub):
     col = f"{q}_mm"
     worst = ideal.iloc[int(np.argmax(np.abs(ideal[col].to_numpy())))]
     multi = ideal[ideal["n_tangencies"] > 1]
-    return _checks.compare_value(pub, float(worst[col]), note=(
-        f"largest |{q}| over the 11 rows of Table 5.2 (ideal 110/110, physical contact = the tangency "
-        f"without interference elsewhere); the contact is almost a line (Jacobian condition up "
-        f"to {ideal['jacobian_cond'].max():.3g}). At {len(multi)} of 11 rows (phi1 = "
-        f"{', '.join(f'{v:g}' for v in multi['phi1_deg'])} deg) the system has "
-        f"{int(ideal['n_tangencies'].max())} tangencies: Z = 0 (the mid-face root a continuation keeps, "
-        f"which is what the text prints) and a symmetric pair +-{q[0]} up to {np.max(np.abs(ideal[col])):.3f} mm "
-        f"whose phi2' is smaller by up to {ideal['tangency_phi2_spread_arcsec'].max():.4f} arcsec: with the gear "
-        "at the mid-face root's phi2' the flanks would interfere at the pair, so the pair is the "
-        "contact (a two-point contact symmetric about mid-face; the gap differences are nanometres)"))
+    return _checks.compare_value(
+        pub,
+        float(worst[col]),
+        note=(
+            f"largest |{q}| over the 11 rows of Table 5.2 (ideal 110/110, physical contact = the tangency "
+            f"without interference elsewhere); the contact is almost a line (Jacobian condition up "
+            f"to {ideal['jacobian_cond'].max():.3g}). At {len(multi)} of 11 rows (phi1 = "
+            f"{', '.join(f'{v:g}' for v in multi['phi1_deg'])} deg) the system has "
+            f"{int(ideal['n_tangencies'].max())} tangencies: Z = 0 (the mid-face root a continuation keeps, "
+            f"which is what the text prints) and a symmetric pair +-{q[0]} up to {np.max(np.abs(ideal[col])):.3f} mm "
+            f"whose phi2' is smaller by up to {ideal['tangency_phi2_spread_arcsec'].max():.4f} arcsec: with the gear "
+            "at the mid-face root's phi2' the flanks would interfere at the pair, so the pair is the "
+            "contact (a two-point contact symmetric about mid-face; the gap differences are nanometres)"
+        ),
+    )
 
 
 def _text_a_over_b(tables, pub):
@@ -110,16 +135,25 @@ def _text_a_over_b(tables, pub):
     if len(hit) != 1:
         raise KeyError(f"ellipse_ratio has no unique row alpha={alpha}, R_cp={rc}")
     h = hit.iloc[0]
-    return _checks.compare_value(pub, float(h["a_over_b"]), note=(
-        f"curvature method (eq 5.14-5.17) at the pitch point (phi1' = {h['phi1_deg']:.3f} deg) of the ideal pair "
-        f"R_cp = {h['R_cp_mm']:g}, R_cg = {h['R_cg_mm']:g} mm: the text names neither the point nor R_cg; "
-        "R_cg = R_cp + 1 mm is our reconstruction (it makes a/b proportional to R_c as Fig 5.7 states; "
-        "110/113 gives a/b = 25)"))
+    return _checks.compare_value(
+        pub,
+        float(h["a_over_b"]),
+        note=(
+            f"curvature method (eq 5.14-5.17) at the pitch point (phi1' = {h['phi1_deg']:.3f} deg) of the ideal pair "
+            f"R_cp = {h['R_cp_mm']:g}, R_cg = {h['R_cg_mm']:g} mm: the text names neither the point nor R_cg; "
+            "R_cg = R_cp + 1 mm is our reconstruction (it makes a/b proportional to R_c as Fig 5.7 states; "
+            "110/113 gives a/b = 25)"
+        ),
+    )
 
 
 #: quantity of a text value -> its record
-_TEXT_RULES = {"contact_ratio": _text_contact_ratio, "Z_p": _text_largest_z, "Z_g": _text_largest_z,
-               "a_over_b": _text_a_over_b}
+_TEXT_RULES = {
+    "contact_ratio": _text_contact_ratio,
+    "Z_p": _text_largest_z,
+    "Z_g": _text_largest_z,
+    "a_over_b": _text_a_over_b,
+}
 
 
 def check_records(tables: dict, published) -> pd.DataFrame:

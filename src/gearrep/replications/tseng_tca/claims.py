@@ -64,42 +64,57 @@ class Evidence:
 def _t52_missing(e: Evidence):
     i = e.ideal
     zg = float(np.max(np.abs(i["Z_g_mm"])))
-    return (e.zmax["5.2"] < 0.05 and zg < 0.05 and p2p(i) > 0.1,
-            f"ideal 110/110: max |Z_p| = {e.zmax['5.2']:.2e}, max |Z_g| = {zg:.2e} mm; "
-            f"KE peak-to-peak {p2p(i):.3f} arcsec (Table 5.3: {p2p(e.T['5.3']):.3f}, 5.4: {p2p(e.T['5.4']):.3f})")
+    return (
+        e.zmax["5.2"] < 0.05 and zg < 0.05 and p2p(i) > 0.1,
+        f"ideal 110/110: max |Z_p| = {e.zmax['5.2']:.2e}, max |Z_g| = {zg:.2e} mm; "
+        f"KE peak-to-peak {p2p(i):.3f} arcsec (Table 5.3: {p2p(e.T['5.3']):.3f}, 5.4: {p2p(e.T['5.4']):.3f})",
+    )
 
 
 def _t55_missing(e: Evidence):
     t = e.T["5.5"]
-    return (abs(row_at(t, 0)["Z_p_mm"] - 0.36) <= 0.05 and np.all(np.abs(t["Z_p_mm"] - 0.36) <= 0.05)
-            and e.dke["5.5"] < 0.5,
-            f"dgamma_v = 3': {e.z_range('5.5')}; max |KE - KE(Table 5.4)| = {e.dke['5.5']:.3f} arcsec")
+    return (
+        abs(row_at(t, 0)["Z_p_mm"] - 0.36) <= 0.05
+        and np.all(np.abs(t["Z_p_mm"] - 0.36) <= 0.05)
+        and e.dke["5.5"] < 0.5,
+        f"dgamma_v = 3': {e.z_range('5.5')}; max |KE - KE(Table 5.4)| = {e.dke['5.5']:.3f} arcsec",
+    )
 
 
 def _t56_missing(e: Evidence):
-    return (e.zmax["5.6"] <= 1.0 and e.dke["5.6"] < 0.5,
-            f"dC = 0.2: {e.z_range('5.6')}; max |KE - KE(Table 5.4)| = {e.dke['5.6']:.3f} arcsec")
+    return (
+        e.zmax["5.6"] <= 1.0 and e.dke["5.6"] < 0.5,
+        f"dC = 0.2: {e.z_range('5.6')}; max |KE - KE(Table 5.4)| = {e.dke['5.6']:.3f} arcsec",
+    )
 
 
 def _ke_ideal(e: Evidence):
     i = e.ideal
-    return (0.1 < p2p(i) < 10,
-            f"ideal 110/110 KE from {i['KE_arcsec'].min():.3f} to {i['KE_arcsec'].max():.3f} arcsec over phi1 in [-10, 10]")
+    return (
+        0.1 < p2p(i) < 10,
+        f"ideal 110/110 KE from {i['KE_arcsec'].min():.3f} to {i['KE_arcsec'].max():.3f} arcsec over phi1 in [-10, 10]",
+    )
 
 
 def _contact_ratio(e: Evidence):
     m_c = float(e.tables["contact_ratio"]["contact_ratio"].iloc[0])
     ok = 1.615 <= m_c < 1.625
-    return (ok, f"computed m_c = {m_c:.4f}" if ok else
-            f"computed m_c = {m_c:.4f} (tip to tip, eq 5.13 with 2 pi/N_p); outside [1.615, 1.625), inside the "
-            "refute band 1.60..1.64")
+    return (
+        ok,
+        f"computed m_c = {m_c:.4f}"
+        if ok
+        else f"computed m_c = {m_c:.4f} (tip to tip, eq 5.13 with 2 pi/N_p); outside [1.615, 1.625), inside the "
+        "refute band 1.60..1.64",
+    )
 
 
 def _ke_vs_hob_radius(e: Evidence):
     hs = e.tables["ke_vs_hob_radius"].groupby("hob_pitch_radius_mm")["KE_arcsec"].agg(lambda s: s.max() - s.min())
-    return (bool(np.all(np.diff(hs.to_numpy()) < 0)),
-            "KE peak-to-peak (ideal 110/110) by hob pitch radius: "
-            + ", ".join(f"r_h = {r:g} mm: {v:.3f} arcsec" for r, v in hs.items()))
+    return (
+        bool(np.all(np.diff(hs.to_numpy()) < 0)),
+        "KE peak-to-peak (ideal 110/110) by hob pitch radius: "
+        + ", ".join(f"r_h = {r:g} mm: {v:.3f} arcsec" for r, v in hs.items()),
+    )
 
 
 def _ex53_middle(e: Evidence):
@@ -108,15 +123,20 @@ def _ex53_middle(e: Evidence):
 
 
 def _ex52_zp10(e: Evidence):
-    return (abs(e.zp["5.3"][0] - 10) <= 1 and abs(e.zp["5.3"][1] - 10) <= 1,
-            f"Table 5.3 conditions: {e.z_range('5.3')}")
+    return (
+        abs(e.zp["5.3"][0] - 10) <= 1 and abs(e.zp["5.3"][1] - 10) <= 1,
+        f"Table 5.3 conditions: {e.z_range('5.3')}",
+    )
 
 
 def _ex52_small_change(e: Evidence):
     ke_i, ke_3 = e.ideal["KE_arcsec"].to_numpy(), e.T["5.3"]["KE_arcsec"].to_numpy()
     frac = e.rel_change("5.3", "5.2")
-    return (frac < 0.2, f"max |KE(5.3) - KE(ideal)| = {np.max(np.abs(ke_3 - ke_i)):.3f} arcsec = {100 * frac:.1f} % "
-            f"of the ideal peak {np.max(np.abs(ke_i)):.3f}")
+    return (
+        frac < 0.2,
+        f"max |KE(5.3) - KE(ideal)| = {np.max(np.abs(ke_3 - ke_i)):.3f} arcsec = {100 * frac:.1f} % "
+        f"of the ideal peak {np.max(np.abs(ke_i)):.3f}",
+    )
 
 
 def _ex54_zp35(e: Evidence):
@@ -125,25 +145,33 @@ def _ex54_zp35(e: Evidence):
 
 def _ex54_mismatch(e: Evidence):
     f4 = e.rel_change("5.4", "5.2")
-    return (e.zmax["5.4"] < 0.5 * e.zmax["5.3"] and f4 < 0.2,
-            f"max |Z_p| under dgamma_h = 3': {e.zmax['5.3']:.3f} mm (110/110) vs {e.zmax['5.4']:.3f} mm (110/113); "
-            f"KE differs from the ideal by at most {100 * f4:.1f} % of its peak")
+    return (
+        e.zmax["5.4"] < 0.5 * e.zmax["5.3"] and f4 < 0.2,
+        f"max |Z_p| under dgamma_h = 3': {e.zmax['5.3']:.3f} mm (110/110) vs {e.zmax['5.4']:.3f} mm (110/113); "
+        f"KE differs from the ideal by at most {100 * f4:.1f} % of its peak",
+    )
 
 
 def _ex55_zp036(e: Evidence):
     t = e.T["5.5"]
-    return (np.all(np.abs(t["Z_p_mm"] - 0.36) <= 0.05),
-            f"{e.z_range('5.5')} (at phi1 = 0: {row_at(t, 0)['Z_p_mm']:.3f})")
+    return (
+        np.all(np.abs(t["Z_p_mm"] - 0.36) <= 0.05),
+        f"{e.z_range('5.5')} (at phi1 = 0: {row_at(t, 0)['Z_p_mm']:.3f})",
+    )
 
 
 def _ex56_middle(e: Evidence):
-    return (e.zmax["5.6"] <= 1.0 and e.dke["5.6"] < 0.5,
-            f"{e.z_range('5.6')}; max |KE - KE(5.4)| = {e.dke['5.6']:.3f} arcsec")
+    return (
+        e.zmax["5.6"] <= 1.0 and e.dke["5.6"] < 0.5,
+        f"{e.z_range('5.6')}; max |KE - KE(5.4)| = {e.dke['5.6']:.3f} arcsec",
+    )
 
 
 def _ex57_zp(e: Evidence):
-    return (np.all(np.abs(e.T["5.7"]["Z_p_mm"] + 3.5) <= 0.3) and e.dke["5.7"] < 0.05,
-            f"{e.z_range('5.7')}; max |KE - KE(5.4)| = {e.dke['5.7']:.4f} arcsec")
+    return (
+        np.all(np.abs(e.T["5.7"]["Z_p_mm"] + 3.5) <= 0.3) and e.dke["5.7"] < 0.05,
+        f"{e.z_range('5.7')}; max |KE - KE(5.4)| = {e.dke['5.7']:.4f} arcsec",
+    )
 
 
 def _ex58_zp(e: Evidence):
@@ -156,20 +184,28 @@ def _ex59_zp(e: Evidence):
 
 def _ke_insensitive(e: Evidence):
     fm = max(e.rel_change(k, b) for k, b in (("5.3", "5.2"), ("5.4", "5.2"), ("5.8", "5.4")))
-    return (fm < 0.2, f"largest change of KE caused by 3' misalignments (5.3 vs 5.2, 5.4 vs 5.2, 5.8 vs 5.4) = "
-            f"{100 * fm:.1f} % of the reference peak; all curves smooth near-parabolas (converged at every row)")
+    return (
+        fm < 0.2,
+        f"largest change of KE caused by 3' misalignments (5.3 vs 5.2, 5.4 vs 5.2, 5.8 vs 5.4) = "
+        f"{100 * fm:.1f} % of the reference peak; all curves smooth near-parabolas (converged at every row)",
+    )
 
 
 def _dc_ke_middle(e: Evidence):
-    return (p2p(e.T["5.6"]) > 0.1 and e.zmax["5.6"] <= 1.0,
-            f"dC = 0.2: KE peak-to-peak {p2p(e.T['5.6']):.3f} arcsec, max |Z_p| = {e.zmax['5.6']:.3f} mm")
+    return (
+        p2p(e.T["5.6"]) > 0.1 and e.zmax["5.6"] <= 1.0,
+        f"dC = 0.2: KE peak-to-peak {p2p(e.T['5.6']):.3f} arcsec, max |Z_p| = {e.zmax['5.6']:.3f} mm",
+    )
 
 
 def _rc_localizes(e: Evidence):
     shifts = {k: e.zmax[k] for k in ("5.4", "5.7", "5.8", "5.9")}
-    return (max(shifts.values()) < 5 and e.zmax["5.3"] > 8,
-            "max |Z_p|: " + ", ".join(f"Table {k}: {v:.2f} mm" for k, v in shifts.items())
-            + f" vs Table 5.3 (110/110): {e.zmax['5.3']:.2f} mm")
+    return (
+        max(shifts.values()) < 5 and e.zmax["5.3"] > 8,
+        "max |Z_p|: "
+        + ", ".join(f"Table {k}: {v:.2f} mm" for k, v in shifts.items())
+        + f" vs Table 5.3 (110/110): {e.zmax['5.3']:.2f} mm",
+    )
 
 
 def _ab_110(e: Evidence):
@@ -178,21 +214,30 @@ def _ab_110(e: Evidence):
     if not {20.0, 25.0} <= set(r110.index):
         raise KeyError("ellipse_ratio lacks the R_cp = 110 rows for 20 and 25 deg")
     a20, a25 = float(r110[20.0]), float(r110[25.0])
-    holds = (round(a20, 1) == 43.2 and round(a25, 1) == 42.3) or (abs(a20 - 43.2) <= 1 and abs(a25 - 42.3) <= 1
-                                                                   and a25 < a20)
-    return (holds, f"pitch point, R_cg = R_cp + {er['R_cg_mm'].iloc[0] - er['R_cp_mm'].iloc[0]:g} mm (our "
-            f"reconstruction): a/b = {a20:.2f} (20 deg), {a25:.2f} (25 deg); the 25-deg value is below the 20-deg one "
-            f"as printed, but {abs(a25 - 42.3):.2f} from 42.3 (an involute profile scales a/b by sqrt(sin 20 / sin 25) "
-            f"= 0.900; printed ratio {42.3 / 43.2:.3f}, ours {a25 / a20:.3f})")
+    holds = (round(a20, 1) == 43.2 and round(a25, 1) == 42.3) or (
+        abs(a20 - 43.2) <= 1 and abs(a25 - 42.3) <= 1 and a25 < a20
+    )
+    return (
+        holds,
+        f"pitch point, R_cg = R_cp + {er['R_cg_mm'].iloc[0] - er['R_cp_mm'].iloc[0]:g} mm (our "
+        f"reconstruction): a/b = {a20:.2f} (20 deg), {a25:.2f} (25 deg); the 25-deg value is below the 20-deg one "
+        f"as printed, but {abs(a25 - 42.3):.2f} from 42.3 (an involute profile scales a/b by sqrt(sin 20 / sin 25) "
+        f"= 0.900; printed ratio {42.3 / 43.2:.3f}, ours {a25 / a20:.3f})",
+    )
 
 
 def _ab_proportional(e: Evidence):
     er = e.tables["ellipse_ratio"]
     per = er.assign(q=er["a_over_b"] / er["R_cp_mm"]).groupby("alpha_n_deg")["q"]
     spread = float((per.max() / per.min()).max())
-    return (spread < 1.1, "a/b divided by R_c over R_c = " + ", ".join(f"{x:g}" for x in sorted(er["R_cp_mm"].unique()))
-            + " mm: " + "; ".join(f"{a:g} deg: {g.min():.4f}..{g.max():.4f} per mm" for a, g in per)
-            + f" (max/min {spread:.4f})")
+    return (
+        spread < 1.1,
+        "a/b divided by R_c over R_c = "
+        + ", ".join(f"{x:g}" for x in sorted(er["R_cp_mm"].unique()))
+        + " mm: "
+        + "; ".join(f"{a:g} deg: {g.min():.4f}..{g.max():.4f} per mm" for a, g in per)
+        + f" (max/min {spread:.4f})",
+    )
 
 
 def _methods_similar(e: Evidence):
@@ -204,12 +249,15 @@ def _methods_similar(e: Evidence):
         a_t, b_t = 0.5 * (ax[0.0] + ax[180.0]), 0.5 * (ax[90.0] + ax[270.0])
         cmp_.append((a, a_t / cv[0.0] - 1, b_t / cv[90.0] - 1))
     worst = max(max(abs(x[1]), abs(x[2])) for x in cmp_)
-    return (worst < 0.05, "Example 5.3 (110/113), separation 0.00632 mm: topology semi-axes relative to the "
-            "curvature-method a, b: "
-            + "; ".join(f"phi1' = {a:g} deg: a {100 * da:+.2f} %, b {100 * db:+.2f} %" for a, da, db in cmp_)
-            + ". Criterion 5 %: the curvature method keeps only the second-order separation, whose error grows with "
-              "rho^2 along the 7 mm long axis (third- and fourth-order terms of the flanks); orientation is shared "
-              "by construction")
+    return (
+        worst < 0.05,
+        "Example 5.3 (110/113), separation 0.00632 mm: topology semi-axes relative to the "
+        "curvature-method a, b: "
+        + "; ".join(f"phi1' = {a:g} deg: a {100 * da:+.2f} %, b {100 * db:+.2f} %" for a, da, db in cmp_)
+        + ". Criterion 5 %: the curvature method keeps only the second-order separation, whose error grows with "
+        "rho^2 along the 7 mm long axis (third- and fourth-order terms of the flanks); orientation is shared "
+        "by construction",
+    )
 
 
 #: claim id -> predicate(Evidence) -> (holds, evidence text)

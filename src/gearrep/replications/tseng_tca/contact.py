@@ -23,8 +23,17 @@ from ...units import ARCSEC
 from . import model
 
 __all__ = [
-    "Assembly", "Pair", "make_pair", "ideal_start", "continue_to", "physical_contact", "ke_table", "KE_COLUMNS",
-    "FACE_WIDTH_MM", "N_PINION", "N_GEAR",
+    "Assembly",
+    "Pair",
+    "make_pair",
+    "ideal_start",
+    "continue_to",
+    "physical_contact",
+    "ke_table",
+    "KE_COLUMNS",
+    "FACE_WIDTH_MM",
+    "N_PINION",
+    "N_GEAR",
 ]
 
 #: the interface columns of a KE table (issue 8), thesis frame and signs
@@ -95,8 +104,7 @@ class Pair:
         return np.array([self.centre_distance, 0.0, self.assembly.dZ])
 
 
-def make_pair(R_cp_mm: float, R_cg_mm: float, assembly: Assembly | None = None,
-              hob: ZAHob | None = None) -> Pair:
+def make_pair(R_cp_mm: float, R_cg_mm: float, assembly: Assembly | None = None, hob: ZAHob | None = None) -> Pair:
     """The pair of seed 000 Table 5.1: 20-tooth pinion, convex flank (thread side +1, arc centre
     -1: Sigma_2R of ch. 4), and 40-tooth gear, concave flank (thread side +1, arc centre +1),
     both in their thesis frames (tooth centred on X), the gear turned by pi to face the pinion."""
@@ -121,8 +129,9 @@ def ideal_start(pair: Pair, *, tol: float = 1e-11) -> ContactPath:
 _START_CACHE: dict = {}  # ideal starts by (R_cp, R_cg0, tol, hob): shared by the Examples of one process
 
 
-def continue_to(R_cp_mm, R_cg_mm, assembly: Assembly, *, hob=None, steps: int = 4, tol=1e-11,
-                R_gap_mm: float = 3.0) -> tuple[Pair, ContactPath]:
+def continue_to(
+    R_cp_mm, R_cg_mm, assembly: Assembly, *, hob=None, steps: int = 4, tol=1e-11, R_gap_mm: float = 3.0
+) -> tuple[Pair, ContactPath]:
     """Contact at phi1' = 0 of the pair (R_cp, R_cg, assembly) by continuation from the ideal
     pair: start at R_cg0 = max(R_cg, R_cp + R_gap) (a well-localised contact; R_cg = R_cp is an
     almost-line contact) with no assembly errors, then move R_cg and the errors linearly to
@@ -158,18 +167,32 @@ def ke_table(sol: ContactPath, ratio: float) -> pd.DataFrame:
         raise ValueError("the path must contain phi1' = 0 exactly once (the tables' zero of KE)")
     i0 = int(i0[0])
     ke = (sol.phi2 - sol.phi2[i0]) - ratio * (sol.phi1 - sol.phi1[i0])
-    return pd.DataFrame({
-        "phi1_deg": np.degrees(sol.phi1),
-        "phi2_deg": np.degrees(ratio * sol.phi1 + ke),
-        "l_p_mm": sol.x[:, 0], "Z_p_mm": sol.Z_p, "l_g_mm": sol.x[:, 4], "Z_g_mm": sol.Z_g,
-        "KE_arcsec": ke / ARCSEC,
-        "psi_p_rad": sol.x[:, 3], "psi_g_rad": sol.x[:, 7],
-        "radius_p_mm": sol.radius_p, "radius_g_mm": sol.radius_g,
-        "status": sol.status_name, "residual": sol.solve.residual, "iterations": sol.solve.iterations,
-        "jacobian_cond": sol.cond,
-        **({} if sol.n_tangencies is None else {
-            "n_tangencies": sol.n_tangencies,
-            "tangency_phi2_spread_arcsec": sol.tangency_phi2_spread / ARCSEC,
-            "tangency_min_gap_mm": sol.tangency_min_gap,
-            "phi2_continuation_root_minus_phi2_arcsec": (sol.phi2_continuation - sol.phi2) / ARCSEC}),
-    })
+    return pd.DataFrame(
+        {
+            "phi1_deg": np.degrees(sol.phi1),
+            "phi2_deg": np.degrees(ratio * sol.phi1 + ke),
+            "l_p_mm": sol.x[:, 0],
+            "Z_p_mm": sol.Z_p,
+            "l_g_mm": sol.x[:, 4],
+            "Z_g_mm": sol.Z_g,
+            "KE_arcsec": ke / ARCSEC,
+            "psi_p_rad": sol.x[:, 3],
+            "psi_g_rad": sol.x[:, 7],
+            "radius_p_mm": sol.radius_p,
+            "radius_g_mm": sol.radius_g,
+            "status": sol.status_name,
+            "residual": sol.solve.residual,
+            "iterations": sol.solve.iterations,
+            "jacobian_cond": sol.cond,
+            **(
+                {}
+                if sol.n_tangencies is None
+                else {
+                    "n_tangencies": sol.n_tangencies,
+                    "tangency_phi2_spread_arcsec": sol.tangency_phi2_spread / ARCSEC,
+                    "tangency_min_gap_mm": sol.tangency_min_gap,
+                    "phi2_continuation_root_minus_phi2_arcsec": (sol.phi2_continuation - sol.phi2) / ARCSEC,
+                }
+            ),
+        }
+    )

@@ -40,12 +40,23 @@ def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFr
     cgo = with_opposite_normal(cg)
     cg = PrincipalCurvatures(*(np.where(flip if a.ndim == 1 else flip[:, None], b, a) for a, b in zip(cg, cgo)))
     el = elastic_ellipse_at(cp, cg, delta_mm)
-    return pd.DataFrame({
-        "phi1_deg": np.degrees(sol.phi1), "l_p_mm": sol.x[:, 0], "Z_p_mm": sol.Z_p,
-        "a_mm": el.a, "b_mm": el.b, "a_over_b": el.ratio, "alpha_deg": np.degrees(el.alpha),
-        "major_axis_z": el.major_axis[:, 2], "k_I_p_per_mm": cp.k1, "k_II_p_per_mm": cp.k2,
-        "k_I_g_per_mm": cg.k1, "k_II_g_per_mm": cg.k2, "elliptic": el.elliptic,
-    })
+    return pd.DataFrame(
+        {
+            "phi1_deg": np.degrees(sol.phi1),
+            "l_p_mm": sol.x[:, 0],
+            "Z_p_mm": sol.Z_p,
+            "a_mm": el.a,
+            "b_mm": el.b,
+            "a_over_b": el.ratio,
+            "alpha_deg": np.degrees(el.alpha),
+            "major_axis_z": el.major_axis[:, 2],
+            "k_I_p_per_mm": cp.k1,
+            "k_II_p_per_mm": cp.k2,
+            "k_I_g_per_mm": cg.k1,
+            "k_II_g_per_mm": cg.k2,
+            "elliptic": el.elliptic,
+        }
+    )
 
 
 def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1e-11) -> dict:
@@ -68,10 +79,16 @@ def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1
         if abs(cur.x[0, 0] - lp) < 1e-9:
             break
     el = contact_ellipses(pair, cur, 0.00632).iloc[0]
-    return {"R_cp_mm": R_cp_mm, "R_cg_mm": R_cg_mm, "alpha_n_deg": alpha_deg, "phi1_deg": float(np.degrees(a)),
-            "l_p_mm": float(cur.x[0, 0]), "a_over_b": float(el["a_over_b"]),
-            "a_mm_delta_0.00632": float(el["a_mm"]), "b_mm_delta_0.00632": float(el["b_mm"])}
-
+    return {
+        "R_cp_mm": R_cp_mm,
+        "R_cg_mm": R_cg_mm,
+        "alpha_n_deg": alpha_deg,
+        "phi1_deg": float(np.degrees(a)),
+        "l_p_mm": float(cur.x[0, 0]),
+        "a_over_b": float(el["a_over_b"]),
+        "a_mm_delta_0.00632": float(el["a_mm"]),
+        "b_mm_delta_0.00632": float(el["b_mm"]),
+    }
 
 
 def _height(flank: Flank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30):
@@ -147,5 +164,12 @@ def topology_pattern(pair: Pair, sol: ContactPath, i: int, delta_mm: float, n_di
         if np.all(np.abs(f1[ok]) < 1e-10):
             break
     ok &= np.abs(f1) < 1e-9
-    return pd.DataFrame({"theta_deg": np.degrees(th), "rho_mm": r1, "rho_curvature_mm": rho_c,
-                         "converged": ok, "phi1_deg": float(np.degrees(one.phi1[0]))})
+    return pd.DataFrame(
+        {
+            "theta_deg": np.degrees(th),
+            "rho_mm": r1,
+            "rho_curvature_mm": rho_c,
+            "converged": ok,
+            "phi1_deg": float(np.degrees(one.phi1[0])),
+        }
+    )

@@ -26,13 +26,34 @@ from . import model
 from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
-__all__ = ["Design", "TABLE_EXAMPLE", "phi1_grid", "assembly_of", "compute_case", "solved", "ke_table_of",
-           "sensitivity", "contact_ratio", "ke_vs_hob_radius", "ellipses_example_5_3", "ellipse_ratio",
-           "topology_example_5_3", "SENSITIVITY_TABLES"]
+__all__ = [
+    "Design",
+    "TABLE_EXAMPLE",
+    "phi1_grid",
+    "assembly_of",
+    "compute_case",
+    "solved",
+    "ke_table_of",
+    "sensitivity",
+    "contact_ratio",
+    "ke_vs_hob_radius",
+    "ellipses_example_5_3",
+    "ellipse_ratio",
+    "topology_example_5_3",
+    "SENSITIVITY_TABLES",
+]
 
 #: KE table (seed 000 Table 5.x) -> the Example (sec 5.5) whose assembly it lists
-TABLE_EXAMPLE = {"5.2": "5.1", "5.3": "5.2", "5.4": "5.4", "5.5": "5.5", "5.6": "5.6",
-                 "5.7": "5.7", "5.8": "5.8", "5.9": "5.9"}
+TABLE_EXAMPLE = {
+    "5.2": "5.1",
+    "5.3": "5.2",
+    "5.4": "5.4",
+    "5.5": "5.5",
+    "5.6": "5.6",
+    "5.7": "5.7",
+    "5.8": "5.8",
+    "5.9": "5.9",
+}
 #: the tables whose sensitivity to R_c is reported (the surviving ones)
 SENSITIVITY_TABLES = ("5.3", "5.4", "5.7", "5.8", "5.9")
 
@@ -72,8 +93,9 @@ def compute_case(case: dict, phi1_rad, *, tol=1e-11, steps=4, hob=None) -> tuple
 
 def solved(settings: dict, design: Design, example: str, hob=None) -> tuple[Pair, ContactPath]:
     """The path of an Example on the settings' phi1' grid."""
-    return compute_case(design.cases[example], phi1_grid(settings), tol=settings["tol"],
-                        steps=settings["continuation_steps"], hob=hob)
+    return compute_case(
+        design.cases[example], phi1_grid(settings), tol=settings["tol"], steps=settings["continuation_steps"], hob=hob
+    )
 
 
 def ke_table_of(settings: dict, design: Design, example: str) -> pd.DataFrame:
@@ -108,18 +130,20 @@ def _sensitivity_of(case, pair, sol, settings) -> pd.DataFrame:
     band = np.abs(np.einsum("nq,nq->n", Tp[:, :, 2], Vt[:, -1, 0:4])) / sv[:, -1] * 1e-6
     ke = {k: [ke_table(s, pair.ratio)["KE_arcsec"].to_numpy() for s in v] for k, v in out.items()}
     g, p = out["R_cg_mm"], out["R_cp_mm"]
-    return pd.DataFrame({
-        "phi1_deg": np.degrees(sol.phi1),
-        "dZ_p_dR_cg": (g[0].Z_p - g[1].Z_p) / (2 * h),
-        "dZ_g_dR_cg": (g[0].Z_g - g[1].Z_g) / (2 * h),
-        "dZ_p_dR_cp": (p[0].Z_p - p[1].Z_p) / (2 * h),
-        "dl_p_dR_cg": (g[0].x[:, 0] - g[1].x[:, 0]) / (2 * h),
-        "dKE_dR_cg_arcsec_per_mm": (ke["R_cg_mm"][0] - ke["R_cg_mm"][1]) / (2 * h),
-        "Z_p_tol_1e-6_minus_Z_p": loose.Z_p - sol.Z_p,
-        "Z_p_band_at_residual_1e-6_mm": band,
-        "loose_status": loose.status_name,
-        "jacobian_cond": sol.cond,
-    })
+    return pd.DataFrame(
+        {
+            "phi1_deg": np.degrees(sol.phi1),
+            "dZ_p_dR_cg": (g[0].Z_p - g[1].Z_p) / (2 * h),
+            "dZ_g_dR_cg": (g[0].Z_g - g[1].Z_g) / (2 * h),
+            "dZ_p_dR_cp": (p[0].Z_p - p[1].Z_p) / (2 * h),
+            "dl_p_dR_cg": (g[0].x[:, 0] - g[1].x[:, 0]) / (2 * h),
+            "dKE_dR_cg_arcsec_per_mm": (ke["R_cg_mm"][0] - ke["R_cg_mm"][1]) / (2 * h),
+            "Z_p_tol_1e-6_minus_Z_p": loose.Z_p - sol.Z_p,
+            "Z_p_band_at_residual_1e-6_mm": band,
+            "loose_status": loose.status_name,
+            "jacobian_cond": sol.cond,
+        }
+    )
 
 
 def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
@@ -153,8 +177,14 @@ def _tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_
         a, ga, b, gb, cur = b, gb, c, gc, s
         if abs(gc) < 1e-10:
             break
-    return {"edge": f"{member}_tip", "radius_mm": ra, "phi1_deg": np.degrees(b),
-            "l_p_mm": cur.x[0, 0], "l_g_mm": cur.x[0, 4], "radius_error_mm": gb}
+    return {
+        "edge": f"{member}_tip",
+        "radius_mm": ra,
+        "phi1_deg": np.degrees(b),
+        "l_p_mm": cur.x[0, 0],
+        "l_g_mm": cur.x[0, 4],
+        "radius_error_mm": gb,
+    }
 
 
 def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
@@ -167,8 +197,12 @@ def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
     w = np.radians(window)
     path = physical_contact(pair, trace_path(pair, start, np.linspace(-w, w, 31), tol=tol), tol=tol)
     require(path, "contact-ratio path")
-    d = pd.DataFrame([_tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
-                      _tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol)])
+    d = pd.DataFrame(
+        [
+            _tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
+            _tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
+        ]
+    )
     d["contact_ratio"] = model.contact_ratio(d["phi1_deg"].iloc[0], d["phi1_deg"].iloc[1], pair.pinion.n_teeth)
     return d
 
@@ -181,8 +215,15 @@ def ke_vs_hob_radius(settings: dict, design: Design) -> pd.DataFrame:
         pair, sol = solved(settings, design, "5.1", hob=hob)
         require(sol, f"hob sweep r_h={r_h}")
         t = ke_table(sol, pair.ratio)
-        rows += [{"hob_pitch_radius_mm": float(r_h), "lead_angle_deg": np.degrees(hob.lead_angle_rad),
-                  "phi1_deg": a, "KE_arcsec": k} for a, k in zip(t["phi1_deg"], t["KE_arcsec"])]
+        rows += [
+            {
+                "hob_pitch_radius_mm": float(r_h),
+                "lead_angle_deg": np.degrees(hob.lead_angle_rad),
+                "phi1_deg": a,
+                "KE_arcsec": k,
+            }
+            for a, k in zip(t["phi1_deg"], t["KE_arcsec"])
+        ]
     return pd.DataFrame(rows)
 
 
@@ -194,8 +235,11 @@ def ellipses_example_5_3(settings: dict, design: Design) -> pd.DataFrame:
 
 def ellipse_ratio(settings: dict, design: Design) -> pd.DataFrame:
     """Fig 5.7: a/b at the pitch point of the ideal pair R_cg = R_cp + ellipse_R_gap_mm."""
-    rows = [pitch_point_ratio(float(rc), float(rc) + float(settings["ellipse_R_gap_mm"]), float(a), tol=settings["tol"])
-            for a in design.ellipse_alpha_deg for rc in settings["ellipse_R_cp_mm"]]
+    rows = [
+        pitch_point_ratio(float(rc), float(rc) + float(settings["ellipse_R_gap_mm"]), float(a), tol=settings["tol"])
+        for a in design.ellipse_alpha_deg
+        for rc in settings["ellipse_R_cp_mm"]
+    ]
     return pd.DataFrame(rows)
 
 
