@@ -8,6 +8,11 @@ min_version("8.0")
 configfile: "config/config.yaml"
 
 
+# common.smk puts the interpreter's own bin directory first on PATH (papermill for notebooks)
+envvars:
+    "PATH",
+
+
 # `snakemake --report results/snakemake_report.html` (after a run) collects figures and scorecard.
 report: "workflow/report/workflow.rst"
 

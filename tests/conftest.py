@@ -54,7 +54,7 @@ def seed_lines():
 
 
 #: what a workflow run needs from the repository (everything tracked that Snakemake reads)
-WORKFLOW_INPUTS = ["Snakefile", "config", "workflow", "data", "src", "notebooks", "profiles"]
+WORKFLOW_INPUTS = ["Snakefile", "config", "workflow", "data", "src", "notebooks", "profiles", "requirements.lock"]
 
 
 def copy_workflow(dest: Path) -> Path:

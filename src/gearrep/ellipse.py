@@ -46,7 +46,6 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import elliprd, elliprf
 
 from .curvature import PrincipalCurvatures, relative_curvature, relative_principal_curvatures
 from .solve import SolveResult, Status, newton
@@ -217,6 +216,8 @@ def _integrals(p):
     """I_s = int_0^{pi/2} sin^2 t / D dt and I_c = int cos^2 t / D dt, D = sqrt(1 - m sin^2 t),
     m = e^2 = 1 - p, p = (b/a)^2: I_s = R_D(0, p, 1)/3 = (K - E)/m, I_c = p R_D(0, 1, p)/3 =
     (E - p K)/m (DLMF 19.25.1); and K(m) = R_F(0, p, 1)."""
+    from scipy.special import elliprd, elliprf  # imported here: scipy.special costs 0.2 s per process
+
     return elliprd(0.0, p, 1.0) / 3.0, p * elliprd(0.0, 1.0, p) / 3.0, elliprf(0.0, p, 1.0)
 
 
@@ -226,6 +227,8 @@ def hertz_ratio(b_over_a) -> np.ndarray:
     (scipy's ellipk/ellipe take the parameter m = e^2; the Carlson form avoids the 0/0 at
     e -> 0.)"""
     p = np.asarray(b_over_a, dtype=float) ** 2
+    from scipy.special import elliprd
+
     return elliprd(0.0, 1.0, p) / elliprd(0.0, p, 1.0)
 
 

@@ -42,6 +42,16 @@ __all__ = [
     "load",
     "parse_row",
     "param_table",
+    "MANIFEST_NAME",
+    "MANIFEST_COLUMNS",
+    "DATA_PATTERNS",
+    "file_entry",
+    "build_manifest",
+    "write_manifest",
+    "read_manifest",
+    "verify_manifest",
+    "scored_rows_per_seed",
+    "main",
 ]
 
 VALUE_COLUMNS = [
@@ -132,9 +142,11 @@ def _read_csv(path: Path) -> pd.DataFrame:
     return df
 
 
-def _read(directory: Path, pattern: str, columns: list[str]) -> pd.DataFrame:
+def _read(directory: Path, pattern: str, columns: list[str], files=None) -> pd.DataFrame:
     frames = []
     for path in sorted(directory.glob(pattern)):
+        if files is not None and not any(fnmatch.fnmatchcase(path.name, f) for f in files):
+            continue
         df = _read_csv(path)
         missing = [c for c in columns if c not in df.columns]
         if missing:
@@ -253,14 +265,17 @@ def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
     return c
 
 
-def load(directory) -> Published:
-    """Read and validate every ``values_*``, ``params_*`` and ``claims_*`` CSV in ``directory``."""
+def load(directory, files=None) -> Published:
+    """Read and validate every ``values_*``, ``params_*`` and ``claims_*`` CSV in ``directory``
+    (only those whose names match one of the glob patterns ``files``, if given: a workflow job
+    reads exactly the files it declares as inputs)."""
     d = Path(directory)
     if not d.is_dir():
         raise PublishedDataError(f"published-data directory {d} does not exist")
-    values = validate_values(_read(d, "values_*.csv", VALUE_COLUMNS))
-    params = validate_params(_read(d, "params_*.csv", PARAM_COLUMNS))
-    claims = validate_claims(_read(d, "claims_*.csv", CLAIM_COLUMNS))
+    files = None if files is None else [Path(f).name for f in files]
+    values = validate_values(_read(d, "values_*.csv", VALUE_COLUMNS, files))
+    params = validate_params(_read(d, "params_*.csv", PARAM_COLUMNS, files))
+    claims = validate_claims(_read(d, "claims_*.csv", CLAIM_COLUMNS, files))
     ids = pd.concat([values["id"], claims["id"]])
     if ids.duplicated().any():
         raise PublishedDataError(f"ids shared by a value and a claim: {sorted(set(ids[ids.duplicated()]))[:10]}")

@@ -188,7 +188,7 @@ def test_workflow_setting_keeps_expected_statuses(pub, design):
     """The settings of config/config.yaml (what the workflow runs) give the statuses on file too."""
     import yaml
 
-    cfg = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["catt"]
+    cfg = (yaml.safe_load((ROOT / "config" / "config.yaml").read_text()) or {}).get("catt")
     t = _through_csv(catt.run(S.resolve(catt.SETTINGS, cfg, where="catt"), design))
     got = C.validate_checks(catt.checks(t, pub)["checks"]).set_index("id")["status"]
     exp = EXPECTED.set_index("id")["status"]

@@ -48,7 +48,6 @@ rule bench_replication:
         "../envs/gearrep.yaml"
     params:
         settings=lambda wc: SETTINGS[wc.name],
-        published_dir=PUBLISHED_DIR,
         repeats=RESOLVED["bench"]["repeats"],
     script:
         "../scripts/bench_replication.py"

@@ -7,7 +7,7 @@ for _key in REGISTRY:
     _study = load_study(_key)
     _code = lib(f"replications.{_key}", "published", "checks")
     _tables = [f"results/{p}" for p in table_paths(_study.JOBS).values()]
-    _check_data = published_files(*_study.CHECK_DATA)
+    _check_data = published_files(*_study.CHECK_DATA, *_study.DESIGN_DATA)
     _benchmarks = [f"results/benchmarks/{_key}/{j}.tsv" for j in _study.JOBS]
     _figures = {k: f"results/{p}" for k, p in _study.FIGURES.items()}
 
@@ -33,7 +33,6 @@ for _key in REGISTRY:
             params:
                 study=_key,
                 job=_job,
-                published_dir=PUBLISHED_DIR,
                 settings=SETTINGS[_key],  # a changed setting reruns the study's jobs
             script:
                 "../scripts/run_job.py"
@@ -56,7 +55,6 @@ for _key in REGISTRY:
             "../envs/gearrep.yaml"
         params:
             study=_key,
-            published_dir=PUBLISHED_DIR,
         script:
             "../scripts/run_checks.py"
 

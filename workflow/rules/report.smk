@@ -12,8 +12,10 @@ rule render_notebook:
         "results/logs/render_{name}.log",
     conda:
         "../envs/gearrep.yaml"
+    params:
+        python=PYTHON,  # nbconvert of the interpreter running Snakemake, not of PATH
     shell:
-        "{PYTHON:q} -m nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
+        "{params.python:q} -m nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
         "results/notebooks/{wildcards.name}.ipynb > {log} 2>&1"
 
 

@@ -1,6 +1,8 @@
 """Check records of a study (Snakemake script of the generic checks rules): compare every table of
 the study with the published values and claims of its seed, write the checks and their extra tables."""
 
+from pathlib import Path
+
 import replication_io
 
 from gearrep import published
@@ -11,7 +13,8 @@ smk = snakemake  # noqa: F821  (provided by Snakemake)
 with replication_io.logged(smk.log[0]):
     study = load(smk.params.study)
     tables = replication_io.read_tables(smk.input.tables)
-    out = study.checks(tables, published.load(smk.params.published_dir))
+    # exactly the published files the rule declares as inputs
+    out = study.checks(tables, published.load(Path(smk.input.published[0]).parent, smk.input.published))
     missing = sorted(set(study.CHECK_OUTPUTS) - set(out))
     if missing:
         raise RuntimeError(f"{smk.params.study}.checks returned no {missing}")

@@ -3,6 +3,8 @@ compute the job's tables from its settings and the published design data, write 
 
 The numerics are in ``gearrep.replications.<study>``; this script only reads and writes."""
 
+from pathlib import Path
+
 import replication_io
 
 from gearrep import published
@@ -13,6 +15,7 @@ smk = snakemake  # noqa: F821  (provided by Snakemake)
 with replication_io.logged(smk.log[0]):
     study = load(smk.params.study)
     job = study.JOBS[smk.params.job]
-    design = study.params_from_published(published.load(smk.params.published_dir))
+    # exactly the design-data files the rule declares as inputs
+    design = study.params_from_published(published.load(Path(smk.input.design[0]).parent, smk.input.design))
     seconds, tables = replication_io.timed(job.compute, dict(smk.params.settings), design)
     replication_io.write_tables(tables, smk.output, smk.log[0], f"{smk.params.study}.{smk.params.job}", seconds)

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-from scipy.optimize import brentq
 
 from ... import frames
 from ...solve import Status
@@ -155,6 +154,8 @@ def concavity(s: dict, d: dict) -> pd.DataFrame:
 
     bound = model.rho_t_bound_eq_2_7_1(d["N2"], an, Pn, beta, l)
     k_design = k_profile(d["rho_t_times_Pn"] / Pn)
+    from scipy.optimize import brentq  # here: scipy.optimize costs 0.5 s per process
+
     root = brentq(k_profile, 0.5 * bound, 2.0 * bound, xtol=1e-12)
     pin = point_curvatures(make_flank(d, Pn / (2 * d["rho_c_times_Pn"]), an, l, beta, "pinion", s["tol"]))
     return pd.DataFrame(

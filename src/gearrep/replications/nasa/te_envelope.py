@@ -7,8 +7,6 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-from scipy.interpolate import CubicSpline
-from scipy.optimize import brentq
 
 from ... import meshing
 
@@ -25,6 +23,9 @@ def te_envelope(phi, te, z, per, face_width, drive, n_fine=400):
     [0, per] plus the exact face crossings (brentq, +-1e-10 rad either side) and the curve
     crossings TE_0(t) = TE_0(t - per) (brentq). Returns (TE_max = peak-to-peak of the envelope,
     DataFrame phi1_rad, te_arcsec, tooth (-99 where no pair is in contact), number of such gaps)."""
+    from scipy.interpolate import CubicSpline  # here: scipy costs 0.5 s per process
+    from scipy.optimize import brentq
+
     ok = np.isfinite(te) & np.isfinite(z)
     fte, fz = CubicSpline(phi[ok], te[ok]), CubicSpline(phi[ok], z[ok])
     lo_d, hi_d = phi[ok].min(), phi[ok].max()

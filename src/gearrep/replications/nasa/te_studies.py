@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-from scipy.interpolate import CubicSpline
 
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC
@@ -214,6 +213,8 @@ def _worm_case(s, d, name, kw, B):
         face_width_in=B,
     )
     if use.sum() > 3:
+        from scipy.interpolate import CubicSpline  # here: scipy costs 0.5 s per process
+
         # centre of the bearing contact: axial position of the contact at the vertex (minimum) of TE_0
         xs = np.linspace(phi[use].min(), phi[use].max(), 20001)
         fte = CubicSpline(phi[use], te_v[use])(xs)
