@@ -4,7 +4,6 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 CORES  ?= 2
-export PATH := $(abspath $(BIN)):$(PATH)
 export MPLBACKEND := Agg
 
 # The pinned environment: exact versions and hashes of every dependency (core + test extras)

@@ -72,11 +72,12 @@ def copy_workflow(dest: Path) -> Path:
 
 
 def tool_env() -> dict:
-    """Environment for running Snakemake from a test: the interpreter's bin directory first on
-    PATH, so the notebook directive finds papermill and the render rule finds jupyter nbconvert
-    even when pytest was started as `.venv/bin/python -m pytest` without an activated venv."""
+    """Environment for running Snakemake from a test as a user with no activated venv: the
+    interpreter's bin directory is taken OFF the PATH, so every workflow test also checks that the
+    rules find papermill and nbconvert through the interpreter running Snakemake (issue 16)."""
     env = dict(os.environ)
-    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
+    own = str(Path(sys.executable).parent)
+    env["PATH"] = os.pathsep.join(p for p in env.get("PATH", "").split(os.pathsep) if p and p != own)
     env.setdefault("MPLBACKEND", "Agg")
     return env
 
