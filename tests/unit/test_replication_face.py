@@ -37,3 +37,20 @@ def test_face_checker_refuses_incomplete_packages():
         _face.check_face(types.ModuleType("gearrep.replications.empty"))
     with pytest.raises(ValueError, match="must end in"):
         _face.Job(lambda s, d: {}, {"a": "x/b.csv"})
+
+
+def test_data_readme_lists_the_registry():
+    """The data README's seed table names, per seed, exactly the registered studies."""
+    import re
+
+    from conftest import ROOT
+    from gearrep.published import PAPERS
+
+    text = (ROOT / "data" / "published" / "README.md").read_text()
+    rows = re.findall(r"^\| `(\d{3})` \|[^|]*\| (.*) \|$", text, flags=re.M)
+    listed = {seed: set(re.findall(r"`(\w+)`", studies)) for seed, studies in rows}
+    registered = {}
+    for key, study in REGISTRY.items():
+        registered.setdefault(study.seed, set()).add(key)
+    assert listed == registered
+    assert set(registered) == set(PAPERS)

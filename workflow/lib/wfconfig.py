@@ -42,7 +42,7 @@ def declaration() -> dict:
     """The whole configuration's declaration: workflow settings and one group per study."""
     out = dict(WORKFLOW)
     for key, study in REGISTRY.items():
-        out[key] = S.group(f"seed {study.seed}: {study.document} (gearrep.replications.{key})", **load(key).SETTINGS)
+        out[key] = S.group(f"seed {study.seed}, {study.document}: {study.scope} (gearrep.replications.{key})", **load(key).SETTINGS)
     return out
 
 

@@ -1,7 +1,9 @@
 """One package per replicated paper, every one with the same face (:mod:`._face`).
 
-:data:`REGISTRY` is the one list of studies: key -> seed -> document. The workflow's rules, the
-data README and the report read it; :func:`load` imports a study's package.
+:data:`REGISTRY` is the one list of studies: key -> seed -> document (the document titles per
+seed are the published data's :data:`gearrep.published.PAPERS`). The workflow's rules, the
+scorecard and the report read it (a test keeps the data README's seed table equal to it);
+:func:`load` imports a study's package.
 """
 
 from __future__ import annotations
@@ -10,26 +12,33 @@ import importlib
 from dataclasses import dataclass
 from types import ModuleType
 
+from ..published import PAPERS
+
 __all__ = ["Study", "REGISTRY", "load"]
 
 
 @dataclass(frozen=True)
 class Study:
-    """A replicated study: its package key, the seed id of its document, the document."""
+    """A replicated study: its package key, the seed id of its document, what it covers."""
 
     key: str
     seed: str
-    document: str
+    scope: str
+
+    @property
+    def document(self) -> str:
+        """Title of the replicated document (one per seed, :data:`gearrep.published.PAPERS`)."""
+        return PAPERS[self.seed]
 
 
 REGISTRY: dict[str, Study] = {
     s.key: s
     for s in (
-        Study("tseng_curvature", "000", "curvilinear-tooth cylindrical gears cut by a ZA worm hob, ch. 4 (curvatures)"),
-        Study("tseng_tca", "000", "curvilinear-tooth cylindrical gears cut by a ZA worm hob, ch. 5 (TCA, KE)"),
-        Study("nasa", "002", "NASA CR-2000-209415, Novikov-Wildhaber helical gears"),
-        Study("thesis", "003", "PhD thesis 2023, conventional vs reduced TCA"),
-        Study("catt", "004", "Ma et al. 2021, circular-arc-tooth-trace (CATT) cylindrical gears"),
+        Study("tseng_curvature", "000", "ch. 4: curvature tables 4.2-4.5 of the hob-generated gear"),
+        Study("tseng_tca", "000", "ch. 5: TCA and kinematic-error tables 5.2-5.9, contact ellipses"),
+        Study("nasa", "002", "curvatures, contact ellipses, TCA and TE under misalignment, worm-plunged pinion"),
+        Study("thesis", "003", "convergence of conventional vs reduced TCA, TE of crowned gears"),
+        Study("catt", "004", "contact-ellipse area along the path and every stated trend"),
     )
 }
 

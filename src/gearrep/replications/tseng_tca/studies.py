@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from ... import meshing
 from ...surfaces.hob import ZAHob
 from ...tca_envelope import (
     ContactPath,
@@ -203,7 +204,9 @@ def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
             _tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
         ]
     )
-    d["contact_ratio"] = model.contact_ratio(d["phi1_deg"].iloc[0], d["phi1_deg"].iloc[1], pair.pinion.n_teeth)
+    # the library's contact ratio (the printed eq 5.13 with the angular pitch, model.contact_ratio,
+    # is kept as evidence and tested against it); the pinion tip comes first along the path
+    d["contact_ratio"] = abs(float(meshing.contact_ratio(*np.radians(d["phi1_deg"].to_numpy()), pair.pinion.n_teeth)))
     return d
 
 
