@@ -44,6 +44,7 @@ def test_data_readme_lists_the_registry():
     import re
 
     from conftest import ROOT
+
     from gearrep.published import PAPERS
 
     text = (ROOT / "data" / "published" / "README.md").read_text()

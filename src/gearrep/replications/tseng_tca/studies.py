@@ -23,7 +23,6 @@ from ...tca_envelope import (
     tangency_system,
     trace_path,
 )
-from . import model
 from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
