@@ -195,9 +195,17 @@ def newton_rows(
 # ----------------------------------------------------------------------------------------------
 # public solves
 # ----------------------------------------------------------------------------------------------
+def _angles(phi1, name: str = "phi1") -> np.ndarray:
+    """``phi1`` as a non-empty 1-D float array [rad]; a scalar becomes length 1."""
+    a = np.asarray(phi1, dtype=float)
+    if a.ndim > 1 or a.size == 0:
+        raise ValueError(f"{name} must be a scalar or a non-empty 1-D array of angles [rad], got shape {a.shape}")
+    return np.atleast_1d(a)
+
+
 def _prep(phi1, start, width):
     start = np.atleast_2d(np.asarray(start, dtype=float))
-    phi1 = np.atleast_1d(np.asarray(phi1, dtype=float))
+    phi1 = _angles(phi1)
     if start.shape[-1] != width:
         raise ValueError(f"start must have {width} columns, got shape {start.shape}")
     n = max(len(phi1), len(start))
@@ -210,7 +218,7 @@ def _prep(phi1, start, width):
 
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
-    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    phi1 = _angles(phi1)
     mid1 = np.where(np.isfinite(pair.lower1 + pair.upper1), 0.5 * (pair.lower1 + pair.upper1), 0.0)
     if formulation == "reduced":
         return np.tile(mid1, (len(phi1), 1))
@@ -256,6 +264,7 @@ def solve_contact(
     if formulation not in ("reduced", "conventional"):
         raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
     width = 2 if formulation == "reduced" else 5
+    phi1 = _angles(phi1)
     if start is None:
         start = default_start(pair, phi1, formulation)
     phi1, start = _prep(phi1, start, width)
@@ -404,9 +413,7 @@ def trace_path(
     position. A failed position does not seed the next one. Returns ContactPoints in the order
     of ``phi1``.
     """
-    phi1 = np.atleast_1d(np.asarray(phi1, float))
-    if phi1.ndim != 1 or len(phi1) < 1:
-        raise ValueError("phi1 must be a non-empty 1-D array")
+    phi1 = _angles(phi1)
     width = 2 if formulation == "reduced" else 5
     x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
     if x.shape != (width,):
