@@ -75,7 +75,7 @@ def _check(mutations):
             assert any(n in str(e) for n in changed), (str(e), changed)
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(mutation(), min_size=1, max_size=2))
 def test_mutated_published_data_is_caught_naming_the_file(mutations):
     _check(mutations)
