@@ -15,7 +15,7 @@ from gearrep.surfaces.involute import (
     mating_flanks,
     standard_centre_distance,
 )
-from gearrep.tca import GearPair, default_start, solve_contact, trace_path
+from gearrep.tca import GearPair, default_start, line_of_action_start, line_of_action_starts, solve_contact, trace_path
 
 ALPHA = np.radians(20.0)
 CROWN = ParabolicCrowning(0.003)  # point contact: the meshing cycle needs no v1
@@ -90,7 +90,7 @@ BAD_ANGLES = {"empty": [], "2-D": np.zeros((2, 3)), "empty 2-D": np.zeros((0, 2)
 
 
 @pytest.mark.parametrize("bad", BAD_ANGLES.values(), ids=BAD_ANGLES.keys())
-@pytest.mark.parametrize("call", [solve_contact, trace_path, default_start])
+@pytest.mark.parametrize("call", [solve_contact, trace_path, default_start, line_of_action_starts])
 def test_angle_arrays_must_be_non_empty_and_1d(call, bad):
     with pytest.raises(ValueError, match=r"phi1 must be a scalar or a non-empty 1-D array .*shape"):
         call(_pair(), bad)
@@ -101,6 +101,12 @@ def test_angle_arrays_must_be_non_empty_and_1d(call, bad):
 def test_phi1_start_must_be_one_finite_angle(call, bad):
     with pytest.raises(ValueError, match=r"phi1_start must be one finite angle"):
         call(_pair(), bad)
+
+
+@pytest.mark.parametrize("bad", [np.zeros((2, 3)), [], np.nan])
+def test_line_of_action_start_takes_one_finite_angle(bad):
+    with pytest.raises(ValueError, match=r"phi1 must be one finite angle"):
+        line_of_action_start(_pair(), bad)
 
 
 # ---------------------------------------------------------------------------------------------
