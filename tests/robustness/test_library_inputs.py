@@ -161,3 +161,14 @@ def test_valid_public_calls_emit_no_numpy_warning():
     assert np.isfinite(cycle.te_peak_to_peak)
     flank = InvoluteFlank(_gears()[0])
     assert np.all(np.isfinite(flank.position(np.linspace(flank.u_min, flank.u_max, 5), 0.0)))
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+@pytest.mark.parametrize("u1", [np.inf, -np.inf, np.nan, 1e300])
+def test_a_non_finite_or_huge_start_is_reported_diverged_without_warnings(formulation, u1):
+    """Today an infinite start lets 'invalid value encountered in cos' escape (and 1e300 an overflow)."""
+    pair = _pair()
+    start = np.array([[u1, 0.0]]) if formulation == "reduced" else np.array([[u1, 0.0, 20.0, 0.0, 0.0]])
+    c = solve_contact(pair, 0.0, start, formulation=formulation)
+    assert c.status_name.tolist() == ["diverged"]
+    assert trace_path(pair, [0.0, 0.01], start[0], formulation=formulation).status_name.tolist() == ["diverged"] * 2

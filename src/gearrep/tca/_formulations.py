@@ -280,8 +280,8 @@ def solve_contact(
 
     # dropped normal component: the largest of member 1's normal at the start
     if drop is None:
-        _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
-        with np.errstate(invalid="ignore"):
+        with np.errstate(invalid="ignore", over="ignore"):  # a non-finite start ends as status DIVERGED
+            _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
             drop = np.argmax(np.nan_to_num(np.abs(n1s), nan=0.0), axis=-1).astype(float)
     else:
         if drop not in (0, 1, 2):
@@ -323,18 +323,19 @@ def solve_contact(
             return _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1], derivs=False)[0]
 
     params = np.column_stack([phi1, drop] + ([start[:, 1]] if fixed else []))
-    res = newton_rows(
-        Fonly,
-        FJ,
-        start[:, free],
-        params,
-        lower=lo_all[free],
-        upper=hi_all[free],
-        jacobian=jacobian,
-        tol=tol,
-        maxiter=maxiter,
-        damped=damped,
-    )
+    with np.errstate(invalid="ignore", over="ignore"):  # non-finite iterates end as status DIVERGED
+        res = newton_rows(
+            Fonly,
+            FJ,
+            start[:, free],
+            params,
+            lower=lo_all[free],
+            upper=hi_all[free],
+            jacobian=jacobian,
+            tol=tol,
+            maxiter=maxiter,
+            damped=damped,
+        )
     sol = expand(res.x, params)
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20)
 
@@ -342,7 +343,7 @@ def solve_contact(
 def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
     status = res.status.copy()
     u1, v1 = sol[:, 0], sol[:, 1]
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         if formulation == "reduced":
             K = _reduced_kernel(pair, u1, v1, phi1, derivs=False)
             u2, v2, phi2, r, n1, n2 = K["u2"], K["v2"], K["phi2"], K["r"], K["n1"], K["n2"]
