@@ -176,6 +176,8 @@ def engagement_limits(
     :class:`EngagementLimit`; raises ValueError if the start position has no contact.
     """
     phi1_start = _one_angle(phi1_start)
+    if v1 is not None and (np.ndim(v1) != 0 or not np.isfinite(float(v1))):
+        raise ValueError(f"v1 must be None (point contact) or one finite face-width coordinate [mm], got {v1!r}")
     _check_undercut(pair)
     p1 = 2.0 * np.pi / pair.n1
     h = p1 / 10.0 if step is None else float(step)

@@ -109,6 +109,21 @@ def test_line_of_action_start_takes_one_finite_angle(bad):
         line_of_action_start(_pair(), bad)
 
 
+@pytest.mark.parametrize("call", [solve_contact, trace_path])
+@pytest.mark.parametrize("v1", [np.zeros((2, 2)), [0.0, 1.0, 2.0]])
+def test_fixed_v1_must_match_the_angles(call, v1):
+    """Today: 'input operand has more dimensions than allowed by the axis remapping'."""
+    with pytest.raises(ValueError, match=r"v1 must be a scalar or a 1-D array of length 1 or 2"):
+        call(_pair(crowning1=None), [0.0, 0.01], v1=v1)
+
+
+@pytest.mark.parametrize("v1", [np.zeros((2, 2)), [0.0, 1.0], np.inf])
+@pytest.mark.parametrize("call", [meshing_cycle, engagement_limits])
+def test_meshing_v1_is_one_finite_coordinate(call, v1):
+    with pytest.raises(ValueError, match=r"v1 must be None \(point contact\) or one finite face-width"):
+        call(_pair(crowning1=None), v1=v1)
+
+
 # ---------------------------------------------------------------------------------------------
 # line contact: the message says what to do
 # ---------------------------------------------------------------------------------------------

@@ -203,6 +203,14 @@ def _angles(phi1, name: str = "phi1") -> np.ndarray:
     return np.atleast_1d(a)
 
 
+def _face_coordinates(v1, n: int) -> np.ndarray:
+    """Fixed face-width coordinates ``v1`` (scalar, length 1 or length ``n``) as an (n,) array."""
+    a = np.asarray(v1, dtype=float)
+    if a.ndim > 1 or (a.ndim == 1 and len(a) not in (1, n)):
+        raise ValueError(f"v1 must be a scalar or a 1-D array of length 1 or {n} (one per phi1), got shape {a.shape}")
+    return np.broadcast_to(a, (n,)).copy()
+
+
 def _prep(phi1, start, width):
     start = np.atleast_2d(np.asarray(start, dtype=float))
     phi1 = _angles(phi1)
@@ -271,7 +279,7 @@ def solve_contact(
     n = len(phi1)
     fixed = v1 is not None
     if fixed:
-        v1a = np.broadcast_to(np.asarray(v1, float), (n,)).copy()
+        v1a = _face_coordinates(v1, n)
         if not np.all(np.isfinite(v1a)):
             raise ValueError("v1 must be finite")
         start[:, 1] = v1a
@@ -419,7 +427,7 @@ def trace_path(
     x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
     if x.shape != (width,):
         raise ValueError(f"start must have {width} entries, got shape {x.shape}")
-    v1a = None if v1 is None else np.broadcast_to(np.asarray(v1, float), phi1.shape)
+    v1a = None if v1 is None else _face_coordinates(v1, len(phi1))
     out, hist = [], []  # hist: (phi1, solution) of converged points
     for i, p in enumerate(phi1):
         guess = x
