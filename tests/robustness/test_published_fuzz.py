@@ -82,7 +82,7 @@ def test_mutated_published_data_is_caught_naming_the_file(mutations):
 
 
 @pytest.mark.slow
-@settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(mutation(), min_size=1, max_size=4))
 def test_mutated_published_data_is_caught_naming_the_file_long(mutations):
     _check(mutations)
