@@ -109,7 +109,7 @@ def _check(mutations):
         assert any(n in str(e) for n in named), (str(e), named)
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(mutation(), min_size=1, max_size=3))
 def test_mutated_config_resolves_or_names_the_key(mutations):
     _check(mutations)
