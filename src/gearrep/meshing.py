@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solve import SolveResult, Status, newton
+from .surfaces.involute import InvoluteGearData, undercut_limit
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
 from .tca._formulations import _reduced_FJ
 
@@ -141,6 +142,28 @@ def _boundary_solve(pair, contact: ContactPoints, j: int, v1_fixed, tol=1e-12, m
     return phi1, c, res
 
 
+def _one_angle(phi1_start) -> float:
+    """``phi1_start`` as one finite angle [rad]."""
+    a = np.asarray(phi1_start, dtype=float)
+    if a.ndim != 0 or not np.isfinite(a):
+        raise ValueError(f"phi1_start must be one finite angle [rad], got {phi1_start!r}")
+    return float(a)
+
+
+def _check_undercut(pair: GearPair) -> None:
+    """Involute flanks of gears below the rack's undercut limit have no meshing cycle to trace."""
+    for name in ("flank1", "flank2"):
+        gear = getattr(getattr(pair, name), "gear", None)
+        if isinstance(gear, InvoluteGearData):
+            n_min = undercut_limit(gear)
+            if gear.n_teeth < n_min:
+                raise ValueError(
+                    f"{name}: n_teeth = {gear.n_teeth} is undercut by its generating rack (undercut limit "
+                    f"{n_min:.4g} = 2 (h_a - x) cos(beta) / sin^2(alpha_t) teeth); allowed: n_teeth >= "
+                    f"{int(np.ceil(n_min))}, or a profile shift x that lowers the limit"
+                )
+
+
 def engagement_limits(
     pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, step=None, max_steps: int = 400, tol: float = 1e-12
 ):
@@ -152,11 +175,20 @@ def engagement_limits(
     boundary that was crossed (reduced formulation, eq 33-44). Returns (begin, end) as
     :class:`EngagementLimit`; raises ValueError if the start position has no contact.
     """
+    phi1_start = _one_angle(phi1_start)
+    if v1 is not None and (np.ndim(v1) != 0 or not np.isfinite(float(v1))):
+        raise ValueError(f"v1 must be None (point contact) or one finite face-width coordinate [mm], got {v1!r}")
+    _check_undercut(pair)
     p1 = 2.0 * np.pi / pair.n1
     h = p1 / 10.0 if step is None else float(step)
     if not (np.isfinite(h) and h > 0):
         raise ValueError(f"step must be > 0, got {step!r}")
     c0 = solve_contact(pair, phi1_start, start, v1=v1, tol=tol)
+    if c0.status[0] == Status.SINGULAR and v1 is None:
+        raise ValueError(
+            f"singular contact system at phi1_start = {phi1_start!r}: the pair is in line contact (e.g. unmodified "
+            "flanks); pass v1= (the fixed face-width coordinate of member 1, e.g. v1=0.0) for line contact"
+        )
     if c0.status[0] != Status.CONVERGED:
         raise ValueError(
             f"no contact inside the flanks at phi1_start = {phi1_start!r} "

@@ -148,7 +148,13 @@ def _coerce(s: Setting, v, key: str):
     """``v`` checked against ``s`` (ints for integer settings, floats for numbers, lists for arrays)."""
     bad = SettingError(f"{key}: got {v!r}; allowed: {s.allowed()}")
     if s.kind in ("number", "integer"):
-        if not _is_number(v) or not math.isfinite(v):
+        if not _is_number(v):
+            raise bad
+        try:
+            finite = math.isfinite(v)
+        except OverflowError:  # an int beyond float range: outside every declared range
+            finite = False
+        if not finite:
             raise bad
         if s.kind == "integer":
             if v != int(v):

@@ -89,6 +89,7 @@ __all__ = [
     "InvoluteFlank",
     "mating_flanks",
     "standard_centre_distance",
+    "undercut_limit",
 ]
 
 
@@ -314,6 +315,21 @@ class InvoluteGearData:
             raise ValueError(f"helix_angle must be in [0, pi/2) rad, got {self.helix_angle!r}")
         for n in ("x", "h_a", "h_f", "thinning"):
             _check_finite(n, getattr(self, n))
+        s0 = float(self.tooth_thickness + self.thinning)  # unthinned transverse thickness at the pitch circle
+        if not self.thinning < s0:
+            raise ValueError(
+                f"thinning = {self.thinning!r} mm must be < {s0!r} mm, the tooth thickness at the pitch circle "
+                "(allowed range: thinning < m_t (pi/2 + 2 x tan alpha_n))"
+            )
+        if self.r_a > self.r_b:  # the two flanks of the tooth must not cross below the tip circle
+            inv_p = float(involute_polar_angle(self.r_p, self.r_b))
+            inv_a = float(involute_polar_angle(self.r_a, self.r_b))
+            t_max = float(s0 + 2.0 * self.r_p * (inv_p - inv_a))
+            if not self.thinning < t_max:
+                raise ValueError(
+                    f"thinning = {self.thinning!r} mm leaves a pointed tooth (no thickness at the tip radius "
+                    f"r_a = {float(self.r_a)!r} mm); allowed range: thinning < {t_max!r} mm"
+                )
 
     @property
     def transverse_module(self) -> float:
@@ -581,3 +597,16 @@ def mating_flanks(
 def standard_centre_distance(gear1: InvoluteGearData, gear2: InvoluteGearData) -> float:
     """Reference centre distance r_p1 + r_p2 of an external pair (zero profile shift sum)."""
     return gear1.r_p + gear2.r_p
+
+
+def undercut_limit(gear: InvoluteGearData) -> float:
+    """Smallest tooth number the generating rack cuts without undercut: 2 (h_a - x) cos(beta) / sin^2(alpha_t).
+
+    The rack's addendum ``h_a`` (module units, the gear's addendum coefficient) less the profile
+    shift ``x`` must not reach below the interference point r_p sin^2(alpha_t) of the line of action.
+    Below this tooth number the root of the flank is cut away and the involute flank of
+    :class:`InvoluteFlank` no longer describes the tooth near its base circle.
+    """
+    if not isinstance(gear, InvoluteGearData):
+        raise ValueError(f"gear must be an InvoluteGearData, got {type(gear).__name__}")
+    return float(2.0 * (gear.h_a - gear.x) * np.cos(gear.helix_angle) / np.sin(gear.alpha_t) ** 2)

@@ -195,9 +195,25 @@ def newton_rows(
 # ----------------------------------------------------------------------------------------------
 # public solves
 # ----------------------------------------------------------------------------------------------
+def _angles(phi1, name: str = "phi1") -> np.ndarray:
+    """``phi1`` as a non-empty 1-D float array [rad]; a scalar becomes length 1."""
+    a = np.asarray(phi1, dtype=float)
+    if a.ndim > 1 or a.size == 0:
+        raise ValueError(f"{name} must be a scalar or a non-empty 1-D array of angles [rad], got shape {a.shape}")
+    return np.atleast_1d(a)
+
+
+def _face_coordinates(v1, n: int) -> np.ndarray:
+    """Fixed face-width coordinates ``v1`` (scalar, length 1 or length ``n``) as an (n,) array."""
+    a = np.asarray(v1, dtype=float)
+    if a.ndim > 1 or (a.ndim == 1 and len(a) not in (1, n)):
+        raise ValueError(f"v1 must be a scalar or a 1-D array of length 1 or {n} (one per phi1), got shape {a.shape}")
+    return np.broadcast_to(a, (n,)).copy()
+
+
 def _prep(phi1, start, width):
     start = np.atleast_2d(np.asarray(start, dtype=float))
-    phi1 = np.atleast_1d(np.asarray(phi1, dtype=float))
+    phi1 = _angles(phi1)
     if start.shape[-1] != width:
         raise ValueError(f"start must have {width} columns, got shape {start.shape}")
     n = max(len(phi1), len(start))
@@ -210,7 +226,7 @@ def _prep(phi1, start, width):
 
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
-    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    phi1 = _angles(phi1)
     mid1 = np.where(np.isfinite(pair.lower1 + pair.upper1), 0.5 * (pair.lower1 + pair.upper1), 0.0)
     if formulation == "reduced":
         return np.tile(mid1, (len(phi1), 1))
@@ -256,13 +272,14 @@ def solve_contact(
     if formulation not in ("reduced", "conventional"):
         raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
     width = 2 if formulation == "reduced" else 5
+    phi1 = _angles(phi1)
     if start is None:
         start = default_start(pair, phi1, formulation)
     phi1, start = _prep(phi1, start, width)
     n = len(phi1)
     fixed = v1 is not None
     if fixed:
-        v1a = np.broadcast_to(np.asarray(v1, float), (n,)).copy()
+        v1a = _face_coordinates(v1, n)
         if not np.all(np.isfinite(v1a)):
             raise ValueError("v1 must be finite")
         start[:, 1] = v1a
@@ -271,8 +288,8 @@ def solve_contact(
 
     # dropped normal component: the largest of member 1's normal at the start
     if drop is None:
-        _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
-        with np.errstate(invalid="ignore"):
+        with np.errstate(invalid="ignore", over="ignore"):  # a non-finite start ends as status DIVERGED
+            _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
             drop = np.argmax(np.nan_to_num(np.abs(n1s), nan=0.0), axis=-1).astype(float)
     else:
         if drop not in (0, 1, 2):
@@ -314,18 +331,19 @@ def solve_contact(
             return _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1], derivs=False)[0]
 
     params = np.column_stack([phi1, drop] + ([start[:, 1]] if fixed else []))
-    res = newton_rows(
-        Fonly,
-        FJ,
-        start[:, free],
-        params,
-        lower=lo_all[free],
-        upper=hi_all[free],
-        jacobian=jacobian,
-        tol=tol,
-        maxiter=maxiter,
-        damped=damped,
-    )
+    with np.errstate(invalid="ignore", over="ignore"):  # non-finite iterates end as status DIVERGED
+        res = newton_rows(
+            Fonly,
+            FJ,
+            start[:, free],
+            params,
+            lower=lo_all[free],
+            upper=hi_all[free],
+            jacobian=jacobian,
+            tol=tol,
+            maxiter=maxiter,
+            damped=damped,
+        )
     sol = expand(res.x, params)
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20)
 
@@ -333,7 +351,7 @@ def solve_contact(
 def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
     status = res.status.copy()
     u1, v1 = sol[:, 0], sol[:, 1]
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         if formulation == "reduced":
             K = _reduced_kernel(pair, u1, v1, phi1, derivs=False)
             u2, v2, phi2, r, n1, n2 = K["u2"], K["v2"], K["phi2"], K["r"], K["n1"], K["n2"]
@@ -404,14 +422,12 @@ def trace_path(
     position. A failed position does not seed the next one. Returns ContactPoints in the order
     of ``phi1``.
     """
-    phi1 = np.atleast_1d(np.asarray(phi1, float))
-    if phi1.ndim != 1 or len(phi1) < 1:
-        raise ValueError("phi1 must be a non-empty 1-D array")
+    phi1 = _angles(phi1)
     width = 2 if formulation == "reduced" else 5
     x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
     if x.shape != (width,):
         raise ValueError(f"start must have {width} entries, got shape {x.shape}")
-    v1a = None if v1 is None else np.broadcast_to(np.asarray(v1, float), phi1.shape)
+    v1a = None if v1 is None else _face_coordinates(v1, len(phi1))
     out, hist = [], []  # hist: (phi1, solution) of converged points
     for i, p in enumerate(phi1):
         guess = x

@@ -94,6 +94,13 @@ class GearPair:
         for name, n in (("n1", n1), ("n2", n2)):
             if int(n) != n or n < 1:
                 raise ValueError(f"{name} must be a positive integer, got {n!r}")
+        for name, n, flank in (("n1", n1, flank1), ("n2", n2, flank2)):
+            own = getattr(getattr(flank, "gear", None), "n_teeth", None)  # the flank's own tooth number
+            if own is not None and int(own) != int(n):
+                raise ValueError(
+                    f"{name} = {n!r} disagrees with the tooth number of flank{name[1]} "
+                    f"(flank{name[1]}.gear.n_teeth = {own!r}); allowed: {name} = {own!r}"
+                )
         a = float(centre_distance)
         if not (np.isfinite(a) and a > 0):
             raise ValueError(f"centre_distance must be > 0, got {centre_distance!r}")

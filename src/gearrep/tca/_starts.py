@@ -18,7 +18,7 @@ import numpy as np
 
 from ..solve import SolveResult, Status, newton
 from ..surface import cross
-from ._formulations import conventional_system, newton_rows, reduced_unknowns, solve_contact
+from ._formulations import _angles, conventional_system, newton_rows, reduced_unknowns, solve_contact
 from ._pair import GearPair
 
 __all__ = [
@@ -229,6 +229,10 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     The aligned pair is in conjugate mesh at phi1 = 0 with contact at the pitch point; turning
     member 1 by phi1 moves the contact along the line of action by r_b1 phi1 (direction by trial
     solve: the one that converges in fewer iterations). Falls back to (r_p1, 0)."""
+    a = np.asarray(phi1, dtype=float)
+    if a.ndim != 0 or not np.isfinite(a):
+        raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
+    phi1 = float(a)
     g1 = pair.flank1.gear
     t_p = np.tan(g1.alpha_t)
     best = None
@@ -249,6 +253,7 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
 def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
     """First-order (u1, v1 = 0) starts along the line of action for the angles ``phi1`` (array);
     the direction in which the contact climbs member 1's flank is found by one trial solve."""
+    phi1 = _angles(phi1)
     g1 = pair.flank1.gear
     t_p = np.tan(g1.alpha_t)
     s = 1.0

@@ -1,0 +1,189 @@
+"""Hostile inputs to the library (issue 16, item 5): inconsistent designs are refused with a
+ValueError naming the key, the value and the allowed range, instead of confident numbers or
+numpy errors, and no numpy warning escapes the public calls."""
+
+import warnings
+
+import numpy as np
+import pytest
+
+from gearrep.meshing import engagement_limits, meshing_cycle
+from gearrep.surfaces.involute import (
+    InvoluteFlank,
+    InvoluteGearData,
+    ParabolicCrowning,
+    mating_flanks,
+    standard_centre_distance,
+)
+from gearrep.tca import GearPair, default_start, line_of_action_start, line_of_action_starts, solve_contact, trace_path
+
+ALPHA = np.radians(20.0)
+CROWN = ParabolicCrowning(0.003)  # point contact: the meshing cycle needs no v1
+
+
+def _gears(n1=20, n2=40, **kw1):
+    return InvoluteGearData(n1, 1.0, ALPHA, 10.0, **kw1), InvoluteGearData(n2, 1.0, ALPHA, 10.0)
+
+
+def _pair(n1=20, n2=40, crowning1=CROWN):
+    g1, g2 = _gears(n1, n2)
+    f1, f2 = mating_flanks(g1, g2, crowning1=crowning1)
+    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2))
+
+
+@pytest.fixture(autouse=True)
+def _numpy_warnings_are_errors():
+    """Every call in this module runs with warnings as errors: none may escape the public API."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        yield
+
+
+# ---------------------------------------------------------------------------------------------
+# tooth numbers that disagree with the flanks
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("key, n1, n2, flank_n", [("n1", 10, 40, 20), ("n2", 20, 41, 40)])
+def test_gear_pair_refuses_a_tooth_number_its_flank_disagrees_with(key, n1, n2, flank_n):
+    """Today n1=10 with a 20-tooth flank gives a TE of 26 325 arcsec instead of an error."""
+    g1, g2 = _gears()
+    f1, f2 = mating_flanks(g1, g2, crowning1=CROWN)
+    with pytest.raises(ValueError, match=rf"{key} = {n1 if key == 'n1' else n2}\b.*{flank_n}"):
+        GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2))
+
+
+def test_gear_pair_accepts_flanks_without_a_tooth_number():
+    """Surfaces that carry no gear data (e.g. generated flanks) keep being accepted as before."""
+
+    class Bare:
+        pass
+
+    pair = GearPair(Bare(), Bare(), 10, 40, 30.0)
+    assert (pair.n1, pair.n2) == (10, 40)
+
+
+# ---------------------------------------------------------------------------------------------
+# impossible tooth thickness
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("thinning", [1.6, 2.0, 10.0])
+def test_thinning_beyond_the_tooth_thickness_is_refused(thinning):
+    """Today thinning = 2 mm on a 1.571 mm tooth gives contact ratio 1.635 and TE 0."""
+    with pytest.raises(ValueError, match=rf"thinning = {thinning}.*must be < [0-9.]+ mm"):
+        InvoluteGearData(20, 1.0, ALPHA, 10.0, thinning=thinning)
+
+
+def test_thinning_that_points_the_tooth_below_its_tip_is_refused():
+    """1.2 mm off a 1.571 mm tooth: still positive at the pitch circle, but the two flanks cross
+    below the tip circle (a pointed tooth), which the flank model cannot represent."""
+    with pytest.raises(ValueError, match=r"thinning = 1.2 .*pointed"):
+        InvoluteGearData(20, 1.0, ALPHA, 10.0, thinning=1.2)
+
+
+def test_a_realistic_backlash_thinning_is_accepted():
+    g = InvoluteGearData(20, 1.0, ALPHA, 10.0, thinning=0.05)
+    assert g.tooth_thickness == pytest.approx(0.5 * np.pi - 0.05)
+
+
+# ---------------------------------------------------------------------------------------------
+# empty and 2-D angle arrays
+# ---------------------------------------------------------------------------------------------
+BAD_ANGLES = {"empty": [], "2-D": np.zeros((2, 3)), "empty 2-D": np.zeros((0, 2))}
+
+
+@pytest.mark.parametrize("bad", BAD_ANGLES.values(), ids=BAD_ANGLES.keys())
+@pytest.mark.parametrize("call", [solve_contact, trace_path, default_start, line_of_action_starts])
+def test_angle_arrays_must_be_non_empty_and_1d(call, bad):
+    with pytest.raises(ValueError, match=r"phi1 must be a scalar or a non-empty 1-D array .*shape"):
+        call(_pair(), bad)
+
+
+@pytest.mark.parametrize("bad", [np.zeros((2, 2)), [], np.array([0.0, 0.1]), np.nan])
+@pytest.mark.parametrize("call", [meshing_cycle, engagement_limits])
+def test_phi1_start_must_be_one_finite_angle(call, bad):
+    with pytest.raises(ValueError, match=r"phi1_start must be one finite angle"):
+        call(_pair(), bad)
+
+
+@pytest.mark.parametrize("bad", [np.zeros((2, 3)), [], np.nan])
+def test_line_of_action_start_takes_one_finite_angle(bad):
+    with pytest.raises(ValueError, match=r"phi1 must be one finite angle"):
+        line_of_action_start(_pair(), bad)
+
+
+@pytest.mark.parametrize("call", [solve_contact, trace_path])
+@pytest.mark.parametrize("v1", [np.zeros((2, 2)), [0.0, 1.0, 2.0]])
+def test_fixed_v1_must_match_the_angles(call, v1):
+    """Today: 'input operand has more dimensions than allowed by the axis remapping'."""
+    with pytest.raises(ValueError, match=r"v1 must be a scalar or a 1-D array of length 1 or 2"):
+        call(_pair(crowning1=None), [0.0, 0.01], v1=v1)
+
+
+@pytest.mark.parametrize("v1", [np.zeros((2, 2)), [0.0, 1.0], np.inf])
+@pytest.mark.parametrize("call", [meshing_cycle, engagement_limits])
+def test_meshing_v1_is_one_finite_coordinate(call, v1):
+    with pytest.raises(ValueError, match=r"v1 must be None \(point contact\) or one finite face-width"):
+        call(_pair(crowning1=None), v1=v1)
+
+
+# ---------------------------------------------------------------------------------------------
+# line contact: the message says what to do
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("call", [meshing_cycle, engagement_limits])
+def test_line_contact_pair_is_told_to_pass_v1(call):
+    with pytest.raises(ValueError, match=r"line contact.*pass v1="):
+        call(_pair(crowning1=None))
+
+
+def test_line_contact_pair_with_v1_runs():
+    cycle = meshing_cycle(_pair(crowning1=None), v1=0.0, n_points=9)
+    assert 1.5 < cycle.contact_ratio < 1.8
+
+
+# ---------------------------------------------------------------------------------------------
+# undercut flanks
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("n1", [8, 12, 17])
+@pytest.mark.parametrize("call", [meshing_cycle, engagement_limits])
+def test_undercut_pinion_names_undercut_and_the_limit(call, n1):
+    """20 deg, h_a = 1, x = 0: the generating rack undercuts below 2 / sin^2(20 deg) = 17.1 teeth.
+    Today: a numpy RuntimeWarning, then 'could not locate the flank boundary'."""
+    with pytest.raises(ValueError, match=rf"flank1.*n_teeth = {n1}.*undercut.*17\.1.*18"):
+        call(_pair(n1, 2 * n1))
+
+
+def test_the_undercut_limit_follows_profile_shift_and_pressure_angle():
+    from gearrep.surfaces.involute import undercut_limit
+
+    assert undercut_limit(InvoluteGearData(20, 1.0, ALPHA, 10.0)) == pytest.approx(2 / np.sin(ALPHA) ** 2)
+    assert undercut_limit(InvoluteGearData(20, 1.0, ALPHA, 10.0, x=0.5)) == pytest.approx(1 / np.sin(ALPHA) ** 2)
+    assert undercut_limit(InvoluteGearData(20, 1.0, np.radians(25), 10.0)) < 12
+    # a profile-shifted 12-tooth pinion is no longer undercut and meshes
+    g1 = InvoluteGearData(12, 1.0, ALPHA, 10.0, x=0.4)
+    g2 = InvoluteGearData(24, 1.0, ALPHA, 10.0, x=-0.4)
+    f1, f2 = mating_flanks(g1, g2, crowning1=CROWN)
+    cycle = meshing_cycle(GearPair(f1, f2, 12, 24, standard_centre_distance(g1, g2)), n_points=9)
+    assert cycle.contact_ratio > 1.0
+
+
+# ---------------------------------------------------------------------------------------------
+# valid calls stay quiet (warnings are errors in this module)
+# ---------------------------------------------------------------------------------------------
+def test_valid_public_calls_emit_no_numpy_warning():
+    pair = _pair()
+    c = solve_contact(pair, np.linspace(-0.1, 0.1, 7))
+    assert c.converged.any()
+    assert len(trace_path(pair, np.linspace(-0.05, 0.05, 5))) == 5
+    cycle = meshing_cycle(pair, n_points=9)
+    assert np.isfinite(cycle.te_peak_to_peak)
+    flank = InvoluteFlank(_gears()[0])
+    assert np.all(np.isfinite(flank.position(np.linspace(flank.u_min, flank.u_max, 5), 0.0)))
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+@pytest.mark.parametrize("u1", [np.inf, -np.inf, np.nan, 1e300])
+def test_a_non_finite_or_huge_start_is_reported_diverged_without_warnings(formulation, u1):
+    """Today an infinite start lets 'invalid value encountered in cos' escape (and 1e300 an overflow)."""
+    pair = _pair()
+    start = np.array([[u1, 0.0]]) if formulation == "reduced" else np.array([[u1, 0.0, 20.0, 0.0, 0.0]])
+    c = solve_contact(pair, 0.0, start, formulation=formulation)
+    assert c.status_name.tolist() == ["diverged"]
+    assert trace_path(pair, [0.0, 0.01], start[0], formulation=formulation).status_name.tolist() == ["diverged"] * 2
