@@ -42,6 +42,8 @@ __all__ = [
     "load",
     "parse_row",
     "param_table",
+    "ERRATA_COLUMNS",
+    "load_errata",
     "MANIFEST_NAME",
     "MANIFEST_COLUMNS",
     "DATA_PATTERNS",
@@ -280,6 +282,30 @@ def load(directory, files=None) -> Published:
     if ids.duplicated().any():
         raise PublishedDataError(f"ids shared by a value and a claim: {sorted(set(ids[ids.duplicated()]))[:10]}")
     return Published(values=values, params=params, claims=claims)
+
+
+ERRATA_COLUMNS = ["seed", "location", "printed", "correction", "evidence"]
+
+
+def load_errata(path) -> pd.DataFrame:
+    """The errata file (``data/errata.csv``): one row per erratum with its seed, location, the
+    printed form, the correction and the evidence. An empty or header-only file, a missing
+    column, an unknown seed or an erratum without evidence is refused naming the file and row."""
+    path = Path(path)
+    if not path.is_file():
+        raise PublishedDataError(f"{path}: the errata file does not exist")
+    df = _read_csv(path)
+    missing = [c for c in ERRATA_COLUMNS if c not in df.columns]
+    if missing:
+        raise PublishedDataError(f"{path.name}: missing required column(s) {missing}")
+    for n, row in enumerate(df.itertuples(index=False), start=1):
+        if row.seed not in SEEDS:
+            raise PublishedDataError(
+                f"{path.name} data row {n} column 'seed': {row.seed!r} is not one of {list(SEEDS)}"
+            )
+        if len(row.evidence.strip()) < 20:
+            raise PublishedDataError(f"{path.name} data row {n} column 'evidence': an erratum needs its evidence")
+    return df
 
 
 def parse_row(row: str) -> dict[str, str]:

@@ -103,6 +103,23 @@ def test_bad_config_names_the_key(config, message):
         wfconfig.resolve_config(config, ROOT)
 
 
+@pytest.mark.parametrize(
+    "config, message",
+    [
+        ({"thesis": {"tol": float("nan")}}, r"thesis\.tol: got nan"),
+        ({"catt": {"thickness": {"face_width": float("inf")}}}, r"catt\.thickness\.face_width: got inf"),
+        ({"tseng_tca": {"phi1_step_deg": 60.0}}, r"tseng_tca\.phi1_step_deg"),
+        ({"catt": {"section_check": {"design": "no_such_design"}}}, r"catt\.section_check\.design"),
+        ({"published_dir": "nowhere"}, r"published_dir: 'nowhere' is not a directory"),
+    ],
+)
+def test_issue16_config_values_stop_before_any_job(config, message):
+    """Values the schema let through and that failed only inside a job (issue 16): refused by
+    the parse-time resolution and the studies' cross-field validation."""
+    with pytest.raises(S.SettingError, match=message):
+        wfconfig.validate_studies(wfconfig.resolve_config(config, ROOT), ROOT)
+
+
 def test_config_yaml_holds_only_overrides_with_reasons():
     """A key in config/config.yaml must differ from its declared value (else it is a second copy)."""
     decl, cfg = wfconfig.declaration(), _config("config.yaml")

@@ -17,7 +17,7 @@ from pathlib import Path
 from gearrep import settings as S
 from gearrep.replications import REGISTRY, load
 
-__all__ = ["WORKFLOW", "declaration", "resolve_config", "schema", "SCHEMA_HEADER"]
+__all__ = ["WORKFLOW", "declaration", "resolve_config", "validate_studies", "schema", "SCHEMA_HEADER"]
 
 #: the workflow's own settings (the studies' settings come from their packages)
 WORKFLOW = S.declare(
@@ -42,7 +42,9 @@ def declaration() -> dict:
     """The whole configuration's declaration: workflow settings and one group per study."""
     out = dict(WORKFLOW)
     for key, study in REGISTRY.items():
-        out[key] = S.group(f"seed {study.seed}, {study.document}: {study.scope} (gearrep.replications.{key})", **load(key).SETTINGS)
+        out[key] = S.group(
+            f"seed {study.seed}, {study.document}: {study.scope} (gearrep.replications.{key})", **load(key).SETTINGS
+        )
     return out
 
 
@@ -55,6 +57,18 @@ def resolve_config(config: dict, root: Path | str = ".") -> dict:
     if not d.is_dir():
         raise S.SettingError(f"config.published_dir: {resolved['published_dir']!r} is not a directory under {root}")
     return resolved
+
+
+def validate_studies(resolved: dict, root: Path | str = ".") -> None:
+    """Each study's cross-field checks (``validate(settings, design)``: limits between settings,
+    names that must exist in the design data) with its published design data, before any job."""
+    from gearrep import published
+
+    d = Path(root, resolved["published_dir"])
+    for key in REGISTRY:
+        study = load(key)
+        design = study.params_from_published(published.load(d, study.DESIGN_DATA))
+        study.validate(resolved[key], design)
 
 
 SCHEMA_HEADER = (

@@ -12,7 +12,7 @@ os.environ["PATH"] = os.pathsep.join([str(Path(PYTHON).parent), os.environ.get("
 sys.path.insert(0, str(Path(workflow.basedir, "workflow", "lib")))
 
 from modgraph import ModuleGraph
-from wfconfig import resolve_config
+from wfconfig import resolve_config, validate_studies
 
 from gearrep import published as _published
 from gearrep.replications import REGISTRY
@@ -27,6 +27,9 @@ SETTINGS = {key: RESOLVED[key] for key in REGISTRY}
 # The published data as committed (data/published/MANIFEST.csv: checksum, rows per seed of every
 # file): a missing, emptied, cut, altered or unlisted file stops here, naming the file.
 _published.verify_manifest(Path(workflow.basedir, PUBLISHED_DIR))
+_published.load_errata(Path(workflow.basedir, "data", "errata.csv"))
+# Each study's cross-field limits with its design data (e.g. a design name that must exist).
+validate_studies(RESOLVED, workflow.basedir)
 
 _GRAPH = ModuleGraph(Path(workflow.basedir, "src"), workflow.basedir)
 

@@ -23,7 +23,10 @@ from gearrep.replications import load  # noqa: E402
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 name = smk.wildcards.name
 mod = load(name)
-cases = mod.bench_cases(dict(smk.params.settings), mod.params_from_published(published.load(Path(smk.input.design[0]).parent, smk.input.design)))
+cases = mod.bench_cases(
+    dict(smk.params.settings),
+    mod.params_from_published(published.load(Path(smk.input.design[0]).parent, smk.input.design)),
+)
 repeats = int(smk.params.repeats)
 
 frames, chosen = [], []
