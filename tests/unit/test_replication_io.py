@@ -16,7 +16,7 @@ def test_a_failed_job_leaves_its_traceback_in_the_log(tmp_path):
     log = tmp_path / "logs" / "job.log"
     with pytest.raises(ZeroDivisionError):
         with replication_io.logged(str(log)):
-            1 / 0
+            raise ZeroDivisionError("a failing job")
     text = log.read_text()
     assert "Traceback" in text and "ZeroDivisionError" in text
 
