@@ -36,7 +36,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .solve import SolveResult, Status, newton
-from .surfaces.involute import InvoluteGearData, undercut_limit
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
 from .tca._formulations import _reduced_FJ
 
@@ -151,11 +150,12 @@ def _one_angle(phi1_start) -> float:
 
 
 def _check_undercut(pair: GearPair) -> None:
-    """Involute flanks of gears below the rack's undercut limit have no meshing cycle to trace."""
+    """Involute flanks of gears below the rack's undercut limit have no meshing cycle to trace
+    (flanks whose gear data know their limit, ``min_teeth_without_undercut``)."""
     for name in ("flank1", "flank2"):
         gear = getattr(getattr(pair, name), "gear", None)
-        if isinstance(gear, InvoluteGearData):
-            n_min = undercut_limit(gear)
+        n_min = getattr(gear, "min_teeth_without_undercut", None)
+        if n_min is not None:
             if gear.n_teeth < n_min:
                 raise ValueError(
                     f"{name}: n_teeth = {gear.n_teeth} is undercut by its generating rack (undercut limit "

@@ -125,6 +125,7 @@ def test_two_methods_agree(tables):
     assert (d["status"] == "converged").all()
 
 
+@pytest.mark.bench
 def test_four_tables_fast(params):
     """Issue 10 target: the four curvature tables in < 2 s (median of 3, loaded machine)."""
     p = params

@@ -268,6 +268,7 @@ def test_design_from_published(cases):
     assert set(T.TABLE_EXAMPLE.values()) <= set(cases)
 
 
+@pytest.mark.bench
 def test_one_ke_table_is_fast(cases):
     """Issue 10 target: one KE table (11 positions) in < 0.5 s (continuation included, the
     ideal start cached as in the workflow)."""

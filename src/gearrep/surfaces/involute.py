@@ -336,6 +336,11 @@ class InvoluteGearData:
         return self.module / np.cos(self.helix_angle)
 
     @property
+    def min_teeth_without_undercut(self) -> float:
+        """:func:`undercut_limit` of this gear (the core reads it without importing the family)."""
+        return undercut_limit(self)
+
+    @property
     def alpha_t(self) -> float:
         """Transverse pressure angle, tan(alpha_t) = tan(alpha_n)/cos(beta)."""
         return float(np.arctan(np.tan(self.pressure_angle) / np.cos(self.helix_angle)))
