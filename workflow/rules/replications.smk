@@ -26,6 +26,8 @@ for _key in REGISTRY:
                 f"results/logs/{_key}/{_job}.log",
             benchmark:
                 f"results/benchmarks/{_key}/{_job}.tsv"
+            # the long jobs first (longest-first on 2 cores: a cold run does not end waiting for one)
+            priority: _spec.priority
             conda:
                 "../envs/gearrep.yaml"
             resources:
