@@ -26,8 +26,10 @@ for _key in REGISTRY:
                 f"results/logs/{_key}/{_job}.log",
             benchmark:
                 f"results/benchmarks/{_key}/{_job}.tsv"
-            # the long jobs first (longest-first on 2 cores: a cold run does not end waiting for one)
-            priority: _spec.priority
+            # scheduling only: every table job before any checks/figures/notebook job (priority 0,
+            # which would otherwise starve a short table job to the end of a cold run), the longest
+            # first (Job.priority), so the run ends on short steps
+            priority: 1 + _spec.priority
             conda:
                 "../envs/gearrep.yaml"
             resources:
