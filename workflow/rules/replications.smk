@@ -26,6 +26,10 @@ for _key in REGISTRY:
                 f"results/logs/{_key}/{_job}.log",
             benchmark:
                 f"results/benchmarks/{_key}/{_job}.tsv"
+            # scheduling only: every table job before any checks/figures/notebook job (priority 0,
+            # which would otherwise starve a short table job to the end of a cold run), the longest
+            # first (Job.priority), so the run ends on short steps
+            priority: 1 + _spec.priority
             conda:
                 "../envs/gearrep.yaml"
             resources:

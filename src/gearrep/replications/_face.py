@@ -50,11 +50,14 @@ __all__ = ["Job", "run_jobs", "table_paths", "FACE", "check_face"]
 @dataclass(frozen=True)
 class Job:
     """One job of a study: ``compute(settings, design)`` returns exactly the tables named in
-    ``tables`` ({table name: output path under results/})."""
+    ``tables`` ({table name: output path under results/}). ``priority``: about the job's run
+    time in seconds for the long jobs (0 for the short ones); scheduling only: a cold workflow run
+    starts the longest jobs first (its job rules get priority 1 + ``priority``)."""
 
     compute: Callable
     tables: Mapping[str, str]
     doc: str = field(default="")
+    priority: int = 0
 
     def __post_init__(self):
         for name, path in self.tables.items():

@@ -115,8 +115,9 @@ def validate(settings: dict, design: dict) -> None:
         )
 
 
-def _job(fn, *names) -> Job:
-    """Job of a study function ``fn(settings, design)`` returning a table or {name: table}."""
+def _job(fn, *names, priority: int = 0) -> Job:
+    """Job of a study function ``fn(settings, design)`` returning a table or {name: table}
+    (``priority``: :class:`.._face.Job`)."""
 
     def compute(settings, design):
         validate(settings, design)
@@ -125,7 +126,7 @@ def _job(fn, *names) -> Job:
 
     compute.__name__, compute.__doc__ = fn.__name__, fn.__doc__
     doc = " ".join((fn.__doc__ or "").strip().split("\n\n")[0].split())  # first paragraph
-    return Job(compute, {n: f"nasa/{n}.csv" for n in names}, doc=doc)
+    return Job(compute, {n: f"nasa/{n}.csv" for n in names}, doc=doc, priority=priority)
 
 
 #: one job per table or study; output paths under results/
@@ -136,12 +137,12 @@ JOBS = {
     "concavity": _job(studies.concavity, "concavity"),
     "transverse_section": _job(studies.transverse_section, "transverse_section"),
     "concave_pinion": _job(studies.concave_pinion, "concave_pinion"),
-    "te": _job(te_studies.te, "te_single", "te_cycle", "te_summary"),
+    "te": _job(te_studies.te, "te_single", "te_cycle", "te_summary", priority=7),
     "sensitivity": _job(studies.sensitivity, "sensitivity"),
-    "shifts": _job(studies.shifts, "shifts"),
+    "shifts": _job(studies.shifts, "shifts", priority=4),
     "rho_sweep": _job(studies.rho_sweep, "rho_sweep"),
     "parabola_relations": _job(studies.parabola_relations, "parabola_relations"),
-    "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary"),
+    "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
 }
 
 

@@ -146,11 +146,13 @@ JOBS = {
             )
         },
         "every convergence study, its per-start tables, the verified references and the Table 10 timing",
+        priority=22,
     ),
     "te": Job(
         te_tables,
         {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
         "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max",
+        priority=12,
     ),
     "te_sensitivity": Job(
         te_sensitivity,

@@ -214,16 +214,21 @@ JOBS = {
         for name, tab in _TABLE_NAMES.items()
     },
     **{
-        name: Job(_job(getattr(studies, fn), name), {name: f"tseng_curvature/{name}.csv"}, getattr(studies, fn).__doc__)
-        for name, fn in (
-            ("curvature_detail", "detail"),
-            ("conventions", "conventions"),
-            ("assignment", "assignment"),
-            ("variants", "variants"),
-            ("face", "face"),
-            ("rc_sweep", "rc_sweep"),
-            ("undercut", "undercut"),
-            ("ellipses", "ellipses"),
+        name: Job(
+            _job(getattr(studies, fn), name),
+            {name: f"tseng_curvature/{name}.csv"},
+            getattr(studies, fn).__doc__,
+            priority,
+        )
+        for name, fn, priority in (  # priority: about the seconds of the long jobs (.._face.Job)
+            ("curvature_detail", "detail", 4),
+            ("conventions", "conventions", 4),
+            ("assignment", "assignment", 0),
+            ("variants", "variants", 0),
+            ("face", "face", 0),
+            ("rc_sweep", "rc_sweep", 0),
+            ("undercut", "undercut", 2),
+            ("ellipses", "ellipses", 3),
         )
     },
 }

@@ -240,14 +240,19 @@ JOBS = {
         "Example 5.3 (ideal 110/113, no table)",
     ),
     **{
-        name: Job(_one(getattr(studies, name), name), {name: f"tseng_tca/{name}.csv"}, getattr(studies, name).__doc__)
-        for name in (
-            "sensitivity",
-            "contact_ratio",
-            "ke_vs_hob_radius",
-            "ellipses_example_5_3",
-            "ellipse_ratio",
-            "topology_example_5_3",
+        name: Job(
+            _one(getattr(studies, name), name),
+            {name: f"tseng_tca/{name}.csv"},
+            getattr(studies, name).__doc__,
+            priority,
+        )
+        for name, priority in (  # priority: about the seconds of the long jobs (.._face.Job)
+            ("sensitivity", 10),
+            ("contact_ratio", 2),
+            ("ke_vs_hob_radius", 4),
+            ("ellipses_example_5_3", 0),
+            ("ellipse_ratio", 6),
+            ("topology_example_5_3", 5),
         )
     },
 }
