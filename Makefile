@@ -62,7 +62,7 @@ test-all: $(STAMP)
 
 # Numerical stress suite, full version (the default `make test` runs its fast subset).
 stress: $(STAMP)
-	$(BIN)/python -m pytest -m stress tests/stress
+	$(BIN)/python -m pytest -n 0 -m stress tests/stress
 
 # Run time against error and throughput (results/bench/).
 bench: $(STAMP)
