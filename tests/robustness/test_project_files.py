@@ -83,3 +83,14 @@ def test_default_workflow_profile_sets_valid_snakemake_options():
         args += [f"--{key}"] if value is True else [f"--{key}", str(value)]
     parsed = snakemake_cli.get_argument_parser().parse_args(args)
     assert (parsed.cores, parsed.rerun_incomplete, parsed.printshellcmds) == (2, True, True)
+
+
+def test_readme_documents_the_seed_texts_and_keeps_snakemakes_report_under_results():
+    """Issue 16: the README names GEARREP_SEEDS (where the seed-text tests look), and its
+    `snakemake --report` command writes under results/ (git-ignored), not into the repository."""
+    import re
+
+    text = (ROOT / "README.md").read_text()
+    assert "GEARREP_SEEDS" in text
+    reports = re.findall(r"snakemake --report (\S+)", text)
+    assert reports and all(r.startswith("results/") for r in reports), reports

@@ -67,3 +67,27 @@ def test_quick_run_with_the_test_configuration_plans_every_study(wf):
 
     for key in REGISTRY:
         assert f"{key}_checks" in out.stdout
+
+
+@pytest.mark.parametrize(
+    "mutation, message",
+    [
+        ("delete", "values_000_T5.4.csv"),
+        ("header_only", "params_004_examples.csv"),
+        ("cross_field", "catt.section_check.design"),
+    ],
+)
+def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
+    """Issue 16: `snakemake -n` stops, naming the file or key, for a deleted data file, a
+    header-only data file and a cross-field limit."""
+    data = wf / "data" / "published"
+    if mutation == "delete":
+        (data / "values_000_T5.4.csv").unlink()
+    elif mutation == "header_only":
+        f = data / "params_004_examples.csv"
+        f.write_text(f.read_text().splitlines()[0] + "\n")
+    else:
+        (wf / "config" / "config.yaml").write_text("catt:\n  section_check:\n    design: no_such_design\n")
+    out = smk(wf, "-n")
+    assert out.returncode != 0
+    assert message in out.stdout + out.stderr, (out.stdout + out.stderr)[-2000:]
