@@ -213,9 +213,7 @@ def validate_values(values: pd.DataFrame) -> pd.DataFrame:
             raise PublishedDataError(f"{where} column 'value': {r['value']} differs from printed {r['printed']}")
         if not r["row"] and not r["quantity"]:
             raise PublishedDataError(f"{where} columns 'row', 'quantity': both empty")
-    dup = v["id"][v["id"].duplicated()]
-    if len(dup):
-        raise PublishedDataError(f"duplicate ids: {sorted(set(dup))[:10]}")
+    _duplicates(v, "id", "duplicate ids")
     v["value"] = v["value"].astype(float)
     v["precision"] = v["precision"].astype(int)
     v["line"] = v["line"].astype(int)
@@ -261,8 +259,7 @@ def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
         if not r["statement"].strip():
             raise PublishedDataError(f"{where} column 'statement': empty statement")
         _number(where, "line", r["line"], int)
-    if c["id"].duplicated().any():
-        raise PublishedDataError(f"duplicate claim ids: {sorted(set(c['id'][c['id'].duplicated()]))[:10]}")
+    _duplicates(c, "id", "duplicate claim ids")
     c["line"] = c["line"].astype(int)
     return c
 
@@ -278,9 +275,8 @@ def load(directory, files=None) -> Published:
     values = validate_values(_read(d, "values_*.csv", VALUE_COLUMNS, files))
     params = validate_params(_read(d, "params_*.csv", PARAM_COLUMNS, files))
     claims = validate_claims(_read(d, "claims_*.csv", CLAIM_COLUMNS, files))
-    ids = pd.concat([values["id"], claims["id"]])
-    if ids.duplicated().any():
-        raise PublishedDataError(f"ids shared by a value and a claim: {sorted(set(ids[ids.duplicated()]))[:10]}")
+    both = pd.concat([values[["file", "id"]], claims[["file", "id"]]], ignore_index=True)
+    _duplicates(both, "id", "ids shared by a value and a claim")
     return Published(values=values, params=params, claims=claims)
 
 
@@ -306,6 +302,14 @@ def load_errata(path) -> pd.DataFrame:
         if len(row.evidence.strip()) < 20:
             raise PublishedDataError(f"{path.name} data row {n} column 'evidence': an erratum needs its evidence")
     return df
+
+
+def _duplicates(frame: pd.DataFrame, column: str, message: str) -> None:
+    """Refuse rows whose ``column`` repeats, naming each file and value (``<file> id='...'``)."""
+    dup = frame[column].duplicated(keep=False)
+    if dup.any():
+        where = sorted({f"{f} {column}={v!r}" for f, v in zip(frame.loc[dup, "file"], frame.loc[dup, column])})
+        raise PublishedDataError(f"{message}: {where[:10]}")
 
 
 def parse_row(row: str) -> dict[str, str]:

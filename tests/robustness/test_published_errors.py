@@ -124,3 +124,19 @@ def test_unknown_unit_names_file_id_and_column(data):
 def test_unreadable_file_is_named(data):
     (data / VALUES).write_bytes(b"id,seed\n\xff\xfe,000\n")
     _refused(data, VALUES, "UTF-8")
+
+
+def test_duplicate_ids_name_their_files(tmp_path):
+    """Issue 16: every data error names the file: a repeated id names both files."""
+    import shutil
+
+    from gearrep import published
+
+    d = tmp_path / "data"
+    shutil.copytree(PUBLISHED_DIR, d)
+    src = (d / "values_000_T5.4.csv").read_text().splitlines()
+    (d / "values_000_T5.9.csv").write_text((d / "values_000_T5.9.csv").read_text() + src[1] + "\n")
+    with pytest.raises(
+        published.PublishedDataError, match=r"duplicate ids: .*values_000_T5\.4\.csv.*values_000_T5\.9\.csv"
+    ):
+        published.load(d)
