@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
@@ -193,6 +194,22 @@ class ContactPoints:
         :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve
     """
 
+    #: the per-point array fields (every field but ``formulation`` and ``condition``)
+    ARRAYS: ClassVar[tuple[str, ...]] = (
+        "u1",
+        "v1",
+        "u2",
+        "v2",
+        "phi1",
+        "phi2",
+        "position",
+        "normal",
+        "te",
+        "residual",
+        "iterations",
+        "status",
+    )
+
     u1: np.ndarray
     v1: np.ndarray
     u2: np.ndarray
@@ -225,23 +242,7 @@ class ContactPoints:
 
     def take(self, idx) -> ContactPoints:
         """Subset by index or boolean mask."""
-        kw = {
-            f: getattr(self, f)[idx]
-            for f in (
-                "u1",
-                "v1",
-                "u2",
-                "v2",
-                "phi1",
-                "phi2",
-                "position",
-                "normal",
-                "te",
-                "residual",
-                "iterations",
-                "status",
-            )
-        }
+        kw = {f: getattr(self, f)[idx] for f in self.ARRAYS}
         cond = None if self.condition is None else self.condition[idx]
         return ContactPoints(formulation=self.formulation, condition=cond, **kw)
 

@@ -246,23 +246,7 @@ def solve_with_retries(pair, phi, start, s, passes=3):
         if not fixed.any():
             break
         idx = bad[fixed]
-        parts = {
-            f: getattr(c, f).copy()
-            for f in (
-                "u1",
-                "v1",
-                "u2",
-                "v2",
-                "phi1",
-                "phi2",
-                "position",
-                "normal",
-                "te",
-                "residual",
-                "iterations",
-                "status",
-            )
-        }
+        parts = {f: getattr(c, f).copy() for f in c.ARRAYS}
         for f in parts:
             parts[f][idx] = getattr(c2, f)[fixed]
         c = type(c)(formulation=c.formulation, **parts)
