@@ -161,9 +161,9 @@ def _read(directory: Path, pattern: str, columns: list[str], files=None) -> pd.D
     return pd.concat(frames, ignore_index=True)
 
 
-def _where(row: pd.Series, n: int) -> str:
+def _where(row: dict, n: int) -> str:
     """``<file> id='<id>'`` of a data row (``<file> data row <n>`` when it has no id)."""
-    rid = str(row["id"]).strip() if "id" in row.index else ""
+    rid = str(row["id"]).strip() if "id" in row else ""
     return f"{row['file']} id={rid!r}" if rid else f"{row['file']} data row {n}"
 
 
@@ -181,10 +181,17 @@ def _row_numbers(df: pd.DataFrame) -> pd.Series:
     return df.groupby("file", sort=False).cumcount() + 1
 
 
+def _numbered_rows(df: pd.DataFrame):
+    """(row as a dict of its cells, its 1-based data-row number in its file), row by row (plain
+    dicts: ``iterrows`` builds a Series per row and made loading the data the slowest part of
+    every workflow job's start)."""
+    return zip(df.to_dict("records"), _row_numbers(df).tolist())
+
+
 def validate_values(values: pd.DataFrame) -> pd.DataFrame:
     """Type and validate a values frame; raises PublishedDataError naming file, id and column."""
     v = values.copy()
-    for (_, r), n in zip(v.iterrows(), _row_numbers(v)):
+    for r, n in _numbered_rows(v):
         where = _where(r, n)
         if not str(r["id"]).strip():
             raise PublishedDataError(f"{where} column 'id': empty id")
@@ -225,7 +232,7 @@ def validate_params(params: pd.DataFrame) -> pd.DataFrame:
     and column."""
     p = params.copy()
     blank = p["value"].str.strip() == ""
-    for (_, r), n in zip(p.iterrows(), _row_numbers(p)):
+    for r, n in _numbered_rows(p):
         where = f"{r['file']} {r['example']}/{r['parameter']} (data row {n})"
         if r["seed"] not in SEEDS:
             raise PublishedDataError(f"{where} column 'seed': {r['seed']!r} not in {SEEDS}")
@@ -248,7 +255,7 @@ def validate_params(params: pd.DataFrame) -> pd.DataFrame:
 def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
     """Type and validate a claims frame; raises PublishedDataError naming file, id and column."""
     c = claims.copy()
-    for (_, r), n in zip(c.iterrows(), _row_numbers(c)):
+    for r, n in _numbered_rows(c):
         where = _where(r, n)
         if not str(r["id"]).strip():
             raise PublishedDataError(f"{where} column 'id': empty id")
