@@ -8,6 +8,7 @@ inside the concave gear flank: no interference away from the contact)."""
 
 from __future__ import annotations
 
+import dataclasses
 import io
 from pathlib import Path
 
@@ -46,6 +47,11 @@ def design(pub):
 @pytest.fixture(scope="module")
 def cases(design):
     return design.cases
+
+
+@pytest.fixture(scope="module")
+def gears(design):
+    return design.gears
 
 
 @pytest.fixture(scope="module")
@@ -148,8 +154,8 @@ def test_truncated_phi2_column_is_checked_by_truncation(records):
     assert "truncated" in r["tolerance_basis"]
 
 
-def test_jacobian_matches_central_differences(cases):
-    pair, sol = T.compute_case(cases["5.9"], np.radians([-6.0, 4.0]))
+def test_jacobian_matches_central_differences(gears, cases):
+    pair, sol = T.compute_case(gears, cases["5.9"], np.radians([-6.0, 4.0]))
     drop = np.argmax(np.abs(sol.n_p), axis=1)
     x = sol.x + 1e-4  # off the root as well
     _, J, Fphi = TE.tangency_system(pair, x, sol.phi1, drop)
@@ -165,8 +171,8 @@ def test_jacobian_matches_central_differences(cases):
     np.testing.assert_allclose(Fphi, (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
 
 
-def test_predictor_is_first_order(cases):
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly())
+def test_predictor_is_first_order(gears):
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
     for d in (np.radians(1.0), np.radians(0.5)):
         pred = T.predict(pair, s0.x, s0.phi1, [d])
         true = T.solve_points(pair, [d], pred).x
@@ -174,12 +180,12 @@ def test_predictor_is_first_order(cases):
         assert err < 2e-4 * (d / np.radians(1.0)) ** 2 * 1.5 + 1e-9
 
 
-def test_pair_is_physical_no_interference():
+def test_pair_is_physical_no_interference(gears):
     """Move along the pinion face (psi_p +- 0.05 rad, Z ~ +-5.4 mm) from the ideal 110/113 contact
     and measure the gear surface along the contact normal: the gap must be positive (clearance)
     and close to Z^2/2 (1/110 - 1/113), the lengthwise relative curvature of convex 110 in
     concave 113."""
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly())
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
     x = s0.x[0]
     # normal pointing from the pinion tooth into its tooth space: away from the pinion's centre
     # line X_p, i.e. along the side of the point's polar angle
@@ -220,15 +226,67 @@ def test_bad_input_raises(design):
     with pytest.raises(SettingError, match="tseng_tca.topology_n_dirs"):
         T.validate(resolve(T.SETTINGS, {"topology_n_dirs": 10}), design)
     with pytest.raises(ValueError, match="lack examples"):
-        T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0)))
+        T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0), design.gears))
     with pytest.raises(ValueError, match="dgamma_h"):
         T.Assembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
-        T.make_pair(110.0, 5.0)
-    pair = T.make_pair(110.0, 113.0)
-    start = T.continue_to(110.0, 113.0, T.Assembly())[1]
+        T.make_pair(design.gears, 110.0, 5.0)
+    pair = T.make_pair(design.gears, 110.0, 113.0)
+    start = T.continue_to(design.gears, 110.0, 113.0, T.Assembly())[1]
     with pytest.raises(ValueError, match="face_width_mm"):
         TE.physical_contact(pair, start, face_width_mm=0.0)
+
+
+def _with_param(pub, parameter, value):
+    """``pub`` with one seed-000 Table 5.1 parameter changed."""
+    params = pub.params.copy()
+    hit = (params["file"] == "params_000_table5_1.csv") & (params["parameter"] == parameter)
+    assert hit.sum() == 1, parameter
+    params.loc[hit, "value"] = value
+    return dataclasses.replace(pub, params=params)
+
+
+@pytest.mark.parametrize(
+    "parameter, value",
+    [
+        ("N_pinion", 2.0),
+        ("N_pinion", 20.5),
+        ("N_gear", 1e5),
+        ("pinion_face_width", 0.0),
+        ("pinion_face_width", 5000.0),
+        ("gear_face_width", 30.0),
+        ("hob_normal_module", -3.0),
+        ("hob_pitch_radius", 2.0),
+        ("hob_lead_angle", 3.0),
+        ("gear_outside_diameter", 130.0),
+    ],
+)
+def test_table_5_1_design_out_of_range_is_refused_naming_the_key(pub, parameter, value):
+    """The Table 5.1 pair reaches the jobs only through params_from_published; tooth numbers, face
+    widths and the hob outside their range, or inconsistent with the one-hob model, are refused
+    naming the published key."""
+    with pytest.raises(ValueError, match=parameter):
+        T.params_from_published(_with_param(pub, parameter, value))
+
+
+def test_design_carries_the_table_5_1_pair(design, pub):
+    g = design.gears
+    assert (g.n_pinion, g.n_gear, g.face_width_mm) == (20, 40, 40.0)
+    assert (g.hob.module_mm, g.hob.pitch_radius_mm) == (3.0, 30.0)
+    assert g.hob.pressure_angle_rad == np.radians(20.0)
+    # a changed printed input reaches the pair (no constant in the code overrides it)
+    changed = pub
+    for k, v in (("N_pinion", 21.0), ("pinion_pitch_radius", 31.5), ("pinion_outside_diameter", 69.0)):
+        changed = _with_param(changed, k, v)
+    other = T.params_from_published(changed)
+    pair = T.make_pair(other.gears, 110.0, 113.0)
+    assert pair.pinion.n_teeth == 21 and pair.ratio == 21 / 40
+    with pytest.raises(ValueError, match="n_pinion"):
+        T.PairDesign(3, 40, 40.0, g.hob)
+    with pytest.raises(ValueError, match="face_width_mm"):
+        T.PairDesign(20, 40, float("nan"), g.hob)
+    with pytest.raises(ValueError, match="face_width_mm / 2"):
+        T.make_pair(T.PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
 
 
 def test_one_job_writes_only_its_table(settings, design):
@@ -269,26 +327,27 @@ def test_design_from_published(cases):
 
 
 @pytest.mark.bench
-def test_one_ke_table_is_fast(cases):
+def test_one_ke_table_is_fast(gears, cases):
     """Issue 10 target: one KE table (11 positions) in < 0.5 s (continuation included, the
     ideal start cached as in the workflow)."""
     import time
 
     phi1 = T.phi1_grid(study_settings("tseng_tca"))
-    T.compute_case(cases["5.4"], phi1)  # warm (ideal start cached)
+    T.compute_case(gears, cases["5.4"], phi1)  # warm (ideal start cached)
     times = []
     for _ in range(3):  # best of 3: the machine is shared, the best run measures the code
         t0 = time.perf_counter()
-        T.compute_case(cases["5.8"], phi1)
+        T.compute_case(gears, cases["5.8"], phi1)
         times.append(time.perf_counter() - t0)
     assert min(times) < 0.5, times
 
 
-def test_topology_converges_to_the_curvature_ellipse_for_small_separation():
+def test_topology_converges_to_the_curvature_ellipse_for_small_separation(gears):
     """The curvature method is the second-order limit of the surface-topology pattern: with a
     separation 100 times smaller (axes 10 times shorter) the two agree to < 0.2 % on both axes,
     while at the paper's 0.00632 mm the long axis differs by ~4 %."""
     pair, sol = T.compute_case(
+        gears,
         {
             "R_cp_mm": 110.0,
             "R_cg_mm": 113.0,
@@ -307,21 +366,21 @@ def test_topology_converges_to_the_curvature_ellipse_for_small_separation():
     assert 0.93 < r[0] < 0.99 and abs(r[1] - 1) < 0.01
 
 
-def test_unconverged_continuation_is_reported_not_passed_on():
+def test_unconverged_continuation_is_reported_not_passed_on(gears):
     """Table 5.3 (110/110 under 3') in ONE continuation step from 110/113 does not converge: the
     run stops with the solver status instead of returning a wrong contact."""
     with pytest.raises(RuntimeError, match="did not converge"):
-        T.continue_to(110.0, 110.0, T.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
+        T.continue_to(gears, 110.0, 110.0, T.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
     with pytest.raises(ValueError, match="x0"):
-        pair = T.make_pair(110.0, 113.0)
+        pair = T.make_pair(gears, 110.0, 113.0)
         T.solve_points(pair, [0.0], np.full((1, 9), np.nan))
 
 
-def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
+def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
     """A start thrown onto another branch (one row of the batch predictor corrupted by a gear
     pitch in phi2' and half a turn in the hob angles) is flagged and re-solved by marching: the
     result equals the clean path, every point converged."""
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
     clean = T.trace_path(pair, s0, phi1)
     real_predict = TE.predict

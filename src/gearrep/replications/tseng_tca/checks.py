@@ -9,7 +9,6 @@ import pandas as pd
 from ... import checks as _checks
 from ...published import parse_row
 from .claims import claim_records, row_at
-from .contact import N_PINION
 
 __all__ = ["check_records", "SURVIVING", "CHECK_PREFIXES"]
 
@@ -88,15 +87,18 @@ def _value_records(tables, values) -> list[dict]:
 def _text_contact_ratio(tables, pub):
     cr = tables["contact_ratio"]
     m_c = float(cr["contact_ratio"].iloc[0])
+    pitch_deg = abs(float(cr["phi1_deg"].iloc[1] - cr["phi1_deg"].iloc[0])) / m_c  # 360 / N_pinion
+    r_tip = dict(zip(cr["edge"], cr["radius_mm"]))
     return _checks.compare_value(
         pub,
         m_c,
         note=(
             "eq 5.13 with the angular pitch 2 pi/N_p (erratum); phi1_B, phi1_E where the contact of "
-            f"the ideal 110/110 pair reaches the gear tip (r = 63) and the pinion tip (r = 33): "
+            f"the ideal 110/110 pair reaches the gear tip (r = {r_tip['gear_tip']:g}) and the pinion tip "
+            f"(r = {r_tip['pinion_tip']:g}): "
             f"{cr['phi1_deg'].iloc[1]:.4f} and {cr['phi1_deg'].iloc[0]:.4f} deg. A standard 20/40 "
             "spur pair (straight-sided rack) has 1.635 by the closed form; the printed value needs a "
-            f"{(m_c - float(pub['value'])) * 360.0 / N_PINION:.2f} deg shorter arc. "
+            f"{(m_c - float(pub['value'])) * pitch_deg:.2f} deg shorter arc. "
             "The contact followed is the physical one (physical_contact): for this almost-line contact the "
             "symmetric off-mid-face tangencies at phi1' < 5 deg, which reach the pinion tip 0.04 deg earlier "
             "than the mid-face root would (1.6387 with the mid-face root)"
