@@ -134,6 +134,88 @@ def test_ke_and_zero_z_of_the_ideal_pairs(tables):
     np.testing.assert_allclose(t["Z_p_mm"], t["Z_g_mm"], atol=1e-6)
 
 
+def test_table_5_2_reports_both_tangencies(tables, settings):
+    """Table 5.2 (ideal 110/110) lists the first contact (the pair +-Z* while it exists) and the
+    mid-face tangency the text prints, each with its KE and separation: at phi1' = -10 the pair
+    is at Z* = 2.063 mm, reached 0.0107 arcsec of gear angle earlier; with the gear at the mid-face
+    angle the flanks interpenetrate by 2.93e-6 mm at the pair, with the gear at the pair's angle
+    mid-face is 2.93e-6 mm apart; from phi1' = 6 deg on both are one tangency."""
+    t = tables["ke_table_5_2"]
+    assert list(t.columns[:7]) == T.KE_COLUMNS
+    assert t["Z_p_midface_mm"].abs().max() < 1e-6 and t["Z_g_midface_mm"].abs().max() < 1e-6
+    r = t.iloc[0]
+    assert r["Z_p_mm"] == pytest.approx(2.063072665, abs=1e-6)
+    assert r["KE_midface_arcsec"] == pytest.approx(4.248801443, abs=1e-6)  # the root a bare continuation keeps
+    assert r["l_p_midface_mm"] == pytest.approx(4.301112228, abs=1e-6)
+    # the face search's root and this one: both converged (residual 1e-11) in a direction of condition
+    # ~1e6, so they agree to ~1e-8 arcsec (the printed KE unit is 1e-3)
+    np.testing.assert_allclose(t["phi2_midface_minus_phi2_arcsec"], t["tangency_phi2_spread_arcsec"], atol=1e-7)
+    assert r["gap_at_first_contact_if_midface_mm"] == pytest.approx(-2.9316e-6, abs=1e-9)
+    assert r["gap_at_midface_if_first_contact_mm"] == pytest.approx(2.9316e-6, abs=1e-9)
+    # the mid-face tangency is reached later (phi2' larger) and interpenetrates; the first contact never does
+    three = t["n_tangencies"] == 3
+    assert (t.loc[three, "phi2_midface_minus_phi2_arcsec"] > 0).all()
+    assert (t.loc[three, "gap_at_first_contact_if_midface_mm"] < 0).all()
+    assert (t.loc[three, "gap_at_midface_if_first_contact_mm"] > 0).all()
+    assert (
+        t.loc[~three, ["gap_at_first_contact_if_midface_mm", "gap_at_midface_if_first_contact_mm"]].abs().max().max()
+        < 1e-12
+    )
+    assert (t["tangency_gap_threshold_mm"] == settings["tangency_gap_threshold_mm"]).all()
+    assert "KE_midface_arcsec" not in tables["ke_table_5_3"]  # the other tables keep the first contact only
+
+
+def _judged(tables, pub, **change):
+    """Records of the Table 5.2 text values and claim with columns of ke_table_5_2 changed."""
+    t = dict(tables)
+    t["ke_table_5_2"] = tables["ke_table_5_2"].assign(**change)
+    rec = T.checks(t, pub)["checks"].set_index("id")
+    return rec.loc[["000-text-example=5.1-Z_p", "000-text-example=5.1-Z_g", "000-T5.2-missing"]]
+
+
+def test_midface_contact_is_judged_against_the_separation_threshold(tables, pub):
+    """The printed Z = 0 of Example 5.1 is reproduced only while the mid-face tangency's
+    interpenetration stays within tangency_gap_threshold_mm (boundary included); a separation
+    above the threshold must not pass: the record then reports the first contact's Z (2.063 mm)."""
+    t = tables["ke_table_5_2"]
+    gap = t["gap_at_first_contact_if_midface_mm"]
+    thr = float(t["tangency_gap_threshold_mm"].iloc[0])
+    pen = -gap.min()
+    ok = _judged(tables, pub)
+    assert list(ok["status"]) == ["reproduced", "reproduced", "qualitative-holds"]
+    assert ok["computed"].iloc[:2].abs().max() < 1e-6
+    assert "2.9e-06 mm" in ok["note"].iloc[0] and "within the separation threshold" in ok["note"].iloc[0]
+    assert "tangency_gap_threshold_mm" in ok["tolerance_basis"].iloc[0]
+    at = _judged(tables, pub, gap_at_first_contact_if_midface_mm=gap * (thr / pen))
+    assert list(at["status"]) == ["reproduced", "reproduced", "qualitative-holds"]
+    for change in (
+        {"gap_at_first_contact_if_midface_mm": gap * (1.01 * thr / pen)},  # just above the threshold
+        {"gap_at_first_contact_if_midface_mm": gap * 1e3},  # ~3 um: the size of flank roughness
+        {"tangency_gap_threshold_mm": 0.5 * pen},  # a threshold below the interpenetration
+    ):
+        bad = _judged(tables, pub, **change)
+        assert list(bad["status"]) == ["deviates", "deviates", "qualitative-fails"], change
+        assert bad["computed"].iloc[0] == pytest.approx(2.063072665, abs=1e-6)
+        assert "beyond the separation threshold" in bad["note"].iloc[0]
+    with pytest.raises(ValueError, match="gaps must be finite"):
+        _judged(tables, pub, gap_at_first_contact_if_midface_mm=gap.where(gap > -1e-6, np.nan))
+
+
+def test_separation_threshold_setting_is_far_below_the_physical_scales(design):
+    """tangency_gap_threshold_mm: at most 1e-4 mm (the finest flank roughness) and a tenth of the
+    examples' elastic approach (0.00632 mm), refused naming the key otherwise."""
+    assert T.SETTINGS["tangency_gap_threshold_mm"].value == 1e-5
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 2e-4}, where="tseng_tca")
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 0.0}, where="tseng_tca")
+    thin = dataclasses.replace(design, delta_mm=5e-5)  # elastic approach only 5 x the threshold
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        T.validate(resolve(T.SETTINGS), thin)
+    with pytest.raises(ValueError, match="Z_p_mm"):
+        TE.tangency_near(T.make_pair(design.gears, 110.0, 113.0), None, float("nan"))
+
+
 def test_physical_contact_has_no_interference(tables):
     """Every kept tangency has no first-order interference at the other tangencies found (gap >=
     0 up to round-off); all tables but the ideal 110/110 have a single tangency at every row."""

@@ -502,6 +502,8 @@ def test_line_contact_110_110_returned_root_is_the_physical_contact(line_contact
     others = roots.take(np.flatnonzero(ok))
     gap = _gap_at(pair, others, sol)
     assert np.all(gap >= -1e-9), gap.min()
+    # the library's first-order gap (used to judge Table 5.2) agrees with this independent one
+    np.testing.assert_allclose(te.turn_gap(pair, others, sol.phi2), gap, rtol=1e-9, atol=1e-15)
     # the physical phi2' is the smallest of the tangencies (no interference at the others); the
     # interfering mid-face root is 0.001 arcsec away by nature, so it cannot be within 0.0005 of sol
     assert abs(others.phi2.min() - sol.phi2[0]) / ARCSEC < 0.0005

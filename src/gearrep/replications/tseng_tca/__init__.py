@@ -108,6 +108,17 @@ SETTINGS = _s.declare(
         _n(None, "mm", "", ge=10.0, le=500.0),
         min_items=2,
     ),
+    tangency_gap_threshold_mm=_n(
+        1e-5,
+        "mm",
+        "largest interpenetration at which a tangency still counts as a contact (Example 5.1: the printed mid-face "
+        "tangency is 2.9e-6 mm inside the first contact). Physical scales: the examples' elastic approach is 0.00632 mm "
+        "(params_000_table5_1.csv, paint_thickness), 632 times larger; flank roughness is 0.13 um rms for honed and "
+        "run-in flanks, the finest process of the AGMA scoring table (5-15 uin), 0.5-2 um for hobbed ones (20-80 uin), "
+        "13-200 times larger. At most 1e-4 mm (the finest roughness) and a tenth of the elastic approach",
+        gt=0.0,
+        le=1e-4,
+    ),
     contact_ratio_window_deg=_n(30.0, "deg", "search window of the tip crossings (eq 5.13)", ge=10.0, le=60.0),
     ellipse_R_cp_mm=_s.array(
         [55.0, 110.0, 220.0, 440.0],
@@ -261,6 +272,12 @@ def validate(settings: dict, design: Design) -> None:
     missing = sorted((set(TABLE_EXAMPLE.values()) | {"5.3"}) - set(design.cases))
     if missing:
         raise ValueError(f"tseng_tca design: the published cases lack examples {missing}")
+    thr = settings["tangency_gap_threshold_mm"]
+    if not thr <= design.delta_mm / 10:
+        raise err(
+            f"tseng_tca.tangency_gap_threshold_mm: got {thr}; allowed: <= a tenth of the elastic approach "
+            f"({design.delta_mm / 10:g} mm), far below it"
+        )
     half = design.gears.face_width_mm / 2  # a circular tooth trace must span the face
     for ex, case in design.cases.items():
         if set(case) != _CASE_KEYS:
@@ -276,7 +293,12 @@ def validate(settings: dict, design: Design) -> None:
 
 
 def _ke_job(settings, design, *, example: str, name: str) -> dict:
-    return {name: studies.ke_table_of(settings, design, example)}
+    table = studies.ke_table_two_tangencies if name in TWO_TANGENCY_TABLES else studies.ke_table_of
+    return {name: table(settings, design, example)}
+
+
+#: KE tables that report the mid-face tangency beside the first contact (Table 5.2: ideal 110/110)
+TWO_TANGENCY_TABLES = ("ke_table_5_2",)
 
 
 def _one(fn, name):

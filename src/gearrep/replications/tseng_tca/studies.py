@@ -19,9 +19,12 @@ from ...tca_envelope import (
     predict,
     require,
     solve_points,
+    tangency_near,
     tangency_system,
     trace_path,
+    turn_gap,
 )
+from ...units import ARCSEC
 from .contact import Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
@@ -33,6 +36,7 @@ __all__ = [
     "compute_case",
     "solved",
     "ke_table_of",
+    "ke_table_two_tangencies",
     "sensitivity",
     "contact_ratio",
     "ke_vs_hob_radius",
@@ -107,6 +111,38 @@ def ke_table_of(settings: dict, design: Design, example: str) -> pd.DataFrame:
     """The KE table (eq 5.12, re-zeroed at phi1' = 0) of one Example."""
     pair, sol = solved(settings, design, example)
     return ke_table(sol, pair.ratio)
+
+
+def ke_table_two_tangencies(settings: dict, design: Design, example: str) -> pd.DataFrame:
+    """The KE table of an Example (the physical, i.e. first, contact: :func:`ke_table_of`) with the
+    mid-face tangency beside it, for an almost-line contact where both are tangencies of the same
+    equations (Example 5.1: the first contact is a pair at Z = +-Z*, the text prints Z = 0).
+
+    Added columns: the mid-face tangency's l, Z and KE (re-zeroed at its own phi1' = 0 row, as
+    a printed table would be), its gear angle minus the first contact's [arcsec], and the two
+    separations, first-order normal gaps (:func:`gearrep.tca_envelope.turn_gap`; < 0 =
+    interpenetration): ``gap_at_first_contact_if_midface_mm`` at the first-contact point with the
+    gear at the mid-face tangency's angle (the largest interpenetration of the mid-face tangency
+    to second order in the turn; the mirror point of the pair has the same by symmetry) and
+    ``gap_at_midface_if_first_contact_mm`` at mid-face with the gear at the first contact's angle;
+    and the ``tangency_gap_threshold_mm`` setting they are judged against (:mod:`.checks`)."""
+    pair, sol = solved(settings, design, example)
+    mid = tangency_near(pair, sol, 0.0, tol=settings["tol"])
+    require(mid, f"mid-face tangency of Example {example}")
+    if not (np.all(np.abs(mid.Z_p) < 1e-6) and np.all(np.abs(mid.phi2 - sol.phi2) < 1e-6)):
+        raise RuntimeError(f"Example {example}: the search from Z_p = 0 did not return the mid-face tangency")
+    t = ke_table(sol, pair.ratio)
+    tm = ke_table(mid, pair.ratio)
+    t["l_p_midface_mm"] = tm["l_p_mm"]
+    t["Z_p_midface_mm"] = tm["Z_p_mm"]
+    t["l_g_midface_mm"] = tm["l_g_mm"]
+    t["Z_g_midface_mm"] = tm["Z_g_mm"]
+    t["KE_midface_arcsec"] = tm["KE_arcsec"]
+    t["phi2_midface_minus_phi2_arcsec"] = (mid.phi2 - sol.phi2) / ARCSEC
+    t["gap_at_first_contact_if_midface_mm"] = turn_gap(pair, sol, mid.phi2)
+    t["gap_at_midface_if_first_contact_mm"] = turn_gap(pair, mid, sol.phi2)
+    t["tangency_gap_threshold_mm"] = float(settings["tangency_gap_threshold_mm"])
+    return t
 
 
 def _shifted(gears, case, pair, sol, which, h, tol):
