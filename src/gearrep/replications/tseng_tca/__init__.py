@@ -22,10 +22,9 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
-from ...published import param_table
-from ...surfaces.hob import ZAHob
 from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
 from .._face import Job, run_jobs
+from .._seed000 import table_5_1
 from . import contact, studies
 from .checks import CHECK_PREFIXES, SURVIVING, check_records
 from .contact import KE_COLUMNS, Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
@@ -184,56 +183,11 @@ def _cases(params: pd.DataFrame) -> dict:
     return out
 
 
-_TABLE_5_1 = "params_000_table5_1.csv"
-
-
-def _table_5_1(params: pd.DataFrame) -> PairDesign:
-    """The Table 5.1 pinion, gear and hob (the same published parameters tseng_curvature reads).
-
-    The hob needs its normal module, normal pressure angle and pitch radius (single start: the
-    lead angle follows, and must agree with the printed one at its 3 decimals); both members are
-    cut by it (their module and pressure angle must equal the hob's), with the standard addendum
-    the library assumes (printed pitch radii and outside diameters must agree) and one face width
-    (the tangency search takes one for both members). Anything else is refused naming the key."""
-    try:
-        v = param_table(params, _TABLE_5_1, "5.1")
-    except KeyError:
-        raise ValueError(f"published params lack the rows of {_TABLE_5_1}") from None
-
-    def get(key, lo, hi, integer=False):
-        if key not in v:
-            raise ValueError(f"tseng_tca design: {_TABLE_5_1} lacks {key}")
-        x = float(v[key])
-        if not (np.isfinite(x) and lo <= x <= hi) or (integer and x != int(x)):
-            kind = "an integer" if integer else "a number"
-            raise ValueError(f"tseng_tca design: {key} ({_TABLE_5_1}) = {x!r}; allowed: {kind} in [{lo:g}, {hi:g}]")
-        return int(x) if integer else x
-
-    m = get("hob_normal_module", 0.1, 100.0)
-    alpha = get("hob_normal_pressure_angle", 5.0, 40.0)
-    r_h = get("hob_pitch_radius", m, 1000.0)
-    n = {k: get(f"N_{k}", 4, 10000, integer=True) for k in ("pinion", "gear")}
-    width = {k: get(f"{k}_face_width", 0.1, 1000.0) for k in ("pinion", "gear")}
-    hob = ZAHob(module_mm=m, pressure_angle_rad=float(np.radians(alpha)), pitch_radius_mm=r_h)
-    derived = {"hob_lead_angle": (np.degrees(hob.lead_angle_rad), 5e-4)}
-    for k in ("pinion", "gear"):
-        derived.update(
-            {
-                f"{k}_normal_module": (m, 0.0),
-                f"{k}_normal_pressure_angle": (alpha, 0.0),
-                f"{k}_pitch_radius": (m * n[k] / 2, 0.0),
-                f"{k}_outside_diameter": (m * (n[k] + 2), 0.0),
-            }
-        )
-    derived["gear_face_width"] = (width["pinion"], 0.0)
-    for key, (want, tol) in derived.items():
-        got = get(key, -np.inf, np.inf)
-        if abs(got - want) > tol + 1e-9 * abs(want):
-            raise ValueError(
-                f"tseng_tca design: {key} ({_TABLE_5_1}) = {got!r}; allowed: {want:.6g} (+-{tol:g}), which the "
-                "model of one single-start hob cutting both members with standard addendum and one face width implies"
-            )
-    return PairDesign(n["pinion"], n["gear"], width["pinion"], hob)
+def _pair_design(params: pd.DataFrame) -> PairDesign:
+    """The Table 5.1 pinion, gear and hob (read and checked once for both seed-000 studies:
+    :func:`gearrep.replications._seed000.table_5_1`)."""
+    t = table_5_1(params)
+    return PairDesign(t.n_pinion, t.n_gear, t.face_width_mm, t.hob())
 
 
 def params_from_published(published) -> Design:
@@ -251,7 +205,7 @@ def params_from_published(published) -> Design:
         raise ValueError(f"tseng_tca design: paint_thickness must be in (0, 1) mm, got {delta!r}")
     if not all(10 <= a <= 35 for a in alpha):
         raise ValueError(f"tseng_tca design: fig5_7 pressure angles must be in [10, 35] deg, got {alpha!r}")
-    return Design(cases=_cases(params), delta_mm=delta, ellipse_alpha_deg=alpha, gears=_table_5_1(params))
+    return Design(cases=_cases(params), delta_mm=delta, ellipse_alpha_deg=alpha, gears=_pair_design(params))
 
 
 def validate(settings: dict, design: Design) -> None:
