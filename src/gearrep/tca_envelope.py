@@ -45,6 +45,8 @@ __all__ = [
     "require",
     "trace_path",
     "physical_contact",
+    "tangency_near",
+    "turn_gap",
 ]
 
 
@@ -399,10 +401,11 @@ def physical_contact(
     return out
 
 
-def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, same_tooth_rad, face_width_mm):
-    """Roots from ``m`` starts per row spread across the face along the almost-null direction of
-    the Jacobian (d_psi_p = 1); returns the candidates (n * m rows) and which of them count."""
-    n = len(sol.phi1)
+def _starts_along_face(pair, sol: ContactPath, z_t):
+    """Starts (n * m rows) from each row of ``sol`` moved along the almost-null direction d of the
+    Jacobian (d_psi_p = 1, the direction along the contact line) to Z_p = each of ``z_t`` (m,);
+    and which of them are finite (the others are the row itself)."""
+    n, m = len(sol.phi1), len(z_t)
     _, J, _ = tangency_system(pair, sol.x, sol.phi1, dropped_component(pair, sol.x, sol.phi1))
     others = np.r_[0:3, 4:9]
     d = np.zeros((n, 9))
@@ -410,11 +413,17 @@ def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, sam
     d[:, others] = -np.einsum("nij,nj->ni", np.linalg.pinv(J[:, :, others]), J[:, :, 3])
     Tp = member_geometry(pair.pinion, sol.x[:, 0:4])[1]
     dZ = np.einsum("nq,nq->n", Tp[:, :, 2], d[:, 0:4])  # dZ_p / dpsi_p along d (placement keeps z)
-    z_t = np.linspace(-0.45, 0.45, m) * face_width_mm
     t = (z_t[None, :] - sol.Z_p[:, None]) / np.where(np.abs(dZ) > 1e-12, dZ, np.nan)[:, None]
     x0 = np.repeat(sol.x, m, 0) + t.reshape(-1, 1) * np.repeat(d, m, 0)
     ok0 = np.all(np.isfinite(x0), axis=1)
     x0[~ok0] = np.repeat(sol.x, m, 0)[~ok0]
+    return x0, ok0
+
+
+def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, same_tooth_rad, face_width_mm):
+    """Roots from ``m`` starts per row spread across the face along the almost-null direction of
+    the Jacobian (d_psi_p = 1); returns the candidates (n * m rows) and which of them count."""
+    x0, ok0 = _starts_along_face(pair, sol, np.linspace(-0.45, 0.45, m) * face_width_mm)
     phi1 = np.repeat(sol.phi1, m)
     cand = solve_points(pair, phi1, x0, tol=tol, maxiter=maxiter, max_halvings=max_halvings)
     keep = (
@@ -430,6 +439,31 @@ def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, sam
 def _turn_gap_factor(pair, sol: ContactPath) -> np.ndarray:
     """s = (e_z x (r - O_g)) . n_p,out: normal gap per unit turn of the gear about its axis."""
     return np.sum(np.cross([0.0, 0.0, 1.0], sol.r_f - pair.gear_origin) * _pinion_outward(pair, sol), -1)
+
+
+def turn_gap(pair, at: ContactPath, phi2_rad) -> np.ndarray:
+    """First-order normal gap [mm] between the flanks at the tangency points of ``at`` when the gear
+    is turned to ``phi2_rad`` (one per row; same phi1'): (phi2 - phi2'_at) s, s as in
+    :func:`physical_contact`; < 0 = the flanks interpenetrate there, > 0 = they are apart. The
+    neglected terms are of second order in the turn (for a turn of 5e-8 rad, ~1e-15 mm)."""
+    phi2 = np.broadcast_to(np.asarray(phi2_rad, float), at.phi2.shape)
+    if not np.all(np.isfinite(phi2)):
+        raise ValueError("phi2_rad must be finite")
+    return (phi2 - at.phi2) * _turn_gap_factor(pair, at)
+
+
+def tangency_near(
+    pair, sol: ContactPath, Z_p_mm: float, *, tol: float = 1e-11, maxiter: int = 30, max_halvings: int = 12
+) -> ContactPath:
+    """At each phi1' of ``sol``, the tangency of the 9 x 9 system found from a start moved along the
+    contact line (the almost-null direction of the Jacobian, as in :func:`physical_contact`'s
+    search) to Z_p = ``Z_p_mm``: e.g. the mid-face tangency (Z_p_mm = 0) of an almost-line
+    contact whose physical contact is a pair off mid-face. Rows carry the solver status; the
+    caller checks (:func:`require`) and whether the root is the one wanted (its Z_p)."""
+    if not np.isfinite(Z_p_mm):
+        raise ValueError(f"Z_p_mm must be finite, got {Z_p_mm!r}")
+    x0, _ = _starts_along_face(pair, sol, np.array([float(Z_p_mm)]))
+    return solve_points(pair, sol.phi1, x0, tol=tol, maxiter=maxiter, max_halvings=max_halvings)
 
 
 def _choose_tangency(sol: ContactPath, cand: ContactPath, i: int, idx, s_own, s_idx, distinct_mm):

@@ -8,6 +8,7 @@ inside the concave gear flank: no interference away from the contact)."""
 
 from __future__ import annotations
 
+import dataclasses
 import io
 from pathlib import Path
 
@@ -46,6 +47,11 @@ def design(pub):
 @pytest.fixture(scope="module")
 def cases(design):
     return design.cases
+
+
+@pytest.fixture(scope="module")
+def gears(design):
+    return design.gears
 
 
 @pytest.fixture(scope="module")
@@ -128,6 +134,88 @@ def test_ke_and_zero_z_of_the_ideal_pairs(tables):
     np.testing.assert_allclose(t["Z_p_mm"], t["Z_g_mm"], atol=1e-6)
 
 
+def test_table_5_2_reports_both_tangencies(tables, settings):
+    """Table 5.2 (ideal 110/110) lists the first contact (the pair +-Z* while it exists) and the
+    mid-face tangency the text prints, each with its KE and separation: at phi1' = -10 the pair
+    is at Z* = 2.063 mm, reached 0.0107 arcsec of gear angle earlier; with the gear at the mid-face
+    angle the flanks interpenetrate by 2.93e-6 mm at the pair, with the gear at the pair's angle
+    mid-face is 2.93e-6 mm apart; from phi1' = 6 deg on both are one tangency."""
+    t = tables["ke_table_5_2"]
+    assert list(t.columns[:7]) == T.KE_COLUMNS
+    assert t["Z_p_midface_mm"].abs().max() < 1e-6 and t["Z_g_midface_mm"].abs().max() < 1e-6
+    r = t.iloc[0]
+    assert r["Z_p_mm"] == pytest.approx(2.063072665, abs=1e-6)
+    assert r["KE_midface_arcsec"] == pytest.approx(4.248801443, abs=1e-6)  # the root a bare continuation keeps
+    assert r["l_p_midface_mm"] == pytest.approx(4.301112228, abs=1e-6)
+    # the face search's root and this one: both converged (residual 1e-11) in a direction of condition
+    # ~1e6, so they agree to ~1e-8 arcsec (the printed KE unit is 1e-3)
+    np.testing.assert_allclose(t["phi2_midface_minus_phi2_arcsec"], t["tangency_phi2_spread_arcsec"], atol=1e-7)
+    assert r["gap_at_first_contact_if_midface_mm"] == pytest.approx(-2.9316e-6, abs=1e-9)
+    assert r["gap_at_midface_if_first_contact_mm"] == pytest.approx(2.9316e-6, abs=1e-9)
+    # the mid-face tangency is reached later (phi2' larger) and interpenetrates; the first contact never does
+    three = t["n_tangencies"] == 3
+    assert (t.loc[three, "phi2_midface_minus_phi2_arcsec"] > 0).all()
+    assert (t.loc[three, "gap_at_first_contact_if_midface_mm"] < 0).all()
+    assert (t.loc[three, "gap_at_midface_if_first_contact_mm"] > 0).all()
+    assert (
+        t.loc[~three, ["gap_at_first_contact_if_midface_mm", "gap_at_midface_if_first_contact_mm"]].abs().max().max()
+        < 1e-12
+    )
+    assert (t["tangency_gap_threshold_mm"] == settings["tangency_gap_threshold_mm"]).all()
+    assert "KE_midface_arcsec" not in tables["ke_table_5_3"]  # the other tables keep the first contact only
+
+
+def _judged(tables, pub, **change):
+    """Records of the Table 5.2 text values and claim with columns of ke_table_5_2 changed."""
+    t = dict(tables)
+    t["ke_table_5_2"] = tables["ke_table_5_2"].assign(**change)
+    rec = T.checks(t, pub)["checks"].set_index("id")
+    return rec.loc[["000-text-example=5.1-Z_p", "000-text-example=5.1-Z_g", "000-T5.2-missing"]]
+
+
+def test_midface_contact_is_judged_against_the_separation_threshold(tables, pub):
+    """The printed Z = 0 of Example 5.1 is reproduced only while the mid-face tangency's
+    interpenetration stays within tangency_gap_threshold_mm (boundary included); a separation
+    above the threshold must not pass: the record then reports the first contact's Z (2.063 mm)."""
+    t = tables["ke_table_5_2"]
+    gap = t["gap_at_first_contact_if_midface_mm"]
+    thr = float(t["tangency_gap_threshold_mm"].iloc[0])
+    pen = -gap.min()
+    ok = _judged(tables, pub)
+    assert list(ok["status"]) == ["reproduced", "reproduced", "qualitative-holds"]
+    assert ok["computed"].iloc[:2].abs().max() < 1e-6
+    assert "2.9e-06 mm" in ok["note"].iloc[0] and "within the separation threshold" in ok["note"].iloc[0]
+    assert "tangency_gap_threshold_mm" in ok["tolerance_basis"].iloc[0]
+    at = _judged(tables, pub, gap_at_first_contact_if_midface_mm=gap * (thr / pen))
+    assert list(at["status"]) == ["reproduced", "reproduced", "qualitative-holds"]
+    for change in (
+        {"gap_at_first_contact_if_midface_mm": gap * (1.01 * thr / pen)},  # just above the threshold
+        {"gap_at_first_contact_if_midface_mm": gap * 1e3},  # ~3 um: the size of flank roughness
+        {"tangency_gap_threshold_mm": 0.5 * pen},  # a threshold below the interpenetration
+    ):
+        bad = _judged(tables, pub, **change)
+        assert list(bad["status"]) == ["deviates", "deviates", "qualitative-fails"], change
+        assert bad["computed"].iloc[0] == pytest.approx(2.063072665, abs=1e-6)
+        assert "beyond the separation threshold" in bad["note"].iloc[0]
+    with pytest.raises(ValueError, match="gaps must be finite"):
+        _judged(tables, pub, gap_at_first_contact_if_midface_mm=gap.where(gap > -1e-6, np.nan))
+
+
+def test_separation_threshold_setting_is_far_below_the_physical_scales(design):
+    """tangency_gap_threshold_mm: at most 1e-4 mm (the finest flank roughness) and a tenth of the
+    examples' elastic approach (0.00632 mm), refused naming the key otherwise."""
+    assert T.SETTINGS["tangency_gap_threshold_mm"].value == 1e-5
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 2e-4}, where="tseng_tca")
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 0.0}, where="tseng_tca")
+    thin = dataclasses.replace(design, delta_mm=5e-5)  # elastic approach only 5 x the threshold
+    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+        T.validate(resolve(T.SETTINGS), thin)
+    with pytest.raises(ValueError, match="Z_p_mm"):
+        TE.tangency_near(T.make_pair(design.gears, 110.0, 113.0), None, float("nan"))
+
+
 def test_physical_contact_has_no_interference(tables):
     """Every kept tangency has no first-order interference at the other tangencies found (gap >=
     0 up to round-off); all tables but the ideal 110/110 have a single tangency at every row."""
@@ -148,8 +236,8 @@ def test_truncated_phi2_column_is_checked_by_truncation(records):
     assert "truncated" in r["tolerance_basis"]
 
 
-def test_jacobian_matches_central_differences(cases):
-    pair, sol = T.compute_case(cases["5.9"], np.radians([-6.0, 4.0]))
+def test_jacobian_matches_central_differences(gears, cases):
+    pair, sol = T.compute_case(gears, cases["5.9"], np.radians([-6.0, 4.0]))
     drop = np.argmax(np.abs(sol.n_p), axis=1)
     x = sol.x + 1e-4  # off the root as well
     _, J, Fphi = TE.tangency_system(pair, x, sol.phi1, drop)
@@ -165,8 +253,8 @@ def test_jacobian_matches_central_differences(cases):
     np.testing.assert_allclose(Fphi, (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
 
 
-def test_predictor_is_first_order(cases):
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly())
+def test_predictor_is_first_order(gears):
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
     for d in (np.radians(1.0), np.radians(0.5)):
         pred = T.predict(pair, s0.x, s0.phi1, [d])
         true = T.solve_points(pair, [d], pred).x
@@ -174,12 +262,12 @@ def test_predictor_is_first_order(cases):
         assert err < 2e-4 * (d / np.radians(1.0)) ** 2 * 1.5 + 1e-9
 
 
-def test_pair_is_physical_no_interference():
+def test_pair_is_physical_no_interference(gears):
     """Move along the pinion face (psi_p +- 0.05 rad, Z ~ +-5.4 mm) from the ideal 110/113 contact
     and measure the gear surface along the contact normal: the gap must be positive (clearance)
     and close to Z^2/2 (1/110 - 1/113), the lengthwise relative curvature of convex 110 in
     concave 113."""
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly())
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
     x = s0.x[0]
     # normal pointing from the pinion tooth into its tooth space: away from the pinion's centre
     # line X_p, i.e. along the side of the point's polar angle
@@ -220,15 +308,67 @@ def test_bad_input_raises(design):
     with pytest.raises(SettingError, match="tseng_tca.topology_n_dirs"):
         T.validate(resolve(T.SETTINGS, {"topology_n_dirs": 10}), design)
     with pytest.raises(ValueError, match="lack examples"):
-        T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0)))
+        T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0), design.gears))
     with pytest.raises(ValueError, match="dgamma_h"):
         T.Assembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
-        T.make_pair(110.0, 5.0)
-    pair = T.make_pair(110.0, 113.0)
-    start = T.continue_to(110.0, 113.0, T.Assembly())[1]
+        T.make_pair(design.gears, 110.0, 5.0)
+    pair = T.make_pair(design.gears, 110.0, 113.0)
+    start = T.continue_to(design.gears, 110.0, 113.0, T.Assembly())[1]
     with pytest.raises(ValueError, match="face_width_mm"):
         TE.physical_contact(pair, start, face_width_mm=0.0)
+
+
+def _with_param(pub, parameter, value):
+    """``pub`` with one seed-000 Table 5.1 parameter changed."""
+    params = pub.params.copy()
+    hit = (params["file"] == "params_000_table5_1.csv") & (params["parameter"] == parameter)
+    assert hit.sum() == 1, parameter
+    params.loc[hit, "value"] = value
+    return dataclasses.replace(pub, params=params)
+
+
+@pytest.mark.parametrize(
+    "parameter, value",
+    [
+        ("N_pinion", 2.0),
+        ("N_pinion", 20.5),
+        ("N_gear", 1e5),
+        ("pinion_face_width", 0.0),
+        ("pinion_face_width", 5000.0),
+        ("gear_face_width", 30.0),
+        ("hob_normal_module", -3.0),
+        ("hob_pitch_radius", 2.0),
+        ("hob_lead_angle", 3.0),
+        ("gear_outside_diameter", 130.0),
+    ],
+)
+def test_table_5_1_design_out_of_range_is_refused_naming_the_key(pub, parameter, value):
+    """The Table 5.1 pair reaches the jobs only through params_from_published; tooth numbers, face
+    widths and the hob outside their range, or inconsistent with the one-hob model, are refused
+    naming the published key."""
+    with pytest.raises(ValueError, match=parameter):
+        T.params_from_published(_with_param(pub, parameter, value))
+
+
+def test_design_carries_the_table_5_1_pair(design, pub):
+    g = design.gears
+    assert (g.n_pinion, g.n_gear, g.face_width_mm) == (20, 40, 40.0)
+    assert (g.hob.module_mm, g.hob.pitch_radius_mm) == (3.0, 30.0)
+    assert g.hob.pressure_angle_rad == np.radians(20.0)
+    # a changed printed input reaches the pair (no constant in the code overrides it)
+    changed = pub
+    for k, v in (("N_pinion", 21.0), ("pinion_pitch_radius", 31.5), ("pinion_outside_diameter", 69.0)):
+        changed = _with_param(changed, k, v)
+    other = T.params_from_published(changed)
+    pair = T.make_pair(other.gears, 110.0, 113.0)
+    assert pair.pinion.n_teeth == 21 and pair.ratio == 21 / 40
+    with pytest.raises(ValueError, match="n_pinion"):
+        T.PairDesign(3, 40, 40.0, g.hob)
+    with pytest.raises(ValueError, match="face_width_mm"):
+        T.PairDesign(20, 40, float("nan"), g.hob)
+    with pytest.raises(ValueError, match="face_width_mm / 2"):
+        T.make_pair(T.PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
 
 
 def test_one_job_writes_only_its_table(settings, design):
@@ -269,26 +409,27 @@ def test_design_from_published(cases):
 
 
 @pytest.mark.bench
-def test_one_ke_table_is_fast(cases):
+def test_one_ke_table_is_fast(gears, cases):
     """Issue 10 target: one KE table (11 positions) in < 0.5 s (continuation included, the
     ideal start cached as in the workflow)."""
     import time
 
     phi1 = T.phi1_grid(study_settings("tseng_tca"))
-    T.compute_case(cases["5.4"], phi1)  # warm (ideal start cached)
+    T.compute_case(gears, cases["5.4"], phi1)  # warm (ideal start cached)
     times = []
     for _ in range(3):  # best of 3: the machine is shared, the best run measures the code
         t0 = time.perf_counter()
-        T.compute_case(cases["5.8"], phi1)
+        T.compute_case(gears, cases["5.8"], phi1)
         times.append(time.perf_counter() - t0)
     assert min(times) < 0.5, times
 
 
-def test_topology_converges_to_the_curvature_ellipse_for_small_separation():
+def test_topology_converges_to_the_curvature_ellipse_for_small_separation(gears):
     """The curvature method is the second-order limit of the surface-topology pattern: with a
     separation 100 times smaller (axes 10 times shorter) the two agree to < 0.2 % on both axes,
     while at the paper's 0.00632 mm the long axis differs by ~4 %."""
     pair, sol = T.compute_case(
+        gears,
         {
             "R_cp_mm": 110.0,
             "R_cg_mm": 113.0,
@@ -307,21 +448,21 @@ def test_topology_converges_to_the_curvature_ellipse_for_small_separation():
     assert 0.93 < r[0] < 0.99 and abs(r[1] - 1) < 0.01
 
 
-def test_unconverged_continuation_is_reported_not_passed_on():
+def test_unconverged_continuation_is_reported_not_passed_on(gears):
     """Table 5.3 (110/110 under 3') in ONE continuation step from 110/113 does not converge: the
     run stops with the solver status instead of returning a wrong contact."""
     with pytest.raises(RuntimeError, match="did not converge"):
-        T.continue_to(110.0, 110.0, T.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
+        T.continue_to(gears, 110.0, 110.0, T.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
     with pytest.raises(ValueError, match="x0"):
-        pair = T.make_pair(110.0, 113.0)
+        pair = T.make_pair(gears, 110.0, 113.0)
         T.solve_points(pair, [0.0], np.full((1, 9), np.nan))
 
 
-def test_trace_path_rejects_a_far_root_and_marches(monkeypatch):
+def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
     """A start thrown onto another branch (one row of the batch predictor corrupted by a gear
     pitch in phi2' and half a turn in the hob angles) is flagged and re-solved by marching: the
     result equals the clean path, every point converged."""
-    pair, s0 = T.continue_to(110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
+    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
     clean = T.trace_path(pair, s0, phi1)
     real_predict = TE.predict

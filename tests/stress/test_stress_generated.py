@@ -24,6 +24,7 @@ from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
 from gearrep.replications import tseng_curvature as tc
+from gearrep.replications import tseng_tca as tca_rep
 from gearrep.replications.tseng_tca import contact as tt
 from gearrep.replications.tseng_tca import studies as ts
 from gearrep.solve import Status
@@ -43,6 +44,7 @@ pytestmark = pytest.mark.stress
 KNOWN = {int(s) for s in Status}
 RC_SWEEP_MM = [float(r) for r in tc.SETTINGS["rc_sweep_mm"].value]  # 50 .. 50 000 mm (tseng_curvature setting)
 L_END_MM = tc.params_from_published(published.load(PUBLISHED_DIR)).l1_end_mm  # last row of Tables 4.2-4.5
+TCA_GEARS = tca_rep.params_from_published(published.load(PUBLISHED_DIR)).gears  # the Table 5.1 pair and hob
 CATT_PRM = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
 CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA here (tighter than the workflow's catt.tol 1e-8)
 
@@ -442,8 +444,8 @@ def _gap_at(pair, at, conf):
 def line_contact_roots():
     """The ideal 110/110 pair at phi1' = 0: the library's route (continuation from 110/113) and
     200 starts spread over the face (psi_p, psi_g, l_p, l_g perturbed)."""
-    pair, sol = tt.continue_to(110.0, 110.0, tt.Assembly())
-    ref = tt.ideal_start(tt.make_pair(110.0, 113.0))
+    pair, sol = tt.continue_to(TCA_GEARS, 110.0, 110.0, tt.Assembly())
+    ref = tt.ideal_start(tt.make_pair(TCA_GEARS, 110.0, 113.0))
     rng = np.random.default_rng(0)
     n = 200
     x0 = np.repeat(ref.x, n, 0)
@@ -488,7 +490,7 @@ def test_line_contact_110_110_roots_are_tangencies(line_contact_roots, record_co
     np.testing.assert_allclose(n_p, -n_g, atol=1e-9)
     record_conditions(sol.cond, "110/110 continuation from 110/113")
     record_conditions(roots.cond, "110/110, 200 starts over the face")
-    record_conditions(tt.ideal_start(tt.make_pair(110.0, 113.0)).cond, "110/113 ideal (reference)")
+    record_conditions(tt.ideal_start(tt.make_pair(TCA_GEARS, 110.0, 113.0)).cond, "110/113 ideal (reference)")
 
 
 def test_line_contact_110_110_returned_root_is_the_physical_contact(line_contact_roots):
@@ -500,6 +502,8 @@ def test_line_contact_110_110_returned_root_is_the_physical_contact(line_contact
     others = roots.take(np.flatnonzero(ok))
     gap = _gap_at(pair, others, sol)
     assert np.all(gap >= -1e-9), gap.min()
+    # the library's first-order gap (used to judge Table 5.2) agrees with this independent one
+    np.testing.assert_allclose(te.turn_gap(pair, others, sol.phi2), gap, rtol=1e-9, atol=1e-15)
     # the physical phi2' is the smallest of the tangencies (no interference at the others); the
     # interfering mid-face root is 0.001 arcsec away by nature, so it cannot be within 0.0005 of sol
     assert abs(others.phi2.min() - sol.phi2[0]) / ARCSEC < 0.0005
@@ -519,7 +523,7 @@ def test_line_contact_110_110_along_the_path(record_conditions):
         "dZ_mm": 0.0,
     }
     phi1 = np.radians(np.arange(-10.0, 10.1, 2.0))
-    pair, path = ts.compute_case(case, phi1)
+    pair, path = ts.compute_case(TCA_GEARS, case, phi1)
     ok = _assert_honest_ke(path)
     assert np.all(ok)
     record_conditions(path.cond, "110/110 path -10..10 deg")

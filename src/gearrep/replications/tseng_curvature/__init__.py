@@ -20,6 +20,7 @@ import pandas as pd
 
 from ... import settings as _s
 from .._face import Job, run_jobs
+from .._seed000 import table_5_1
 from . import studies
 from .checks import SURVIVING, check_records
 from .claims import normalise
@@ -140,17 +141,18 @@ def params_from_published(published) -> Design:
         return float(r["value"].iloc[0])
 
     n_rows, decimals = _rows_of_table(published.values, "Table 4.3")
+    t51 = table_5_1(published.params)  # the Table 5.1 pinion, gear and hob, shared with tseng_tca
     d = Design(
-        module_mm=val("5.1", "hob_normal_module"),
-        pressure_angle_deg=val("5.1", "hob_normal_pressure_angle"),
-        hob_pitch_radius_mm=val("5.1", "hob_pitch_radius"),
-        n_teeth=int(val("5.1", "N_pinion")),
-        tip_radius_mm=val("5.1", "pinion_outside_diameter") / 2,
+        module_mm=t51.module_mm,
+        pressure_angle_deg=t51.pressure_angle_deg,
+        hob_pitch_radius_mm=t51.hob_pitch_radius_mm,
+        n_teeth=t51.n_pinion,
+        tip_radius_mm=t51.pinion_outside_diameter_mm / 2,
         R_c_small_mm=val("4.1", "R_c"),
         R_c_large_mm=val("4.2", "R_c"),
         l1_end_mm=val("4.1", "l1_working_start"),
-        face_width_mm=val("5.1", "pinion_face_width"),
-        ellipse_n_gear=int(val("5.1", "N_gear")),
+        face_width_mm=t51.face_width_mm,
+        ellipse_n_gear=t51.n_gear,
         ellipse_delta_mm=val("5.3", "separation_threshold"),
         ellipse_pressure_angles_deg=(val("5.1", "fig5_7_pressure_angle_1"), val("5.1", "fig5_7_pressure_angle_2")),
         n_rows=n_rows,

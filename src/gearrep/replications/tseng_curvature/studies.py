@@ -18,6 +18,7 @@ from ...curvature import principal_curvatures
 from ...ellipse import elastic_ellipse_from_relative
 from ...solve import status_names
 from ...surfaces.hob import GeneratedGear, ZAHob
+from .._seed000 import za_hob
 
 __all__ = [
     "TABLES",
@@ -50,13 +51,10 @@ TABLE_COLUMNS = ["l1_mm", "k_s_per_mm", "e_s_x", "e_s_y", "e_s_z", "k_q_per_mm",
 
 
 def hob(p: dict, variant: str = "axial", pressure_angle_deg: float | None = None) -> ZAHob:
+    """The Table 5.1 hob of the design ``p`` (or at another pressure angle): one route with
+    tseng_tca (:func:`gearrep.replications._seed000.za_hob`)."""
     a = p["pressure_angle_deg"] if pressure_angle_deg is None else pressure_angle_deg
-    return ZAHob(
-        module_mm=p["module_mm"],
-        pressure_angle_rad=float(np.radians(a)),
-        pitch_radius_mm=p["hob_pitch_radius_mm"],
-        variant=variant,
-    )
+    return za_hob(p["module_mm"], a, p["hob_pitch_radius_mm"], variant)
 
 
 def solve_tol(p: dict, R_c_mm: float) -> float:

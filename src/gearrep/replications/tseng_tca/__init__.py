@@ -24,9 +24,10 @@ import pandas as pd
 from ... import settings as _s
 from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
 from .._face import Job, run_jobs
+from .._seed000 import table_5_1
 from . import contact, studies
 from .checks import CHECK_PREFIXES, SURVIVING, check_records
-from .contact import KE_COLUMNS, Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
+from .contact import KE_COLUMNS, Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
 
@@ -50,6 +51,7 @@ __all__ = [
     "SURVIVING",
     "CHECK_PREFIXES",
     "Assembly",
+    "PairDesign",
     "Pair",
     "ContactPath",
     "make_pair",
@@ -104,6 +106,17 @@ SETTINGS = _s.declare(
         "Fig 5.5 sweep of the hob pitch radius",
         _n(None, "mm", "", ge=10.0, le=500.0),
         min_items=2,
+    ),
+    tangency_gap_threshold_mm=_n(
+        1e-5,
+        "mm",
+        "largest interpenetration at which a tangency still counts as a contact (Example 5.1: the printed mid-face "
+        "tangency is 2.9e-6 mm inside the first contact). Physical scales: the examples' elastic approach is 0.00632 mm "
+        "(params_000_table5_1.csv, paint_thickness), 632 times larger; flank roughness is 0.13 um rms for honed and "
+        "run-in flanks, the finest process of the AGMA scoring table (5-15 uin), 0.5-2 um for hobbed ones (20-80 uin), "
+        "13-200 times larger. At most 1e-4 mm (the finest roughness) and a tenth of the elastic approach",
+        gt=0.0,
+        le=1e-4,
     ),
     contact_ratio_window_deg=_n(30.0, "deg", "search window of the tip crossings (eq 5.13)", ge=10.0, le=60.0),
     ellipse_R_cp_mm=_s.array(
@@ -170,9 +183,16 @@ def _cases(params: pd.DataFrame) -> dict:
     return out
 
 
+def _pair_design(params: pd.DataFrame) -> PairDesign:
+    """The Table 5.1 pinion, gear and hob (read and checked once for both seed-000 studies:
+    :func:`gearrep.replications._seed000.table_5_1`)."""
+    t = table_5_1(params)
+    return PairDesign(t.n_pinion, t.n_gear, t.face_width_mm, t.hob())
+
+
 def params_from_published(published) -> Design:
-    """The Examples' design and assembly data (params_000_examples.csv), the paint thickness and
-    the Fig 5.7 pressure angles (params_000_table5_1.csv) of a loaded
+    """The Examples' design and assembly data (params_000_examples.csv), the Table 5.1 pair and
+    hob, the paint thickness and the Fig 5.7 pressure angles (params_000_table5_1.csv) of a loaded
     :class:`gearrep.published.Published`."""
     params = published.params
     sel = params[params["seed"].astype(str) == SEED].set_index("parameter")["value"]
@@ -185,7 +205,7 @@ def params_from_published(published) -> Design:
         raise ValueError(f"tseng_tca design: paint_thickness must be in (0, 1) mm, got {delta!r}")
     if not all(10 <= a <= 35 for a in alpha):
         raise ValueError(f"tseng_tca design: fig5_7 pressure angles must be in [10, 35] deg, got {alpha!r}")
-    return Design(cases=_cases(params), delta_mm=delta, ellipse_alpha_deg=alpha)
+    return Design(cases=_cases(params), delta_mm=delta, ellipse_alpha_deg=alpha, gears=_pair_design(params))
 
 
 def validate(settings: dict, design: Design) -> None:
@@ -206,13 +226,33 @@ def validate(settings: dict, design: Design) -> None:
     missing = sorted((set(TABLE_EXAMPLE.values()) | {"5.3"}) - set(design.cases))
     if missing:
         raise ValueError(f"tseng_tca design: the published cases lack examples {missing}")
+    thr = settings["tangency_gap_threshold_mm"]
+    if not thr <= design.delta_mm / 10:
+        raise err(
+            f"tseng_tca.tangency_gap_threshold_mm: got {thr}; allowed: <= a tenth of the elastic approach "
+            f"({design.delta_mm / 10:g} mm), far below it"
+        )
+    half = design.gears.face_width_mm / 2  # a circular tooth trace must span the face
     for ex, case in design.cases.items():
         if set(case) != _CASE_KEYS:
             raise ValueError(f"tseng_tca design: case {ex!r} must have keys {sorted(_CASE_KEYS)}")
+        for k in ("R_cp_mm", "R_cg_mm"):
+            if not case[k] > half:
+                raise ValueError(
+                    f"tseng_tca design: case {ex!r} {k} = {case[k]!r}; allowed: > face width / 2 = {half:g} mm"
+                )
+    for r in settings["ellipse_R_cp_mm"]:
+        if not r > half:
+            raise err(f"tseng_tca.ellipse_R_cp_mm: got {r}; allowed: > face width / 2 = {half:g} mm")
 
 
 def _ke_job(settings, design, *, example: str, name: str) -> dict:
-    return {name: studies.ke_table_of(settings, design, example)}
+    table = studies.ke_table_two_tangencies if name in TWO_TANGENCY_TABLES else studies.ke_table_of
+    return {name: table(settings, design, example)}
+
+
+#: KE tables that report the mid-face tangency beside the first contact (Table 5.2: ideal 110/110)
+TWO_TANGENCY_TABLES = ("ke_table_5_2",)
 
 
 def _one(fn, name):
@@ -291,7 +331,7 @@ def bench_cases(settings: dict, design: Design) -> dict[str, dict]:
 
     def run_one(setting):
         contact._START_CACHE.clear()
-        pair, sol = compute_case(case, phi1, tol=setting["tol"], steps=setting["continuation_steps"])
+        pair, sol = compute_case(design.gears, case, phi1, tol=setting["tol"], steps=setting["continuation_steps"])
         require(sol, f"bench {setting}")
         return ke_table(sol, pair.ratio)
 

@@ -11,7 +11,7 @@ phi1', the one the gear reaches first (no interference at the others).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -24,6 +24,7 @@ from . import model
 
 __all__ = [
     "Assembly",
+    "PairDesign",
     "Pair",
     "make_pair",
     "ideal_start",
@@ -31,15 +32,38 @@ __all__ = [
     "physical_contact",
     "ke_table",
     "KE_COLUMNS",
-    "FACE_WIDTH_MM",
-    "N_PINION",
-    "N_GEAR",
 ]
 
 #: the interface columns of a KE table (issue 8), thesis frame and signs
 KE_COLUMNS = ["phi1_deg", "phi2_deg", "l_p_mm", "Z_p_mm", "l_g_mm", "Z_g_mm", "KE_arcsec"]
-N_PINION, N_GEAR = 20, 40  # Table 5.1
-FACE_WIDTH_MM = 40.0  # pinion and gear face width, seed 000 Table 5.1
+
+
+@dataclass(frozen=True)
+class PairDesign:
+    """The pinion and gear of a pair cut by one hob: tooth numbers ``n_pinion``, ``n_gear`` (integers
+    in [4, 10000]), the face width ``face_width_mm`` of both members (in (0, 1000] mm) and the
+    :class:`gearrep.surfaces.hob.ZAHob`. Seed 000's values come from Table 5.1 through
+    :func:`gearrep.replications.tseng_tca.params_from_published`."""
+
+    n_pinion: int
+    n_gear: int
+    face_width_mm: float
+    hob: ZAHob
+
+    def __post_init__(self):
+        for name in ("n_pinion", "n_gear"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, np.integer)) and 4 <= v <= 10000):
+                raise ValueError(f"{name} must be an integer in [4, 10000], got {v!r}")
+        w = self.face_width_mm
+        if not (isinstance(w, (int, float)) and np.isfinite(w) and 0 < w <= 1000):
+            raise ValueError(f"face_width_mm must be in (0, 1000] mm, got {w!r}")
+        if not isinstance(self.hob, ZAHob):
+            raise ValueError(f"hob must be a ZAHob, got {self.hob!r}")
+
+    def with_hob(self, **changes) -> PairDesign:
+        """The same pair cut by a hob with ``changes`` (e.g. ``pitch_radius_mm``)."""
+        return replace(self, hob=replace(self.hob, **changes))
 
 
 @dataclass(frozen=True)
@@ -72,6 +96,7 @@ class Pair:
 
     pinion: Flank
     gear: Flank
+    face_width_mm: float
     assembly: Assembly = field(default_factory=Assembly)
 
     @property
@@ -104,17 +129,21 @@ class Pair:
         return np.array([self.centre_distance, 0.0, self.assembly.dZ])
 
 
-def make_pair(R_cp_mm: float, R_cg_mm: float, assembly: Assembly | None = None, hob: ZAHob | None = None) -> Pair:
-    """The pair of seed 000 Table 5.1: 20-tooth pinion, convex flank (thread side +1, arc centre
-    -1: Sigma_2R of ch. 4), and 40-tooth gear, concave flank (thread side +1, arc centre +1),
-    both in their thesis frames (tooth centred on X), the gear turned by pi to face the pinion."""
+def make_pair(design: PairDesign, R_cp_mm: float, R_cg_mm: float, assembly: Assembly | None = None) -> Pair:
+    """The pair of ``design`` (seed 000: Table 5.1): pinion, convex flank (thread side +1, arc
+    centre -1: Sigma_2R of ch. 4), and gear, concave flank (thread side +1, arc centre +1), both
+    in their thesis frames (tooth centred on X), the gear turned by pi to face the pinion. The
+    circular tooth traces must span the face: R_c > face_width_mm / 2."""
+    if not isinstance(design, PairDesign):
+        raise ValueError(f"design must be a PairDesign, got {design!r}")
+    half = design.face_width_mm / 2
     for name, v in (("R_cp_mm", R_cp_mm), ("R_cg_mm", R_cg_mm)):
-        if not (np.isfinite(v) and 20.0 <= v <= 1e6):
-            raise ValueError(f"{name} must be in [20, 1e6] mm, got {v!r}")
-    hob = ZAHob() if hob is None else hob
-    pin = GeneratedGear(hob=hob, n_teeth=N_PINION, R_c_mm=float(R_cp_mm), side=1, arc_centre=-1)
-    gear = GeneratedGear(hob=hob, n_teeth=N_GEAR, R_c_mm=float(R_cg_mm), side=1, arc_centre=1)
-    return Pair(make_flank(pin), make_flank(gear, np.pi), assembly or Assembly())
+        if not (np.isfinite(v) and 20.0 <= v <= 1e6 and v > half):
+            raise ValueError(f"{name} must be in [20, 1e6] mm and > face_width_mm / 2 = {half:g} mm, got {v!r}")
+    hob = design.hob
+    pin = GeneratedGear(hob=hob, n_teeth=int(design.n_pinion), R_c_mm=float(R_cp_mm), side=1, arc_centre=-1)
+    gear = GeneratedGear(hob=hob, n_teeth=int(design.n_gear), R_c_mm=float(R_cg_mm), side=1, arc_centre=1)
+    return Pair(make_flank(pin), make_flank(gear, np.pi), float(design.face_width_mm), assembly or Assembly())
 
 
 def ideal_start(pair: Pair, *, tol: float = 1e-11) -> ContactPath:
@@ -126,13 +155,13 @@ def ideal_start(pair: Pair, *, tol: float = 1e-11) -> ContactPath:
     return solve_points(pair, [0.0], np.r_[qp, qg, 0.0][None], tol=tol)
 
 
-_START_CACHE: dict = {}  # ideal starts by (R_cp, R_cg0, tol, hob): shared by the Examples of one process
+_START_CACHE: dict = {}  # ideal starts by (design, R_cp, R_cg0, tol): shared by the Examples of one process
 
 
 def continue_to(
-    R_cp_mm, R_cg_mm, assembly: Assembly, *, hob=None, steps: int = 4, tol=1e-11, R_gap_mm: float = 3.0
+    design: PairDesign, R_cp_mm, R_cg_mm, assembly: Assembly, *, steps: int = 4, tol=1e-11, R_gap_mm: float = 3.0
 ) -> tuple[Pair, ContactPath]:
-    """Contact at phi1' = 0 of the pair (R_cp, R_cg, assembly) by continuation from the ideal
+    """Contact at phi1' = 0 of the pair (``design``, R_cp, R_cg, assembly) by continuation from the ideal
     pair: start at R_cg0 = max(R_cg, R_cp + R_gap) (a well-localised contact; R_cg = R_cp is an
     almost-line contact) with no assembly errors, then move R_cg and the errors linearly to
     their targets in ``steps`` warm-started solves; of the tangencies at the target, the physical
@@ -140,23 +169,23 @@ def continue_to(
     if int(steps) != steps or steps < 1:
         raise ValueError(f"steps must be a positive integer, got {steps!r}")
     R0 = max(R_cg_mm, R_cp_mm + R_gap_mm)
-    pair = make_pair(R_cp_mm, R0, None, hob)
-    key = (float(R_cp_mm), float(R0), float(tol), pair.pinion.gear.hob)
+    pair = make_pair(design, R_cp_mm, R0)
+    key = (design, float(R_cp_mm), float(R0), float(tol))
     if key not in _START_CACHE:
         sol = ideal_start(pair, tol=tol)
         require(sol, f"ideal start R_cp={R_cp_mm}, R_cg={R0}")
         _START_CACHE[key] = sol
     sol = _START_CACHE[key]
     for t in np.linspace(0.0, 1.0, int(steps) + 1)[1:]:
-        pair = make_pair(R_cp_mm, R0 + t * (R_cg_mm - R0), assembly.scaled(t), hob)
+        pair = make_pair(design, R_cp_mm, R0 + t * (R_cg_mm - R0), assembly.scaled(t))
         sol = solve_points(pair, [0.0], sol.x, tol=tol)
         require(sol, f"continuation step t={t:.3g} to R_cg={R_cg_mm}, {assembly}")
     return pair, physical_contact(pair, sol, tol=tol)
 
 
 def physical_contact(pair: Pair, sol: ContactPath, **kw) -> ContactPath:
-    """:func:`gearrep.tca_envelope.physical_contact` over the Table 5.1 face width."""
-    return _te.physical_contact(pair, sol, face_width_mm=FACE_WIDTH_MM, **kw)
+    """:func:`gearrep.tca_envelope.physical_contact` over the pair's face width."""
+    return _te.physical_contact(pair, sol, face_width_mm=pair.face_width_mm, **kw)
 
 
 def ke_table(sol: ContactPath, ratio: float) -> pd.DataFrame:

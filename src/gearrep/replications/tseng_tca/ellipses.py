@@ -11,9 +11,8 @@ from ...curvature import PrincipalCurvatures, with_opposite_normal
 from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
 from ...solve import newton
-from ...surfaces.hob import ZAHob
 from ...tca_envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
-from .contact import Assembly, Pair, continue_to
+from .contact import Assembly, Pair, PairDesign, continue_to
 
 __all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
@@ -59,12 +58,16 @@ def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFr
     )
 
 
-def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1e-11) -> dict:
-    """a/b of the ideal pair (R_cp, R_cg, hob pressure angle alpha) at the contact point where
-    the pinion's contact passes the hob pitch line (l_p = l_pitch; Fig 5.7 does not say which
-    point it uses: the pitch point is our choice)."""
-    hob = ZAHob(pressure_angle_rad=float(np.radians(alpha_deg)))
-    pair, s0 = continue_to(R_cp_mm, R_cg_mm, Assembly(), hob=hob, steps=2, tol=tol)
+def pitch_point_ratio(
+    gears: PairDesign, R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, delta_mm: float, tol=1e-11
+) -> dict:
+    """a/b of the ideal pair ``gears`` (R_cp, R_cg, the hob's pressure angle set to alpha) at the
+    contact point where the pinion's contact passes the hob pitch line (l_p = l_pitch; Fig 5.7
+    does not say which point it uses: the pitch point is our choice); a, b for the elastic
+    approach ``delta_mm``."""
+    gears = gears.with_hob(pressure_angle_rad=float(np.radians(alpha_deg)))
+    hob = gears.hob
+    pair, s0 = continue_to(gears, R_cp_mm, R_cg_mm, Assembly(), steps=2, tol=tol)
     lp = hob_pitch_l(hob)
     # dl_p/dphi1 from the predictor, then Newton on l_p(phi1) = l_pitch (secant, converged TCA points)
     a, cur = 0.0, s0
@@ -78,7 +81,7 @@ def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1
         a = a_new
         if abs(cur.x[0, 0] - lp) < 1e-9:
             break
-    el = contact_ellipses(pair, cur, 0.00632).iloc[0]
+    el = contact_ellipses(pair, cur, delta_mm).iloc[0]
     return {
         "R_cp_mm": R_cp_mm,
         "R_cg_mm": R_cg_mm,
@@ -86,8 +89,8 @@ def pitch_point_ratio(R_cp_mm: float, R_cg_mm: float, alpha_deg: float, *, tol=1
         "phi1_deg": float(np.degrees(a)),
         "l_p_mm": float(cur.x[0, 0]),
         "a_over_b": float(el["a_over_b"]),
-        "a_mm_delta_0.00632": float(el["a_mm"]),
-        "b_mm_delta_0.00632": float(el["b_mm"]),
+        f"a_mm_delta_{delta_mm:g}": float(el["a_mm"]),
+        f"b_mm_delta_{delta_mm:g}": float(el["b_mm"]),
     }
 
 

@@ -12,7 +12,6 @@ import numpy as np
 import pandas as pd
 
 from ... import meshing
-from ...surfaces.hob import ZAHob
 from ...tca_envelope import (
     ContactPath,
     dropped_component,
@@ -20,10 +19,13 @@ from ...tca_envelope import (
     predict,
     require,
     solve_points,
+    tangency_near,
     tangency_system,
     trace_path,
+    turn_gap,
 )
-from .contact import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact
+from ...units import ARCSEC
+from .contact import Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
 __all__ = [
@@ -34,6 +36,7 @@ __all__ = [
     "compute_case",
     "solved",
     "ke_table_of",
+    "ke_table_two_tangencies",
     "sensitivity",
     "contact_ratio",
     "ke_vs_hob_radius",
@@ -61,12 +64,13 @@ SENSITIVITY_TABLES = ("5.3", "5.4", "5.7", "5.8", "5.9")
 @dataclass(frozen=True)
 class Design:
     """Published design data of ch. 5: ``cases`` {example: {R_cp_mm, R_cg_mm, dgamma_h_arcmin,
-    dgamma_v_arcmin, dC_mm, dZ_mm}}, the paint thickness ``delta_mm`` (sec 5.4.2) and the Fig 5.7
-    pressure angles ``ellipse_alpha_deg``."""
+    dgamma_v_arcmin, dC_mm, dZ_mm}}, the paint thickness ``delta_mm`` (sec 5.4.2), the Fig 5.7
+    pressure angles ``ellipse_alpha_deg`` and the Table 5.1 pinion, gear and hob ``gears``."""
 
     cases: dict
     delta_mm: float
     ellipse_alpha_deg: tuple
+    gears: PairDesign
 
 
 def phi1_grid(settings: dict) -> np.ndarray:
@@ -84,17 +88,22 @@ def assembly_of(case: dict) -> Assembly:
     return Assembly(case["dgamma_h_arcmin"] * am, case["dgamma_v_arcmin"] * am, case["dC_mm"], case["dZ_mm"])
 
 
-def compute_case(case: dict, phi1_rad, *, tol=1e-11, steps=4, hob=None) -> tuple[Pair, ContactPath]:
-    """(pair, path) of one Example: continuation at phi1' = 0, then the path, and at every
-    phi1' the physical contact among the tangencies found (:func:`.contact.physical_contact`)."""
-    pair, s0 = continue_to(case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), hob=hob, steps=steps, tol=tol)
+def compute_case(gears: PairDesign, case: dict, phi1_rad, *, tol=1e-11, steps=4) -> tuple[Pair, ContactPath]:
+    """(pair, path) of one Example of the pair ``gears``: continuation at phi1' = 0, then the path,
+    and at every phi1' the physical contact among the tangencies found
+    (:func:`.contact.physical_contact`)."""
+    pair, s0 = continue_to(gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=steps, tol=tol)
     return pair, physical_contact(pair, trace_path(pair, s0, phi1_rad, tol=tol), tol=tol)
 
 
-def solved(settings: dict, design: Design, example: str, hob=None) -> tuple[Pair, ContactPath]:
-    """The path of an Example on the settings' phi1' grid."""
+def solved(settings: dict, design: Design, example: str, gears: PairDesign | None = None) -> tuple[Pair, ContactPath]:
+    """The path of an Example on the settings' phi1' grid (of the design's pair, or of ``gears``)."""
     return compute_case(
-        design.cases[example], phi1_grid(settings), tol=settings["tol"], steps=settings["continuation_steps"], hob=hob
+        design.gears if gears is None else gears,
+        design.cases[example],
+        phi1_grid(settings),
+        tol=settings["tol"],
+        steps=settings["continuation_steps"],
     )
 
 
@@ -104,23 +113,55 @@ def ke_table_of(settings: dict, design: Design, example: str) -> pd.DataFrame:
     return ke_table(sol, pair.ratio)
 
 
-def _shifted(case, pair, sol, which, h, tol):
+def ke_table_two_tangencies(settings: dict, design: Design, example: str) -> pd.DataFrame:
+    """The KE table of an Example (the physical, i.e. first, contact: :func:`ke_table_of`) with the
+    mid-face tangency beside it, for an almost-line contact where both are tangencies of the same
+    equations (Example 5.1: the first contact is a pair at Z = +-Z*, the text prints Z = 0).
+
+    Added columns: the mid-face tangency's l, Z and KE (re-zeroed at its own phi1' = 0 row, as
+    a printed table would be), its gear angle minus the first contact's [arcsec], and the two
+    separations, first-order normal gaps (:func:`gearrep.tca_envelope.turn_gap`; < 0 =
+    interpenetration): ``gap_at_first_contact_if_midface_mm`` at the first-contact point with the
+    gear at the mid-face tangency's angle (the largest interpenetration of the mid-face tangency
+    to second order in the turn; the mirror point of the pair has the same by symmetry) and
+    ``gap_at_midface_if_first_contact_mm`` at mid-face with the gear at the first contact's angle;
+    and the ``tangency_gap_threshold_mm`` setting they are judged against (:mod:`.checks`)."""
+    pair, sol = solved(settings, design, example)
+    mid = tangency_near(pair, sol, 0.0, tol=settings["tol"])
+    require(mid, f"mid-face tangency of Example {example}")
+    if not (np.all(np.abs(mid.Z_p) < 1e-6) and np.all(np.abs(mid.phi2 - sol.phi2) < 1e-6)):
+        raise RuntimeError(f"Example {example}: the search from Z_p = 0 did not return the mid-face tangency")
+    t = ke_table(sol, pair.ratio)
+    tm = ke_table(mid, pair.ratio)
+    t["l_p_midface_mm"] = tm["l_p_mm"]
+    t["Z_p_midface_mm"] = tm["Z_p_mm"]
+    t["l_g_midface_mm"] = tm["l_g_mm"]
+    t["Z_g_midface_mm"] = tm["Z_g_mm"]
+    t["KE_midface_arcsec"] = tm["KE_arcsec"]
+    t["phi2_midface_minus_phi2_arcsec"] = (mid.phi2 - sol.phi2) / ARCSEC
+    t["gap_at_first_contact_if_midface_mm"] = turn_gap(pair, sol, mid.phi2)
+    t["gap_at_midface_if_first_contact_mm"] = turn_gap(pair, mid, sol.phi2)
+    t["tangency_gap_threshold_mm"] = float(settings["tangency_gap_threshold_mm"])
+    return t
+
+
+def _shifted(gears, case, pair, sol, which, h, tol):
     out = []
     for sgn in (1, -1):
         c = dict(case)
         c[which] = case[which] + sgn * h
-        pr = make_pair(c["R_cp_mm"], c["R_cg_mm"], pair.assembly, pair.pinion.gear.hob)
+        pr = make_pair(gears, c["R_cp_mm"], c["R_cg_mm"], pair.assembly)
         s = solve_points(pr, sol.phi1, sol.x, tol=tol)
         require(s, f"sensitivity {which}")
         out.append(s)
     return out
 
 
-def _sensitivity_of(case, pair, sol, settings) -> pd.DataFrame:
+def _sensitivity_of(gears, case, pair, sol, settings) -> pd.DataFrame:
     """dZ/dR_c and dKE/dR_c at every row by central differences in R_cg and R_cp (warm
     started from the path), and Z at a loose solver tolerance (1e-6)."""
     h = float(settings["sensitivity_step_mm"])
-    out = {which: _shifted(case, pair, sol, which, h, settings["tol"]) for which in ("R_cg_mm", "R_cp_mm")}
+    out = {which: _shifted(gears, case, pair, sol, which, h, settings["tol"]) for which in ("R_cg_mm", "R_cp_mm")}
     loose = solve_points(pair, sol.phi1, sol.x + 1e-5, tol=1e-6)
     # how far Z_p can move along the weakest direction of the 9 x 9 Jacobian while the residual
     # stays below 1e-6 (a solver stopping there could report any Z_p in this band)
@@ -152,7 +193,7 @@ def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
     for table in SENSITIVITY_TABLES:
         ex = TABLE_EXAMPLE[table]
         pair, sol = solved(settings, design, ex)
-        s = _sensitivity_of(design.cases[ex], pair, sol, settings)
+        s = _sensitivity_of(design.gears, design.cases[ex], pair, sol, settings)
         s.insert(0, "table", table)
         frames.append(s)
     return pd.concat(frames, ignore_index=True)
@@ -213,8 +254,9 @@ def ke_vs_hob_radius(settings: dict, design: Design) -> pd.DataFrame:
     """Fig 5.5: KE of Example 5.1 for each hob pitch radius of ``hob_radii_mm``."""
     rows = []
     for r_h in settings["hob_radii_mm"]:
-        hob = ZAHob(pitch_radius_mm=float(r_h))
-        pair, sol = solved(settings, design, "5.1", hob=hob)
+        gears = design.gears.with_hob(pitch_radius_mm=float(r_h))
+        hob = gears.hob
+        pair, sol = solved(settings, design, "5.1", gears)
         require(sol, f"hob sweep r_h={r_h}")
         t = ke_table(sol, pair.ratio)
         rows += [
@@ -238,7 +280,14 @@ def ellipses_example_5_3(settings: dict, design: Design) -> pd.DataFrame:
 def ellipse_ratio(settings: dict, design: Design) -> pd.DataFrame:
     """Fig 5.7: a/b at the pitch point of the ideal pair R_cg = R_cp + ellipse_R_gap_mm."""
     rows = [
-        pitch_point_ratio(float(rc), float(rc) + float(settings["ellipse_R_gap_mm"]), float(a), tol=settings["tol"])
+        pitch_point_ratio(
+            design.gears,
+            float(rc),
+            float(rc) + float(settings["ellipse_R_gap_mm"]),
+            float(a),
+            delta_mm=float(design.delta_mm),
+            tol=settings["tol"],
+        )
         for a in design.ellipse_alpha_deg
         for rc in settings["ellipse_R_cp_mm"]
     ]
