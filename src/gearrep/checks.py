@@ -13,8 +13,12 @@ may widen one only with ``extra_tol`` and a stated physical reason (``extra_basi
 uncertainty a rounded table key (l_1 printed to 3 decimals) propagates into the value. A tiny
 floating-point slack (1e-12 relative) keeps exact ties from failing on representation error.
 
-Statuses: ``reproduced``, ``deviates``, ``qualitative-holds``, ``qualitative-fails``,
-``not-computed``.
+Statuses (:data:`STATUSES`, the one place they are defined): the results ``reproduced``,
+``deviates``, ``qualitative-holds``, ``qualitative-fails``, ``not-computed`` (:data:`RESULT_STATUSES`),
+and ``input`` (:data:`INPUT_STATUSES`): a printed number that is a design input of the paper (a
+crowning amount the author chose, a rack-cutter radius taken from earlier work), not the outcome of a
+computation. An input row is used as printed (its note says where); it is neither a result nor a
+gap, and :func:`summary` counts it apart (column ``results`` = rows that are not inputs).
 """
 
 from __future__ import annotations
@@ -28,6 +32,9 @@ from .published import printed_precision
 
 __all__ = [
     "STATUSES",
+    "RESULT_STATUSES",
+    "INPUT_STATUSES",
+    "INPUT",
     "CHECK_COLUMNS",
     "TEXT_COLUMNS",
     "printed_interval",
@@ -35,12 +42,19 @@ __all__ = [
     "check_values",
     "qualitative",
     "not_computed",
+    "printed_input",
     "validate_checks",
     "scorecard",
     "summary",
 ]
 
-STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
+#: statuses of a result (computed against published, or not computed)
+RESULT_STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
+#: a printed design input: used as printed, not a result and not a gap
+INPUT = "input"
+INPUT_STATUSES = (INPUT,)
+#: every status a check record may have
+STATUSES = RESULT_STATUSES + INPUT_STATUSES
 
 CHECK_COLUMNS = [
     "id",
@@ -181,6 +195,20 @@ def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
 
 def not_computed(rows: pd.DataFrame, reason: str) -> pd.DataFrame:
     """``not-computed`` records for published values or claims, with the reason."""
+    return _uncompared(rows, reason, "not-computed")
+
+
+def printed_input(rows: pd.DataFrame, use: str) -> pd.DataFrame:
+    """``input`` records for published values that are design inputs of the paper (not results):
+    ``use`` says why the number is an input and where the replication uses it as printed."""
+    if not use:
+        raise ValueError("an input record needs its note: why the number is an input and where it is used")
+    if "statement" in rows.columns:
+        raise ValueError("claims are statements, not printed inputs; give value rows")
+    return _uncompared(rows, use, INPUT)
+
+
+def _uncompared(rows: pd.DataFrame, reason: str, status: str) -> pd.DataFrame:
     recs = []
     for _, r in rows.iterrows():
         is_claim = "kind" in r.index and "statement" in r.index
@@ -198,7 +226,7 @@ def not_computed(rows: pd.DataFrame, reason: str) -> pd.DataFrame:
                 "rel_err": np.nan,
                 "tolerance": np.nan,
                 "tolerance_basis": "",
-                "status": "not-computed",
+                "status": status,
                 "note": reason,
             }
         )
@@ -250,11 +278,13 @@ def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claim
 
 
 def summary(card: pd.DataFrame, by=("seed",)) -> pd.DataFrame:
-    """Counts by status (columns) for each group in ``by``."""
+    """Counts by status (columns, in :data:`STATUSES` order) for each group in ``by``, then
+    ``results`` (rows with a result status: every row but the printed inputs) and ``total``."""
     counts = card.groupby(list(by))["status"].value_counts().unstack(fill_value=0)
     for s in STATUSES:
         if s not in counts.columns:
             counts[s] = 0
     counts = counts[list(STATUSES)]
-    counts["total"] = counts.sum(axis=1)
+    counts["results"] = counts[list(RESULT_STATUSES)].sum(axis=1)
+    counts["total"] = counts[list(STATUSES)].sum(axis=1)
     return counts.reset_index()

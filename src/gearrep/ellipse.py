@@ -60,6 +60,10 @@ __all__ = [
     "effective_modulus",
     "hertz_ratio",
     "hertz_contact",
+    "hertz_contact_at",
+    "hertz_max_pressure_MPa",
+    "hertz_line_max_pressure_MPa",
+    "LINE_CONTACT_RTOL",
 ]
 
 
@@ -232,8 +236,23 @@ def hertz_ratio(b_over_a) -> np.ndarray:
     return elliprd(0.0, 1.0, p) / elliprd(0.0, p, 1.0)
 
 
+#: a relative curvature below this fraction of the other counts as zero: line contact, no ellipse
+#: (conjugate flanks give ~1e-12 from rounding, the flattest crowned contacts here ~1e-3)
+LINE_CONTACT_RTOL = 1e-9
+
+
 def hertz_contact(
-    k1_rel, k2_rel, load, E1, nu1, E2=None, nu2=None, *, tol: float = 1e-13, maxiter: int = 50
+    k1_rel,
+    k2_rel,
+    load,
+    E1,
+    nu1,
+    E2=None,
+    nu2=None,
+    *,
+    tol: float = 1e-13,
+    maxiter: int = 50,
+    line_rtol: float = LINE_CONTACT_RTOL,
 ) -> HertzContact:
     """Hertz contact of two elastic bodies from the principal relative curvatures at the
     contact point (kappa^(1) - kappa^(2), any common normal; both must have one sign), the
@@ -244,6 +263,9 @@ def hertz_contact(
     s = ln(a/b) >= 0 (gearrep.solve.newton; residual/status reported); then
     a^3 = 3 P I_s / (2 pi A E*), I_s = (K - E)/e^2, b = a sqrt(p), p0 = 3P/(2 pi a b),
     approach = p0 b K(e)/E*. Circular case: a^3 = 3 P R/(4 E*) with 1/R = 2A.
+    A row whose smaller |relative curvature| is at most ``line_rtol`` times the larger is a line
+    contact (no finite ellipse; :func:`hertz_line_max_pressure_MPa` applies): NaN, status SINGULAR,
+    not a tiny rounding-made pressure.
     """
     load = _check_positive("load", load)
     Estar = effective_modulus(E1, nu1, E2, nu2)
@@ -253,6 +275,7 @@ def hertz_contact(
     shape = k1_rel.shape
     k1f, k2f = k1_rel.ravel(), k2_rel.ravel()
     ok = (k1f * k2f > 0) & np.isfinite(k1f) & np.isfinite(k2f)
+    ok &= np.minimum(np.abs(k1f), np.abs(k2f)) > line_rtol * np.maximum(np.abs(k1f), np.abs(k2f))
     A = 0.5 * np.minimum(np.abs(k1f), np.abs(k2f))
     B = 0.5 * np.maximum(np.abs(k1f), np.abs(k2f))
     n = k1f.size
@@ -285,3 +308,53 @@ def hertz_contact(
         arr[bad] = np.nan
     r = lambda x: x.reshape(shape)  # noqa: E731
     return HertzContact(r(a), r(b), r(p0), r(approach), r(e), r(A), r(B), Estar, r(res), r(its), r(status))
+
+
+def hertz_contact_at(
+    c1: PrincipalCurvatures,
+    c2: PrincipalCurvatures,
+    load_N,
+    E1_MPa,
+    nu1,
+    E2_MPa=None,
+    nu2=None,
+    *,
+    normal_tol: float = 1e-6,
+    tol: float = 1e-13,
+    maxiter: int = 50,
+) -> HertzContact:
+    """Hertz contact at a contact point from both surfaces' :class:`PrincipalCurvatures` (lengths in
+    mm, curvatures in 1/mm, same unit normal; see gearrep.curvature.with_opposite_normal), the
+    normal load [N] and the elastic constants [MPa]: the relative curvature
+    (gearrep.curvature.relative_curvature, true angle sigma between the principal directions) into
+    :func:`hertz_contact`. Returns a, b [mm], p0 [MPa] (the maximum contact pressure, equal to
+    :func:`hertz_max_pressure_MPa` of the load and the semi-axes), approach [mm]. This is the route
+    of thesis eq 15-24 (seed 003), which adds the principal curvatures of equal index (eq 19) and
+    so holds only where the principal directions of both surfaces coincide (sigma = 0)."""
+    rel = relative_curvature(c1, c2, normal_tol=normal_tol)
+    return hertz_contact(rel.k1, rel.k2, load_N, E1_MPa, nu1, E2_MPa, nu2, tol=tol, maxiter=maxiter)
+
+
+def hertz_max_pressure_MPa(load_N, a_mm, b_mm) -> np.ndarray:
+    """Maximum pressure [MPa = N/mm^2] of a Hertz (ellipsoidal) pressure distribution carrying the
+    normal load ``load_N`` [N] on an ellipse of semi-axes ``a_mm``, ``b_mm`` [mm]:
+    p_max = 3 P / (2 pi a b) (Johnson eq 3.63-3.64; seed 003 eq 24). The load is the integral of
+    p_max sqrt(1 - x^2/a^2 - y^2/b^2) over the ellipse."""
+    P = _check_positive("load_N", load_N)
+    a = _check_positive("a_mm (semi-axis)", a_mm)
+    b = _check_positive("b_mm (semi-axis)", b_mm)
+    return 3.0 * P / (2.0 * np.pi * a * b)
+
+
+def hertz_line_max_pressure_MPa(load_per_length_N_per_mm, k_rel_per_mm, Estar_MPa) -> np.ndarray:
+    """Maximum pressure [MPa] of a Hertz line contact (two cylinders with parallel axes, plane
+    strain; Johnson eq 4.43-4.45): p_max = sqrt(P' E* k / pi) with P' the load per unit length
+    [N/mm], k = 1/R the relative curvature across the line [1/mm] and E* the effective modulus
+    [MPa] (:func:`effective_modulus`); the contact half-width is 2 P' / (pi p_max). The limit of
+    the elliptical contact when one relative curvature vanishes (line contact of conjugate
+    flanks), where :func:`hertz_contact` has no finite ellipse."""
+    w = _check_positive("load_per_length_N_per_mm", load_per_length_N_per_mm)
+    k = np.abs(np.asarray(k_rel_per_mm, dtype=float))
+    _check_positive("|k_rel_per_mm| (relative curvature across the line)", k)
+    Es = _check_positive("Estar_MPa", Estar_MPa)
+    return np.sqrt(w * Es * k / np.pi)

@@ -14,7 +14,7 @@ from urllib.parse import quote
 
 import pandas as pd
 
-from .checks import STATUSES, summary
+from .checks import INPUT_STATUSES, RESULT_STATUSES, STATUSES, summary
 from .published import PAPERS
 
 __all__ = [
@@ -28,6 +28,7 @@ _STATUS_COLOURS = {
     "qualitative-holds": "#1a7f37",
     "qualitative-fails": "#cf222e",
     "not-computed": "#6e7781",
+    "input": "#0969da",
 }
 
 _CSS = """
@@ -78,11 +79,12 @@ def _table(df: pd.DataFrame, status_col: str | None = "status", links: dict | No
 
 
 def _bar(counts: pd.Series) -> str:
-    total = max(int(counts.sum()), 1)
+    """Bar of the result statuses (printed inputs are not results: not in the bar)."""
+    total = max(int(counts[list(RESULT_STATUSES)].sum()), 1)
     spans = "".join(
         f'<span title="{s}: {int(counts.get(s, 0))}" style="width:{100 * counts.get(s, 0) / total:.2f}%;'
         f'background:{_STATUS_COLOURS[s]}{"" if s in ("reproduced", "deviates", "not-computed") else "99"}"></span>'
-        for s in STATUSES
+        for s in RESULT_STATUSES
     )
     return f'<div class="bar">{spans}</div>'
 
@@ -113,7 +115,9 @@ def render(
         "<h1>gearrep replication report</h1>",
         f"<p>{len(card)} published values and claims checked against our computations. "
         "Status legend: "
-        + ", ".join(f'<span class="status" style="color:{_STATUS_COLOURS[s]}">{s}</span>' for s in STATUSES)
+        + ", ".join(f'<span class="status" style="color:{_STATUS_COLOURS[s]}">{s}</span>' for s in RESULT_STATUSES)
+        + "; printed design inputs, used as printed and counted apart from the results: "
+        + ", ".join(f'<span class="status" style="color:{_STATUS_COLOURS[s]}">{s}</span>' for s in INPUT_STATUSES)
         + ".</p>",
     ]
     if runtime_s is not None:
@@ -128,10 +132,12 @@ def render(
         rows.append(
             f"<tr><td>{r['seed']}</td><td><a href='#paper-{r['seed']}'>{html.escape(str(r['paper']))}</a>"
             f"</td><td>{_bar(counts)}</td>"
-            + "".join(f"<td class='num'>{int(r[s])}</td>" for s in STATUSES)
+            + "".join(f"<td class='num'>{int(r[s])}</td>" for s in (*RESULT_STATUSES, "results", *INPUT_STATUSES))
             + f"<td class='num'>{int(r['total'])}</td></tr>"
         )
-    head = "".join(f"<th>{h}</th>" for h in ["seed", "paper", "", *STATUSES, "total"])
+    head = "".join(
+        f"<th>{h}</th>" for h in ["seed", "paper", "", *RESULT_STATUSES, "results", *INPUT_STATUSES, "total"]
+    )
     parts.append(f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>")
 
     if figures:

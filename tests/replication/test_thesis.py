@@ -155,9 +155,9 @@ def test_design_from_published_equals_the_printed_numbers(design):
         phi1_thesis=np.pi / 2,
     )
     assert p["spur_25_25_m1"] == dict(n1=25, n2=25, module=1.0, pressure_angle_deg=20.0, face_width=10.0)
-    assert p["helical_40_37"] == dict(
-        n1=40, n2=37, module=1.0, pressure_angle_deg=20.0, helix_angle_deg=14.0, face_width=20.0, hand1=1
-    )
+    geometry = dict(n1=40, n2=37, module=1.0, pressure_angle_deg=20.0, helix_angle_deg=14.0, face_width=20.0)
+    material = dict(load_N=200.0, young_modulus_MPa=206e3, poisson_ratio=0.3)  # Table 2, stress ratios
+    assert p["helical_40_37"] == geometry | material | dict(hand1=1)
     assert design.sec61_phi2_guesses_thesis == (0.0, -1.1, -1.15, -1.2)
     assert design.sec61_phi2_window_thesis == (-1.7, -1.0) and design.sec61_misalignment_deg == 0.1
     assert design.helical_phi2_window_thesis == (-1.7, -1.3) and design.helical_misalignment_arcmin == -3.0
@@ -411,7 +411,78 @@ def test_fact_keys_route_published_ids(published):
         == "t34_out_0.2_logarithmic_3"
     )
     assert keys["003-S4.2-plane=out;misalignment_deg=0.2;bound=min-contact_shift"] == "shift_out_0.2_min"
-    assert all(k is None for i, k in keys.items() if "bevel" in i or "stress" in i or "crown_amount" in i)
+    assert keys["003-S4.2-plane=out;misalignment_deg=0.02;crown=circular-stress_ratio"] == "sr_out_0.02_circular"
+    assert all(k is None for i, k in keys.items() if "bevel" in i or "crown_amount" in i)
+    assert all(k.startswith("sr_out_") for i, k in keys.items() if "stress" in i and "bevel" not in i)
+
+
+def test_printed_inputs_are_inputs_not_gaps(check_records, published):
+    """Tables 3-4 crowning amounts are the thesis's design inputs: status input, used as printed."""
+    v = published.values[published.values["seed"] == "003"]
+    amounts = v[v["quantity"] == "crown_amount"]
+    assert len(amounts) == 54 and all(TC.is_printed_input(r) for _, r in amounts.iterrows())
+    assert not any(TC.is_printed_input(r) for _, r in v[v["quantity"] != "crown_amount"].iterrows())
+    rec = check_records.set_index("id").loc[amounts["id"]]
+    assert (rec["status"] == ck.INPUT).all() and rec["computed"].isna().all()
+    assert rec["note"].str.contains("as printed").all()
+    # the printed amounts are the ones the TE and stress studies use
+    for _, r in amounts.iterrows():
+        rk = dict(x.split("=") for x in r["row"].split(";"))
+        key = (rk["plane"], float(rk["misalignment_deg"]))
+        assert T.TABLE34[key][rk["crown"]][int(rk["table_row"]) - 1] == r["value"]
+
+
+def test_stress_table_and_route(tables, design):
+    """Sec 4.2 stress ratios: SR = largest Hertz p_max along the path / line-contact p_o; Fig 29
+    angles; amounts as printed (0.01, 0.02 deg: the 0.05 deg row-1 amounts, stated)."""
+    from gearrep.ellipse import effective_modulus, hertz_line_max_pressure_MPa
+
+    st = tables["stress"]
+    assert set(st["misalignment_deg"]) == set(T.FIG29_ANGLES_DEG) and set(st["plane"]) == {"out"}
+    np.testing.assert_allclose(st["stress_ratio"], st["p_max_MPa"] / st["p0_line_MPa"], rtol=1e-15)
+    assert (st["p_max_MPa"] >= st["p_pitch_MPa"]).all() and (st["n_points"] > 10).all()
+    low = st[st["misalignment_deg"] < 0.05]
+    assert (low["table_row"] == 1).all() and low["amount_source"].str.contains("no amount printed").all()
+    for r in low.itertuples():
+        assert r.crown_amount == T.TABLE34[("out", 0.05)][r.crown_kind][0]
+    r = st.iloc[0]
+    Es = effective_modulus(206e3, 0.3)
+    assert r.p0_line_MPa == pytest.approx(
+        float(hertz_line_max_pressure_MPa(200.0 / r.line_length_mm, r.k_across_per_mm, Es)), rel=1e-14
+    )
+    assert r.k_along_per_mm < 1e-9 * r.k_across_per_mm  # aligned, unmodified: a line contact
+    b_face = design.pairs["helical_40_37"]["face_width"]
+    assert 0.5 * b_face < r.line_length_mm < b_face / np.cos(14 * np.pi / 180)
+
+
+@pytest.mark.parametrize("ang_deg, rtol", [(0.0, 1e-10), (0.05, 1e-6)])
+def test_printed_hertz_eq19_24_equals_library_route(design, ang_deg, rtol):
+    """Thesis eq 19-24 (model.printed_hertz, curvatures of equal index added) against the library
+    route (gearrep.tca.contact_hertz: relative curvature with the true angle between principal
+    directions) along the path of the crowned 40/37 pair: equal aligned; under 0.05 deg out-of-plane
+    the principal directions turn by ~1e-3 rad, a second-order difference."""
+    from gearrep.curvature import with_opposite_normal
+    from gearrep.replications.thesis.model import printed_hertz
+    from gearrep.replications.thesis.te import engagement_contacts
+    from gearrep.tca import contact_curvatures, contact_hertz
+    from gearrep.units import DEG
+
+    base = T.pair_40_37(design)
+    pair = T.pair_40_37(
+        design, T.crowning_object("parabolic", 0.00799, 20.0, 0.9), T.misalignment("out", ang_deg * DEG, base)
+    )
+    _, c = engagement_contacts(pair, 11)
+    h = contact_hertz(pair, c, 200.0, 206e3, 0.3)
+    c1, c2 = contact_curvatures(pair, c)
+    g2 = with_opposite_normal(c2)  # the gear's curvatures w.r.t. its own outward normal (eq 16-18)
+    idx = np.flatnonzero(c.converged)
+    assert len(idx) > 10
+    for i in idx:
+        k1, k2 = sorted([c1.k1[i], c1.k2[i]]), sorted([g2.k1[i], g2.k2[i]])
+        r = printed_hertz(k1[1], k1[0], k2[1], k2[0], 200.0, 206e3, 0.3, 206e3, 0.3)
+        assert r["status"] == 0 and r["residual"] < 1e-12
+        assert r["p_MPa"] == pytest.approx(h.p0[i], rel=rtol)
+        assert (r["a_mm"], r["b_mm"]) == pytest.approx((h.a[i], h.b[i]), rel=rtol)
 
 
 def test_binomial_tolerance():
@@ -463,3 +534,24 @@ def test_thesis_frame_round_trips(design):
         np.testing.assert_allclose(fr.phi2_to_thesis(fr.phi2_from_thesis(phi)), phi, atol=1e-14)
         lo, hi = fr.window_from_thesis(-1.7, -1.0)
         assert lo < hi and hi - lo == pytest.approx(0.7, abs=1e-14)
+
+
+def test_path_guess_and_common_angle_tables(tables):
+    """The two trend studies of issue 17: the sec 6.1 path study (offsets 0.03 -> 0.3 rad, both signs,
+    aligned and misaligned) and the helical/spur shift at a common angle and crown."""
+    from gearrep.replications.thesis.convergence import OUTCOMES
+    from gearrep.replications.thesis.path_guess import OFFSET_FIRST_RAD, OFFSET_LAST_RAD
+
+    pg = tables["path_guess"]
+    assert set(pg["outcome"]) <= set(OUTCOMES) and pg["case"].nunique() == 2
+    for _, d in pg.groupby("case"):
+        off = d.groupby("point")["offset_rad"].agg(["min", "max"])
+        np.testing.assert_allclose(off["max"].iloc[[0, -1]], [OFFSET_FIRST_RAD, OFFSET_LAST_RAD], rtol=1e-14)
+        np.testing.assert_allclose(off["min"], -off["max"], rtol=1e-15)
+        ok = d[d["outcome"] == "correct"]
+        assert (ok["phi2_error_rad"].abs() < 1e-8).all()
+    sc = tables["shift_common_angle"]
+    assert len(sc) == len(T.TABLE34) and (sc["crown_kind"] == "parabolic").all()
+    np.testing.assert_allclose(
+        sc["ratio_helical_to_spur"], sc["helical_shift_mm"].abs() / sc["spur_shift_mm"].abs(), rtol=1e-15
+    )

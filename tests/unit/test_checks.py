@@ -100,3 +100,52 @@ def test_qualitative_needs_evidence():
     with pytest.raises(ValueError):
         checks.qualitative(claim, True, "")
     assert checks.qualitative(claim, False, "S falls 3 %")["status"] == "qualitative-fails"
+
+
+def test_status_vocabulary_results_and_inputs():
+    # one place: every status is a result status or an input status, never both
+    assert checks.STATUSES == checks.RESULT_STATUSES + checks.INPUT_STATUSES
+    assert not set(checks.RESULT_STATUSES) & set(checks.INPUT_STATUSES)
+    assert checks.INPUT == "input" and checks.INPUT in checks.STATUSES
+    assert len(set(checks.STATUSES)) == len(checks.STATUSES)
+    bad = pd.DataFrame([{c: "" for c in checks.CHECK_COLUMNS} | {"id": "x", "seed": "003", "status": "inputs"}])
+    with pytest.raises(ValueError, match="unknown statuses"):
+        checks.validate_checks(bad)
+
+
+def _values(ids):
+    return pd.DataFrame(
+        [
+            {"id": i, "seed": "003", "source": "T", "row": f"k={n}", "quantity": "q", "unit": "mm", "value": 1.5}
+            for n, i in enumerate(ids)
+        ]
+    )
+
+
+def test_printed_input_records_and_scorecard_counts_them_apart():
+    values = _values(["amount1", "amount2", "te", "gap"])
+    inputs = checks.printed_input(values.iloc[:2], "crowning amount chosen by the author; used as printed")
+    assert list(inputs.columns) == checks.CHECK_COLUMNS
+    assert (inputs["status"] == "input").all() and inputs["computed"].isna().all()
+    assert (inputs["published"] == 1.5).all() and inputs["note"].str.contains("used as printed").all()
+    with pytest.raises(ValueError, match="note"):
+        checks.printed_input(values.iloc[:1], "")
+    claims = pd.DataFrame([{"id": "c", "seed": "003", "source": "T", "kind": "trend", "statement": "s"}])
+    with pytest.raises(ValueError, match="claims"):
+        checks.printed_input(claims, "x")
+    done = pd.concat(
+        [
+            inputs,
+            checks.check_values(
+                values.assign(printed="1.5", rounding="round").iloc[2:3],
+                pd.DataFrame({"id": ["te"], "computed": [1.5]}),
+            ),
+        ],
+        ignore_index=True,
+    )
+    card = checks.scorecard({"rep": done}, values, claims.iloc[:0])
+    s = checks.summary(card).iloc[0]
+    assert (s["input"], s["reproduced"], s["not-computed"]) == (2, 1, 1)
+    # results exclude the printed inputs; the total keeps every published row
+    assert s["results"] == 2 and s["total"] == 4
+    assert list(checks.summary(card).columns) == ["seed", *checks.STATUSES, "results", "total"]

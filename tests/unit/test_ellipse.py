@@ -279,3 +279,74 @@ def test_hertz_batch_status_and_validation():
         el.hertz_contact(1.0, 1.0, 1.0, 200e3, 0.3, 200e3, 0.7)
     with pytest.raises(ValueError, match="nu1"):
         el.effective_modulus(1.0, -1.0)
+
+
+# ------------------------------------------------- Hertz route: surfaces -> ellipse -> p_max
+
+
+def test_hertz_contact_at_two_spheres_closed_form_max_pressure():
+    """Sphere R1 on sphere R2 (external contact) through the surface route: p_max from the
+    curvatures and the load equals Johnson's closed form (6 P E*^2 / (pi^3 R^2))^(1/3)."""
+    R1, R2, P, E, nu = 3.0, 1.0, 200.0, 206e3, 0.3
+    p1 = Sphere(R1).evaluate(0.4, 0.3)
+    p2 = Sphere(R2).evaluate(0.4 + np.pi, -0.3)
+    c1 = cv.principal_curvatures(p1)
+    c2 = cv.with_opposite_normal(cv.principal_curvatures(p2))
+    h = el.hertz_contact_at(c1, c2, P, E, nu)
+    Es = E / (2 * (1 - nu**2))
+    R = 1 / (1 / R1 + 1 / R2)
+    assert h.status == Status.CONVERGED
+    assert h.p0 == pytest.approx((6 * P * Es**2 / (np.pi**3 * R**2)) ** (1 / 3), rel=1e-12)
+    assert el.hertz_max_pressure_MPa(P, h.a, h.b) == pytest.approx(h.p0, rel=1e-14)
+    # the other common normal gives the same contact
+    g = el.hertz_contact_at(cv.with_opposite_normal(c1), cv.with_opposite_normal(c2), P, E, nu)
+    assert g.p0 == pytest.approx(h.p0, rel=1e-13)
+
+
+@pytest.mark.parametrize("a_mm,b_mm", [(1.0, 1.0), (2.5, 0.4), (7.0, 0.05)])
+def test_hertz_max_pressure_carries_the_load(a_mm, b_mm):
+    """The ellipsoidal pressure p_max sqrt(1 - x^2/a^2 - y^2/b^2) integrates to the load (polar
+    coordinates x = a r cos t, y = b r sin t: int = 2 pi a b p_max / 3)."""
+    from scipy.integrate import quad
+
+    P = 137.0
+    p = el.hertz_max_pressure_MPa(P, a_mm, b_mm)
+    radial = quad(lambda r: np.sqrt(1 - r * r) * r, 0, 1)[0]
+    assert 2 * np.pi * a_mm * b_mm * p * radial == pytest.approx(P, rel=1e-12)
+    np.testing.assert_allclose(el.hertz_max_pressure_MPa([P, 2 * P], a_mm, b_mm), [p, 2 * p], rtol=1e-15)
+
+
+def test_line_contact_pressure_closed_form_and_slender_ellipse_limit():
+    """Cylinders (Johnson eq 4.45): p_max = sqrt(P' E* / (pi R)), half-width b = sqrt(4 P' R / (pi E*)),
+    P' = pi b p_max / 2. A very slender Hertz ellipse (B/A = 1e6) approaches plane strain at its
+    centre: with P' = pi b p0 / 2 the line formula gives back p0 to within the 3-D correction
+    (about (b/a)^2 ln(a/b), here < 1e-3)."""
+    P_line, R, E, nu = 12.0, 3.5, 206e3, 0.3
+    Es = float(el.effective_modulus(E, nu))
+    p = el.hertz_line_max_pressure_MPa(P_line, 1 / R, Es)
+    half = np.sqrt(4 * P_line * R / (np.pi * Es))
+    assert p == pytest.approx(np.sqrt(P_line * Es / (np.pi * R)), rel=1e-15)
+    assert np.pi * half * p / 2 == pytest.approx(P_line, rel=1e-14)
+    assert el.hertz_line_max_pressure_MPa(P_line, -1 / R, Es) == p  # sign of the normal
+    h = el.hertz_contact(1 / R, 1e-6 / R, 200.0, E, nu)
+    assert h.a / h.b > 1e3
+    p_line = el.hertz_line_max_pressure_MPa(np.pi * h.b * h.p0 / 2, 1 / R, Es)
+    assert p_line == pytest.approx(h.p0, rel=1e-3)
+
+
+def test_hertz_pressure_functions_name_bad_arguments():
+    with pytest.raises(ValueError, match="load_N"):
+        el.hertz_max_pressure_MPa(0.0, 1.0, 1.0)
+    with pytest.raises(ValueError, match="b_mm"):
+        el.hertz_max_pressure_MPa(1.0, 1.0, np.nan)
+    with pytest.raises(ValueError, match="k_rel_per_mm"):
+        el.hertz_line_max_pressure_MPa(1.0, 0.0, 1e5)
+    with pytest.raises(ValueError, match="Estar_MPa"):
+        el.hertz_line_max_pressure_MPa(1.0, 0.1, -1.0)
+
+
+def test_hertz_line_contact_from_rounding_is_flagged_not_a_tiny_pressure():
+    # conjugate flanks: one relative curvature is zero up to rounding -> no ellipse, status SINGULAR
+    h = el.hertz_contact([0.29, 0.29, 0.29], [3e-13, 2.9e-3, -1e-3], 200.0, 206e3, 0.3)
+    np.testing.assert_array_equal(h.status, [Status.SINGULAR, Status.CONVERGED, Status.SINGULAR])
+    assert np.isnan(h.p0[0]) and np.isfinite(h.p0[1]) and np.isnan(h.p0[2])

@@ -92,9 +92,10 @@ def test_default_target_builds_scorecard_report_and_every_notebook(run):
 
 
 def test_every_deviation_and_gap_carries_its_explanation(run):
-    """A value that deviates, a claim that fails and a value not computed each say why."""
+    """A value that deviates, a claim that fails and a value not computed each say why; a printed
+    input says why it is an input and where it is used."""
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype=str, keep_default_na=False)
-    need = card[card["status"].isin(["deviates", "qualitative-fails", "not-computed"])]
+    need = card[card["status"].isin(["deviates", "qualitative-fails", "not-computed", "input"])]
     short = need[need["note"].str.strip().str.len() < 20]
     assert short.empty, (
         f"{len(short)} rows without an explanation, e.g. {short[['id', 'status', 'note']].head(5).to_dict('records')}"
@@ -105,7 +106,9 @@ def test_readme_counts_are_the_scorecard_counts(run):
     """The README's "Results at a glance" table must not drift from what the workflow computes."""
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str})
     counts = card.groupby(["seed", "status"]).size()
-    cols = ["reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed"]
+    from gearrep.checks import STATUSES
+
+    cols = list(STATUSES)  # the result statuses, then the printed inputs (column "inputs")
     text = (ROOT / "README.md").read_text()
     block = text.split("## Results at a glance", 1)[1].split("\n## ", 1)[0]
     rows = [ln.split("|")[1:-1] for ln in block.splitlines() if re.match(r"^\| 00\d \|", ln)]
@@ -113,7 +116,8 @@ def test_readme_counts_are_the_scorecard_counts(run):
     for r in rows:
         seed = r[0].strip()
         got = [int(counts.get((seed, c), 0)) for c in cols]
-        assert [int(x) for x in r[1:6]] == got, f"README row {seed}: {r[1:6]} but the scorecard has {got}"
+        n = len(cols)
+        assert [int(x) for x in r[1 : 1 + n]] == got, f"README row {seed}: {r[1 : 1 + n]} but the scorecard has {got}"
 
 
 def test_rendered_notebooks_have_no_errors_and_a_heading_per_check_source(run):

@@ -121,3 +121,22 @@ def test_report_screenshot_in_headless_browser(card, tmp_path):
     for hex_colour in ("#1a7f37", "#cf222e"):  # reproduced (green) and deviates (red) in the summary bar
         rgb = np.array([int(hex_colour[i : i + 2], 16) for i in (1, 3, 5)]) / 255.0
         assert (np.abs(img - rgb).max(axis=-1) < 0.03).sum() > 20, f"{hex_colour} not on screen"
+
+
+def test_printed_inputs_are_shown_apart_from_results(card):
+    from gearrep import checks
+
+    assert set(report._STATUS_COLOURS) == set(checks.STATUSES)  # every status has its colour
+    extra = card.iloc[[0, 0]].assign(id=["i1", "i2"], status="input", computed=float("nan"), note="design input")
+    html = report.render(pd.concat([card, extra], ignore_index=True), {}, pd.DataFrame(), {})
+    legend = html.split("Status legend:", 1)[1].split("</p>", 1)[0]
+    assert legend.index("not-computed") < legend.index("printed design inputs") < legend.index(">input<")
+    head = html.split("<h2 id='summary'>", 1)[1].split("</thead>", 1)[0]
+    assert head.index("<th>results</th>") < head.index("<th>input</th>") < head.index("<th>total</th>")
+    row = html.split("href='#paper-000'", 1)[1].split("</tr>", 1)[0]
+    # seed 000: 1 reproduced, 1 deviates, 0 qualitative, 0 not-computed | 2 results | 2 inputs | 4 total
+    assert row.split("</div></td>", 1)[1].count("<td class='num'>") == len(checks.STATUSES) + 2
+    nums = [int(x.split("<")[0]) for x in row.split("<td class='num'>")[1:]]
+    assert nums == [1, 1, 0, 0, 0, 2, 2, 4]
+    bar = row.split('<div class="bar">', 1)[1].split("</div>", 1)[0]
+    assert "input" not in bar  # the bar shows results only

@@ -486,6 +486,30 @@ def test_contact_curvatures_and_ellipse_of_a_crowned_spur_pair():
     assert not bad.converged[0] and np.isnan(contact_ellipse(pair, bad, delta).a[0])
 
 
+def test_contact_hertz_of_a_crowned_spur_pair_against_closed_form():
+    """Hertz at the contact points of the crowned 52/72 pair (relative curvatures 2 c1 along the face
+    and 1/rho1 + 1/rho2 across, see above): a, b, p_max equal gearrep.ellipse.hertz_contact of those
+    closed-form curvatures, and p_max = 3 P / (2 pi a b)."""
+    from gearrep.ellipse import hertz_contact, hertz_max_pressure_MPa
+    from gearrep.tca import contact_hertz
+
+    pair, g1, g2 = spur_pair(crown1=ParabolicCrowning(C1))
+    c = solve_contact(pair, np.linspace(-0.1, 0.05, 5))
+    h = contact_hertz(pair, c, 200.0, 206e3, 0.3)
+    rho1, rho2 = np.sqrt(c.u1**2 - g1.r_b**2), np.sqrt(c.u2**2 - g2.r_b**2)
+    ref = hertz_contact(2 * C1, 1 / rho1 + 1 / rho2, 200.0, 206e3, 0.3)
+    assert np.all(h.status == Status.CONVERGED)
+    for f in ("a", "b", "p0"):
+        np.testing.assert_allclose(getattr(h, f), getattr(ref, f), rtol=1e-6)
+    np.testing.assert_allclose(h.p0, hertz_max_pressure_MPa(200.0, h.a, h.b), rtol=1e-14)
+    both = solve_contact(pair, [0.0, 0.3])  # second row off the flank: NaN, its own status kept
+    hb = contact_hertz(pair, both, 200.0, 206e3, 0.3)
+    assert np.isfinite(hb.p0[0]) and np.isnan(hb.p0[1]) and hb.status[1] == both.status[1] != Status.CONVERGED
+    line = solve_contact(spur_pair()[0], [0.0], v1=[0.0])  # unmodified: line contact, no ellipse
+    hl = contact_hertz(spur_pair()[0], line, 200.0, 206e3, 0.3)
+    assert line.converged[0] and np.isnan(hl.p0[0]) and hl.status[0] == Status.SINGULAR
+
+
 # ---------------------------------------------------------------------------------------------
 # start strategies and solver variants (gearrep.tca, used by the seed-003 convergence studies)
 # ---------------------------------------------------------------------------------------------

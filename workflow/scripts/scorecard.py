@@ -32,6 +32,7 @@ def md_table(df: pd.DataFrame) -> str:
     return "\n".join(lines)
 
 
+is_result = card["status"].isin(checks.RESULT_STATUSES)
 by_paper = checks.summary(card, by=("seed",))
 by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS))
 by_source = checks.summary(card, by=("seed", "source"))
@@ -57,8 +58,10 @@ text = (
     "\n\n".join(
         [
             "# gearrep replication scorecard",
-            f"{len(card)} published values and claims; statuses: "
-            + ", ".join(f"{k} {v}" for k, v in card["status"].value_counts().items()),
+            f"{len(card)} published values and claims: {int(is_result.sum())} results (statuses: "
+            + ", ".join(f"{k} {v}" for k, v in card.loc[is_result, "status"].value_counts().items())
+            + f") and {int((~is_result).sum())} printed design inputs (status `{checks.INPUT}`: used as printed, "
+            "neither results nor gaps; column `results` of the counts excludes them)",
             "## Counts by paper",
             md_table(by_paper),
             "## Counts by table",

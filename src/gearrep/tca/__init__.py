@@ -82,7 +82,7 @@ component) are carried as extra unknowns frozen by identity rows with zero resid
 ``newton`` hands ``fun`` only the rows still iterating.
 """
 
-from ._curvature import contact_curvatures, contact_ellipse
+from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
 from ._formulations import (
     conventional_system,
     default_start,
@@ -123,6 +123,7 @@ __all__ = [
     "trace_path",
     "contact_curvatures",
     "contact_ellipse",
+    "contact_hertz",
     "CONVENTIONAL_VARIANTS",
     "REDUCED_VARIANTS",
     "flank_boxes",

@@ -6,7 +6,7 @@ import numpy as np
 
 from ._pair import ContactPoints, GearPair, _mv
 
-__all__ = ["contact_curvatures", "contact_ellipse"]
+__all__ = ["contact_curvatures", "contact_ellipse", "contact_hertz"]
 
 
 def _fixed_frame_point(flank, u, v, R, origin=None):
@@ -68,3 +68,28 @@ def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
         f[ok] = x
         full.append(f)
     return type(el)(*full)
+
+
+def contact_hertz(pair: GearPair, contact: ContactPoints, load_N, E1_MPa, nu1, E2_MPa=None, nu2=None):
+    """Hertz contact at the contact points (:func:`gearrep.ellipse.hertz_contact_at` with the
+    curvatures of :func:`contact_curvatures`): semi-axes a >= b [mm] and maximum contact pressure
+    p0 [MPa] for the normal load ``load_N`` [N] carried by each point (design lengths in mm).
+    Rows whose contact status is not CONVERGED are NaN and keep that status; a line contact (a
+    relative curvature of 0 or of mixed sign) is NaN with status SINGULAR."""
+    from ..ellipse import hertz_contact_at
+
+    c1, c2 = contact_curvatures(pair, contact)
+    ok = contact.converged
+    h = hertz_contact_at(
+        type(c1)(*(x[ok] for x in c1)), type(c2)(*(x[ok] for x in c2)), load_N, E1_MPa, nu1, E2_MPa, nu2
+    )
+    full = []
+    for name, x in zip(h._fields, h):
+        x = np.broadcast_to(np.asarray(x), (int(ok.sum()),))
+        if name == "status":  # rows without a contact keep the contact's own status
+            f = np.asarray(contact.status).astype(x.dtype)
+        else:
+            f = np.full(len(contact), np.nan if x.dtype.kind == "f" else 0, dtype=x.dtype)
+        f[ok] = x
+        full.append(f)
+    return type(h)(*full)

@@ -1,6 +1,7 @@
 """Check records of seed 002: every published value and claim against the tables of the jobs
 (gearrep.checks; tolerances from the printed precision only). The tables of what is compared
-are :data:`.values.VALUES` and :data:`.claims.CLAIMS`: id -> :class:`Rule` or a not-computed reason."""
+are :data:`.values.VALUES` and :data:`.claims.CLAIMS`: id -> :class:`Rule`, a :class:`PrintedInput`
+(a printed design input, status ``input``) or a not-computed reason."""
 
 from __future__ import annotations
 
@@ -13,12 +14,13 @@ from ... import checks as ck
 
 __all__ = [
     "Rule",
+    "PrintedInput",
     "one",
     "evaluate",
     "check_records",
     "NOT_COMPUTED_DISK",
     "NOT_COMPUTED_HEIGHTS",
-    "NOT_COMPUTED_INPUT_RADII",
+    "INPUT_RADII",
     "NOT_COMPUTED_SEC3",
 ]
 
@@ -42,7 +44,16 @@ NOT_COMPUTED_HEIGHTS = (
     "tooth thickness at the pitch line and the minimum top-land width used by the report: neither is printed "
     "(sec. 2.4 only says a minimal top-land width was kept); the printed totals equal ha + hd"
 )
-NOT_COMPUTED_INPUT_RADII = (
+
+
+class PrintedInput(str):
+    """A printed value that is a design input of the report, not a result (status ``input``); the
+    text says why and where the replication uses it as printed."""
+
+    __slots__ = ()
+
+
+INPUT_RADII = PrintedInput(
     "versions 1 and 2 radii are design inputs of the circular-arc rack-cutters (refs. 1-4 of the report), not "
     "results of a computation in the report; they are used here as inputs of Table 6.2.4 and 6.2.3"
 )
@@ -80,7 +91,9 @@ def check_records(tables: dict, published, seed: str, values: dict, claims: dict
     vals = published.values[published.values["seed"] == seed]
     for _, r in vals.iterrows():
         got = evaluate(values.get(r["id"], "no computed counterpart in this replication"), tables)
-        if isinstance(got, str):
+        if isinstance(got, PrintedInput):
+            recs.append(ck.printed_input(r.to_frame().T, got).iloc[0].to_dict())
+        elif isinstance(got, str):
             recs.append(ck.not_computed(r.to_frame().T, got).iloc[0].to_dict())
         else:
             recs.append(ck.compare_value(r, float(got[0]), note=got[1]))

@@ -1,11 +1,12 @@
 """Computed counterparts of the published seed-002 values: :data:`VALUES` maps a value id to a
-:class:`.records.Rule` (tables -> (computed value, note)) or to the reason it is not computed."""
+:class:`.records.Rule` (tables -> (computed value, note)), a :class:`.records.PrintedInput` (a printed
+design input, status ``input``) or the reason it is not computed."""
 
 from __future__ import annotations
 
 from functools import partial
 
-from .records import NOT_COMPUTED_DISK, NOT_COMPUTED_HEIGHTS, NOT_COMPUTED_INPUT_RADII, NOT_COMPUTED_SEC3, Rule, one
+from .records import INPUT_RADII, NOT_COMPUTED_DISK, NOT_COMPUTED_HEIGHTS, NOT_COMPUTED_SEC3, Rule, one
 
 __all__ = ["VALUES"]
 
@@ -181,7 +182,7 @@ VALUES: dict = {
     "002-T6.2.1-version=3-rho_gear": Rule(
         _CUR, partial(_rho, "gear", "eq 2.7.2: 6.35/P_n (1/(2 a_t) = 1.2690 with the printed a_t = 0.394)")
     ),
-    **{vid: NOT_COMPUTED_INPUT_RADII for vid in _RADII_12},
+    **{vid: INPUT_RADII for vid in _RADII_12},
     **{f"002-T6.2.2-version={v}-{q}": NOT_COMPUTED_HEIGHTS for v in (1, 2, 3) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
     "002-S3.3-design=pinion_concave;N2_min=70-h_Pn": NOT_COMPUTED_SEC3,
     "002-S3.3-design=pinion_convex-h_Pn": NOT_COMPUTED_HEIGHTS,

@@ -9,10 +9,12 @@ What is replicated (one job per table group, :data:`JOBS`):
 * TE and path of contact of crowned spur (sec 4.1) and helical (Tables 3-4) gears under in-plane
   and out-of-plane misalignment, the TE areas S_c, S_p, S_l and candidate readings of the printed
   Delta phi_max (:mod:`.te`);
-* the errata found and the convergence protocol as run (:mod:`.records`).
+* the errata found and the convergence protocol as run (:mod:`.records`);
+* the Hertz stress ratios of the crowned helical 40/37 pair (sec 4.2, Fig 29; :mod:`.stress`), the
+  sec 6.1 path study with offset phi2 guesses (:mod:`.path_guess`) and the helical/spur contact
+  shift at a common angle and crown (:func:`.te.shift_common_angle_table`).
 
-Not computed: straight and spiral bevel gears (no spherical-involute surfaces in gearrep) and the
-Hertz stress ratios. The thesis's frame and printed formulas are in :mod:`.model`; its design data
+Not computed: straight and spiral bevel gears (no spherical-involute surfaces in gearrep). The thesis's frame and printed formulas are in :mod:`.model`; its design data
 enter only through :func:`params_from_published` (:mod:`.design`); checks and claims are in
 :mod:`.facts` and :mod:`.claims`.
 
@@ -45,8 +47,10 @@ from .convergence import (
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37, params_from_published
 from .facts import checks, fact_key
 from .model import ThesisFrame, crown_curvature, crowning_object, profile_crowning, wrap
+from .path_guess import path_guess_table
 from .records import errata_table, protocol_table
-from .te import crowning_areas_table, first_order_te, te_sensitivity, te_study, te_tables
+from .stress import FIG29_ANGLES_DEG, crown_amounts, path_pressure, reference_pressure, stress_table
+from .te import crowning_areas_table, first_order_te, shift_common_angle_table, te_sensitivity, te_study, te_tables
 
 SEED = "003"
 
@@ -118,6 +122,14 @@ SETTINGS = st.declare(
         st.integer(None, "1", "", ge=1, le=3),
         max_items=3,
     ),
+    stress_n_points=st.integer(
+        21,
+        "1",
+        "stress ratios (sec 4.2): contact points per mesh cycle along the path (grid 4 n + 1 over 2.5 pitches); "
+        "p_max along the path moves by < 0.5 % from 21 to 121 (it lies at the end of engagement)",
+        ge=5,
+        le=2001,
+    ),
     te_pivot=st.choice(
         "pitch_point",
         ("pitch_point", "axis"),
@@ -163,6 +175,23 @@ JOBS = {
         crowning_areas_table,
         {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
         "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)",
+    ),
+    "stress": Job(
+        stress_table,
+        {"stress": f"{_DIR}/stress.csv"},
+        "Hertz stress ratios of the crowned helical 40/37 pair under out-of-plane misalignment (sec 4.2, Fig 29)",
+        priority=8,
+    ),
+    "shift_common_angle": Job(
+        shift_common_angle_table,
+        {"shift_common_angle": f"{_DIR}/shift_common_angle.csv"},
+        "contact shift of the helical 40/37 and spur 25/25 pairs at a common angle and crown (conclusions)",
+    ),
+    "path_guess": Job(
+        path_guess_table,
+        {"path_guess": f"{_DIR}/path_guess.csv"},
+        "sec 6.1 path study: conventional TCA along the path from phi2 starts offset 0.03..0.3 rad",
+        priority=4,
     ),
     "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
     "protocol": Job(
@@ -237,4 +266,8 @@ __all__ = [
     "CLAIMS",
     "claim_verdicts",
     "conv_row",
+    "FIG29_ANGLES_DEG",
+    "crown_amounts",
+    "reference_pressure",
+    "path_pressure",
 ]

@@ -17,8 +17,8 @@ import pandas as pd
 from .design import Design, design_pair
 
 NOT_COMPUTED_STRESS = (
-    "stress ratios (Hertz, thesis eq 15-25) are not part of this replication; the contact "
-    "ellipse and Hertz pressure belong to gearrep.ellipse"
+    "stress ratios (Hertz, thesis eq 15-25) not computed in this run: the table of the stress job "
+    "(thesis/stress.csv) is missing"
 )
 
 
@@ -449,6 +449,92 @@ def _log_area_smallest(c: Context):
     )
 
 
+def _log_highest_stress_ratio(c: Context):
+    st = c.tables.get("stress")
+    if st is None or not len(st):
+        return None
+    r1 = st[st["table_row"] == 1]
+    at = {a: d.set_index("crown_kind")["stress_ratio"] for a, d in r1.groupby("misalignment_deg")}
+    top = max(at)
+    sr = at[top]
+    others = sr.drop("logarithmic")
+    spread = {a: float(x.max() / x.min() - 1) for a, x in at.items() if a < top}
+    return verdict(
+        bool(sr["logarithmic"] > 1.1 * others.max() and all(v < 0.05 for v in spread.values())),
+        bool(sr["logarithmic"] < others.max()),
+        f"Hertz SR (largest p_max along the path / line-contact p_o; Table 4 row-1 amounts, log a2 "
+        f"{float(r1['log_a2'].iloc[0]):g}): at {top:g} deg "
+        + ", ".join(f"{k} {x:.3f}" for k, x in sr.items())
+        + "; spread (max/min - 1) at "
+        + ", ".join(f"{a:g} deg {100 * v:.2f} %" for a, v in spread.items())
+        + f". The printed logarithmic amount at {top:g} deg (a1 = "
+        f"{float(r1[(r1['misalignment_deg'] == top) & (r1['crown_kind'] == 'logarithmic')]['crown_amount'].iloc[0]):g}"
+        " mm) is a much flatter crown than the circular and parabolic ones, so its contact ellipse is longer and "
+        "its pressure lower",
+    )
+
+
+def _helical_shift_vs_spur(c: Context):
+    sc = c.tables.get("shift_common_angle")
+    if sc is None or not len(sc):
+        return None
+    r = sc["ratio_helical_to_spur"]
+    own = ""
+    te = c.tables.get("te_summary")
+    if te is not None:
+        sp = te[(te["case"] == "spur_25_25_m1") & (te["plane"] != "none")]
+        sp = sp[np.isclose(sp["crown_amount"], sp["crown_amount"].max())]
+        h2 = c.row1[np.isclose(c.row1["ang"], c.row1["ang"].max())] if len(c.helical) else c.row1
+        if len(sp) and len(h2):
+            own = (
+                f". The thesis's own studies differ in angle and crown: spur {float(sp['misalignment_deg'].abs().max()):.3g} deg "
+                f"with a1 = {float(sp['crown_amount'].iloc[0]):g}: |shift| up to {float(sp['v1_shift_mm'].abs().max()):.3g} mm; "
+                f"helical {float(h2['ang'].max()):g} deg with the Table 3-4 row-1 amounts: up to "
+                f"{float(h2['abs_shift'].max()):.3g} mm; to first order the shift is the lead error over twice the crown "
+                "coefficient, so the printed helical shifts follow from the much weaker helical crowns"
+            )
+    return verdict(
+        bool((r >= 5).all()),
+        bool((r < 2).all()),
+        "contact shift at the pitch-point position, both pairs under the same misalignment with the same parabolic "
+        "crown (Table 3-4 row-1 c1 of each angle): helical/spur |shift| = "
+        + ", ".join(f"{x.plane} {abs(x.misalignment_deg):g} deg {x.ratio_helical_to_spur:.3f}" for x in sc.itertuples())
+        + own,
+    )
+
+
+def _path_points_fail(c: Context):
+    pg = c.tables.get("path_guess")
+    if pg is None or not len(pg):
+        return None
+    per = {}
+    for case, d in pg.groupby("case", sort=False):
+        bad = d[d["outcome"] != "correct"]
+        per[case] = (bad, len(d), int(d["point"].nunique()))
+    confirm = all(len(b) > 0 for b, _, _ in per.values())
+    refute = all(len(b) == 0 for b, _, _ in per.values())
+    parts = []
+    for case, (bad, n, npts) in per.items():
+        where = ", ".join(
+            f"point {int(x.point)} (offset {x.offset_rad:+.3f} rad): {x.outcome} after {int(x.iterations)} it."
+            for x in bad.itertuples()
+        )
+        parts.append(
+            f"{case}: {len(bad)} of {n} starts ({npts} path points x 2 offset signs) not correct"
+            + (f" [{where}]" if where else "")
+        )
+    return verdict(
+        confirm,
+        refute,
+        "plain conventional Newton along the path, u1, v1, u2, v2 from the flank mid-points, phi2 = root + offset "
+        "(|offset| 0.03 rad at the first point growing to 0.3 rad at the last, both signs): "
+        + "; ".join(parts)
+        + ". The failures are at the last path points (end of engagement, pinion contact nearest its base circle, "
+        "largest offsets): status diverged = a non-finite iterate or residual, i.e. a Newton step from the "
+        "mid-flank start leaves the domain where the involutes are defined",
+    )
+
+
 def _reason(text: str):
     return lambda c: text
 
@@ -460,10 +546,7 @@ CLAIMS = {
     "003-S6.1-almost_all_at_phi2_-1.2": _almost_all_at_12,
     "003-S6.1-random_phi2_fails": _random_phi2_fails,
     "003-S6.1-misalignment_small_effect": _misalignment_small_effect,
-    "003-S6.1-path_points_fail_despite_close_guess": _reason(
-        "not evaluated: the path study with phi2 guesses offset by 0.03..0.3 rad along the path is not run; the "
-        "fixed-guess study (0 % at -1.1 rad, 100 % at -1.2 rad) shows the same mechanism"
-    ),
+    "003-S6.1-path_points_fail_despite_close_guess": _path_points_fail,
     "003-S6.1-helical_more_iterations_no_help": _helical_more_iterations,
     "003-S6.1-helical_random_phi2_fails": _helical_random_phi2_fails,
     "003-S6.1-wrong_roots_exist": _wrong_roots_exist,
@@ -487,11 +570,8 @@ CLAIMS = {
     "003-S4.2-out_of_plane_shift_larger": _out_of_plane_shift_larger,
     "003-C6-out_of_plane_worse": _out_of_plane_worse,
     "003-S4.2-log_area_smallest": _log_area_smallest,
-    "003-C6-helical_shift_much_larger_than_spur": _reason(
-        "not evaluated: the spur study runs at 17.5 mrad (1.0 deg), the helical one at 0.05-0.2 deg; no common angle "
-        "with comparable crowning was run"
-    ),
-    "003-S4.2-log_highest_stress_ratio_0.2": _reason(NOT_COMPUTED_STRESS),
+    "003-C6-helical_shift_much_larger_than_spur": _helical_shift_vs_spur,
+    "003-S4.2-log_highest_stress_ratio_0.2": _log_highest_stress_ratio,
 }
 
 

@@ -86,7 +86,13 @@ def params_from_published(published) -> Design:
         ),
         "spur_25_25_m1": gear(m1),
         "helical_40_37": dict(
-            gear(h40), helix_angle_deg=float(h40["helix_angle"]), hand1=READINGS["hand1_helical_40_37"]
+            gear(h40),
+            helix_angle_deg=float(h40["helix_angle"]),
+            hand1=READINGS["hand1_helical_40_37"],
+            # Table 2 material and load of the stress ratios (sec 4.2, eq 23-24); both members alike
+            load_N=float(h40["total_load_N"]),
+            young_modulus_MPa=1e3 * float(h40["young_modulus_GPa"]),
+            poisson_ratio=float(h40["poisson_ratio"]),
         ),
     }
     mrad_in, mrad_out = float(m1["misalignment_in_plane_mrad"]), float(m1["misalignment_out_of_plane_mrad"])

@@ -326,10 +326,83 @@ def _te_facts(tables: dict) -> dict:
     return f
 
 
-NOT_COMPUTED_AMOUNT = (
-    "input, not a result: the crowning amount the thesis chose for each misalignment (its "
-    "selection rule is not stated); we use it as printed to compute te_max of the same row, and "
-    "in our TCA no printed amount gives a continuous TE for the helical 40/37 pair"
+def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
+    """Sec 4.2 stress ratios (Fig 29) from the ``stress`` table (:mod:`.stress`): row-1 amounts,
+    largest pressure along the path over the line-contact p_o."""
+    st = tables.get("stress")
+    if st is None or not len(st):
+        return {}
+    f = {}
+    r1 = st[st["table_row"] == 1]
+    printed = {}
+    for _, v in vals[vals["quantity"] == "stress_ratio"].iterrows():
+        rk = _parse_row(v["row"])
+        if rk.get("plane") == "out" and "bevel" not in str(v["id"]):
+            printed[(float(rk["misalignment_deg"]), rk["crown"])] = float(v["value"])
+
+    def pmax(ang, kind, row=1):
+        d = st[np.isclose(st["misalignment_deg"], ang) & (st["crown_kind"] == kind) & (st["table_row"] == row)]
+        return float(d["p_max_MPa"].iloc[0]) if len(d) else np.nan
+
+    lo_ang = min(st["misalignment_deg"])
+    for r in r1.itertuples():
+        key = f"sr_out_{r.misalignment_deg:g}_{r.crown_kind}"
+        same = r1[np.isclose(r1["misalignment_deg"], r.misalignment_deg)].set_index("crown_kind")["stress_ratio"]
+        pr = {k: printed[(r.misalignment_deg, k)] for k in same.index if (r.misalignment_deg, k) in printed}
+        others = st[
+            np.isclose(st["misalignment_deg"], r.misalignment_deg)
+            & (st["crown_kind"] == r.crown_kind)
+            & (st["table_row"] > 1)
+        ]
+        p_pub = printed.get((r.misalignment_deg, r.crown_kind))
+        implied = f"; the printed SR implies p_o = p_max / SR = {r.p_max_MPa / p_pub:.0f} MPa" if p_pub else ""
+        ratio_txt = ", ".join(f"{k} {x:.4f}" for k, x in same.items())
+        pub_txt = (
+            "; printed at this angle: "
+            + ", ".join(f"{k} {x:g}" for k, x in pr.items())
+            + " (ratios to the lowest: "
+            + ", ".join(f"{k} {x / min(pr.values()):.4f}" for k, x in pr.items())
+            + "; ours: "
+            + ", ".join(f"{k} {same[k] / min(same[j] for j in pr):.4f}" for k in pr)
+            + ")"
+            if len(pr) > 1
+            else ""
+        )
+        angle_only = pmax(lo_ang, r.crown_kind) / pmax(0.05, r.crown_kind) - 1 if lo_ang < 0.05 else np.nan
+        f[key] = dict(
+            value=float(r.stress_ratio),
+            note=(
+                f"Hertz p_max along the path {r.p_max_MPa:.0f} MPa ({r.crown_kind} crown {r.crown_amount:g} from "
+                f"{r.amount_source}, log a2 {r.log_a2:g}; out-of-plane {r.misalignment_deg:g} deg; 200 N on one contact, "
+                f"E 206 GPa, nu 0.3; at the pitch point {r.p_pitch_MPa:.0f} MPa, semi-axes {r.a_pitch_mm:.3f} x "
+                f"{r.b_pitch_mm:.4f} mm) over p_o = {r.p0_line_MPa:.1f} MPa, our reading of the aligned unmodified "
+                f"contact: a line, so the Hertz line pressure with the load over its {r.line_length_mm:.2f} mm contact "
+                "line (the thesis does not say how it gets a finite p_o from eq 22-24 for a line contact)"
+                + implied
+                + (
+                    "; Table 4 rows 2-3: SR " + ", ".join(f"{x:.4f}" for x in others["stress_ratio"])
+                    if len(others)
+                    else ""
+                )
+                + f"; our SR at this angle: {ratio_txt}"
+                + pub_txt
+                + (
+                    f"; with equal amounts the angle alone moves p_max by {100 * angle_only:+.2f} % from 0.05 to "
+                    f"{lo_ang:g} deg, so the printed rise from about 10.1 (0.05 deg) to 15.2 (0.01 deg) must come from "
+                    "larger crown amounts that the thesis does not print for 0.01 and 0.02 deg"
+                    if np.isfinite(angle_only)
+                    else ""
+                )
+            ),
+        )
+    return f
+
+
+INPUT_AMOUNT = (
+    "design input, not a result: the crowning amount the thesis chose for each misalignment (its "
+    "selection rule is not stated); we use it as printed to compute te_max of the same row (and, at "
+    "0.05 deg out-of-plane, the stress ratios), and in our TCA no printed amount gives a continuous "
+    "TE for the helical 40/37 pair"
 )
 _BEVEL_WORDS = ("bevel", "spiral", "straight")
 
@@ -349,6 +422,13 @@ def _is_bevel(r: pd.Series) -> bool:
     return any(w in text for w in _BEVEL_WORDS)
 
 
+def is_printed_input(row: pd.Series) -> bool:
+    """True for the seed-003 values that are design inputs, not results: the crowning amounts of
+    Tables 3-4 (quantity ``crown_amount``; used as printed, status ``input``)."""
+    tag = str(row["id"]).split("-")[1]
+    return tag in ("T3", "T4") and str(row["quantity"]) == "crown_amount"
+
+
 _T10_Q = {"convergence_rate": "rate", "mean_iterations": "iter", "total_time": "time"}
 _CROWN_LETTER = {"circular": "c", "parabolic": "p", "logarithmic": "l"}
 
@@ -362,7 +442,7 @@ def fact_key(row: pd.Series) -> str | None:
     tag = str(row["id"]).split("-")[1]
     q = str(row["quantity"])
     rk = _parse_row(row["row"])
-    if "stress" in q or "pressure" in q:
+    if ("stress" in q or "pressure" in q) and not (tag == "S4.2" and q == "stress_ratio"):
         return None
     if tag == "T10":
         return f"t10_{'conv' if rk.get('method') == 'conventional' else 'red'}_{_T10_Q[q]}"
@@ -381,6 +461,8 @@ def fact_key(row: pd.Series) -> str | None:
             return f"S_{plane}_l_vs_{_CROWN_LETTER[other]}_pct"
         if q == "contact_shift":
             return f"shift_{plane}_{abs(float(rk['misalignment_deg'])):g}_{rk.get('bound', 'max')}"
+        if q == "stress_ratio":
+            return f"sr_{plane}_{abs(float(rk['misalignment_deg'])):g}_{rk['crown']}"
         return None
     if tag == "S6.1":
         case = rk.get("case", "")
@@ -408,8 +490,6 @@ def _not_computed_reason(r: pd.Series) -> str:
     q = str(r.get("quantity", "")).lower()
     if "stress" in q or "pressure" in q or "stress" in str(r.get("id", "")):
         return NOT_COMPUTED_STRESS
-    if q == "crown_amount":
-        return NOT_COMPUTED_AMOUNT
     return (
         "not computed in this run's settings (e.g. a Table 3/4 row outside crowning_rows); the default "
         "workflow settings compute it"
@@ -475,11 +555,14 @@ def checks(tables: dict, published) -> dict:
     sampling error, not modelling error. Counts of converged starts (of the thesis's 1000) get the
     same tolerance in counts.
     """
-    facts = {**_facts(tables), **_te_facts(tables)}
     vals = published.values[published.values["seed"] == SEED]
+    facts = {**_facts(tables), **_te_facts(tables), **_stress_facts(tables, vals)}
     _add_reading_notes(facts, tables, vals)
     recs = []
     for _, r in vals.iterrows():
+        if is_printed_input(r):
+            recs.append(ck.printed_input(r.to_frame().T, INPUT_AMOUNT).iloc[0].to_dict())
+            continue
         key = fact_key(r)
         if key is None or key not in facts:
             recs.append(ck.not_computed(r.to_frame().T, _not_computed_reason(r)).iloc[0].to_dict())

@@ -110,3 +110,51 @@ def crown_curvature(kind: str, amount: float, face_width: float, log_a2: float) 
     if kind == "logarithmic":
         return float(amount) * log_a2 / (0.5 * face_width) ** 2
     raise ValueError(f"unknown crowning kind {kind!r}")
+
+
+def printed_hertz(k_max1, k_min1, k_max2, k_min2, load_N, E1_MPa, nu1, E2_MPa, nu2, *, tol=1e-13, maxiter=50):
+    """Thesis eq 19-24 as printed (evidence; the library route is :func:`gearrep.ellipse.hertz_contact_at`):
+    2A = k_max1 + k_max2, 2B = k_min1 + k_min2 (eq 19; each surface's principal curvatures w.r.t.
+    its own outward normal, magnitudes taken, A <= B), the eccentricity e from
+    [E(e)/(1 - e^2) - K(e)] / [K(e) - E(e)] = B/A (eq 20) by Newton, with K, E the complete
+    elliptic integrals of modulus e (eq 21 prints sqrt(1 - e^2 theta): sin^2 theta is meant),
+    a = (3 P C_E (K - E) / (2 pi e^2 A))^(1/3), b = a sqrt(1 - e^2) (eq 22), C_E of eq 23 and
+    p = 3 P / (2 pi a b) (eq 24). Eq 19 adds curvatures of equal index, i.e. assumes the principal
+    directions of both surfaces coincide (true for aligned parallel-axis flanks, nearly so here).
+    Returns dict(a_mm, b_mm, e, p_MPa, residual, iterations, status) of scalars."""
+    from scipy.special import ellipe, ellipk
+
+    from ...solve import newton
+
+    A = 0.5 * abs(float(k_max1) + float(k_max2))
+    B = 0.5 * abs(float(k_min1) + float(k_min2))
+    A, B = min(A, B), max(A, B)
+    if not A > 0:
+        raise ValueError(f"printed_hertz: eq 19 gives A = {A!r}; a line contact has no ellipse (A must be > 0)")
+    ratio = B / A
+
+    def eq20(m):  # m = e^2
+        K, E = ellipk(m), ellipe(m)
+        return (E / (1 - m) - K) / (K - E)
+
+    # unknown t = ln(1 - e^2) <= 0, so every iterate keeps 0 < e < 1
+    def fun(x, rows):
+        m = -np.expm1(x[:, 0])
+        return (np.log(eq20(m)) - np.log(ratio))[:, None]
+
+    x0 = np.array([[-(4.0 / 3.0) * np.log(ratio) if ratio > 1 else -1e-3]])  # b/a ~ (A/B)^(2/3)
+    sr = newton(fun, x0, tol=tol, maxiter=maxiter, upper=[-1e-300], rows=True)
+    m = float(-np.expm1(sr.x[0, 0]))
+    K, E = ellipk(m), ellipe(m)
+    C_E = (1 - nu1**2) / E1_MPa + (1 - nu2**2) / E2_MPa  # eq 23
+    a = (3 * load_N * C_E * (K - E) / (2 * np.pi * m * A)) ** (1 / 3)  # eq 22
+    b = a * np.sqrt(1 - m)
+    return dict(
+        a_mm=a,
+        b_mm=b,
+        e=float(np.sqrt(m)),
+        p_MPa=3 * load_N / (2 * np.pi * a * b),  # eq 24
+        residual=float(sr.residual[0]),
+        iterations=int(sr.iterations[0]),
+        status=int(sr.status[0]),
+    )

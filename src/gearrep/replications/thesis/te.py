@@ -12,6 +12,7 @@ import pandas as pd
 
 from ...meshing import handover_jump, pair_te_curves, upper_envelope
 from ...solve import Status
+from ...surfaces.involute import ParabolicCrowning
 from ...tca import GearPair, Misalignment, line_of_action_starts, robust_start, solve_contact
 from ...units import ARCSEC, DEG
 from .design import TABLE34, Design, misalignment, pair_40_37, pair_spur_m1
@@ -23,6 +24,19 @@ JUMP_TOL_ARCSEC = 0.01
 PAIRS = range(-2, 3)
 
 
+def engagement_contacts(pair: GearPair, n_points: int, tol: float = 1e-12):
+    """(phi1 grid, :class:`gearrep.tca.ContactPoints`) of one tooth pair over +-1.25 angular pitches
+    around the pitch-point position (4 n_points + 1 angles), each angle solved by the reduced
+    formulation from its own robust start; rows outside the flanks are not CONVERGED."""
+    p1 = 2 * np.pi / pair.n1
+    phi = np.linspace(-1.25 * p1, 1.25 * p1, 4 * int(n_points) + 1)
+    st = line_of_action_starts(pair, phi)
+    u1r, _ = robust_start(pair, phi, st[:, 0], st[:, 1])  # every angle from its own robust start
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        c = solve_contact(pair, phi, np.column_stack([u1r, st[:, 1]]), formulation="reduced", damped=False, tol=tol)
+    return phi, c
+
+
 def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     """TE (eq 14, library sign: > 0 = member 2 leads) and path of contact of one tooth pair over
     its engagement, and the TE transmitted over one cycle (upper envelope of the pairs k = -2..2).
@@ -32,11 +46,7 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     has a gap, i.e. the TE is discontinuous).
     """
     p1 = 2 * np.pi / pair.n1
-    phi = np.linspace(-1.25 * p1, 1.25 * p1, 4 * int(n_points) + 1)
-    st = line_of_action_starts(pair, phi)
-    u1r, _ = robust_start(pair, phi, st[:, 0], st[:, 1])  # every angle from its own robust start
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = solve_contact(pair, phi, np.column_stack([u1r, st[:, 1]]), formulation="reduced", damped=False, tol=tol)
+    phi, c = engagement_contacts(pair, n_points, tol)
     ok = c.status == Status.CONVERGED
     te = np.where(ok, c.te, np.nan)
     cyc = np.linspace(-0.5 * p1, 0.5 * p1, int(n_points))
@@ -194,9 +204,10 @@ TE_READINGS = {
 }
 
 
-def _te_at_pitch_position(pair: GearPair, tol: float = 1e-12) -> float:
-    """TE [rad] of one pair at phi1 = 0 (pitch-point position): reduced solve from (r_p1, v1 = 0),
-    then from the robust start; NaN (reported, not guessed) if neither converges."""
+def contact_at_pitch_position(pair: GearPair, tol: float = 1e-12):
+    """Contact of one pair at phi1 = 0 (pitch-point position): reduced solve from (r_p1, v1 = 0),
+    then from the robust start (:class:`gearrep.tca.ContactPoints` of one row; its status says
+    whether either converged)."""
     phi = np.zeros(1)
     u0 = np.array([pair.flank1.gear.r_p])
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -204,6 +215,12 @@ def _te_at_pitch_position(pair: GearPair, tol: float = 1e-12) -> float:
         if c.status[0] != Status.CONVERGED:
             u1r, _ = robust_start(pair, phi, u0, np.zeros(1))
             c = solve_contact(pair, phi, np.column_stack([u1r, [0.0]]), formulation="reduced", damped=False, tol=tol)
+    return c
+
+
+def _te_at_pitch_position(pair: GearPair, tol: float = 1e-12) -> float:
+    """TE [rad] of one pair at the pitch-point position; NaN (reported, not guessed) if no contact."""
+    c = contact_at_pitch_position(pair, tol)
     return float(c.te[0]) if c.status[0] == Status.CONVERGED else np.nan
 
 
@@ -406,3 +423,35 @@ def crowning_areas_table(s: dict, design: Design) -> dict:
     """Job ``crowning_areas``: TE areas of the 0.2 deg, first-row amounts of Tables 3-4 only."""
     rows, _, _ = table34_te(s, design, select=lambda plane, ang, row: abs(ang) == 0.2 and row == 1)
     return dict(crowning_areas=crowning_areas(pd.DataFrame(rows)))
+
+
+def shift_common_angle_table(s: dict, design: Design) -> dict:
+    """Job ``shift_common_angle`` (claim 003-C6-helical_shift_much_larger_than_spur): the contact
+    shift from mid-face at the pitch-point position of the helical 40/37 pair and of the spur 25/25
+    (m = 1) pair at the SAME misalignment (each angle and plane of Tables 3-4) with the SAME crown:
+    the parabolic row-1 amount c1 of that angle on the pinion of both pairs (pivot ``te_pivot``)."""
+    rows = []
+    hel0, spur0 = pair_40_37(design), pair_spur_m1(design, None)
+    for (plane, ang_deg), kinds in TABLE34.items():
+        c1 = kinds["parabolic"][0]
+        shift = {}
+        for label, make, base in (
+            ("helical_40_37", lambda m: pair_40_37(design, ParabolicCrowning(c1), m), hel0),
+            ("spur_25_25_m1", lambda m: pair_spur_m1(design, c1, m), spur0),
+        ):
+            c = contact_at_pitch_position(
+                make(misalignment(plane, ang_deg * DEG, base, s["te_pivot"])), float(s["tol"])
+            )
+            shift[label] = float(c.v1[0]) if c.status[0] == Status.CONVERGED else np.nan
+        rows.append(
+            dict(
+                plane=plane,
+                misalignment_deg=ang_deg,
+                crown_kind="parabolic",
+                crown_amount=c1,
+                helical_shift_mm=shift["helical_40_37"],
+                spur_shift_mm=shift["spur_25_25_m1"],
+                ratio_helical_to_spur=abs(shift["helical_40_37"]) / abs(shift["spur_25_25_m1"]),
+            )
+        )
+    return dict(shift_common_angle=pd.DataFrame(rows))
