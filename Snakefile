@@ -25,6 +25,7 @@ validate(config, "config/schema.yaml")
 CHECK_FILES = []
 FINAL_OUTPUTS = []
 NOTEBOOKS = []
+BENCHMARKS = []  # every job's benchmark file (results/bench/workflow_jobs.csv lists them)
 REPORT_FIGURES = []
 
 
@@ -41,6 +42,7 @@ localrules:
     report,
     bench,
     bench_defaults,
+    workflow_timing,
 
 
 rule all:

@@ -81,3 +81,21 @@ rule bench_defaults:
                 ]
             )
         ).to_csv(output[0], index=False)
+
+
+# Where the time of the last run went, job by job (wall, CPU, compute and overhead seconds):
+# `snakemake --cores 2 results/bench/workflow_jobs.csv` after (or as) a full run.
+rule workflow_timing:
+    input:
+        benchmarks=BENCHMARKS
+        + expand("results/benchmarks/render_{name}.tsv", name=NOTEBOOKS)
+        + ["results/benchmarks/scorecard.tsv", "results/benchmarks/report.tsv"],
+        code=script_lib("workflow/scripts/workflow_timing.py"),
+    output:
+        f"{BENCH_DIR}/workflow_jobs.csv",
+    log:
+        "results/logs/workflow_timing.log",
+    conda:
+        "../envs/gearrep.yaml"
+    script:
+        "../scripts/workflow_timing.py"

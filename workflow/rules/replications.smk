@@ -75,6 +75,8 @@ for _key in REGISTRY:
                 **{k: figure(p, _key) for k, p in _figures.items()},
             log:
                 f"results/logs/{_key}/figures.log",
+            benchmark:
+                f"results/benchmarks/{_key}/figures.tsv"
             conda:
                 "../envs/gearrep.yaml"
             params:
@@ -99,6 +101,8 @@ for _key in REGISTRY:
             touch(f"results/notebooks/{_key}.executed"),
         log:
             notebook=f"results/notebooks/{_key}.ipynb",
+        benchmark:
+            f"results/benchmarks/{_key}/notebook.tsv"
         conda:
             "../envs/gearrep.yaml"
         params:
@@ -113,3 +117,8 @@ for _key in REGISTRY:
     )
     REPORT_FIGURES.extend(_figures[k] for k in _study.REPORT_FIGURES)
     NOTEBOOKS.append(_key)
+    BENCHMARKS.extend(
+        _benchmarks
+        + [f"results/benchmarks/{_key}/{step}.tsv" for step in ("checks", "notebook")]
+        + ([f"results/benchmarks/{_key}/figures.tsv"] if _figures else [])
+    )

@@ -1,0 +1,53 @@
+"""Where the time of a workflow run goes, job by job (Snakemake script of `results/bench/workflow_jobs.csv`).
+
+Reads the Snakemake benchmark file of every job (wall seconds ``s`` and ``cpu_time`` of the job's
+process tree, peak ``max_rss`` in MB) and, for the replication jobs, the compute seconds their
+log records (``<study>.<job>: <seconds> s; ...``, written by replication_io.write_tables). The
+difference between a job's wall time and its compute time is what the job pays to exist: the
+interpreter, the imports, reading its inputs and writing its tables. Rows are sorted by CPU time;
+the last row sums them.
+"""
+
+import re
+from pathlib import Path
+
+import pandas as pd
+
+smk = snakemake  # noqa: F821  (provided by Snakemake)
+
+_COMPUTE = re.compile(r"^[\w.]+: ([0-9.]+) s;", re.MULTILINE)
+
+rows = []
+for tsv in map(Path, smk.input.benchmarks):
+    b = pd.read_csv(tsv, sep="\t").iloc[-1]
+    rel = tsv.relative_to("results/benchmarks").with_suffix("")
+    study, step = (rel.parts[0], rel.parts[1]) if len(rel.parts) == 2 else ("", rel.parts[0])
+    compute = float("nan")
+    log = Path("results/logs", study, f"{step}.log")
+    if study and log.is_file() and (m := _COMPUTE.search(log.read_text())):
+        compute = float(m.group(1))
+    rows.append(
+        {
+            "study": study,
+            "step": step,
+            "wall_s": float(b["s"]),
+            "cpu_s": float(b["cpu_time"]),
+            "compute_s": compute,
+            "max_rss_MB": float(b["max_rss"]),
+        }
+    )
+
+table = pd.DataFrame(rows).sort_values("cpu_s", ascending=False, ignore_index=True)
+table["overhead_s"] = table["wall_s"] - table["compute_s"]
+total = {
+    "study": "all",
+    "step": f"{len(table)} jobs",
+    **table[["wall_s", "cpu_s", "compute_s", "overhead_s"]].sum().to_dict(),
+    "max_rss_MB": table["max_rss_MB"].max(),
+}
+table = pd.concat([table, pd.DataFrame([total])], ignore_index=True)
+Path(smk.output[0]).parent.mkdir(parents=True, exist_ok=True)
+table.to_csv(smk.output[0], index=False, float_format="%.3f")
+Path(smk.log[0]).write_text(
+    f"{len(table) - 1} jobs: {total['cpu_s']:.1f} s CPU, {total['compute_s']:.1f} s compute in the replication jobs\n"
+)
