@@ -580,7 +580,8 @@ def straight_contact_tables(s: dict, design) -> dict:
 def spiral_contact_tables(s: dict, design) -> dict:
     """Job ``bevel_spiral``: sec 5.2 on the 17/17 pair: angular errors with c_1 = 0.002 and no
     relief (Figs 42-43), dE and dH (= dG) = 0.04 with c_1 = 0.02, c_t = 0.08, L_t = 0.16 (Figs 45, 48),
-    combined errors (Figs 50-52) and the dE/dH sweep with c_1 = 0.005 (Fig 53)."""
+    combined errors (Figs 50-52), the stress along the path at dE or dH = 0.08 with c_1 = 0.005,
+    c_t = 0.04 (Figs 46, 49) and the dE/dH sweep with c_1 = 0.005 (Fig 53)."""
     case = "spiral_bevel_17_17"
     rows, curves = [], []
 
@@ -600,6 +601,9 @@ def spiral_contact_tables(s: dict, design) -> dict:
     add("dE_dH_0.04", case, claim="te_amplitude", crown=0.005, mis=mis(0.04, 0.04), **rel)
     for c1 in (0.005, 0.02):
         add(f"dE_dH_0.08_c1_{c1:g}", case, claim="stress_ratio_increase", crown=c1, mis=mis(0.08, 0.08), **rel)
+    rel4 = dict(tip=(0.16, 0.04), root=(0.16, 0.04))
+    add("fig46_dE_0.08", case, claim="stress_peak_mid", crown=0.005, mis=mis(dE=0.08), **rel4)
+    add("fig49_dH_0.08", case, claim="stress_peak_mid", crown=0.005, mis=mis(dH=0.08), **rel4)
     add("aligned_c1_0.005", case, claim="dE_stronger_than_dH", crown=0.005, **rel)
     for x in s["bevel_spiral_sweep"]:
         add(f"sweep_dE_{x:g}", case, claim="dE_stronger_than_dH", crown=0.005, mis=mis(dE=x), **rel)

@@ -394,7 +394,36 @@ def _dE_vs_dH(c):
     )
 
 
+def _stress_peak_mid(c):
+    cv = c.tables.get("bevel_spiral_curves")
+    if cv is None:
+        return None
+    parts, mids = [], []
+    for study in ("fig46_dE_0.08", "fig49_dH_0.08"):
+        d = cv[(cv["study"] == study) & cv["leading"].fillna(False).astype(bool) & cv["p0_MPa"].notna()]
+        if len(d) < 3:
+            return None
+        d = d.sort_values("phi1_rad")
+        mid = d.iloc[int(np.argmin(np.abs(d["phi1_rad"] - 0.5 * (d["phi1_rad"].min() + d["phi1_rad"].max()))))]
+        a, b = d.iloc[0], d.iloc[-1]
+        mids.append(mid["p0_MPa"] > max(a["p0_MPa"], b["p0_MPa"]))
+        parts.append(
+            f"{study}: p0 at the two ends / middle of the loaded path {a['p0_MPa']:.0f} / {b['p0_MPa']:.0f} / "
+            f"{mid['p0_MPa']:.0f} MPa (largest on the path {d['p0_MPa'].max():.0f} MPa at v1 = "
+            f"{d.loc[d['p0_MPa'].idxmax(), 'v1']:.2f}, u1 = {d.loc[d['p0_MPa'].idxmax(), 'u1_rad']:.4f} rad)"
+        )
+    return _verdict(
+        all(mids),
+        not all(mids),
+        "spiral bevel 17/17, c_1 = 0.005, c_t = 0.04, L_t = 0.16 (tip and root relief): "
+        + "; ".join(parts)
+        + "; where an end carries more, it lies on the relief, whose curvature step (eq 13 is C1 only, our reading "
+        "of L_t and c_t) raises the Hertz pressure",
+    )
+
+
 BEVEL_CLAIMS = {
+    "003-S5.2-spiral_bevel_stress_peak_mid": _stress_peak_mid,
     "003-T11-bevel_reduced_all_converge": _t11,
     "003-T12-spiral_bevel_reduced_more_accurate": _t12,
     "003-C6-conventional_about_30pct_bevel": _c6_bevel,
