@@ -646,3 +646,51 @@ def bevel_protocol_items(p: dict) -> list:
             "at the mean cone distance",
         ),
     ]
+
+
+def bevel_errata_rows(design) -> list:
+    """Rows of errata.csv (job ``errata``) for the bevel part: Table 5's base cones, eq (46), eq (45)."""
+    from ...surfaces.bevel import spherical_involute_azimuth
+
+    d = design.pairs["straight_bevel_39_32"]
+    g1, g2 = bevel_gears(d)
+    printed = d["printed_base_cone_deg"]
+    rows = [
+        dict(
+            item="Table 5 base cone angles",
+            finding="the printed 'base cone angles' are the root cones (pitch cone minus the dedendum angle); the base "
+            "cones of the spherical involute follow from sin a_b = sin delta_p cos alpha",
+            evidence=f"printed {printed[0]} / {printed[1]} deg; root cones {g1.root_cone_angle / DEG:.3f} / "
+            f"{g2.root_cone_angle / DEG:.3f} deg; base cones {g1.base_cone_angle / DEG:.3f} / "
+            f"{g2.base_cone_angle / DEG:.3f} deg (pitch cones {g1.pitch_cone_angle / DEG:.3f} / "
+            f"{g2.pitch_cone_angle / DEG:.3f} deg)",
+        )
+    ]
+    a_b, u = g1.base_cone_angle, 48.0 * DEG
+    q = np.tan(a_b) / np.tan(u)
+    eq46 = np.tan(q) - q  # (1/sin a) sin a tan(tan a / tan u) - tan a / tan u, as printed
+    rows.append(
+        dict(
+            item="eq (46) involute polar angle",
+            finding="as printed it is not the polar angle of the spherical involute (it is not even zero on the base "
+            "cone); the azimuth follows from eq (48)-(49) (gearrep.surfaces.bevel.spherical_involute_azimuth)",
+            evidence=f"gear 1 of Table 5, u = 48 deg: eq (46) gives {eq46:.4f} rad, the spherical involute "
+            f"{float(spherical_involute_azimuth(u, a_b)):.5f} rad",
+        )
+    )
+    f1, f2 = mating_bevel_flanks(g1, g2, crowning1=lead_crown(g1, "parabolic", 0.0008))
+    pair = BevelPair(f1, f2, d["n1"], d["n2"], misalignment=BevelMisalignment(d_E=d["table6"]["d_E"]))
+    c = solve_contact(pair, 0.0, np.array([[g1.pitch_cone_angle, g1.mean_cone_distance]]), tol=1e-12)
+    az = np.arctan2(c.position[:, 1], c.position[:, 0])
+    S = pair.shaft_angle
+    u2_45 = np.arccos(np.cos(S) * np.cos(c.u1) + np.sin(S) * np.sin(c.u1) * np.cos(az))
+    rows.append(
+        dict(
+            item="eq (45) u2 from (u1, phi1)",
+            finding="the spherical cosine rule holds only with a common apex; under an offset or axial error u2 "
+            "follows from the point in gear 2's axis frame (gearrep.tca._bevel)",
+            evidence=f"aligned pair: eq (45) exact (tests/unit/test_bevel.py); Table 6's dE = {d['table6']['d_E']} mm: "
+            f"eq (45) gives u2 = {float(u2_45[0]):.6f} rad, the contact {float(c.u2[0]):.6f} rad",
+        )
+    )
+    return rows

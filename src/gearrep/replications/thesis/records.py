@@ -70,6 +70,9 @@ def errata_table(s: dict, design: Design) -> dict:
             "dominates (spur) and show that the helical TE is dominated by the rigid-body term",
         )
     )
+    from .bevel import bevel_errata_rows  # Table 5's base cones, eq (45), eq (46)
+
+    rows += bevel_errata_rows(design)
     return dict(errata=pd.DataFrame(rows))
 
 
