@@ -221,3 +221,27 @@ def test_bad_input():
         BevelMisalignment(d_gamma=1.0)
     with pytest.raises(ValueError, match="spherical"):
         AxialForm(object())
+
+
+def test_relative_curvature_of_the_crowned_straight_pair_closed_form():
+    """At a contact of the aligned straight pair with a parabolic lead crown c1 on gear 1 the relative
+    curvatures are the two profile curvatures (cot(sigma_i) / v, both flanks convex) and, along the
+    generatrix, 2 c1 (to the order of the crown's curvature of its own, ~1e-3 relative)."""
+    from gearrep.curvature import relative_curvature
+    from gearrep.tca import contact_curvatures
+
+    c1 = 0.002
+    pair, g1 = _pair("straight", ParabolicCrowning(c1, v0=straight()[0].mean_cone_distance))
+    g2 = straight()[1]
+    c = solve_contact(
+        pair, np.array([-0.03, 0.0, 0.03]), np.array([[g1.pitch_cone_angle, g1.mean_cone_distance]]), tol=1e-13
+    )
+    assert np.all(c.converged)
+    np.testing.assert_allclose(c.v1, g1.mean_cone_distance, atol=1e-9)  # the crown centres the contact
+    rel = relative_curvature(*contact_curvatures(pair, c))
+    s1 = np.arccos(np.cos(c.u1) / np.cos(g1.base_cone_angle))
+    s2 = np.arccos(np.cos(c.u2) / np.cos(g2.base_cone_angle))
+    k_profile = (1 / np.tan(s1) + 1 / np.tan(s2)) / c.v1
+    k = np.sort(np.abs(np.stack([rel.k1, rel.k2], axis=-1)), axis=-1)
+    np.testing.assert_allclose(k[:, 1], k_profile, rtol=1e-6)
+    np.testing.assert_allclose(k[:, 0], 2 * c1, rtol=2e-3)
