@@ -5,9 +5,8 @@ import numpy as np
 import pytest
 
 from gearrep.curvature import principal_curvatures
-from gearrep.surface import fd_derivatives
+from gearrep.surface import AxialForm, fd_derivatives
 from gearrep.surfaces.bevel import (
-    AxialForm,
     BevelGearData,
     SphericalInvoluteFlank,
     mating_bevel_flanks,

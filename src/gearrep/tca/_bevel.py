@@ -40,7 +40,7 @@ cosine rule; under offsets eq (45) no longer holds, the relations above do. The 
 respect to (u1, v1) follow from those of rho = sqrt(s_x^2 + s_y^2) and s_z:
 dv2 = (rho drho + s_z ds_z)/|s|, du2 = (s_z drho - rho ds_z)/|s|^2. The implementation reuses the cylindrical kernel of the reduced
 formulation on the same flank written in its axis-frame cylindrical coordinates (rho, z)
-(:class:`~gearrep.surfaces.bevel.AxialForm`: u = atan2(rho, z), v = hypot(rho, z), the same
+(:class:`~gearrep.surface.AxialForm`: u = atan2(rho, z), v = hypot(rho, z), the same
 surface and normal) and maps (rho2, z2) to (u2, v2) with those relations, so both formulations
 report member 2 in the thesis's (u2, v2).
 """
@@ -53,9 +53,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..frames import rot_y, rot_z
+from ..surface import AxialForm
 from ._pair import GearPair
 
-__all__ = ["BevelMisalignment", "BevelPair"]
+__all__ = ["BevelMisalignment", "BevelPair", "spherical_kernel"]
 
 
 @dataclass(frozen=True)
@@ -123,8 +124,6 @@ class BevelPair(GearPair):
     def axial_view(self) -> BevelPair:
         """The same pair with member 2 in its axis-frame cylindrical coordinates (AxialForm)."""
         if self._axial is None:
-            from ..surfaces.bevel import AxialForm
-
             view = copy.copy(self)
             view.flank2 = AxialForm(self.flank2)
             view._axial = None
