@@ -67,7 +67,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..surface import Surface, SurfacePoint
-from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite
+from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite, _flank_options
 
 __all__ = [
     "spherical_involute_azimuth",
@@ -239,21 +239,8 @@ class SphericalInvoluteFlank(Surface):
     ):
         if not isinstance(gear, BevelGearData):
             raise ValueError(f"gear must be a BevelGearData, got {type(gear).__name__}")
-        if side not in (1, -1):
-            raise ValueError(f"side must be +1 or -1, got {side!r}")
-        if hand not in (1, -1):
-            raise ValueError(f"hand must be +1 or -1, got {hand!r}")
-        if crowning is not None and not callable(crowning):
-            raise ValueError("crowning must be a crowning object (callable v -> (d, d', d'')) or None")
-        relief = tuple(relief)
-        for r in relief:
-            if not isinstance(r, (TipRelief, RootRelief)):
-                raise ValueError(f"relief entries must be TipRelief or RootRelief, got {type(r).__name__}")
         self.gear = gear
-        self.side = int(side)
-        self.hand = int(hand)
-        self.crowning = crowning
-        self.relief = relief
+        self.side, self.hand, self.crowning, self.relief = _flank_options(side, hand, crowning, relief)
         self.a_b = gear.base_cone_angle
         self.sin_ab = np.sin(self.a_b)
         self.delta_p = gear.pitch_cone_angle
