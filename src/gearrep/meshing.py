@@ -49,6 +49,7 @@ __all__ = [
     "pair_te_curves",
     "upper_envelope",
     "handover_jump",
+    "handover_gap",
 ]
 
 
@@ -446,3 +447,23 @@ def handover_jump(curves, lead, envelope) -> float:
         ]
         jump = max(jump, min(both) if both else abs(envelope[i + 1] - envelope[i]))
     return jump
+
+
+def handover_gap(curves, lead, envelope) -> float:
+    """Largest TE jump [rad] of the transmitted TE at a hand-over that is not a crossing.
+
+    Sign-aware companion of :func:`handover_jump`: where the leading pair changes from a to b
+    between neighbouring grid angles i and i + 1 and both pairs are engaged at both angles, their
+    (continuous) TE curves have crossed between the samples (TE_a - TE_b changes sign), so the
+    transmitted TE is continuous there: gap 0, however steep the curves (e.g. near tip relief).
+    Otherwise a pair entered or left its flank while the other still led: the gap is the step of
+    the envelope |env[i + 1] - env[i]|. 0 without a hand-over."""
+    curves = np.asarray(curves, float)
+    envelope = np.asarray(envelope, float)
+    gap = 0.0
+    for i in np.flatnonzero(lead[1:] != lead[:-1]):
+        a, b = lead[i], lead[i + 1]
+        if np.all(np.isfinite(curves[[a, b]][:, [i, i + 1]])):
+            continue
+        gap = max(gap, abs(envelope[i + 1] - envelope[i]))
+    return gap

@@ -17,7 +17,7 @@ import numpy as np
 
 from . import frames
 
-__all__ = ["Surface", "SurfacePoint", "RotatedSurface", "cross", "fd_derivatives", "unit"]
+__all__ = ["Surface", "SurfacePoint", "RotatedSurface", "AxialForm", "cross", "fd_derivatives", "unit"]
 
 
 def unit(v: np.ndarray, axis: int = -1) -> np.ndarray:
@@ -154,3 +154,59 @@ class RotatedSurface(Surface):
     def contains(self, u, v, tol: float = 1e-9):
         """The wrapped surface's ``contains`` (parameters are unchanged by the motion)."""
         return self.surface.contains(u, v, tol)
+
+
+class AxialForm(Surface):
+    """A spherical flank (``flank.spherical``: u = polar angle from its axis z, v = distance from
+    the apex, e.g. :class:`gearrep.surfaces.bevel.SphericalInvoluteFlank`) reparameterised by the cylindrical coordinates of its own axis frame:
+    r(rho, z) = S(u(rho, z), v(rho, z)) with u = atan2(rho, z), v = hypot(rho, z).
+
+    This is the explicit form about the member's own axis that the reduced TCA (eq 35-40) reads
+    (u = distance from the axis, v = axial coordinate); same points, same normal orientation
+    (d(u, v)/d(rho, z) has determinant 1/v > 0). Derivatives by the chain rule with
+    u_rho = z/v^2, u_z = -rho/v^2, v_rho = rho/v, v_z = z/v,
+    u_rhorho = -2 rho z/v^4, u_rhoz = (rho^2 - z^2)/v^4, u_zz = 2 rho z/v^4,
+    v_rhorho = z^2/v^3, v_rhoz = -rho z/v^3, v_zz = rho^2/v^3.
+    """
+
+    cylindrical = True
+
+    def __init__(self, flank: Surface):
+        if not getattr(flank, "spherical", False):
+            raise ValueError("flank must be a spherical flank (flank.spherical = True)")
+        self.flank = flank
+        for name in ("outward_sign", "gear", "side"):
+            if hasattr(flank, name):
+                setattr(self, name, getattr(flank, name))
+
+    def position(self, rho, z):
+        rho, z = np.broadcast_arrays(np.asarray(rho, float), np.asarray(z, float))
+        return self.flank.position(np.arctan2(rho, z), np.hypot(rho, z))
+
+    def evaluate(self, rho, z) -> SurfacePoint:
+        rho, z = np.broadcast_arrays(np.asarray(rho, float), np.asarray(z, float))
+        v = np.hypot(rho, z)
+        P = self.flank.evaluate(np.arctan2(rho, z), v)
+        v2, v3, v4 = v * v, v**3, v**4
+        ua, ub = (z / v2)[..., None], (-rho / v2)[..., None]
+        va, vb = (rho / v)[..., None], (z / v)[..., None]
+        uaa, uab, ubb = (
+            (-2 * rho * z / v4)[..., None],
+            ((rho * rho - z * z) / v4)[..., None],
+            (2 * rho * z / v4)[..., None],
+        )
+        vaa, vab, vbb = ((z * z / v3)[..., None], (-rho * z / v3)[..., None], (rho * rho / v3)[..., None])
+        r_a = P.r_u * ua + P.r_v * va
+        r_b = P.r_u * ub + P.r_v * vb
+
+        def second(pu, pv, qu, qv, uxy, vxy):
+            return P.r_uu * pu * qu + P.r_uv * (pu * qv + qu * pv) + P.r_vv * pv * qv + P.r_u * uxy + P.r_v * vxy
+
+        return SurfacePoint(
+            P.r,
+            r_a,
+            r_b,
+            second(ua, va, ua, va, uaa, vaa),
+            second(ua, va, ub, vb, uab, vab),
+            second(ub, vb, ub, vb, ubb, vbb),
+        )

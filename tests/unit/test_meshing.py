@@ -186,3 +186,21 @@ def test_envelope_jumps_where_a_linear_curve_leaves_its_flank():
         pair_te_curves(phi, s * phi, -1.0, phi)
     with pytest.raises(ValueError, match="interpolation"):
         pair_te_curves(phi, s * phi, p, phi, interpolation="spline")
+
+
+def test_handover_gap_is_zero_at_a_crossing_and_the_step_at_an_edge():
+    from gearrep.meshing import handover_gap, handover_jump, upper_envelope
+
+    x = np.linspace(-1.0, 1.0, 9)
+    # two steep curves crossing between grid points: continuous transmitted TE
+    cross = np.stack([-5.0 * (x - 0.05), 5.0 * (x - 0.05)])
+    env, lead = upper_envelope(cross)
+    assert handover_jump(cross, lead, env) > 0.1  # grid-limited difference, not a jump
+    assert handover_gap(cross, lead, env) == 0.0
+    # pair b enters above pair a (a still engaged): a step of the envelope
+    edge = np.stack([np.zeros_like(x), np.where(x > 0.1, 1.0, -np.inf)])
+    env, lead = upper_envelope(edge)
+    assert handover_gap(edge, lead, env) == pytest.approx(1.0)
+    # no hand-over
+    env, lead = upper_envelope(np.stack([x, x - 1.0]))
+    assert handover_gap(np.stack([x, x - 1.0]), lead, env) == 0.0

@@ -48,7 +48,7 @@ PARAM_COUNTS = {
     "params_003_spiral_bevel_17_17.csv": 30,
 }
 CLAIM_FILE = "claims_003.csv"
-CLAIM_COUNT = 33
+CLAIM_COUNT = 34  # + 003-S5.2-spiral_bevel_stress_peak_mid (Figs 46, 49)
 
 #: how the OCR text renders numbers that are stored in E-notation or stated in words
 OCR_FORMS = {

@@ -1,4 +1,4 @@
 """Tooth and tool surfaces: one module per family, each following the protocol of
 :mod:`gearrep.surface`."""
 
-__all__ = ["analytic", "catt", "hob", "involute", "novikov", "rack"]
+__all__ = ["analytic", "bevel", "catt", "hob", "involute", "novikov", "rack"]

@@ -279,6 +279,22 @@ class RootRelief:
         return np.where(on, k * w * w, 0.0), np.where(on, -2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
 
 
+def _flank_options(side, hand, crowning, relief):
+    """Checked (side, hand, crowning, relief tuple) of a flank: side and hand +-1, crowning a crowning
+    object or None, relief a sequence of TipRelief / RootRelief (shared by the flank families)."""
+    if side not in (1, -1):
+        raise ValueError(f"side must be +1 or -1, got {side!r}")
+    if hand not in (1, -1):
+        raise ValueError(f"hand must be +1 or -1, got {hand!r}")
+    if crowning is not None and not callable(crowning):
+        raise ValueError("crowning must be a crowning object (callable v -> (d, d', d'')) or None")
+    relief = tuple(relief)
+    for r in relief:
+        if not isinstance(r, (TipRelief, RootRelief)):
+            raise ValueError(f"relief entries must be TipRelief or RootRelief, got {type(r).__name__}")
+    return int(side), int(hand), crowning, relief
+
+
 # ----------------------------------------------------------------------------------------------
 # gear data (Table 1, corrected) and the flank surface
 # ----------------------------------------------------------------------------------------------
@@ -413,23 +429,10 @@ class InvoluteFlank(Surface):
     ):
         if not isinstance(gear, InvoluteGearData):
             raise ValueError(f"gear must be an InvoluteGearData, got {type(gear).__name__}")
-        if side not in (1, -1):
-            raise ValueError(f"side must be +1 or -1, got {side!r}")
-        if hand not in (1, -1):
-            raise ValueError(f"hand must be +1 or -1, got {hand!r}")
         if helix_form not in ("true", "asin"):
             raise ValueError(f"helix_form must be 'true' or 'asin', got {helix_form!r}")
-        if crowning is not None and not callable(crowning):
-            raise ValueError("crowning must be a crowning object (callable v -> (d, d', d'')) or None")
-        relief = tuple(relief)
-        for r in relief:
-            if not isinstance(r, (TipRelief, RootRelief)):
-                raise ValueError(f"relief entries must be TipRelief or RootRelief, got {type(r).__name__}")
         self.gear = gear
-        self.side = int(side)
-        self.hand = int(hand)
-        self.crowning = crowning
-        self.relief = relief
+        self.side, self.hand, self.crowning, self.relief = _flank_options(side, hand, crowning, relief)
         self.helix_form = helix_form
         self.r_b = gear.r_b
         self.r_p = gear.r_p

@@ -73,6 +73,10 @@ and the point solve is singular. Pass ``v1=`` to fix member 1's face-width coord
 unknowns become (u1) [reduced] or (u1, u2, v2, phi2) [conventional, 5 equations, 4 unknowns,
 least squares].
 
+Bevel pairs (intersecting axes, thesis sec 3.3 and 5, misalignments eq 47-48): :class:`BevelPair`
+and :class:`BevelMisalignment` (private module ``_bevel``, whose docstring derives the explicit
+spherical form of member 2 used by the reduced formulation); every solve here accepts them.
+
 Start strategies and solver variants (plain / damped / domain-kept / seeded / robust Newton for
 the conventional formulation, plain / damped / robust for the reduced one, random and
 line-of-action starts) are in this package too (private module ``_starts``).
@@ -82,6 +86,7 @@ component) are carried as extra unknowns frozen by identity rows with zero resid
 ``newton`` hands ``fun`` only the rows still iterating.
 """
 
+from ._bevel import BevelMisalignment, BevelPair
 from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
 from ._formulations import (
     conventional_system,
@@ -112,6 +117,8 @@ from ._starts import (
 __all__ = [
     "Misalignment",
     "GearPair",
+    "BevelMisalignment",
+    "BevelPair",
     "ContactPoints",
     "transmission_error",
     "normal_derivatives",

@@ -37,8 +37,13 @@ def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     """Explicit back-substitution of the reduced formulation (eq 37-44) and derivatives w.r.t. (u1, v1).
 
     Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f) and, with
-    ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1).
+    ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1). A spherical member 2
+    (bevel pairs, ``flank2.spherical``) goes through :func:`gearrep.tca._bevel.spherical_kernel`.
     """
+    if getattr(pair.flank2, "spherical", False):
+        from ._bevel import spherical_kernel
+
+        return spherical_kernel(pair, u1, v1, phi1, derivs=derivs)
     P1 = pair.flank1.evaluate(u1, v1)
     R1 = pair.R1(phi1)
     r = _mv(R1, P1.r)
@@ -283,8 +288,13 @@ def solve_contact(
         if not np.all(np.isfinite(v1a)):
             raise ValueError("v1 must be finite")
         start[:, 1] = v1a
-    if formulation == "reduced" and not getattr(pair.flank2, "cylindrical", False):
-        raise ValueError("the reduced formulation needs flank2 in cylindrical form (flank2.cylindrical = True)")
+    if formulation == "reduced" and not (
+        getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False)
+    ):
+        raise ValueError(
+            "the reduced formulation needs flank2 in cylindrical or spherical form "
+            "(flank2.cylindrical = True or flank2.spherical = True)"
+        )
 
     # dropped normal component: the largest of member 1's normal at the start
     if drop is None:

@@ -14,7 +14,11 @@ What is replicated (one job per table group, :data:`JOBS`):
   sec 6.1 path study with offset phi2 guesses (:mod:`.path_guess`) and the helical/spur contact
   shift at a common angle and crown (:func:`.te.shift_common_angle_table`).
 
-Not computed: straight and spiral bevel gears (no spherical-involute surfaces in gearrep). The thesis's frame and printed formulas are in :mod:`.model`; its design data
+* straight and spiral bevel gears (sec 5.1-5.2, Tables 11-12; :mod:`.bevel`): their convergence
+  rows in ``convergence.csv`` and the contact studies (TE, path, Hertz pressure) of jobs
+  ``bevel_straight`` and ``bevel_spiral``.
+
+The thesis's frame and printed formulas are in :mod:`.model`; its design data
 enter only through :func:`params_from_published` (:mod:`.design`); checks and claims are in
 :mod:`.facts` and :mod:`.claims`.
 
@@ -32,6 +36,7 @@ import numpy as np
 from ... import settings as st
 from .._face import Job, run_jobs
 from .bench import bench_cases
+from .bevel import bevel_pair, spiral_contact_tables, straight_contact_tables
 from .claims import CLAIMS, claim_verdicts, conv_row
 from .convergence import (
     OUTCOMES,
@@ -130,6 +135,72 @@ SETTINGS = st.declare(
         ge=5,
         le=2001,
     ),
+    bevel_n_starts=st.integer(
+        1000, "1", "Tables 11-12 random starts per bevel pair (as in the thesis)", ge=10, le=100000
+    ),
+    bevel_conv_crown_straight_per_mm=st.number(
+        0.002857 / 2.5,
+        "1/mm",
+        "Table 11 pair's parabolic lead crown on gear 1 (not printed): Table 10's a_1 = 0.002857 (m = 1) scaled to m = 2.5 mm",
+        gt=0,
+        le=0.1,
+    ),
+    bevel_conv_crown_spiral=st.number(
+        0.002,
+        "1/module",
+        "Table 12 pair's parabolic lead crown on gear 1 (not printed): Table 7's smallest c_1",
+        gt=0,
+        le=0.1,
+    ),
+    bevel_conv_crown_spiral_sensitivity=st.array(
+        [0.005, 0.02],
+        "1/module",
+        "further c_1 of the Table 12 study (plain, reduced, reduced_robust only): Figs 46-53 and Table 7's largest",
+        st.number(None, "1/module", "", gt=0, le=0.1),
+        min_items=0,
+    ),
+    bevel_te_n_points=st.integer(
+        31,
+        "1",
+        "bevel TE grid points per mesh cycle (sec 5.1-5.2 studies; 4 n + 1 angles per tooth pair)",
+        ge=5,
+        le=2001,
+    ),
+    bevel_straight_crown_per_mm=st.array(
+        [0.0008, 0.008],
+        "1/mm",
+        "sec 5.1 small and large lead crown (not printed): Table 7's c_1 range 0.002-0.02 (module units) scaled to m = 2.5 mm",
+        st.number(None, "1/mm", "", gt=0, le=0.1),
+        min_items=2,
+        max_items=2,
+    ),
+    bevel_straight_relief_mm=st.array(
+        [0.4, 0.2],
+        "mm",
+        "sec 5.1 tip and root relief length L and amount c on gear 1 (not printed): Table 7's L_t = 0.16, c_t = 0.08 (module units) scaled to m = 2.5 mm",
+        st.number(None, "mm", "", gt=0, le=5.0),
+        min_items=2,
+        max_items=2,
+    ),
+    bevel_straight_shaft_angles_deg=st.array(
+        [0.1, 0.2],
+        "deg",
+        "shaft-angle errors of the crown-type comparison (Figs 38-39; Table 6's 0.2 deg and half of it)",
+        st.number(None, "deg", "", gt=0, lt=5),
+    ),
+    bevel_spiral_angles_deg=st.array(
+        [0.05, 0.1, 0.2],
+        "deg",
+        "spiral pair angular errors (Table 7 range 0-0.2 deg)",
+        st.number(None, "deg", "", gt=0, lt=5),
+    ),
+    bevel_spiral_sweep=st.array(
+        [0.02, 0.04, 0.06, 0.08, 0.1],
+        "module",
+        "dE, dH and dE = dH values of the Fig 53 sweep (Table 7 range 0.02-0.1)",
+        st.number(None, "module", "", gt=0, le=0.5),
+        min_items=2,
+    ),
     te_pivot=st.choice(
         "pitch_point",
         ("pitch_point", "axis"),
@@ -155,6 +226,8 @@ JOBS = {
                 "starts_sec61",
                 "starts_helical",
                 "timing",
+                "bevel_references",
+                "bevel_accuracy",
             )
         },
         "every convergence study, its per-start tables, the verified references and the Table 10 timing",
@@ -192,6 +265,18 @@ JOBS = {
         {"path_guess": f"{_DIR}/path_guess.csv"},
         "sec 6.1 path study: conventional TCA along the path from phi2 starts offset 0.03..0.3 rad",
         priority=4,
+    ),
+    "bevel_straight": Job(
+        straight_contact_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("bevel_straight_summary", "bevel_straight_curves")},
+        "straight bevel 39/32 (sec 5.1): TE continuity with and without relief, lead crown and contact pressure, crown types",
+        priority=10,
+    ),
+    "bevel_spiral": Job(
+        spiral_contact_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("bevel_spiral_summary", "bevel_spiral_curves")},
+        "spiral bevel 17/17 (sec 5.2): TE under angular and linear errors, stress and contact deviation (Fig 53 sweep)",
+        priority=10,
     ),
     "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
     "protocol": Job(
@@ -270,4 +355,5 @@ __all__ = [
     "crown_amounts",
     "reference_pressure",
     "path_pressure",
+    "bevel_pair",
 ]

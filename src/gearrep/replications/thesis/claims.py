@@ -2,8 +2,8 @@
 
 :data:`CLAIMS` maps a claim id to a function of a :class:`Context` returning ``(holds, evidence)``
 (built by :func:`verdict` from the claim's confirm_if / refute_if criteria on file), a string
-(the reason the claim is not evaluated), or None (the tables needed are not there). Bevel claims
-are not evaluated (see :mod:`.facts`).
+(the reason the claim is not evaluated), or None (the tables needed are not there). The bevel
+claims' predicates are in :mod:`.bevel_checks`.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
+from .bevel_checks import BEVEL_CLAIMS
 from .design import Design, design_pair
 
 NOT_COMPUTED_STRESS = (
@@ -573,6 +574,9 @@ CLAIMS = {
     "003-C6-helical_shift_much_larger_than_spur": _helical_shift_vs_spur,
     "003-S4.2-log_highest_stress_ratio_0.2": _log_highest_stress_ratio,
 }
+
+
+CLAIMS.update(BEVEL_CLAIMS)  # sec 5.1-5.2, Tables 11-12 and the bevel part of the conclusions
 
 
 def claim_verdicts(tables: dict, design: Design) -> dict:

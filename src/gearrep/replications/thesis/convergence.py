@@ -613,6 +613,10 @@ def convergence_tables(s: dict, design: Design) -> dict:
     sec61_studies(s, design, out)
     helical_studies(s, design, out)
     out.rows += helical_sensitivity(s, design)
+    from .bevel import bevel_convergence  # straight and spiral bevel pairs (Tables 11-12)
+
+    bev = bevel_convergence(s, design)
+    out.rows += bev["rows"]
     detail = pd.DataFrame(out.rows)
     tables = dict(
         convergence=detail[CONVERGENCE_COLUMNS].copy(),
@@ -624,6 +628,8 @@ def convergence_tables(s: dict, design: Design) -> dict:
         res = out.details[key]
         tables[name] = starts_table(res, ThesisFrame.of(res.pair))
     tables["timing"] = timing_table(s, out.details["table10"])
+    tables["bevel_references"] = bev["refs"]
+    tables["bevel_accuracy"] = bev["accuracy"]
     return tables
 
 

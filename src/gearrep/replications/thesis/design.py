@@ -95,6 +95,9 @@ def params_from_published(published) -> Design:
             poisson_ratio=float(h40["poisson_ratio"]),
         ),
     }
+    from .bevel import bevel_params  # straight_bevel_39_32 and spiral_bevel_17_17 (sec 5.1-5.2)
+
+    pairs.update(bevel_params(published))
     mrad_in, mrad_out = float(m1["misalignment_in_plane_mrad"]), float(m1["misalignment_out_of_plane_mrad"])
     if mrad_in != mrad_out:
         raise ValueError(f"spur_25_25_m1: the TE study uses one angle for both planes, got {mrad_in} and {mrad_out}")

@@ -12,6 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ... import checks as ck
+from .bevel_checks import bevel_fact_key, bevel_facts
 from .claims import NOT_COMPUTED_STRESS, claim_verdicts, conv_row
 from .design import params_from_published
 
@@ -435,10 +436,11 @@ _CROWN_LETTER = {"circular": "c", "parabolic": "p", "logarithmic": "l"}
 
 def fact_key(row: pd.Series) -> str | None:
     """Key of the computed fact (:func:`_facts`, :func:`_te_facts`) for a published seed-003 value,
-    or None (not computed: bevel, stress/pressure, crowning amounts as inputs). Uses the id naming of
+    or None (not computed: stress/pressure, crowning amounts as inputs; bevel values go to
+    :func:`.bevel_checks.bevel_fact_key`). Uses the id naming of
     data/published/values_003_*.csv: ``003-<tag>-<row key>-<quantity>``."""
     if _is_bevel(row):
-        return None
+        return bevel_fact_key(row)
     tag = str(row["id"]).split("-")[1]
     q = str(row["quantity"])
     rk = _parse_row(row["row"])
@@ -556,7 +558,7 @@ def checks(tables: dict, published) -> dict:
     same tolerance in counts.
     """
     vals = published.values[published.values["seed"] == SEED]
-    facts = {**_facts(tables), **_te_facts(tables), **_stress_facts(tables, vals)}
+    facts = {**_facts(tables), **_te_facts(tables), **bevel_facts(tables), **_stress_facts(tables, vals)}
     _add_reading_notes(facts, tables, vals)
     recs = []
     for _, r in vals.iterrows():
@@ -584,7 +586,7 @@ def checks(tables: dict, published) -> dict:
     verdicts = claim_verdicts(tables, params_from_published(published))
     crecs = []
     for _, c in cl.iterrows():
-        if _is_bevel(c):
+        if _is_bevel(c) and c["id"] not in verdicts:
             crecs.append(ck.not_computed(c.to_frame().T, NOT_COMPUTED_BEVEL).iloc[0].to_dict())
         elif c["id"] in verdicts and isinstance(verdicts[c["id"]], tuple):
             holds, evidence = verdicts[c["id"]]

@@ -70,6 +70,9 @@ def errata_table(s: dict, design: Design) -> dict:
             "dominates (spur) and show that the helical TE is dominated by the rigid-body term",
         )
     )
+    from .bevel import bevel_errata_rows  # Table 5's base cones, eq (45), eq (46)
+
+    rows += bevel_errata_rows(design)
     return dict(errata=pd.DataFrame(rows))
 
 
@@ -127,5 +130,8 @@ def protocol_table(s: dict, design: Design) -> dict:
             f"window sweep: {p['n_starts_window']}",
         ),
     ]
+    from .bevel import bevel_protocol_items  # Tables 11-12 and the sec 5.1-5.2 studies
+
+    items += bevel_protocol_items(p)
     run_info = pd.DataFrame([{k: (str(v) if isinstance(v, (list, dict)) else v) for k, v in s.items()}])
     return dict(protocol=pd.DataFrame(items, columns=["item", "value"]), run_info=run_info)

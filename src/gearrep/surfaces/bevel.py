@@ -1,0 +1,379 @@
+"""Spherical-involute straight and (logarithmic) spiral bevel tooth flanks with crowning and relief.
+
+Source: Temirkhan, PhD thesis 2023 (seed 003): the spherical involute eq (6)-(7) = eq (48)-(50) of
+sec 5.2 (the OCR numbers the shaft-angle change of sec 5.1 "48" too), the spiral lengthwise shape
+eq (8)-(9) = eq (51); the crowning and relief of the cylindrical family (eq 10-13,
+:mod:`gearrep.surfaces.involute`) carried over to the cone. Reading notes: docs/reading-notes.md,
+section "Temirkhan thesis (seed 003)".
+
+Parameters (the thesis's spherical coordinates, sec 3.3)
+-------------------------------------------------------
+``u`` is the polar angle between the gear axis z_i and the flank point (rad) and ``v`` the distance
+of the point from the cone apex (the cone distance, eq 50: R_i = v_i). In the gear's own frame S_i
+(apex at the origin)
+
+    r(u, v) = v ( sin u cos psi(u, v),  sin u sin psi(u, v),  cos u )                      (A)
+
+with the azimuth
+
+    psi(u, v) = side * ( c - I(u) - delta(u, v) / (v sin a_b) ) + hand * theta(v),         (B)
+    I(u)      = sigma / sin a_b - atan( tan sigma / sin a_b ),  cos sigma = cos u / cos a_b,
+    c         = pi / (2 N) + I(delta_p)          (half tooth angle + I at the pitch cone),
+    theta(v)  = tan(Phi) / sin(a_b) * ln(R_m / v)                               (eq 51).
+
+a_b is the base cone angle, delta_p the pitch cone angle. I(u) is the azimuth of the spherical
+involute that leaves the base cone at azimuth 0, written in u instead of the generating angle
+beta of eq (48)-(49): sigma = beta sin a_b is the unwound great-circle arc and eq (49) is Napier's
+rule cos u = cos a_b cos sigma for the right spherical triangle (pole, tangency point on the base
+cone, flank point). Eq (48) with theta = 0 gives the same points (tested). The tooth is symmetric
+about the +x_i axis; ``side = +1`` is the flank on its +y_i side. ``v`` runs over the face
+[R_e - b, R_e]; R_m = R_e - b/2.
+
+Properties used by the tests and the TCA:
+* every point lies on the sphere |r| = v about the apex (A);
+* the great circle normal to the profile at a point is tangent to the base cone
+  (|((r x n) / |r|) . z| = sin a_b), which is what makes the profile a spherical involute, and two
+  such flanks with equal pressure angle on rolling pitch cones are conjugate (line contact along a
+  generatrix through the apex, zero TE);
+* turning the profile about the axis by dpsi moves it along its normal by v sin(a_b) dpsi (the
+  spherical counterpart of the base-pitch property), so ``delta`` in (B) is an offset along the
+  normal in length units (exact for constant delta, first order otherwise);
+* the spiral (eq 51): at cone distance v the profile is turned by theta(v); the curve it traces on
+  the base cone crosses the generatrices at the constant angle Phi, i.e. Phi is the spiral angle
+  on the base cone (the angle in the tangent plane of action), not on the pitch cone. Two flanks of
+  opposite hands with equal Phi (and equal pressure angle) are conjugate: the flanks are the loci of
+  one logarithmic spiral drawn in the plane of action, which rolls on both base cones.
+
+Choices the thesis leaves open (stated here, used by the replication)
+--------------------------------------------------------------------
+* Base cones: from the pitch cones and the pressure angle, sin a_b = sin delta_p cos alpha (the
+  pressure angle is the angle at the pitch point between the profile normal great circle and the
+  meridian's normal). Table 5's "base cone angles" 47.79 / 36.53 deg are the root cones
+  (delta_p - atan(1.25 m / R_e)); used as base cones the pair is not conjugate.
+* Tooth depth tapers to the apex: addendum angle atan(h_a m / R_e), dedendum angle
+  atan(h_f m / R_e) (m = module at the outer cone distance R_e = N m / (2 sin delta_p)).
+* Tip/root relief: eq (13) in the polar angle u (``TipRelief(u0, length, amount)`` with u0 and
+  length in rad, the amount in length along the normal); :func:`relief_from_length` converts a
+  relief length L (length units along the profile at the mean cone distance) into the angle
+  L / R_m starting L / R_m below the tip.
+* Longitudinal crowning (parabolic, circular, logarithmic, eq 10-12 via the classes of
+  :mod:`gearrep.surfaces.involute`) is a function of the cone distance v with v0 = R_m.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..surface import Surface, SurfacePoint
+from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite, _flank_options
+
+__all__ = [
+    "spherical_involute_azimuth",
+    "spherical_involute_eq48",
+    "BevelGearData",
+    "SphericalInvoluteFlank",
+    "mating_bevel_flanks",
+    "relief_from_length",
+]
+
+
+def _sigma_derivs(u, a_b):
+    """sigma, I(u), I'(u), I''(u) of the spherical involute with base cone ``a_b``.
+
+    I'(u) = cos a_b sin sigma / (sin a_b sin u);
+    I''(u) = cos sigma / (sin a_b sin sigma) - cos a_b sin sigma cos u / (sin a_b sin^2 u).
+    NaN inside the base cone (u < a_b)."""
+    sa, ca = np.sin(a_b), np.cos(a_b)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cs = np.cos(u) / ca  # 1 + rounding on the base cone itself
+        sig = np.arccos(np.where(cs <= 1.0 + 1e-14, np.minimum(cs, 1.0), np.nan))
+        ss = np.sin(sig)
+        su = np.sin(u)
+        inv = sig / sa - np.arctan(np.tan(sig) / sa)
+        d1 = ca * ss / (sa * su)
+        d2 = np.cos(sig) / (sa * ss) - ca * ss * np.cos(u) / (sa * su * su)
+    return sig, inv, d1, d2
+
+
+def spherical_involute_azimuth(u, base_cone_angle):
+    """Azimuth I(u) of the spherical involute of base cone ``base_cone_angle`` (rad) at polar angle
+    ``u`` (rad), for the involute leaving the base cone at azimuth 0 (module docstring, eq B).
+
+    NaN for u < base_cone_angle (inside the base cone)."""
+    a = _check_finite("base_cone_angle", base_cone_angle)
+    if not 0.0 < a < np.pi / 2:
+        raise ValueError(f"base_cone_angle must be in (0, pi/2) rad, got {base_cone_angle!r}")
+    return _sigma_derivs(np.asarray(u, float), a)[1]
+
+
+def spherical_involute_eq48(beta, R, base_cone_angle, theta=0.0, sign: int = 1):
+    """The thesis's eq (48) (= eq 7 for theta = 0, eq 8 with the spiral turn): the point of the
+    spherical involute with generating angle ``beta`` at cone distance ``R``, turned by
+    ``sign * theta`` about the axis. Kept as printed for the evidence test against (A)-(B)."""
+    a = float(base_cone_angle)
+    sa, ca = np.sin(a), np.cos(a)
+    beta = np.asarray(beta, float)
+    R = np.asarray(R, float)
+    g = beta + sign * np.asarray(theta, float)
+    cb, sb = np.cos(beta * sa), np.sin(beta * sa)
+    return np.stack(
+        [R * (cb * sa * np.cos(g) + sb * np.sin(g)), R * (cb * sa * np.sin(g) - sb * np.cos(g)), R * cb * ca], axis=-1
+    )
+
+
+@dataclass(frozen=True)
+class BevelGearData:
+    """Size of one member of a bevel pair with intersecting axes.
+
+    ``n_teeth`` and ``mate_teeth`` (the mating member's) with ``shaft_angle`` fix the pitch cone;
+    ``module`` is the transverse module at the outer cone distance, ``pressure_angle`` the profile
+    angle at the pitch cone, ``face_width`` b along the generatrix, ``spiral_angle`` Phi of eq (51)
+    (on the base cone; 0 for straight teeth), ``h_a``, ``h_f`` addendum and dedendum coefficients.
+    """
+
+    n_teeth: int
+    mate_teeth: int
+    module: float
+    pressure_angle: float
+    face_width: float
+    shaft_angle: float = np.pi / 2
+    spiral_angle: float = 0.0
+    h_a: float = 1.0
+    h_f: float = 1.25
+
+    def __post_init__(self):
+        for n in ("n_teeth", "mate_teeth"):
+            v = getattr(self, n)
+            if int(v) != v or v < 3:
+                raise ValueError(f"{n} must be an integer >= 3, got {v!r}")
+        _check_finite("module", self.module, positive=True)
+        a = _check_finite("pressure_angle", self.pressure_angle)
+        if not 0.0 < a < np.pi / 2:
+            raise ValueError(f"pressure_angle must be in (0, pi/2) rad, got {self.pressure_angle!r}")
+        s = _check_finite("shaft_angle", self.shaft_angle)
+        if not 0.0 < s < np.pi:
+            raise ValueError(f"shaft_angle must be in (0, pi) rad, got {self.shaft_angle!r}")
+        p = _check_finite("spiral_angle", self.spiral_angle)
+        if not 0.0 <= p < np.pi / 2:
+            raise ValueError(f"spiral_angle must be in [0, pi/2) rad, got {self.spiral_angle!r}")
+        for n in ("h_a", "h_f"):
+            _check_finite(n, getattr(self, n), positive=True)
+        b = _check_finite("face_width", self.face_width, positive=True)
+        if not b < self.outer_cone_distance:
+            raise ValueError(
+                f"face_width must be < the outer cone distance {self.outer_cone_distance!r}, got {self.face_width!r}"
+            )
+
+    @property
+    def pitch_cone_angle(self) -> float:
+        """delta_p: tan delta_p = sin(Sigma) / (N_mate / N + cos(Sigma))."""
+        S = self.shaft_angle
+        return float(np.arctan2(np.sin(S), self.mate_teeth / self.n_teeth + np.cos(S)))
+
+    @property
+    def base_cone_angle(self) -> float:
+        """a_b: sin a_b = sin delta_p cos alpha."""
+        return float(np.arcsin(np.sin(self.pitch_cone_angle) * np.cos(self.pressure_angle)))
+
+    @property
+    def outer_cone_distance(self) -> float:
+        """R_e = N m / (2 sin delta_p) (the same for both members)."""
+        return 0.5 * self.n_teeth * self.module / np.sin(self.pitch_cone_angle)
+
+    @property
+    def mean_cone_distance(self) -> float:
+        """R_m = R_e - b/2 (eq 51)."""
+        return self.outer_cone_distance - 0.5 * self.face_width
+
+    @property
+    def addendum_angle(self) -> float:
+        return float(np.arctan(self.h_a * self.module / self.outer_cone_distance))
+
+    @property
+    def dedendum_angle(self) -> float:
+        return float(np.arctan(self.h_f * self.module / self.outer_cone_distance))
+
+    @property
+    def face_cone_angle(self) -> float:
+        """Tip (face) cone angle delta_p + addendum angle (Table 5's "outer cone angle")."""
+        return self.pitch_cone_angle + self.addendum_angle
+
+    @property
+    def root_cone_angle(self) -> float:
+        """delta_p - dedendum angle (Table 5's "base cone angle" is this value)."""
+        return self.pitch_cone_angle - self.dedendum_angle
+
+
+def relief_from_length(gear: BevelGearData, length: float, amount: float, *, root: bool = False):
+    """Tip (or root) relief of eq (13) with a relief length ``length`` (length units along the
+    profile at the mean cone distance) and ``amount`` (length along the normal, reached at the tip):
+    the polar-angle relief starts ``length / R_m`` below the face cone (above the root cone)."""
+    L = _check_finite("length", length, positive=True)
+    c = _check_finite("amount", amount, nonneg=True)
+    w = L / gear.mean_cone_distance
+    if root:
+        return RootRelief(gear.root_cone_angle + w, w, c)
+    return TipRelief(gear.face_cone_angle - w, w, c)
+
+
+class SphericalInvoluteFlank(Surface):
+    """One flank of a straight (spiral_angle 0) or logarithmic-spiral bevel tooth, eq (A)-(B).
+
+    Parameters
+    ----------
+    gear : BevelGearData
+    side : +1 (flank on the +y_i side of the tooth centred on x_i) or -1
+    hand : +1 or -1, sense of the spiral turn theta(v) (mating members have opposite hands)
+    crowning : ParabolicCrowning | CircularCrowning | LogarithmicCrowning | None, a function of the
+        cone distance v (give it v0 = R_m)
+    relief : TipRelief / RootRelief in the polar angle u (see :func:`relief_from_length`)
+    u_min, u_max : flank limits in u (defaults: max(base cone, root cone) and the face cone)
+    """
+
+    spherical = True  #: r = v (sin u cos psi, sin u sin psi, cos u): u = polar angle, v = cone distance
+
+    def __init__(
+        self, gear: BevelGearData, side: int = 1, hand: int = 1, *, crowning=None, relief=(), u_min=None, u_max=None
+    ):
+        if not isinstance(gear, BevelGearData):
+            raise ValueError(f"gear must be a BevelGearData, got {type(gear).__name__}")
+        self.gear = gear
+        self.side, self.hand, self.crowning, self.relief = _flank_options(side, hand, crowning, relief)
+        self.a_b = gear.base_cone_angle
+        self.sin_ab = np.sin(self.a_b)
+        self.delta_p = gear.pitch_cone_angle
+        self.R_e = gear.outer_cone_distance
+        self.R_m = gear.mean_cone_distance
+        self.c = np.pi / (2.0 * gear.n_teeth) + float(_sigma_derivs(self.delta_p, self.a_b)[1])
+        self.k_spiral = np.tan(gear.spiral_angle) / self.sin_ab
+        umin = max(self.a_b, gear.root_cone_angle) if u_min is None else _check_finite("u_min", u_min, positive=True)
+        umax = gear.face_cone_angle if u_max is None else _check_finite("u_max", u_max, positive=True)
+        if umin < self.a_b:
+            raise ValueError(f"u_min must be >= the base cone angle {self.a_b}, got {umin!r}")
+        if not umin < umax < np.pi / 2:
+            raise ValueError(f"u_max must be in ({umin}, pi/2), got {umax!r}")
+        self.u_min, self.u_max = float(umin), float(umax)
+        self.v_min, self.v_max = self.R_e - gear.face_width, self.R_e
+        self.fd_step = (1e-4 * (umax - umin), 1e-4 * gear.face_width)
+
+    # the flank domain is a (u, v) box, as for the cylindrical flanks
+    lower = InvoluteFlank.lower
+    upper = InvoluteFlank.upper
+    outward_sign = InvoluteFlank.outward_sign  #: -side: +1 if unit(r_u x r_v) points out of the tooth
+    contains = InvoluteFlank.contains
+
+    def twist(self, v):
+        """hand * theta(v) of eq (51) and its two v-derivatives."""
+        v = np.asarray(v, float)
+        k = self.hand * self.k_spiral
+        if k == 0.0:
+            z = np.zeros_like(v)
+            return z, z, z
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return k * np.log(self.R_m / v), -k / v, k / (v * v)
+
+    def azimuth_derivs(self, u, v):
+        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        _, inv, i1, i2 = _sigma_derivs(u, self.a_b)
+        dp = np.zeros(u.shape)
+        dp1 = np.zeros(u.shape)
+        dp2 = np.zeros(u.shape)
+        for r in self.relief:
+            a, b, c = r(u)
+            dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+        if self.crowning is not None:
+            dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
+        else:
+            dl = dl1 = dl2 = np.zeros(u.shape)
+        tw, tw1, tw2 = self.twist(v)
+        s, sb = self.side, self.sin_ab
+        d = dp + dl
+        with np.errstate(invalid="ignore", divide="ignore"):
+            psi = s * (self.c - inv - d / (v * sb)) + tw
+            psi_u = s * (-i1 - dp1 / (v * sb))
+            psi_uu = s * (-i2 - dp2 / (v * sb))
+            psi_v = s * (-(dl1 / v - d / (v * v)) / sb) + tw1
+            psi_uv = s * dp1 / (v * v * sb)
+            psi_vv = s * (-(dl2 / v - 2.0 * dl1 / (v * v) + 2.0 * d / v**3) / sb) + tw2
+        return psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv
+
+    def azimuth(self, u, v):
+        return self.azimuth_derivs(u, v)[0]
+
+    def position(self, u, v) -> np.ndarray:
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        psi = self.azimuth(u, v)
+        su = np.sin(u)
+        return np.stack([v * su * np.cos(psi), v * su * np.sin(psi), v * np.cos(u)], axis=-1)
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        """Position and analytic derivatives of (A) = v E(u, psi(u, v)) with
+        E = (sin u cos psi, sin u sin psi, cos u), E_u = e_u, E_psi = sin u e_psi, E_uu = -E,
+        E_upsi = cos u e_psi, E_psipsi = -sin u e_rho (e_rho = (cos psi, sin psi, 0)):
+        r_u = v (E_u + E_psi psi_u), r_v = E + v E_psi psi_v,
+        r_uu = v (E_uu + 2 E_upsi psi_u + E_psipsi psi_u^2 + E_psi psi_uu),
+        r_uv = E_u + E_psi psi_u + v (E_upsi psi_v + E_psipsi psi_u psi_v + E_psi psi_uv),
+        r_vv = 2 E_psi psi_v + v (E_psipsi psi_v^2 + E_psi psi_vv)."""
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        psi, pu, pv, puu, puv, pvv = self.azimuth_derivs(u, v)
+        su, cu = np.sin(u), np.cos(u)
+        cp, sp = np.cos(psi), np.sin(psi)
+        zero = np.zeros(u.shape)
+        E = np.stack([su * cp, su * sp, cu], axis=-1)
+        Eu = np.stack([cu * cp, cu * sp, -su], axis=-1)
+        ep = np.stack([-sp, cp, zero], axis=-1)
+        er = np.stack([cp, sp, zero], axis=-1)
+        w = v[..., None]
+        a_u, a_v = pu[..., None], pv[..., None]
+        S, C = su[..., None], cu[..., None]
+        Ep = S * ep
+        Eup = C * ep
+        Epp = -S * er
+        r = w * E
+        r_u = w * (Eu + Ep * a_u)
+        r_v = E + w * Ep * a_v
+        r_uu = w * (-E + 2.0 * Eup * a_u + Epp * a_u * a_u + Ep * puu[..., None])
+        r_uv = Eu + Ep * a_u + w * (Eup * a_v + Epp * a_u * a_v + Ep * puv[..., None])
+        r_vv = 2.0 * Ep * a_v + w * (Epp * a_v * a_v + Ep * pvv[..., None])
+        return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
+
+    def outward_normal(self, u, v) -> np.ndarray:
+        return self.outward_sign * self.evaluate(u, v).normal
+
+    def __repr__(self) -> str:
+        g = self.gear
+        return (
+            f"SphericalInvoluteFlank(N={g.n_teeth}, mate={g.mate_teeth}, m={g.module}, alpha={g.pressure_angle:.6g}, "
+            f"spiral={g.spiral_angle:.6g}, side={self.side}, hand={self.hand})"
+        )
+
+
+def mating_bevel_flanks(
+    gear1: BevelGearData,
+    gear2: BevelGearData,
+    *,
+    side: int = 1,
+    hand1: int = 1,
+    crowning1=None,
+    relief1=(),
+    crowning2=None,
+    relief2=(),
+):
+    """The two drive flanks of a bevel pair: same ``side``, opposite spiral hands. Checks that the
+    members mesh (each is the other's mate; equal module, pressure angle, shaft and spiral angle)."""
+    if not (isinstance(gear1, BevelGearData) and isinstance(gear2, BevelGearData)):
+        raise ValueError("gear1 and gear2 must be BevelGearData")
+    if gear1.mate_teeth != gear2.n_teeth or gear2.mate_teeth != gear1.n_teeth:
+        raise ValueError(
+            f"gear1.mate_teeth = {gear1.mate_teeth!r} must equal gear2.n_teeth = {gear2.n_teeth!r} and vice versa"
+        )
+    for name in ("module", "pressure_angle", "shaft_angle", "spiral_angle"):
+        a, b = getattr(gear1, name), getattr(gear2, name)
+        if not np.isclose(a, b, rtol=1e-12, atol=0):
+            raise ValueError(f"gear1.{name} = {a!r} and gear2.{name} = {b!r} must be equal for meshing")
+    f1 = SphericalInvoluteFlank(gear1, side, hand1, crowning=crowning1, relief=relief1)
+    f2 = SphericalInvoluteFlank(gear2, side, -hand1, crowning=crowning2, relief=relief2)
+    return f1, f2
