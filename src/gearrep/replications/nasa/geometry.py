@@ -33,6 +33,7 @@ __all__ = [
     "aligned_start",
     "contact",
     "make_worm_pair",
+    "worm_rack_coefficients",
     "solve_with_retries",
     "worm_start",
 ]
@@ -193,15 +194,30 @@ def contact(pair, phi1, s: dict, start=None):
     return solve_contact(pair, phi1, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
 
 
-def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
+def worm_rack_coefficients(d, which: str) -> tuple[float, float]:
+    """(a_c, a_t) in 1/in of the worm-ground pair: ``"s5.4_printed"`` the sec. 5.4 example's printed
+    0.425 / 0.394, ``"eq_2.7.2"`` 1/(2 rho) with rho = (5.88, 6.35)/P_n (0.42517 / 0.39370)."""
+    if which == "s5.4_printed":
+        return d["a_c_s54_per_in"], d["a_t_s54_per_in"]
+    if which == "eq_2.7.2":
+        Pn = d["P_n_per_in"]
+        return Pn / (2 * d["rho_c_times_Pn"]), Pn / (2 * d["rho_t_times_Pn"])
+    raise ValueError(f"worm_rack_coefficients must be 's5.4_printed' or 'eq_2.7.2', got {which!r}")
+
+
+def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=None, worm_hand=None, racks=None):
     """Pinion ground by the plunging worm of sec. 5.4 (r_pw, a_pl, N_w = 1) with the profile-
     crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
-    default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda)."""
+    default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda).
+    ``feed``, ``worm_hand``: :class:`gearrep.surfaces.novikov.WormGeneratedPinion`; ``racks``:
+    :func:`worm_rack_coefficients` (defaults: the settings ``worm_feed``, ``worm_hand``,
+    ``worm_rack_coefficients``)."""
+    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"] if racks is None else racks)
     Pn, an, beta, l = basics(d)
     h = -1.0 if s["pinion_hand"] == "left" else 1.0
     r_p1 = pitch_radius(d["N1"], Pn, beta)
     worm = WormGeneratedPinion(
-        Pn / (2 * d["rho_c_times_Pn"]),
+        a_c,
         an,
         l,
         h * (beta - d_lambda),
@@ -211,16 +227,25 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
         d["a_pl_per_in"] if a_pl is None else a_pl,
         N_w=int(d["N_w"]),
         tol=s["tol"],
+        feed=s["worm_feed"] if feed is None else feed,
+        worm_hand=s["worm_hand"] if worm_hand is None else worm_hand,
     )
     rec = worm.solve(np.array([0.0]), np.array([0.0]))
     nrm = worm.evaluate(np.array([0.0]), np.array([0.0])).normal[0]
     worm.outward_sign = int(np.sign(np.dot(nrm, rec.normal[0])))
-    gear = make_flank(d, Pn / (2 * d["rho_t_times_Pn"]), an, l, h * beta, "gear", s["tol"])
+    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
     pair = GearPair(worm.light(), gear, d["N1"], d["N2"], r_p1 + gear.r_p, misalignment=misalignment, phase2=0.0)
-    # z of the pinion point generated at (psi = 0, l): linear in l (for the TCA starts)
-    ls = np.array([-1.0, 1.0])
-    zs = worm.solve(np.zeros(2), ls).point[:, 2]
-    pair.l_of_z = lambda z: (np.asarray(z) - zs[0]) / (zs[1] - zs[0]) * 2.0 - 1.0
+    # TCA starts: the pinion turns by psi + kappa l (kappa = 0 for the translation feed), so the
+    # contact at phi1 has psi ~ -phi1 - kappa l; z of the generated point ~ z0 + z_psi psi + z_l l
+    zs = worm.solve(np.array([0.0, 0.0, 0.2]), np.array([-1.0, 1.0, 0.0])).point[:, 2]
+    z0, z_l, z_psi = 0.5 * (zs[0] + zs[1]), 0.5 * (zs[1] - zs[0]), (zs[2] - 0.5 * (zs[0] + zs[1])) / 0.2
+    k = worm.kappa
+
+    def start_of(z, phi1):
+        ll = (np.asarray(z) - z0 + z_psi * np.asarray(phi1)) / (z_l - z_psi * k)
+        return -np.asarray(phi1) - k * ll, ll
+
+    pair.worm_start_of = start_of
     return pair
 
 
@@ -262,9 +287,11 @@ class _RackView:
 
 def worm_start(pair, phi1):
     """TCA start for the worm-ground pinion: the aligned profile-crowned contact (u = 0 helices),
-    mapped to the pinion's generating parameters (psi = 0, l from the axial position)."""
+    mapped to the pinion's generating parameters (psi from the pinion turn, l from the axial
+    position: :func:`make_worm_pair`)."""
     rack_like = aligned_start(_RackView(pair), phi1)
     th2 = rack_like[:, 3]
     g = pair.flank2.evaluate(np.zeros_like(th2), th2).r
     z = g[:, 2]
-    return np.column_stack([np.zeros_like(z), pair.l_of_z(z), np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])
+    psi, ll = pair.worm_start_of(z, phi1)
+    return np.column_stack([psi, ll, np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])

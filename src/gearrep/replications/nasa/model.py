@@ -16,6 +16,7 @@ __all__ = [
     "rho_t_bound_eq_2_7_1",
     "delta_alpha_eq_2_8_7_deg",
     "delta_1_eq_2_8_6",
+    "delta_E_eq_2_8_7",
     "a_phi_eq_5_4_3",
     "a_phi_eq_5_4_12",
     "delta_l_eq_5_4_7",
@@ -41,6 +42,17 @@ def delta_alpha_eq_2_8_7_deg(alpha_n, delta_E, rho_1, rho_2, sign=-1):
     |alpha_n' - alpha_n| in degrees, NaN where |sin(alpha_n')| > 1 (no contact)."""
     s = np.sin(alpha_n) + sign * delta_E / (rho_2 - rho_1)
     return np.degrees(abs(np.arcsin(s) - alpha_n)) if abs(s) <= 1 else np.nan
+
+
+def delta_E_eq_2_8_7(alpha_n, delta_alpha_deg, rho_1, rho_2, sign=-1):
+    """Eq 2.8.7 solved for the centre-distance change: the dE (same length unit as the radii) for
+    which the pressure angle moves by ``delta_alpha_deg`` (decreasing for ``sign`` = -1, increasing
+    for +1): |sin(alpha_n + sign d alpha) - sin(alpha_n)| (rho_2 - rho_1); the inverse of
+    :func:`delta_alpha_eq_2_8_7_deg`. NaN if alpha_n + sign d alpha leaves (-90, 90) deg."""
+    a2 = alpha_n + sign * np.radians(delta_alpha_deg)
+    if not abs(a2) < np.pi / 2:
+        return np.nan
+    return abs(np.sin(a2) - np.sin(alpha_n)) * (rho_2 - rho_1)
 
 
 def delta_1_eq_2_8_6(rho_1, delta_alpha_deg, h):
