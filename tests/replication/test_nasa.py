@@ -135,6 +135,21 @@ def test_rack_heights(tables):
     assert np.all(np.diff(g["ha_Pn"]) > 0)
 
 
+def test_disk_inference_and_predictions(tables, records):
+    """The disk size is inferred from the aligned 11.54 (one parameter, row not a check); the
+    misaligned rows are predictions with it (regression values of our numbers)."""
+    dk = tables["disk"].set_index("case")
+    assert dk.loc["aligned", "te_max_arcsec"] == pytest.approx(11.54, abs=1e-4)
+    assert dk["E_d_in"].nunique() == 1 and dk.loc["aligned", "E_d_in"] == pytest.approx(5.969, abs=2e-3)
+    assert dk.loc["dgamma_plus", "te_max_arcsec"] == pytest.approx(11.196, abs=5e-3)
+    assert dk.loc["dgamma_minus", "te_max_arcsec"] == pytest.approx(10.589, abs=5e-3)
+    assert (dk["uncovered_points"] == 0).all()
+    rec = records.set_index("id")
+    r = rec.loc["002-S5.5-crowning=disk;misalignment=none-TE_max"]
+    assert r["status"] == "not-computed" and "inference" in r["note"]
+    assert "PREDICTION" in rec.loc["002-S5.5-crowning=disk;misalignment=dgamma_3arcmin-TE_max", "note"]
+
+
 def test_aligned_pair_has_zero_te(tables):
     s = tables["te_single"]
     al = s[s["case"] == "aligned"]

@@ -177,3 +177,35 @@ def test_pointing_limit_of_an_involute_member():
         pointing_limit(f, p_n, 0.5 * p_n, -0.1, 3.0 / Pn)
     with pytest.raises(ValueError, match="u_max"):
         pointing_limit(f, p_n, 0.5 * p_n, 0.3 / Pn, -3.0 / Pn)
+
+
+def test_disk_ground_pinion():
+    """Appendices A-B: at the grinding line the pinion normal meets the disk axis, the line passes
+    through Q in the plane z = 0, and without plunging the swept line lies on the helicoid."""
+    from gearrep.surfaces.novikov import DiskGroundPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    pin = RackGeneratedFlank(0.425, an, np.cos(an) / Pn, beta, pitch_radius(17, Pn, beta), -1)
+    p_n = np.pi / Pn
+    disk = DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, 0.001)
+    u = np.linspace(-0.15, 0.25, 5)
+    th = disk._line_theta(u, 0.0)
+    r, n = disk._rn(u, th)
+    dist = np.abs(np.einsum("na,na->n", r - disk._A, np.cross(n, disk._d))) / np.linalg.norm(
+        np.cross(n, disk._d), axis=1
+    )
+    assert np.all(dist < 1e-10)  # the normal line meets the disk axis
+    np.testing.assert_allclose(disk.line(u), r, atol=1e-11)  # spline of the line
+    assert abs(disk.line(np.array([0.0]))[0, 2]) < 1e-12  # Q at z = 0
+    flat = DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, 0.0)
+    uu, psi = np.array([0.1, -0.1, 0.05]), np.array([0.3, -0.2, 0.1])
+    x = flat.position(uu, psi)
+    # the helicoid point of the same rack profile parameter at the same z (z is linear in theta)
+    theta = (x[:, 2] + pin.rack.profile(uu)[1] * np.sin(beta)) / np.cos(beta)
+    np.testing.assert_allclose(pin.evaluate(uu, theta).r, x, atol=1e-10)
+    plunged = disk.position(uu, psi)
+    assert np.all(np.linalg.norm(plunged - x, axis=1) > 1e-6)  # the plunge moves the swept points
+    with pytest.raises(ValueError, match="E_d"):
+        DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 1.0, 0.0)
+    with pytest.raises(ValueError, match="a_pd"):
+        DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, -1.0)

@@ -38,6 +38,7 @@ __all__ = [
     "undercut_limit",
     "transverse_point",
     "pointing_limit",
+    "DiskGroundPinion",
 ]
 
 
@@ -254,6 +255,112 @@ def pointing_limit(flank: RackGeneratedFlank, pitch_n: float, rack_tooth_n: floa
         return np.nan, np.nan, np.nan
     u = brentq(excess, us[i[0]], us[i[0] + 1], xtol=1e-15)
     return float(u), x_b(u), float(transverse_point(flank, u)[0][0])
+
+
+class DiskGroundPinion(Surface):
+    """Pinion ground by a plunging disk (seed 002 sec. 4.2, appendices A-B), parameterised by the
+    rack profile parameter u of the grinding line and the screw-motion angle psi.
+
+    Appendix A: the disk is a surface of revolution in tangency with the profile-crowned pinion
+    ``flank`` (a :class:`RackGeneratedFlank` helicoid) along a line L on which the pinion normal
+    meets the disk axis (eq A7-A10). In a pinion frame turned so that x is the symmetry line of
+    a tooth space (eq A4), the disk axis passes through (E_d, 0, 0) in the plane x = E_d at the
+    crossing angle gamma_d, fixed by making L pass through Q in the transverse plane z = 0
+    (eq A14-A17); E_d = R_o + r_1d (eq A1), disk outer radius plus pinion dedendum radius.
+    The tooth space's position follows from ``rack_tooth_n`` (the rack tooth thickness at the pitch
+    line, normal section: the space of the pinion is the rack tooth) and the normal pitch
+    ``pitch_n``. Appendix B: L is carried by the pinion's screw motion (rotation -psi, axial
+    displacement l = -p psi for the helicoid's screw parameter p) and by the plunge
+    dE = a_pd l^2 along the shortest distance (eq B2-B4):
+
+        r(u, psi) = Rz(phi_s) [Rz(-psi) (r_L(u) - dE(psi) e_x) + l(psi) e_z].
+
+    Without plunging this is the helicoid again (tested). The line L is solved once on a grid of
+    u (``u_range``, 1801 points, Newton to 1e-14) and interpolated by a cubic spline (error far
+    below 1e-12 in); derivatives by finite differences (:class:`gearrep.surface.Surface`). The
+    report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
+    """
+
+    fd_step = (1e-4, 1e-4)
+
+    def __init__(self, flank, N, pitch_n, rack_tooth_n, E_d, a_pd, u_range=(-0.45, 0.45)):
+        from scipy.interpolate import CubicSpline
+        from scipy.optimize import brentq
+
+        if not isinstance(flank, RackGeneratedFlank):
+            raise ValueError(f"flank must be a RackGeneratedFlank, got {type(flank).__name__}")
+        if not (int(N) == N and N >= 3):
+            raise ValueError(f"N must be an integer >= 3, got {N!r}")
+        if not (np.isfinite(pitch_n) and pitch_n > 0 and 0 < rack_tooth_n < pitch_n):
+            raise ValueError(f"need pitch_n > 0 and 0 < rack_tooth_n < pitch_n, got {pitch_n!r}, {rack_tooth_n!r}")
+        if not (np.isfinite(E_d) and E_d > flank.r_p):
+            raise ValueError(f"E_d (disk-pinion shortest distance) must exceed r_p = {flank.r_p:.6g}, got {E_d!r}")
+        if not (np.isfinite(a_pd) and a_pd >= 0):
+            raise ValueError(f"a_pd (disk plunging coefficient) must be >= 0, got {a_pd!r}")
+        self.pin, self.E_d, self.a_pd = flank, float(E_d), float(a_pd)
+        self.outward_sign = flank.outward_sign
+        b = flank.rack.beta
+        e = flank.evaluate(np.array([0.0]), np.array([0.0]))
+        self.p = float(-np.sum(np.cross([0.0, 0.0, 1.0], e.r) * e.normal, -1)[0] / e.normal[0, 2])  # screw parameter
+        # the tooth-space centre: half an angular pitch from the tooth centre (as in pointing_limit)
+        up = brentq(lambda u: float(flank.rack.profile(np.array([u]))[0][0]), -abs(flank.rack.l) - 1.0, 0.0)
+        R0, ph0 = transverse_point(flank, up)
+        R1, ph1 = transverse_point(flank, up + 1e-2)
+        toward = np.sign((ph1[0] - ph0[0]) * (R1[0] - R0[0]))
+        centre = ph0[0] + toward * (pitch_n - rack_tooth_n) / np.cos(b) / (2 * R0[0])
+        self.phi_s = float(centre - toward * np.pi / N)
+        self._Rs = frames.rot_z(-self.phi_s)
+        # crossing angle: the normal at Q (z = 0) meets the disk axis (eq A14-A17)
+        th0 = flank.rack.profile(np.array([0.0]))[1] * np.tan(b)
+        r0, n0 = self._rn(np.array([0.0]), th0)
+        P = r0[0] + (self.E_d - r0[0, 0]) / n0[0, 0] * n0[0]
+        self.gamma_d = float(np.arctan2(P[1], P[2]))
+        self._A = np.array([self.E_d, 0.0, 0.0])
+        self._d = np.array([0.0, np.sin(self.gamma_d), np.cos(self.gamma_d)])
+        ug = np.linspace(float(u_range[0]), float(u_range[1]), 1801)
+        self._line = CubicSpline(ug, self._line_exact(ug, float(th0[0])), axis=0)
+        self.lower = np.array([float(u_range[0]), -np.inf])
+        self.upper = np.array([float(u_range[1]), np.inf])
+
+    def _rn(self, u, th):
+        e = self.pin.evaluate(u, th)
+        return frames.transform_vectors(self._Rs, e.r), frames.transform_vectors(self._Rs, e.normal)
+
+    def _meet(self, u, th):
+        """det[r - A, n, d]: zero where the pinion normal meets the disk axis (eq A7-A10)."""
+        r, n = self._rn(u, th)
+        return np.einsum("na,na->n", np.cross(r - self._A, n), np.broadcast_to(self._d, r.shape))
+
+    def _line_exact(self, u, th0):
+        return self._rn(u, self._line_theta(u, th0))[0]
+
+    def _line_theta(self, u, th0):
+        """theta(u) of the grinding line on the helicoid (Newton from ``th0``)."""
+        u = np.asarray(u, float)
+        th = np.full(u.shape, float(th0))
+        for _ in range(50):
+            h = 1e-6
+            step = self._meet(u, th) / ((self._meet(u, th + h) - self._meet(u, th - h)) / (2 * h))
+            th = th - step
+            if np.all(np.abs(step) < 1e-12):
+                break
+        else:
+            raise RuntimeError("disk contact line: Newton did not converge")
+        return th
+
+    def line(self, u) -> np.ndarray:
+        """Points of the grinding line L (frame turned by -phi_s), interpolated."""
+        return self._line(np.asarray(u, float))
+
+    def position(self, u, v) -> np.ndarray:
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        q = self._line(u)
+        ll = -self.p * v
+        q = q - (self.a_pd * ll**2)[..., None] * np.array([1.0, 0.0, 0.0])
+        c, s_ = np.cos(v), np.sin(v)
+        x, y = c * q[..., 0] + s_ * q[..., 1], -s_ * q[..., 0] + c * q[..., 1]
+        out = np.stack([x, y, q[..., 2] + ll], axis=-1)
+        return frames.transform_vectors(frames.rot_z(self.phi_s), out)
 
 
 class WormGeneratedPinion(Surface):

@@ -143,6 +143,15 @@ SETTINGS = _s.declare(
         _s.number(None, "1", "", ge=0.0, le=0.6),
         min_items=1,
     ),
+    disk_E_d_bracket_in=_s.array(
+        [4.0, 8.0],
+        "in",
+        "bracket of the disk-pinion shortest distance E_d searched for the aligned TE_max 11.54 (the inference of the "
+        "disk job; TE_max grows with E_d: 10.8 at 4 in, 12.2 at 8 in)",
+        _s.number(None, "in", "", gt=2.0, le=50.0),
+        min_items=2,
+        max_items=2,
+    ),
     worm_points_per_cycle=_s.integer(
         8,
         "1",
@@ -154,7 +163,7 @@ SETTINGS = _s.declare(
 )
 
 #: data/published files read by params_from_published (inputs of every job)
-DESIGN_DATA = ("params_002_*.csv", "values_002_T6.2.*.csv")
+DESIGN_DATA = ("params_002_*.csv", "values_002_T6.2.*.csv", "values_002_S5.5.csv")
 #: data/published files the checks and figures compare with
 CHECK_DATA = ("values_002_*.csv", "claims_002.csv")
 
@@ -201,6 +210,7 @@ JOBS = {
     "heights": _job(studies.heights, "heights"),
     "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
     "worm_choices": _job(te_studies.worm_choices, "worm_choices", priority=30),
+    "disk": _job(te_studies.disk, "disk", priority=10),
 }
 
 

@@ -282,7 +282,7 @@ def plunging_parabolic_TE(t):
     )
     return (
         ok,
-        "worm-ground pinion (the disk is not computed): "
+        "worm-ground pinion (the disk's size is not printed; our inferred disk: results/nasa/disk.csv): "
         + "; ".join(
             f"{c}: quadratic R^2 {r2:.4f}, jump at hand-over {jump:.3f}, TE_max {tm:.3f} arcsec ({tm / al - 1:+.1%})"
             for c, (r2, jump, tm) in stats.items()

@@ -69,6 +69,8 @@ def params_from_published(published) -> dict:
         "ha_Pn_v2": _value(V, "002-T6.2.2-version=2-ha_Pn"),
         "ha_Pn": {v: _value(V, f"002-T6.2.2-version={v}-ha_Pn") for v in (1, 2, 3)},
         "hd_Pn": {v: _value(V, f"002-T6.2.2-version={v}-hd_Pn") for v in (1, 2, 3)},
+        # the printed aligned TE_max of the disk-ground pinion: input of the disk-size inference only
+        "disk_te_aligned_printed_arcsec": _value(V, "002-S5.5-crowning=disk;misalignment=none-TE_max"),
         # Table 6.2.3 as printed: only to infer the step dE each version implies (eq 2.8.7 inverted)
         "delta_alpha_T623_deg": {v: _value(V, f"002-T6.2.3-version={v}-delta_alpha") for v in (1, 2, 3)},
         "delta_1_T623": {v: _value(V, f"002-T6.2.3-version={v}-delta_1") for v in (1, 2, 3)},

@@ -16,7 +16,7 @@ from ... import frames
 from ...curvature import PrincipalCurvatures, principal_curvatures
 from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
-from ...surfaces.novikov import RackGeneratedFlank, WormGeneratedPinion, pitch_radius
+from ...surfaces.novikov import DiskGroundPinion, RackGeneratedFlank, WormGeneratedPinion, pitch_radius
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import GearPair, solve_contact
 from ...units import DEG
@@ -34,6 +34,8 @@ __all__ = [
     "contact",
     "make_worm_pair",
     "worm_rack_coefficients",
+    "make_disk_pair",
+    "disk_start",
     "solve_with_retries",
     "worm_start",
 ]
@@ -247,6 +249,40 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=Non
 
     pair.worm_start_of = start_of
     return pair
+
+
+def make_disk_pair(d, s, E_d, *, misalignment=None, d_lambda=0.0):
+    """Pinion ground by the plunging disk (sec. 4.2, appendices A-B; disk-pinion shortest distance
+    ``E_d``, plunge a_pd of eq 5.4.13 from a_pl) with the profile-crowned gear; racks of sec. 5.4
+    (``worm_rack_coefficients``), tooth space from ``heights_rack_tooth_over_pitch``; left-hand
+    pinion by default. ``d_lambda``: lead-angle error of the ground helicoid (beta - d_lambda)."""
+    from .model import a_d_eq_5_4_13
+
+    Pn, an, beta, l = basics(d)
+    h = -1.0 if s["pinion_hand"] == "left" else 1.0
+    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"])
+    pin = make_flank(d, a_c, an, l, h * beta, "pinion", s["tol"], beta_rack=h * (beta - d_lambda))
+    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
+    alpha_t = np.arctan(np.tan(an) / np.cos(beta))
+    p_n = np.pi / Pn
+    disk = DiskGroundPinion(
+        pin,
+        d["N1"],
+        p_n,
+        s["heights_rack_tooth_over_pitch"] * p_n,
+        E_d,
+        a_d_eq_5_4_13(d["a_pl_per_in"], alpha_t, d["N1"]),
+    )
+    return GearPair(disk, gear, d["N1"], d["N2"], pin.r_p + gear.r_p, misalignment=misalignment, phase2=0.0)
+
+
+def disk_start(pair, phi1):
+    """TCA start for the disk-ground pinion: the aligned profile-crowned contact (u = 0 helices),
+    the screw angle psi = -z/p from its axial position."""
+    rack_like = aligned_start(_RackView(pair), phi1)
+    th2 = rack_like[:, 3]
+    z = pair.flank2.evaluate(np.zeros_like(th2), th2).r[:, 2]
+    return np.column_stack([np.zeros_like(z), -z / pair.flank1.p, np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])
 
 
 def solve_with_retries(pair, phi, start, s, passes=3):

@@ -20,6 +20,7 @@ __all__ = [
     "a_phi_eq_5_4_3",
     "a_phi_eq_5_4_12",
     "delta_l_eq_5_4_7",
+    "a_d_eq_5_4_13",
 ]
 
 
@@ -88,3 +89,9 @@ def delta_l_eq_5_4_7(d_lambda, a_pl, r_pw, alpha_n, beta):
     d_lambda (1 - 2 a_pl r_pw) / (2 a_pl tan(alpha_n) cos(beta))."""
     m_w = 1 - 2 * a_pl * r_pw
     return d_lambda * m_w / (2 * a_pl * np.tan(alpha_n) * np.cos(beta))
+
+
+def a_d_eq_5_4_13(a_pl, alpha_t, N1):
+    """Eq 5.4.13: plunging coefficient of the grinding disk equivalent to the worm's a_pl,
+    a_d ~ a_pl sin(alpha_t) / sin(alpha_t + pi/N1)."""
+    return a_pl * np.sin(alpha_t) / np.sin(alpha_t + np.pi / N1)

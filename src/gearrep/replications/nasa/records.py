@@ -16,7 +16,6 @@ __all__ = [
     "one",
     "evaluate",
     "check_records",
-    "NOT_COMPUTED_DISK",
     "NOT_COMPUTED_HEIGHTS_ARCS",
     "NOT_COMPUTED_INPUT_RADII",
     "NOT_COMPUTED_SEC3",
@@ -35,11 +34,6 @@ class Rule:
         self.needs, self.fn = tuple(needs), fn
 
 
-NOT_COMPUTED_DISK = (
-    "the disk-ground pinion (sec. 4, appendices A-B) is not computed: the report gives no grinding-disk radius or "
-    "profile for the example (only the equivalent plunging coefficient a_d ~ a_pl sin(alpha_t)/sin(alpha_t + pi/N1), "
-    "eq 5.4.13); the worm case is computed"
-)
 NOT_COMPUTED_HEIGHTS_ARCS = (
     "heights of the circular-arc rack-cutters of versions 1-2 (refs. 1-4 of the report) are not computed: the arc "
     "centres' placement, the rack tooth thickness and the top land of those designs are not printed (the parabolic "

@@ -15,7 +15,9 @@
   lead correction of the dgamma drive (eq 5.4.7 inverted).
 * :func:`worm_choices`: the same TE_max with one set-up choice changed at a time (feed as a pinion
   turn, a worm of the pinion's hand, the racks of eq 2.7.2), to show what each changes.
-  The disk-ground pinion is not computed (no disk data in the report).
+* :func:`disk`: the pinion ground by the plunging disk (sec. 4.2, appendices A-B): the disk size,
+  not printed, is inferred from the aligned TE_max (one parameter); the misaligned TE_max are
+  predictions with it.
 """
 
 from __future__ import annotations
@@ -26,10 +28,19 @@ import pandas as pd
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC
 from . import model
-from .geometry import basics, contact, make_pair, make_worm_pair, solve_with_retries, worm_start
+from .geometry import (
+    basics,
+    contact,
+    disk_start,
+    make_disk_pair,
+    make_pair,
+    make_worm_pair,
+    solve_with_retries,
+    worm_start,
+)
 from .te_envelope import te_envelope
 
-__all__ = ["te_cycle", "face_width", "te", "worm", "worm_choices", "WORM_CHOICES"]
+__all__ = ["te_cycle", "face_width", "te", "worm", "worm_choices", "WORM_CHOICES", "disk"]
 
 
 def _drive_sign(c, i0) -> int:
@@ -175,12 +186,12 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     }
 
 
-def _worm_tca(pair, s, per, n):
+def _worm_tca(pair, s, per, n, start=worm_start):
     """TCA on the grid phi1 = k per/n covering one cycle each side of the TE vertex: first
     |k| <= n, then the grid is extended on the vertex side (the 3' errors move the vertex by up to
     about half a cycle). Returns (ContactPoints, phi1)."""
     phi = np.arange(-n, n + 1) * per / n
-    c = solve_with_retries(pair, phi, worm_start(pair, phi), s, passes=1)
+    c = solve_with_retries(pair, phi, start(pair, phi), s, passes=1)
     ok = c.converged
     if ok.sum() < 3:
         return c, phi
@@ -192,7 +203,7 @@ def _worm_tca(pair, s, per, n):
     if len(extra) == 0:
         return c, phi
     pe = extra * per / n
-    ce = solve_with_retries(pair, pe, worm_start(pair, pe), s, passes=1)
+    ce = solve_with_retries(pair, pe, start(pair, pe), s, passes=1)
     phi_all = np.concatenate([phi, pe])
     order = np.argsort(phi_all)
     parts = {f: np.concatenate([getattr(c, f), getattr(ce, f)])[order] for f in c.ARRAYS}
@@ -351,3 +362,54 @@ _CHOICE_COLUMNS = (
     "n_points",
     "uncovered_points",
 )
+
+
+def _disk_te(s, d, E_d, **kw):
+    """(TE_max over the cycle between transfer points, ContactPoints, phi1) of the disk-ground pinion."""
+    per = 2 * np.pi / d["N1"]
+    pair = make_disk_pair(d, s, E_d, **kw)
+    c, phi = _worm_tca(pair, s, per, int(s["worm_points_per_cycle"]), start=disk_start)
+    drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
+    te = np.where(c.converged, c.te_arcsec, np.nan)
+    z = np.where(c.converged, c.position[:, 2], np.nan)
+    tmax, _, gaps = te_envelope(phi, te, z, per, np.inf, drive)
+    return tmax, c, phi, gaps, pair
+
+
+def disk(s: dict, d: dict) -> pd.DataFrame:
+    """Pinion ground by the plunging disk (sec. 4.2, 5.5 case 1; appendices A-B), whose size the
+    report does not give. INFERENCE: the disk-pinion shortest distance E_d (= disk radius +
+    pinion dedendum radius) is solved so that the aligned TE_max equals the printed 11.54 arcsec
+    (one parameter; brentq over ``disk_E_d_bracket_in``). With that disk, dgamma = +3' and
+    dlambda = 3' (read as a turn about the centre line: dgamma = -3', as for the worm) are
+    PREDICTIONS of the printed 11.66 and 10.11; the literal lead error is computed beside.
+    Plunge a_pd from eq 5.4.13 (a_pl = 0.00139), racks of sec. 5.4, tooth space from the rack
+    tooth assumption of the heights job. TE_max over the cycle between the transfer points."""
+    from scipy.optimize import brentq
+
+    target = d["disk_te_aligned_printed_arcsec"]
+    lo, hi = s["disk_E_d_bracket_in"]
+    E_d, res = brentq(lambda e: _disk_te(s, d, e)[0] - target, lo, hi, xtol=1e-6, full_output=True)
+    mis = s["misalignment_arcmin"] * ARCMIN
+    cases = {
+        **{k: v for k, v in _gamma_cases(s).items()},
+        "dlambda_lead_plus": dict(d_lambda=mis),
+    }
+    rows = []
+    for name, kw in cases.items():
+        tmax, c, phi, gaps, pair = _disk_te(s, d, E_d, **kw)
+        rows.append(
+            dict(
+                case=name,
+                role="inference input" if name == "aligned" else "prediction",
+                te_max_arcsec=tmax,
+                E_d_in=E_d,
+                gamma_d_deg=float(np.degrees(pair.flank1.gamma_d)),
+                a_pd_per_in=pair.flank1.a_pd,
+                n_converged=int(c.converged.sum()),
+                n_points=len(phi),
+                uncovered_points=gaps,
+                inference_iterations=res.iterations,
+            )
+        )
+    return pd.DataFrame(rows)

@@ -6,7 +6,6 @@ from __future__ import annotations
 from functools import partial
 
 from .records import (
-    NOT_COMPUTED_DISK,
     NOT_COMPUTED_HEIGHTS_ARCS,
     NOT_COMPUTED_INPUT_RADII,
     NOT_COMPUTED_SEC3,
@@ -227,6 +226,41 @@ def _height(col, t):
     return r[col], note
 
 
+def _disk_common(r) -> str:
+    return (
+        f"pinion ground by the plunging disk (gearrep.surfaces.novikov.DiskGroundPinion, appendices A-B; plunge a_pd = "
+        f"{r['a_pd_per_in']:.6f} 1/in by eq 5.4.13 from a_pl = 0.00139, racks of sec. 5.4, rack tooth 0.5 pitch). The "
+        f"report gives no disk size: INFERRED disk-pinion shortest distance E_d = {r['E_d_in']:.4f} in (crossing angle "
+        f"{abs(r['gamma_d_deg']):.3f} deg) from the printed aligned 11.54 (one parameter); TE_max over the cycle "
+        "between the transfer points"
+    )
+
+
+def _disk_input(t):
+    """The aligned disk row is the input of the inference, not a check: its reason (a string)."""
+    r = one(t["disk"], case="aligned")
+    return (
+        f"used as the input of an inference, not checked: {_disk_common(r)}; with it the aligned TE_max is "
+        f"{r['te_max_arcsec']:.4f} by construction. The dgamma and dlambda rows are the predictions"
+    )
+
+
+def _disk(case, t):
+    dk = t["disk"]
+    r = one(dk, case=case)
+    note = f"PREDICTION with the inferred disk: {_disk_common(r)}"
+    if case == "dgamma_plus":
+        note += (
+            f"; dgamma = +3' (the sign of the worm rows); -3' gives {one(dk, case='dgamma_minus')['te_max_arcsec']:.3f}"
+        )
+    else:
+        note += (
+            f"; dlambda = 3' read as a turn about the centre line (dgamma = -3', as for the worm); the literal lead "
+            f"error gives {one(dk, case='dlambda_lead_plus')['te_max_arcsec']:.3f}"
+        )
+    return r["te_max_arcsec"], note
+
+
 _RADII_12 = [
     f"002-T6.2.1-version={v}-{m}"
     for v in ("1", "2;zone=pinion_addendum", "2;zone=pinion_dedendum")
@@ -271,10 +305,9 @@ VALUES: dict = {
         for tool in ("disk", "worm")
         for m, fn in (("dgamma_3arcmin", _profile_dgamma), ("dlambda_3arcmin", _profile_dlambda))
     },
-    **{
-        f"002-S5.5-crowning=disk;misalignment={m}-TE_max": NOT_COMPUTED_DISK
-        for m in ("none", "dgamma_3arcmin", "dlambda_3arcmin")
-    },
+    "002-S5.5-crowning=disk;misalignment=none-TE_max": Rule(("disk",), _disk_input),
+    "002-S5.5-crowning=disk;misalignment=dgamma_3arcmin-TE_max": Rule(("disk",), partial(_disk, "dgamma_plus")),
+    "002-S5.5-crowning=disk;misalignment=dlambda_3arcmin-TE_max": Rule(("disk",), partial(_disk, "dgamma_minus")),
     **{
         f"002-S5.5-crowning=worm;misalignment={m}-TE_max": Rule(_WORM, partial(_worm, case))
         for m, case in (
