@@ -389,7 +389,7 @@ def disk(s: dict, d: dict) -> pd.DataFrame:
 
     target = d["disk_te_aligned_printed_arcsec"]
     lo, hi = s["disk_E_d_bracket_in"]
-    E_d, res = brentq(lambda e: _disk_te(s, d, e)[0] - target, lo, hi, xtol=1e-6, full_output=True)
+    E_d, res = brentq(lambda e: _disk_te(s, d, e)[0] - target, lo, hi, xtol=1e-4, full_output=True)
     mis = s["misalignment_arcmin"] * ARCMIN
     cases = {
         **{k: v for k, v in _gamma_cases(s).items()},
