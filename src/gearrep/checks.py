@@ -17,7 +17,8 @@ Statuses (:data:`STATUSES`, the one place they are defined): the results ``repro
 ``deviates``, ``qualitative-holds``, ``qualitative-fails``, ``not-computed`` (:data:`RESULT_STATUSES`),
 and ``input`` (:data:`INPUT_STATUSES`): a printed number that is a design input of the paper (a
 crowning amount the author chose, a rack-cutter radius taken from earlier work), not the outcome of a
-computation. An input row is used as printed (its note says where); it is neither a result nor a
+computation, or a printed result spent as the one calibration input of a parameter the paper does not
+print (its note names the inference, and the rows predicted with it are the checks). An input row is used as printed (its note says where); it is neither a result nor a
 gap, and :func:`summary` counts it apart (column ``results`` = rows that are not inputs).
 """
 

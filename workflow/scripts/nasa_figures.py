@@ -73,7 +73,7 @@ plotting.finish(ax2)
 wc = pd.read_csv(T["worm_cycle"])
 ws = pd.read_csv(T["worm_summary"]).set_index("case")
 fig_w, (ax, ax2w) = plt.subplots(1, 2, figsize=(12, 4.2))
-for case, col in (("worm_aligned", "C2"), ("worm_dgamma_plus", "C0"), ("worm_dlambda_plus", "C1")):
+for case, col in (("worm_aligned", "C2"), ("worm_dgamma_plus", "C0"), ("worm_dgamma_minus", "C1")):
     g = wc[wc["case"] == case].sort_values("phi1_rad")
     plotting.computed(
         ax, np.degrees(g["phi1_rad"]), g["te_arcsec"], case.replace("worm_", "worm: "), color=col, marker=None
@@ -83,12 +83,18 @@ plotting.finish(ax)
 wcases = ["worm_aligned", "worm_dgamma_plus", "worm_dgamma_minus", "worm_dlambda_plus", "worm_dlambda_minus"]
 xw = np.arange(len(wcases))
 plotting.computed(ax2w, xw, [ws.loc[c, "te_max_arcsec"] for c in wcases], "computed TE_max")
+# printed: aligned, dgamma = 3', dlambda = 3' (read as a turn about the centre line = dgamma -3'); the literal lead
+# errors (last two) have no printed counterpart
 pubw = [
     pub.loc[f"002-S5.5-crowning=worm;misalignment={m}-TE_max", "value"]
-    for m in ("none", "dgamma_3arcmin", "dgamma_3arcmin", "dlambda_3arcmin", "dlambda_3arcmin")
+    for m in ("none", "dgamma_3arcmin", "dlambda_3arcmin")
 ]
-plotting.published(ax2w, xw, pubw, "Sec 5.5", "printed")
-ax2w.set_xticks(xw, [c.replace("worm_", "") for c in wcases], rotation=15)
+plotting.published(ax2w, xw[:3], pubw, "Sec 5.5", "printed (dlambda as a turn)")
+ax2w.set_xticks(
+    xw,
+    ["aligned", "dgamma +3'", "dgamma -3' (= dlambda turn)", "dlambda +3' (lead)", "dlambda -3' (lead)"],
+    rotation=15,
+)
 plotting.label_axes(ax2w, "case [-]", "TE_max [arcsec]", "Worm-ground pinion: maximal TE")
 plotting.finish(ax2w)
 save(fig_w, out.worm)

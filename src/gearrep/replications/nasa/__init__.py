@@ -87,6 +87,71 @@ SETTINGS = _s.declare(
     pinion_hand=_s.choice(
         "left", ("left", "right"), "as in the report (sec. 2.1); TCA results of the other hand are the mirror image"
     ),
+    worm_feed=_s.choice(
+        "translation",
+        ("translation", "rotation"),
+        "feed of the worm along the pinion helix: the report's tangential translation l tan(beta) with the plunge "
+        "along the fixed shortest distance (eq 5.2.5, 5.3.7), or an extra pinion turn (eq 5.3.2), which turns the "
+        "plunge direction with the pinion (TE_max +18 %)",
+    ),
+    worm_hand=_s.choice(
+        "opposite",
+        ("same", "opposite"),
+        "hand of the worm relative to the pinion: the crossing angle 90 deg - beta - lambda_w of eq 5.2.1 is the "
+        "opposite-hand worm's (a same-hand worm meshes with the pinion's rack at 90 deg - beta + lambda_w, TE_max "
+        "+3 %), although sec. 5.2 calls the worm left-hand like the pinion",
+    ),
+    worm_rack_coefficients=_s.choice(
+        "s5.4_printed",
+        ("s5.4_printed", "eq_2.7.2"),
+        "rack parabola coefficients of the worm-ground pair: sec. 5.4's printed a_c = 0.425, a_t = 0.394, or "
+        "1/(2 rho) with rho = (5.88, 6.35)/P_n (a_c - a_t 1.5 % larger, TE_max +0.5 %)",
+    ),
+    worm_choice_variants=_s.array(
+        ["feed_rotation", "worm_hand_same", "racks_eq_2.7.2"],
+        "",
+        "set-up choices recomputed one at a time (aligned, +-3' dgamma) by the job worm_choices, to show what each "
+        "changes in the worm-ground TE_max",
+        _s.choice(None, ("feed_rotation", "worm_hand_same", "racks_eq_2.7.2"), "one set-up change"),
+        min_items=1,
+    ),
+    heights_rack_tooth_over_pitch=_s.number(
+        0.5,
+        "1",
+        "assumed rack tooth thickness at the pitch line / normal pitch (not printed; 0.5: rack tooth and space equal)",
+        gt=0.2,
+        lt=0.6,
+    ),
+    heights_top_land_times_Pn=_s.number(
+        0.3,
+        "1",
+        "assumed minimal top land of the pinion (transverse) times P_n (not printed for sec. 2; sec. 3.3 uses 0.3/P_n)",
+        ge=0.0,
+        le=0.6,
+    ),
+    heights_sweep_rack_tooth_over_pitch=_s.array(
+        [0.4, 0.45, 0.5, 0.55],
+        "1",
+        "rack tooth thicknesses / normal pitch swept to show how h_d depends on the assumption",
+        _s.number(None, "1", "", gt=0.2, lt=0.6),
+        min_items=1,
+    ),
+    heights_sweep_top_land_times_Pn=_s.array(
+        [0.0, 0.2, 0.3, 0.4],
+        "1",
+        "top lands times P_n swept to show how h_d depends on the assumption",
+        _s.number(None, "1", "", ge=0.0, le=0.6),
+        min_items=1,
+    ),
+    disk_E_d_bracket_in=_s.array(
+        [4.0, 8.0],
+        "in",
+        "bracket of the disk-pinion shortest distance E_d searched for the aligned TE_max 11.54 (the inference of the "
+        "disk job; TE_max grows with E_d: 10.8 at 4 in, 12.2 at 8 in)",
+        _s.number(None, "in", "", gt=2.0, le=50.0),
+        min_items=2,
+        max_items=2,
+    ),
     worm_points_per_cycle=_s.integer(
         8,
         "1",
@@ -98,7 +163,7 @@ SETTINGS = _s.declare(
 )
 
 #: data/published files read by params_from_published (inputs of every job)
-DESIGN_DATA = ("params_002_*.csv", "values_002_T6.2.*.csv")
+DESIGN_DATA = ("params_002_*.csv", "values_002_T6.2.*.csv", "values_002_S5.5.csv")
 #: data/published files the checks and figures compare with
 CHECK_DATA = ("values_002_*.csv", "claims_002.csv")
 
@@ -142,7 +207,10 @@ JOBS = {
     "shifts": _job(studies.shifts, "shifts", priority=4),
     "rho_sweep": _job(studies.rho_sweep, "rho_sweep"),
     "parabola_relations": _job(studies.parabola_relations, "parabola_relations"),
+    "heights": _job(studies.heights, "heights"),
     "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
+    "worm_choices": _job(te_studies.worm_choices, "worm_choices", priority=30),
+    "disk": _job(te_studies.disk, "disk", priority=10),
 }
 
 

@@ -48,6 +48,8 @@ def params_from_published(published) -> dict:
         "delta_s26_in": _param(P, "params_002_S2.6.csv", "S2.6_ellipse", "elastic_approach"),
         "delta_E_printed_mm": _param(P, f6, "version3", "delta_E"),
         "a_pl_per_in": _param(P, f54, "S5.4_example", "a_pl"),
+        "a_c_s54_per_in": _param(P, f54, "S5.4_example", "a_c"),
+        "a_t_s54_per_in": _param(P, f54, "S5.4_example", "a_t"),
         "r_pw_in": _param(P, f54, "S5.4_example", "r_pw"),
         "N_w": _param(P, "params_002_S5.3.csv", "S5.3_worm", "worm_threads"),
         "s3_a_c_over_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "a_c_over_Pn"),
@@ -67,6 +69,11 @@ def params_from_published(published) -> dict:
         "ha_Pn_v2": _value(V, "002-T6.2.2-version=2-ha_Pn"),
         "ha_Pn": {v: _value(V, f"002-T6.2.2-version={v}-ha_Pn") for v in (1, 2, 3)},
         "hd_Pn": {v: _value(V, f"002-T6.2.2-version={v}-hd_Pn") for v in (1, 2, 3)},
+        # the printed aligned TE_max of the disk-ground pinion: input of the disk-size inference only
+        "disk_te_aligned_printed_arcsec": _value(V, "002-S5.5-crowning=disk;misalignment=none-TE_max"),
+        # Table 6.2.3 as printed: only to infer the step dE each version implies (eq 2.8.7 inverted)
+        "delta_alpha_T623_deg": {v: _value(V, f"002-T6.2.3-version={v}-delta_alpha") for v in (1, 2, 3)},
+        "delta_1_T623": {v: _value(V, f"002-T6.2.3-version={v}-delta_1") for v in (1, 2, 3)},
     }
     for k in ("N1", "N2"):
         d[k] = int(d[k])

@@ -16,7 +16,7 @@ from ... import frames
 from ...curvature import PrincipalCurvatures, principal_curvatures
 from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
-from ...surfaces.novikov import RackGeneratedFlank, WormGeneratedPinion, pitch_radius
+from ...surfaces.novikov import DiskGroundPinion, RackGeneratedFlank, WormGeneratedPinion, pitch_radius
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import GearPair, solve_contact
 from ...units import DEG
@@ -33,6 +33,9 @@ __all__ = [
     "aligned_start",
     "contact",
     "make_worm_pair",
+    "worm_rack_coefficients",
+    "make_disk_pair",
+    "disk_start",
     "solve_with_retries",
     "worm_start",
 ]
@@ -193,15 +196,30 @@ def contact(pair, phi1, s: dict, start=None):
     return solve_contact(pair, phi1, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
 
 
-def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
+def worm_rack_coefficients(d, which: str) -> tuple[float, float]:
+    """(a_c, a_t) in 1/in of the worm-ground pair: ``"s5.4_printed"`` the sec. 5.4 example's printed
+    0.425 / 0.394, ``"eq_2.7.2"`` 1/(2 rho) with rho = (5.88, 6.35)/P_n (0.42517 / 0.39370)."""
+    if which == "s5.4_printed":
+        return d["a_c_s54_per_in"], d["a_t_s54_per_in"]
+    if which == "eq_2.7.2":
+        Pn = d["P_n_per_in"]
+        return Pn / (2 * d["rho_c_times_Pn"]), Pn / (2 * d["rho_t_times_Pn"])
+    raise ValueError(f"worm_rack_coefficients must be 's5.4_printed' or 'eq_2.7.2', got {which!r}")
+
+
+def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=None, worm_hand=None, racks=None):
     """Pinion ground by the plunging worm of sec. 5.4 (r_pw, a_pl, N_w = 1) with the profile-
     crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
-    default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda)."""
+    default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda).
+    ``feed``, ``worm_hand``: :class:`gearrep.surfaces.novikov.WormGeneratedPinion`; ``racks``:
+    :func:`worm_rack_coefficients` (defaults: the settings ``worm_feed``, ``worm_hand``,
+    ``worm_rack_coefficients``)."""
+    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"] if racks is None else racks)
     Pn, an, beta, l = basics(d)
     h = -1.0 if s["pinion_hand"] == "left" else 1.0
     r_p1 = pitch_radius(d["N1"], Pn, beta)
     worm = WormGeneratedPinion(
-        Pn / (2 * d["rho_c_times_Pn"]),
+        a_c,
         an,
         l,
         h * (beta - d_lambda),
@@ -211,17 +229,60 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None):
         d["a_pl_per_in"] if a_pl is None else a_pl,
         N_w=int(d["N_w"]),
         tol=s["tol"],
+        feed=s["worm_feed"] if feed is None else feed,
+        worm_hand=s["worm_hand"] if worm_hand is None else worm_hand,
     )
     rec = worm.solve(np.array([0.0]), np.array([0.0]))
     nrm = worm.evaluate(np.array([0.0]), np.array([0.0])).normal[0]
     worm.outward_sign = int(np.sign(np.dot(nrm, rec.normal[0])))
-    gear = make_flank(d, Pn / (2 * d["rho_t_times_Pn"]), an, l, h * beta, "gear", s["tol"])
+    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
     pair = GearPair(worm.light(), gear, d["N1"], d["N2"], r_p1 + gear.r_p, misalignment=misalignment, phase2=0.0)
-    # z of the pinion point generated at (psi = 0, l): linear in l (for the TCA starts)
-    ls = np.array([-1.0, 1.0])
-    zs = worm.solve(np.zeros(2), ls).point[:, 2]
-    pair.l_of_z = lambda z: (np.asarray(z) - zs[0]) / (zs[1] - zs[0]) * 2.0 - 1.0
+    # TCA starts: the pinion turns by psi + kappa l (kappa = 0 for the translation feed), so the
+    # contact at phi1 has psi ~ -phi1 - kappa l; z of the generated point ~ z0 + z_psi psi + z_l l
+    zs = worm.solve(np.array([0.0, 0.0, 0.2]), np.array([-1.0, 1.0, 0.0])).point[:, 2]
+    z0, z_l, z_psi = 0.5 * (zs[0] + zs[1]), 0.5 * (zs[1] - zs[0]), (zs[2] - 0.5 * (zs[0] + zs[1])) / 0.2
+    k = worm.kappa
+
+    def start_of(z, phi1):
+        ll = (np.asarray(z) - z0 + z_psi * np.asarray(phi1)) / (z_l - z_psi * k)
+        return -np.asarray(phi1) - k * ll, ll
+
+    pair.worm_start_of = start_of
     return pair
+
+
+def make_disk_pair(d, s, E_d, *, misalignment=None, d_lambda=0.0):
+    """Pinion ground by the plunging disk (sec. 4.2, appendices A-B; disk-pinion shortest distance
+    ``E_d``, plunge a_pd of eq 5.4.13 from a_pl) with the profile-crowned gear; racks of sec. 5.4
+    (``worm_rack_coefficients``), tooth space from ``heights_rack_tooth_over_pitch``; left-hand
+    pinion by default. ``d_lambda``: lead-angle error of the ground helicoid (beta - d_lambda)."""
+    from .model import a_d_eq_5_4_13
+
+    Pn, an, beta, l = basics(d)
+    h = -1.0 if s["pinion_hand"] == "left" else 1.0
+    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"])
+    pin = make_flank(d, a_c, an, l, h * beta, "pinion", s["tol"], beta_rack=h * (beta - d_lambda))
+    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
+    alpha_t = np.arctan(np.tan(an) / np.cos(beta))
+    p_n = np.pi / Pn
+    disk = DiskGroundPinion(
+        pin,
+        d["N1"],
+        p_n,
+        s["heights_rack_tooth_over_pitch"] * p_n,
+        E_d,
+        a_d_eq_5_4_13(d["a_pl_per_in"], alpha_t, d["N1"]),
+    )
+    return GearPair(disk, gear, d["N1"], d["N2"], pin.r_p + gear.r_p, misalignment=misalignment, phase2=0.0)
+
+
+def disk_start(pair, phi1):
+    """TCA start for the disk-ground pinion: the aligned profile-crowned contact (u = 0 helices),
+    the screw angle psi = -z/p from its axial position."""
+    rack_like = aligned_start(_RackView(pair), phi1)
+    th2 = rack_like[:, 3]
+    z = pair.flank2.evaluate(np.zeros_like(th2), th2).r[:, 2]
+    return np.column_stack([np.zeros_like(z), -z / pair.flank1.p, np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])
 
 
 def solve_with_retries(pair, phi, start, s, passes=3):
@@ -262,9 +323,11 @@ class _RackView:
 
 def worm_start(pair, phi1):
     """TCA start for the worm-ground pinion: the aligned profile-crowned contact (u = 0 helices),
-    mapped to the pinion's generating parameters (psi = 0, l from the axial position)."""
+    mapped to the pinion's generating parameters (psi from the pinion turn, l from the axial
+    position: :func:`make_worm_pair`)."""
     rack_like = aligned_start(_RackView(pair), phi1)
     th2 = rack_like[:, 3]
     g = pair.flank2.evaluate(np.zeros_like(th2), th2).r
     z = g[:, 2]
-    return np.column_stack([np.zeros_like(z), pair.l_of_z(z), np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])
+    psi, ll = pair.worm_start_of(z, phi1)
+    return np.column_stack([psi, ll, np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])

@@ -16,9 +16,11 @@ __all__ = [
     "rho_t_bound_eq_2_7_1",
     "delta_alpha_eq_2_8_7_deg",
     "delta_1_eq_2_8_6",
+    "delta_E_eq_2_8_7",
     "a_phi_eq_5_4_3",
     "a_phi_eq_5_4_12",
     "delta_l_eq_5_4_7",
+    "a_d_eq_5_4_13",
 ]
 
 
@@ -41,6 +43,17 @@ def delta_alpha_eq_2_8_7_deg(alpha_n, delta_E, rho_1, rho_2, sign=-1):
     |alpha_n' - alpha_n| in degrees, NaN where |sin(alpha_n')| > 1 (no contact)."""
     s = np.sin(alpha_n) + sign * delta_E / (rho_2 - rho_1)
     return np.degrees(abs(np.arcsin(s) - alpha_n)) if abs(s) <= 1 else np.nan
+
+
+def delta_E_eq_2_8_7(alpha_n, delta_alpha_deg, rho_1, rho_2, sign=-1):
+    """Eq 2.8.7 solved for the centre-distance change: the dE (same length unit as the radii) for
+    which the pressure angle moves by ``delta_alpha_deg`` (decreasing for ``sign`` = -1, increasing
+    for +1): |sin(alpha_n + sign d alpha) - sin(alpha_n)| (rho_2 - rho_1); the inverse of
+    :func:`delta_alpha_eq_2_8_7_deg`. NaN if alpha_n + sign d alpha leaves (-90, 90) deg."""
+    a2 = alpha_n + sign * np.radians(delta_alpha_deg)
+    if not abs(a2) < np.pi / 2:
+        return np.nan
+    return abs(np.sin(a2) - np.sin(alpha_n)) * (rho_2 - rho_1)
 
 
 def delta_1_eq_2_8_6(rho_1, delta_alpha_deg, h):
@@ -76,3 +89,9 @@ def delta_l_eq_5_4_7(d_lambda, a_pl, r_pw, alpha_n, beta):
     d_lambda (1 - 2 a_pl r_pw) / (2 a_pl tan(alpha_n) cos(beta))."""
     m_w = 1 - 2 * a_pl * r_pw
     return d_lambda * m_w / (2 * a_pl * np.tan(alpha_n) * np.cos(beta))
+
+
+def a_d_eq_5_4_13(a_pl, alpha_t, N1):
+    """Eq 5.4.13: plunging coefficient of the grinding disk equivalent to the worm's a_pl,
+    a_d ~ a_pl sin(alpha_t) / sin(alpha_t + pi/N1)."""
+    return a_pl * np.sin(alpha_t) / np.sin(alpha_t + np.pi / N1)

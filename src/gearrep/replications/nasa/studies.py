@@ -16,6 +16,7 @@ import pandas as pd
 
 from ... import frames
 from ...solve import Status
+from ...surfaces.novikov import RackGeneratedFlank, pitch_radius, pointing_limit, undercut_limit
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC, DEG, MM_PER_IN
@@ -34,6 +35,7 @@ __all__ = [
     "shifts",
     "rho_sweep",
     "parabola_relations",
+    "heights",
 ]
 
 
@@ -281,10 +283,28 @@ def _sensitivity_tca(s, d, version, step, dE, r1, r2, an, l, beta, h) -> dict:
     )
 
 
+def _formula_row(v, step, dE, method, da, r1, h) -> dict:
+    """One eq 2.8.6-2.8.7 row of the sensitivity table (``da`` in deg, NaN: no solution)."""
+    ok = np.isfinite(da) and np.isfinite(dE)
+    return dict(
+        version=v,
+        step=step,
+        delta_E_in=dE,
+        method=method,
+        delta_alpha_deg=da,
+        shift_in=r1 * np.radians(da),
+        h_active_in=h,
+        delta_1=model.delta_1_eq_2_8_6(r1, da, h),
+        status="formula" if ok else "no_solution",
+    )
+
+
 def sensitivity(s: dict, d: dict) -> pd.DataFrame:
     """Table 6.2.3: pressure-angle change d alpha and delta_1 = shift / active height for a
     centre-distance change dE, by eq 2.8.7 (both signs) and by TCA, for versions 1-3 and the
-    steps: printed 0.0001 mm (eq only), ``delta_E_table623_in``, 0.0001 in."""
+    steps: printed 0.0001 mm (eq only), ``delta_E_table623_in``, 0.0001 in; and (step
+    ``implied_by_printed``) the dE that reproduces each printed d alpha by eq 2.8.7 (both signs)
+    with the d alpha that the printed delta_1 implies by eq 2.8.6."""
     Pn, an3, beta, l3 = basics(d)
     an12 = d["alpha_n_v12_deg"] * DEG
     versions = {
@@ -307,21 +327,16 @@ def sensitivity(s: dict, d: dict) -> pd.DataFrame:
         for sname, dE in steps.items():
             for sign, label in ((-1, "eq2.8.7_decrease"), (1, "eq2.8.7_increase")):
                 da = model.delta_alpha_eq_2_8_7_deg(an, dE, r1, r2, sign)
-                rows.append(
-                    dict(
-                        version=v,
-                        step=sname,
-                        delta_E_in=dE,
-                        method=label,
-                        delta_alpha_deg=da,
-                        shift_in=r1 * np.radians(da),
-                        h_active_in=h,
-                        delta_1=model.delta_1_eq_2_8_6(r1, da, h),
-                        status="formula" if np.isfinite(da) else "no_solution",
-                    )
-                )
+                rows.append(_formula_row(v, sname, dE, label, da, r1, h))
             if sname != "printed_0.0001mm":
                 rows.append(_sensitivity_tca(s, d, v, sname, dE, r1, r2, an, l, beta, h))
+        # the step each printed d alpha implies (eq 2.8.7 inverted), and the d alpha the printed
+        # delta_1 implies (eq 2.8.6 inverted: d alpha = delta_1 h / rho_1)
+        da_p, d1_p = d["delta_alpha_T623_deg"][v], d["delta_1_T623"][v]
+        for sign, label in ((-1, "eq2.8.7_inverse_decrease"), (1, "eq2.8.7_inverse_increase")):
+            dE = model.delta_E_eq_2_8_7(an, da_p, r1, r2, sign)
+            row = _formula_row(v, "implied_by_printed", dE, label, da_p, r1, h)
+            rows.append(dict(row, delta_alpha_from_printed_delta_1_deg=float(np.degrees(d1_p * h / r1))))
     return pd.DataFrame(rows)
 
 
@@ -408,3 +423,69 @@ def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
             dict(equation="5.4.7", a_phi_per_rad=np.nan, te_at_half_cycle_arcsec=np.nan, delta_l_in=dl),
         ]
     )
+
+
+def _rack_heights(N, a, alpha_n, P_n, beta):
+    """h_a P_n of the rack that generates an N-tooth member on the side x_c < 0 (undercutting:
+    Litvin's limiting line) and h_d(rack tooth / pitch, top land P_n) -> (h_d P_n, tip radius)
+    (pointing). Lengths in inches."""
+    f = RackGeneratedFlank(a, alpha_n, vertex_pitch_distance(alpha_n, P_n), beta, pitch_radius(N, P_n, beta), -1)
+    _, x_u = undercut_limit(f, -1.0 / P_n)
+    p_n = np.pi / P_n
+
+    def hd(rack_tooth_over_pitch, top_land_Pn):
+        _, x_p, r_tip = pointing_limit(f, p_n, rack_tooth_over_pitch * p_n, top_land_Pn / P_n, 3.0 / P_n)
+        return x_p * P_n, r_tip
+
+    return -x_u * P_n, hd
+
+
+def heights(s: dict, d: dict) -> pd.DataFrame:
+    """Active heights of the pinion's parabolic rack (sec. 2.4, Table 6.2.2 version 3): h_a P_n
+    from undercutting (Litvin's limiting line; no assumption needed) and h_d P_n from pointing,
+    which needs two inputs the report does not print: the rack tooth thickness at the pitch line
+    (``heights_rack_tooth_over_pitch``, a fraction of the normal pitch) and the minimal top land
+    (``heights_top_land_times_Pn``; sec. 3.3 states 0.3/P_n for its gear). Rows: ``design`` (the
+    stated assumption), ``sweep`` (each assumption varied alone), ``required`` (the rack tooth
+    thickness that gives the printed h_d for each swept top land), and ``fig2.4.2`` (h over
+    10 <= N1 <= 30 for beta = 20 deg, the design's rack coefficient: the sec. 2.4 claim)."""
+    from scipy.optimize import brentq
+
+    Pn, an, beta, _ = basics(d)
+    a_c = Pn / (2 * d["rho_c_times_Pn"])
+    N1 = d["N1"]
+    sr0, t0 = s["heights_rack_tooth_over_pitch"], s["heights_top_land_times_Pn"]
+    rows = []
+
+    limits = {}
+
+    def row(kind, N, b, sr, t):
+        if (N, b) not in limits:
+            limits[N, b] = _rack_heights(N, a_c, an, Pn, b)
+        ha, hd_of = limits[N, b]
+        hd, rt = hd_of(sr, t)
+        rows.append(
+            dict(
+                kind=kind,
+                N1=N,
+                beta_deg=np.degrees(b),
+                rack_tooth_over_pitch=sr,
+                top_land_times_Pn=t,
+                ha_Pn=ha,
+                hd_Pn=hd,
+                h_Pn=ha + hd,
+                tip_radius_in=rt,
+            )
+        )
+
+    row("design", N1, beta, sr0, t0)
+    for sr in s["heights_sweep_rack_tooth_over_pitch"]:
+        row("sweep", N1, beta, sr, t0)
+    for t in s["heights_sweep_top_land_times_Pn"]:
+        row("sweep", N1, beta, sr0, t)
+    hd_printed, hd_of = d["hd_Pn"][3], limits[N1, beta][1]
+    for t in s["heights_sweep_top_land_times_Pn"]:
+        row("required", N1, beta, brentq(lambda x: hd_of(x, t)[0] - hd_printed, 0.2, 0.6, xtol=1e-10), t)
+    for N in range(10, 31, 2):
+        row("fig2.4.2", N, 20 * DEG, sr0, t0)
+    return pd.DataFrame(rows)

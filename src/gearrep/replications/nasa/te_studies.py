@@ -7,10 +7,17 @@
   gear furthest, restricted to contact points inside the face width; TE_max is the peak-to-peak
   TE over the cycle.
 * :func:`worm`: the pinion ground by the plunging worm (sec. 5.2-5.5, appendix C) with the gear,
-  aligned and with +-3 arcmin dgamma / dlambda; neighbouring TE curves hand over at their
-  crossings (:func:`.te_envelope.te_envelope`); contact limited to the active profile (Table 6.2.2
-  version 3) and the face; plus the lead correction of the dgamma drive (eq 5.4.7 inverted).
-  The disk-ground pinion is not computed (no disk data in the report).
+  aligned and with +-3 arcmin dgamma / dlambda, in the report's set-up (eq 5.2.1, 5.2.5, 5.3.7:
+  translation feed, plunge along the fixed shortest distance, sec. 5.4's printed a_c, a_t;
+  :class:`gearrep.surfaces.novikov.WormGeneratedPinion`); TE_max over the meshing cycle between
+  the transfer points, where neighbouring TE curves cross (:func:`.te_envelope.te_envelope`),
+  contact limited to the active profile (Table 6.2.2 version 3), the face not limiting; plus the
+  lead correction of the dgamma drive (eq 5.4.7 inverted).
+* :func:`worm_choices`: the same TE_max with one set-up choice changed at a time (feed as a pinion
+  turn, a worm of the pinion's hand, the racks of eq 2.7.2), to show what each changes.
+* :func:`disk`: the pinion ground by the plunging disk (sec. 4.2, appendices A-B): the disk size,
+  not printed, is inferred from the aligned TE_max (one parameter); the misaligned TE_max are
+  predictions with it.
 """
 
 from __future__ import annotations
@@ -21,10 +28,19 @@ import pandas as pd
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC
 from . import model
-from .geometry import basics, contact, make_pair, make_worm_pair, solve_with_retries, worm_start
+from .geometry import (
+    basics,
+    contact,
+    disk_start,
+    make_disk_pair,
+    make_pair,
+    make_worm_pair,
+    solve_with_retries,
+    worm_start,
+)
 from .te_envelope import te_envelope
 
-__all__ = ["te_cycle", "face_width", "te", "worm"]
+__all__ = ["te_cycle", "face_width", "te", "worm", "worm_choices", "WORM_CHOICES", "disk"]
 
 
 def _drive_sign(c, i0) -> int:
@@ -130,6 +146,16 @@ def face_width(s, d):
     return s["face_width_over_axial_pitch"] * axial_pitch, axial_pitch
 
 
+def _gamma_cases(s) -> dict:
+    """The aligned drive and dgamma = +-``misalignment_arcmin`` (keyword arguments of the pair makers)."""
+    mis = s["misalignment_arcmin"] * ARCMIN
+    return {
+        "aligned": dict(),
+        "dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
+        "dgamma_minus": dict(misalignment=Misalignment(d_gamma_out=-mis)),
+    }
+
+
 def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     """TE of the profile-crowned pair (sec. 2.8, 5.5): ``te_single`` (tooth pair 0 over five
     cycles), ``te_cycle`` (the meshing cycle, teeth -1, 0, 1) and ``te_summary`` per case."""
@@ -138,9 +164,7 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     mis = s["misalignment_arcmin"] * ARCMIN
     B, axial_pitch = face_width(s, d)
     cases = {
-        "aligned": dict(),
-        "dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
-        "dgamma_minus": dict(misalignment=Misalignment(d_gamma_out=-mis)),
+        **_gamma_cases(s),
         "dlambda_helix_plus": dict(d_lambda=mis),
         "dlambda_helix_minus": dict(d_lambda=-mis),
         "dgamma_intersecting": dict(misalignment=Misalignment(d_gamma_in=mis)),
@@ -162,14 +186,44 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     }
 
 
-def _worm_case(s, d, name, kw, B):
-    """TCA of one worm-ground case over 1.5 cycles each side: (single rows, cycle rows, summary row)."""
+def _worm_tca(pair, s, per, n, start=worm_start):
+    """TCA on the grid phi1 = k per/n covering one cycle each side of the TE vertex: first
+    |k| <= n, then the grid is extended on the vertex side (the 3' errors move the vertex by up to
+    about half a cycle). Returns (ContactPoints, phi1)."""
+    phi = np.arange(-n, n + 1) * per / n
+    c = solve_with_retries(pair, phi, start(pair, phi), s, passes=1)
+    ok = c.converged
+    if ok.sum() < 3:
+        return c, phi
+    drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
+    te = np.where(ok, c.te_arcsec, np.nan)
+    iv = int(np.nanargmax(te) if drive > 0 else np.nanargmin(te))
+    kv = iv - n  # grid index k of the vertex
+    extra = np.array([k for k in range(min(-n, kv - n), max(n, kv + n) + 1) if abs(k) > n], int)
+    if len(extra) == 0:
+        return c, phi
+    pe = extra * per / n
+    ce = solve_with_retries(pair, pe, start(pair, pe), s, passes=1)
+    phi_all = np.concatenate([phi, pe])
+    order = np.argsort(phi_all)
+    parts = {f: np.concatenate([getattr(c, f), getattr(ce, f)])[order] for f in c.ARRAYS}
+    return type(c)(formulation=c.formulation, **parts), phi_all[order]
+
+
+def _worm_case(s, d, name, kw, B, **pair_kw):
+    """TCA of one worm-ground case over one cycle each side: (single rows, cycle rows, summary row).
+
+    TE_max is the peak-to-peak TE over the meshing cycle between the transfer points (where
+    TE_0(phi1) meets TE_0(phi1 -+ 2 pi/N1)), the face not limiting (the report gives no face width;
+    with the 3' errors the contact centre moves by ~0.7 in, eq 5.4.7); ``te_max_face_limited_arcsec``
+    is the same with contact limited to |z| <= B/2. Contact is limited to the active profile
+    (Table 6.2.2 version 3). The TCA grid covers one cycle each side of the TE vertex
+    (:func:`_worm_tca`; ``uncovered_points`` counts the phi1 of the cycle left without a pair)."""
     Pn = d["P_n_per_in"]
     per = 2 * np.pi / d["N1"]
     n = int(s["worm_points_per_cycle"])
-    pair = make_worm_pair(d, s, **kw)
-    phi = np.arange(-(3 * n) // 2, (3 * n) // 2 + 1) * per / n  # 1.5 cycles each side hold every hand-over
-    c = solve_with_retries(pair, phi, worm_start(pair, phi), s, passes=1)
+    pair = make_worm_pair(d, s, **kw, **pair_kw)
+    c, phi = _worm_tca(pair, s, per, n)
     drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
     # rack profile parameter of the contact point (the worm's and the pinion's rack coincide) and
     # its height x_b on the rack: the active profile is -ha <= x_b <= hd (Table 6.2.2 version 3)
@@ -194,13 +248,15 @@ def _worm_case(s, d, name, kw, B):
             status=c.status_name,
         )
     )
-    tmax, cyc, gaps = te_envelope(phi, te_v, z, per, B, drive)
+    tmax, cyc, gaps = te_envelope(phi, te_v, z, per, np.inf, drive)
+    tmax_b = te_envelope(phi, te_v, z, per, B, drive)[0]
     cyc.insert(0, "case", name)
     t0 = cyc[cyc["tooth"] == 0]
     a2 = np.polyfit(t0["phi1_rad"], t0["te_arcsec"], 2)[0] if len(t0) > 3 else np.nan
     row = dict(
         case=name,
         te_max_arcsec=tmax,
+        te_max_face_limited_arcsec=tmax_b,
         all_converged=bool(c.converged.all()),
         n_converged=int(c.converged.sum()),
         n_on_profile=int(use.sum()),
@@ -211,6 +267,11 @@ def _worm_case(s, d, name, kw, B):
         parabola_a_phi_arcsec_per_rad2=a2,
         a_phi_per_rad=a2 * ARCSEC,
         face_width_in=B,
+        feed=pair.flank1.base.feed,
+        worm_hand=pair.flank1.base.worm_hand,
+        crossing_angle_deg=float(90.0 - abs(90.0 - abs(np.degrees(pair.flank1.base.delta)) % 180.0)),
+        a_c_per_in=pair.flank1.base.worm.rack.a,
+        a_t_per_in=pair.flank2.rack.a,
     )
     if use.sum() > 3:
         from scipy.interpolate import CubicSpline  # here: scipy costs 0.5 s per process
@@ -263,3 +324,92 @@ def worm(s: dict, d: dict) -> dict[str, pd.DataFrame]:
         "worm_cycle": pd.concat(cycles + [cyc], ignore_index=True),
         "worm_summary": pd.DataFrame(summ + [row]),
     }
+
+
+#: one set-up change each (name -> make_worm_pair keywords), recomputed by :func:`worm_choices`
+WORM_CHOICES = {
+    "feed_rotation": dict(feed="rotation"),
+    "worm_hand_same": dict(worm_hand="same"),
+    "racks_eq_2.7.2": dict(racks="eq_2.7.2"),
+}
+
+
+def worm_choices(s: dict, d: dict) -> pd.DataFrame:
+    """What each set-up choice of the worm-ground pinion changes: TE_max (over the cycle between
+    transfer points, and face-limited) of the aligned drive and of dgamma = +-3 arcmin, with the
+    settings' set-up and with one choice changed at a time (``worm_choice_variants``:
+    :data:`WORM_CHOICES`). A separate job: three TCAs per variant."""
+    B, _ = face_width(s, d)
+    cases = _gamma_cases(s)
+    rows = []
+    for variant in s["worm_choice_variants"]:
+        for name, kw in cases.items():
+            _, _, row = _worm_case(s, d, name, kw, B, **WORM_CHOICES[variant])
+            rows.append(dict(variant=variant, **{k: row[k] for k in _CHOICE_COLUMNS}))
+    return pd.DataFrame(rows)
+
+
+_CHOICE_COLUMNS = (
+    "case",
+    "te_max_arcsec",
+    "te_max_face_limited_arcsec",
+    "feed",
+    "worm_hand",
+    "crossing_angle_deg",
+    "a_c_per_in",
+    "a_t_per_in",
+    "n_converged",
+    "n_points",
+    "uncovered_points",
+)
+
+
+def _disk_te(s, d, E_d, **kw):
+    """(TE_max over the cycle between transfer points, ContactPoints, phi1) of the disk-ground pinion."""
+    per = 2 * np.pi / d["N1"]
+    pair = make_disk_pair(d, s, E_d, **kw)
+    c, phi = _worm_tca(pair, s, per, int(s["worm_points_per_cycle"]), start=disk_start)
+    drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
+    te = np.where(c.converged, c.te_arcsec, np.nan)
+    z = np.where(c.converged, c.position[:, 2], np.nan)
+    tmax, _, gaps = te_envelope(phi, te, z, per, np.inf, drive)
+    return tmax, c, phi, gaps, pair
+
+
+def disk(s: dict, d: dict) -> pd.DataFrame:
+    """Pinion ground by the plunging disk (sec. 4.2, 5.5 case 1; appendices A-B), whose size the
+    report does not give. INFERENCE: the disk-pinion shortest distance E_d (= disk radius +
+    pinion dedendum radius) is solved so that the aligned TE_max equals the printed 11.54 arcsec
+    (one parameter; brentq over ``disk_E_d_bracket_in``). With that disk, dgamma = +3' and
+    dlambda = 3' (read as a turn about the centre line: dgamma = -3', as for the worm) are
+    PREDICTIONS of the printed 11.66 and 10.11; the literal lead error is computed beside.
+    Plunge a_pd from eq 5.4.13 (a_pl = 0.00139), racks of sec. 5.4, tooth space from the rack
+    tooth assumption of the heights job. TE_max over the cycle between the transfer points."""
+    from scipy.optimize import brentq
+
+    target = d["disk_te_aligned_printed_arcsec"]
+    lo, hi = s["disk_E_d_bracket_in"]
+    E_d, res = brentq(lambda e: _disk_te(s, d, e)[0] - target, lo, hi, xtol=1e-4, full_output=True)
+    mis = s["misalignment_arcmin"] * ARCMIN
+    cases = {
+        **{k: v for k, v in _gamma_cases(s).items()},
+        "dlambda_lead_plus": dict(d_lambda=mis),
+    }
+    rows = []
+    for name, kw in cases.items():
+        tmax, c, phi, gaps, pair = _disk_te(s, d, E_d, **kw)
+        rows.append(
+            dict(
+                case=name,
+                role="inference input" if name == "aligned" else "prediction",
+                te_max_arcsec=tmax,
+                E_d_in=E_d,
+                gamma_d_deg=float(np.degrees(pair.flank1.gamma_d)),
+                a_pd_per_in=pair.flank1.a_pd,
+                n_converged=int(c.converged.sum()),
+                n_points=len(phi),
+                uncovered_points=gaps,
+                inference_iterations=res.iterations,
+            )
+        )
+    return pd.DataFrame(rows)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from functools import partial
 
-from .records import INPUT_RADII, NOT_COMPUTED_DISK, NOT_COMPUTED_HEIGHTS, NOT_COMPUTED_SEC3, Rule, one
+from .records import INPUT_RADII, NOT_COMPUTED_HEIGHTS_ARCS, NOT_COMPUTED_SEC3, PrintedInput, Rule, one
 
 __all__ = ["VALUES"]
 
@@ -96,12 +96,22 @@ def _sensitivity(v, col, t):
         f"0.0001 mm eq 2.8.7 gives {pr['delta_alpha_deg']:.5f} deg (errata); delta_1 = shift / "
         f"{tca['h_active_in']:.3f} in (Table 6.2.2 height{' of one zone, ha' if v == 2 else ''})"
     )
+    imp = {
+        m: one(sens, version=v, step="implied_by_printed", method=f"eq2.8.7_inverse_{m}")
+        for m in ("decrease", "increase")
+    }
+    note += (
+        f"; the printed {imp['decrease']['delta_alpha_deg']:.2f} deg needs dE = {imp['decrease']['delta_E_in']:.6f} in "
+        f"(alpha decreasing) or {imp['increase']['delta_E_in']:.6f} in (increasing) by eq 2.8.7, and the printed delta_1 "
+        f"implies d alpha = {imp['decrease']['delta_alpha_from_printed_delta_1_deg']:.3f} deg by eq 2.8.6"
+    )
     if v == 1:
         note += (
-            "; version 1 (rho difference 0.001 in) has no contact for dE = 0.001 in (eq 2.8.7 needs "
-            "|sin alpha'| <= 1 and gives 60 deg or none); with dE = 0.0001 in TCA gives "
-            f"{one(sens, version=1, step='0.0001in', method='tca')['delta_alpha_deg']:.2f} deg; 19.50 is "
-            "not reproduced by any of these steps"
+            "; version 1 (rho difference 0.001 in) has no contact for dE = 0.001 in, the step of versions 2 and 3 (TCA does "
+            "not converge: NaN; eq 2.8.7 gives 60.09 deg decreasing, no solution increasing); with dE = 0.0001 in TCA gives "
+            f"{one(sens, version=1, step='0.0001in', method='tca')['delta_alpha_deg']:.2f} deg. 19.50 implies a step about "
+            "a third of the other versions' (0.00032 or 0.00027 in, 0.0082 or 0.0069 mm), and its delta_1 = 0.383 and "
+            "d alpha = 19.50 disagree by 2 % under eq 2.8.6: the report's version-1 computation is not recoverable"
         )
     return tca[col], note
 
@@ -123,26 +133,45 @@ def _profile_dgamma(t):
 
 
 def _profile_dlambda(t):
+    """dlambda = 3' of the profile-crowned pair, two readings side by side: the value is the turn
+    of the pinion about the centre line (= dgamma of opposite sign), the reading that reproduces
+    the report; the literal lead (helix-angle) error is in the note."""
     te = t["te_summary"]
     g, gm = one(te, case="dgamma_plus"), one(te, case="dgamma_minus")
     lh, lm = one(te, case="dlambda_helix_plus"), one(te, case="dlambda_helix_minus")
-    return lh["te_max_arcsec"], (
-        f"{_profile_common(g)}; dlambda = pinion lead angle +3 arcmin (pinion generated with helix angle beta - 3', same "
-        f"pitch cylinder); -3 arcmin gives {lm['te_max_arcsec']:.3f}. About 1/cos^2(beta) times the dgamma value: "
-        f"a true lead (helix) error does not reproduce 'the same 40.48 in both cases'; a lead error modelled as a "
-        f"turn of the pinion about the centre line equals dgamma of opposite sign ({gm['te_max_arcsec']:.3f} / "
-        f"{g['te_max_arcsec']:.3f})"
+    return gm["te_max_arcsec"], (
+        f"{_profile_common(g)}; two readings of dlambda = 3': (a) a turn of the pinion about the centre line, i.e. "
+        f"dgamma = -3' (the value: {gm['te_max_arcsec']:.3f}; +3' gives {g['te_max_arcsec']:.3f}), and (b) the literal "
+        f"pinion lead-angle error (pinion generated with helix angle beta - 3', same pitch cylinder): "
+        f"{lh['te_max_arcsec']:.3f} (+3') / {lm['te_max_arcsec']:.3f} (-3'), about 1/cos^2(beta) times (a). "
+        "Reading (a) reproduces the report's 'the same 40.48 in both cases' to 0.07 %, reading (b) is 13 % above: "
+        "the report's dlambda acts as a turn about the centre line (so do its worm-ground dlambda results); "
+        "(a) is 0.02 arcsec outside the printed precision"
     )
 
 
+#: the worm-ground TE_max: total tolerance (relative) from the rounding of the printed a_t = 0.394
+_WORM_TOL_REL = 0.005
+_WORM_TOL_BASIS = (
+    "0.5 % of the printed value: the sec. 5.4 rack coefficients are printed to 3 decimals and TE_max grows with "
+    "a_c - a_t (0.03100 -> 0.03147, the unrounded 1/(2 rho) of eq 2.7.2, raises it by 0.55 %), so half a unit of "
+    "the last digit of a_t alone moves TE_max by about 0.58 %"
+)
+
+
 def _worm_note(w) -> str:
+    a = w.loc["worm_aligned"]
     return (
-        f"TCA of the pinion ground by the plunging worm (our set-up: gearrep.surfaces.novikov.WormGeneratedPinion; "
-        f"r_pw = 3.82 in, N_w = 1, a_pl = 0.00139 1/in, beta = 19.948 deg), TE_max = peak-to-peak over the cycle "
-        f"(hand-over where neighbouring TE curves cross; contact limited to the active profile of Table 6.2.2 v3). "
-        f"The plunge with a small profile mismatch twists the surface: the contact path runs diagonally across the "
-        f"profile (rack parameter range {w.loc['worm_aligned', 'u_rack_range_in']:.3f} in aligned), which the "
-        f"report does not show; the worm-pinion setting details of eq 5.2.5-5.3.7 (signs, feed) are our reading"
+        f"TCA of the pinion ground by the plunging worm (gearrep.surfaces.novikov.WormGeneratedPinion; r_pw = 3.82 "
+        f"in, N_w = 1, a_pl = 0.00139 1/in, beta = 19.948 deg, a_c = {a['a_c_per_in']:.3f}, a_t = {a['a_t_per_in']:.3f} "
+        f"1/in as printed in sec. 5.4). Set-up as printed: feed by translation l_w along the pinion axis plus "
+        f"l_w tan(beta) tangentially, plunge E0 - a_pl l_w^2 along the fixed shortest distance (eq 5.2.5, 5.3.3, "
+        f"5.3.7), crossing angle 90 - beta - lambda_w = {a['crossing_angle_deg']:.3f} deg (eq 5.2.1; that angle "
+        f"belongs to a worm of the opposite hand to the pinion). TE_max = peak-to-peak TE over the meshing cycle "
+        f"between the transfer points (TE_0(phi1) = TE_0(phi1 -+ 2 pi/N1)), contact on the active profile of Table "
+        f"6.2.2 v3, face not limiting (a face of {a['face_width_in']:.3f} in would give "
+        f"{a['te_max_face_limited_arcsec']:.3f}). Our earlier set-up (feed as an extra pinion turn, eq 5.3.2) gave "
+        f"8.50 / 12.96 / 16.56: results/nasa/worm_choices.csv shows each choice's effect"
     )
 
 
@@ -151,15 +180,80 @@ def _worm(case, t):
     note = _worm_note(w)
     if case == "worm_dgamma_plus":
         note += (
-            f"; dgamma = +3 arcmin (as for profile crowning); -3 arcmin gives "
-            f"{w.loc['worm_dgamma_minus', 'te_max_arcsec']:.3f}"
+            f"; dgamma = +3 arcmin (the sign that gives the printed value; -3 arcmin gives "
+            f"{w.loc['worm_dgamma_minus', 'te_max_arcsec']:.3f}, face-limited {w.loc[case, 'te_max_face_limited_arcsec']:.3f})"
         )
-    if case == "worm_dlambda_plus":
+    if case == "worm_dgamma_minus":
         note += (
-            f"; dlambda = +3 arcmin lead-angle error (worm set to beta - 3'); -3 arcmin gives "
-            f"{w.loc['worm_dlambda_minus', 'te_max_arcsec']:.3f}"
+            f"; dlambda = 3' read as a turn of the pinion about the centre line, i.e. dgamma = -3' (the reading of the "
+            f"profile-crowned rows); the literal lead-angle error (worm set to beta -+ 3') gives "
+            f"{w.loc['worm_dlambda_plus', 'te_max_arcsec']:.3f} (+3') / {w.loc['worm_dlambda_minus', 'te_max_arcsec']:.3f}"
+            f" (-3'): the turn reading reproduces the report"
         )
-    return w.loc[case, "te_max_arcsec"], note
+    return w.loc[case, "te_max_arcsec"], note, _WORM_TOL_REL, _WORM_TOL_BASIS
+
+
+def _height(col, t):
+    """Table 6.2.2 version 3 (and sec. 3.3's 1.8 for the convex pinion): the design row of the
+    heights table, with the assumption dependence in the note."""
+    h = t["heights"]
+    r = one(h, kind="design")
+    sw = h[h["kind"] == "sweep"]
+    req = h[h["kind"] == "required"]
+    note = (
+        f"pinion rack of sec. 2 (a_c = 1/(2 x 5.88/P_n), alpha_n = 25 deg, beta = {r['beta_deg']:.3f} deg, N1 = 17): "
+        f"h_a P_n = {r['ha_Pn']:.4f} from undercutting (Litvin's limiting line, gearrep.surfaces.novikov.undercut_limit; "
+        "no assumption). h_d from pointing needs two unprinted inputs; assumed: rack tooth thickness at the pitch line "
+        f"{r['rack_tooth_over_pitch']:.2f} x normal pitch, minimal (transverse) top land {r['top_land_times_Pn']:.2f}/P_n "
+        f"(sec. 3.3's value): h_d P_n = {r['hd_Pn']:.4f}. Dependence: h_d P_n = "
+        + ", ".join(f"{x:.3f}" for x in sw["hd_Pn"])
+        + " for (rack tooth / pitch, top land P_n) = "
+        + ", ".join(f"({a:.2f}, {b:.2f})" for a, b in zip(sw["rack_tooth_over_pitch"], sw["top_land_times_Pn"]))
+        + ". The printed h_d P_n = 1.25 needs a rack tooth of "
+        + ", ".join(f"{a:.3f}" for a in req["rack_tooth_over_pitch"])
+        + " pitches for top lands "
+        + ", ".join(f"{b:.2f}" for b in req["top_land_times_Pn"])
+        + "/P_n (a pinion tooth thicker than half the pitch; with equal tooth and space even a pointed tooth gives "
+        f"{sw.loc[sw['top_land_times_Pn'] == 0, 'hd_Pn'].max():.3f}); then h P_n = {req['h_Pn'].iloc[0]:.3f}. One "
+        "assumption fits the one assumption-dependent printed height (h_d, and h with it) along that curve; the only "
+        "other heights of the same rack are h_a (no assumption, 0.544 vs 0.55) and the total"
+    )
+    return r[col], note
+
+
+def _disk_common(r) -> str:
+    return (
+        f"pinion ground by the plunging disk (gearrep.surfaces.novikov.DiskGroundPinion, appendices A-B; plunge a_pd = "
+        f"{r['a_pd_per_in']:.6f} 1/in by eq 5.4.13 from a_pl = 0.00139, racks of sec. 5.4, rack tooth 0.5 pitch). The "
+        f"report gives no disk size: INFERRED disk-pinion shortest distance E_d = {r['E_d_in']:.4f} in (crossing angle "
+        f"{abs(r['gamma_d_deg']):.3f} deg) from the printed aligned 11.54 (one parameter); TE_max over the cycle "
+        "between the transfer points"
+    )
+
+
+def _disk_input(t):
+    """The aligned disk row is the calibration input of the inference, not a check (status input)."""
+    r = one(t["disk"], case="aligned")
+    return PrintedInput(
+        f"used as the input of an inference, not checked: {_disk_common(r)}; with it the aligned TE_max is "
+        f"{r['te_max_arcsec']:.4f} by construction. The dgamma and dlambda rows are the predictions"
+    )
+
+
+def _disk(case, t):
+    dk = t["disk"]
+    r = one(dk, case=case)
+    note = f"PREDICTION with the inferred disk: {_disk_common(r)}"
+    if case == "dgamma_plus":
+        note += (
+            f"; dgamma = +3' (the sign of the worm rows); -3' gives {one(dk, case='dgamma_minus')['te_max_arcsec']:.3f}"
+        )
+    else:
+        note += (
+            f"; dlambda = 3' read as a turn about the centre line (dgamma = -3', as for the worm); the literal lead "
+            f"error gives {one(dk, case='dlambda_lead_plus')['te_max_arcsec']:.3f}"
+        )
+    return r["te_max_arcsec"], note
 
 
 _RADII_12 = [
@@ -183,9 +277,10 @@ VALUES: dict = {
         _CUR, partial(_rho, "gear", "eq 2.7.2: 6.35/P_n (1/(2 a_t) = 1.2690 with the printed a_t = 0.394)")
     ),
     **{vid: INPUT_RADII for vid in _RADII_12},
-    **{f"002-T6.2.2-version={v}-{q}": NOT_COMPUTED_HEIGHTS for v in (1, 2, 3) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
+    **{f"002-T6.2.2-version={v}-{q}": NOT_COMPUTED_HEIGHTS_ARCS for v in (1, 2) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
+    **{f"002-T6.2.2-version=3-{q}": Rule(("heights",), partial(_height, q)) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
     "002-S3.3-design=pinion_concave;N2_min=70-h_Pn": NOT_COMPUTED_SEC3,
-    "002-S3.3-design=pinion_convex-h_Pn": NOT_COMPUTED_HEIGHTS,
+    "002-S3.3-design=pinion_convex-h_Pn": Rule(("heights",), partial(_height, "h_Pn")),
     **{
         f"002-T6.2.4-version={v}-{q}": Rule(_ELL, partial(_ellipse, v, col, sfx))
         for v in (1, 2, 3)
@@ -205,16 +300,15 @@ VALUES: dict = {
         for tool in ("disk", "worm")
         for m, fn in (("dgamma_3arcmin", _profile_dgamma), ("dlambda_3arcmin", _profile_dlambda))
     },
-    **{
-        f"002-S5.5-crowning=disk;misalignment={m}-TE_max": NOT_COMPUTED_DISK
-        for m in ("none", "dgamma_3arcmin", "dlambda_3arcmin")
-    },
+    "002-S5.5-crowning=disk;misalignment=none-TE_max": Rule(("disk",), _disk_input),
+    "002-S5.5-crowning=disk;misalignment=dgamma_3arcmin-TE_max": Rule(("disk",), partial(_disk, "dgamma_plus")),
+    "002-S5.5-crowning=disk;misalignment=dlambda_3arcmin-TE_max": Rule(("disk",), partial(_disk, "dgamma_minus")),
     **{
         f"002-S5.5-crowning=worm;misalignment={m}-TE_max": Rule(_WORM, partial(_worm, case))
         for m, case in (
             ("none", "worm_aligned"),
             ("dgamma_3arcmin", "worm_dgamma_plus"),
-            ("dlambda_3arcmin", "worm_dlambda_plus"),
+            ("dlambda_3arcmin", "worm_dgamma_minus"),
         )
     },
 }
