@@ -19,6 +19,7 @@ import copy
 import hashlib
 import json
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -200,6 +201,7 @@ def resolve(raw) -> dict:
     if not isinstance(fam, str) or fam not in DECLARATIONS:
         raise SettingError(f"design.family: got {_short(fam)}; allowed: one of {list(FAMILIES)}")
     decl = DECLARATIONS[fam]
+    _refuse_unknown(decl, raw, "design")
     out = _s.resolve(decl, raw, where="design")
     for key in _required(decl):
         v = out
@@ -209,6 +211,20 @@ def resolve(raw) -> dict:
             s = _lookup(decl, key)
             raise SettingError(f"design.{key}: missing; allowed: {s.allowed()}")
     return out
+
+
+def _refuse_unknown(decl, raw: Mapping, where: str):
+    """An unknown key anywhere in ``raw`` refused with its value, the closest declared key and the
+    keys allowed there."""
+    for k, v in raw.items():
+        if k not in decl:
+            name = k if isinstance(k, str) and re.fullmatch(r"[A-Za-z_]\w*", k) else repr(k)
+            raise SettingError(
+                f"{where}.{name}: got {_short(v)} under an unknown key{_s.closest(k, decl)}; allowed keys here: "
+                f"{sorted(decl)}"
+            )
+        if decl[k].kind == "group" and isinstance(v, Mapping):
+            _refuse_unknown(decl[k].fields, v, f"{where}.{k}")
 
 
 def _short(v) -> str:
@@ -432,16 +448,23 @@ def build(values: dict) -> Design:
         raise SettingError(f"design: {e}; allowed: a design the {values['family']} family can build") from None
 
 
-def _largest_with_contact(values: dict, name: str, x: float, steps: int = 12) -> float:
+def _largest_with_contact(values: dict, name: str, x: float, steps: int = 6) -> float:
     """Bisection on the magnitude of misalignment ``name`` (same sign as ``x``) between 0 (contact)
-    and ``x`` (none): the smallest magnitude found without contact, to 2^-steps of |x|."""
+    and ``x`` (none): the smallest magnitude found without contact, to 2^-steps of |x| (plain
+    Newton solves: an estimate of the limit, which the message calls approximate)."""
     from .analysis import contact_at
 
     lo, hi = 0.0, abs(x)
+    base = build(values)
     for _ in range(steps):
         mid = 0.5 * (lo + hi)
-        d = build(set_dotted(values, f"misalignment.{name}", math.copysign(mid, x)))
-        c, _ = contact_at(d, np.array([0.0]))
+        d = Design(values, base.family, None, mesh=base.mesh)
+        d.pair = base.pair.with_misalignment(
+            _misalignment(set_dotted(values, f"misalignment.{name}", math.copysign(mid, x)))
+        )
+        if d.mesh is not None:
+            d.mesh.gear_pair = d.pair
+        c, _ = contact_at(d, np.array([0.0]), quick=True)
         lo, hi = (mid, hi) if c.converged[0] else (lo, mid)
     return hi
 
@@ -468,7 +491,7 @@ def check(raw, *, contact: bool = True) -> Design:
                 name, x = next(iter(mis.items()))
                 limit = _largest_with_contact(values, name, x)
                 raise SettingError(
-                    f"design.misalignment.{name}: got {x!r}; allowed: |{name}| < {limit:.3g} for this pair (larger "
+                    f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.2g} for this pair (larger "
                     f"values move the contact at the pitch position off the flanks: status {c.status_name[0]})"
                 )
             raise SettingError(

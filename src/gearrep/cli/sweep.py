@@ -179,8 +179,12 @@ def _sidecar(path: Path, spec: dict, extra: dict):
     path.with_name(path.name + ".prov.json").write_text(json.dumps(prov, indent=1, sort_keys=True) + "\n")
 
 
-def run_shard(spec_path, shard: int, out_path):
-    """Compute shard ``shard`` of the sweep in ``spec_path`` and write its CSV (+ sidecar)."""
+def run_shard(spec_path, shard: int, out_path, log_path=None):
+    """Compute shard ``shard`` of the sweep in ``spec_path`` and write its CSV (+ sidecar); the log
+    (optional) gets one line per point and the shard's wall time."""
+    import time
+
+    t0 = time.perf_counter()
     spec = json.loads(Path(spec_path).read_text())
     lo = shard * spec["points_per_shard"]
     hi = min(spec["n_points"], lo + spec["points_per_shard"])
@@ -188,6 +192,10 @@ def run_shard(spec_path, shard: int, out_path):
     out = Path(out_path)
     _frame(spec, rows).to_csv(out, index=False, float_format=_exact)
     _sidecar(out, spec, {"shard": shard, "points": [lo, hi]})
+    if log_path is not None:
+        lines = [f"point {r['point']}: {r['status']} {r['message']}".rstrip() for r in rows]
+        lines.append(f"shard {shard}: points {lo}..{hi - 1}, {time.perf_counter() - t0:.1f} s")
+        Path(log_path).write_text("\n".join(lines) + "\n")
 
 
 def aggregate(spec_path, shard_paths, out_path):

@@ -31,7 +31,7 @@ rule shard:
         mem_mb=RES["mem_mb"],
         runtime=RES["runtime_min"],
     run:
-        _sweep.run_shard(input[0], int(wildcards.i), output.csv)
+        _sweep.run_shard(input[0], int(wildcards.i), output.csv, log[0])
 
 
 rule aggregate:
