@@ -350,3 +350,32 @@ def test_sweep_workflow_declares_shard_jobs_with_resources(tmp_path):
     assert len(shard_resources) == 3
     assert all("runtime=60" in x and "mem_mb=1000" in x for x in shard_resources)
     assert json.loads((tmp_path / "o" / "sweep.json").read_text())["n_shards"] == 3
+
+
+def test_console_script_and_profiles_are_declared():
+    import importlib
+    import tomllib
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    module, func = project["project"]["scripts"]["gearrep"].split(":")
+    assert getattr(importlib.import_module(module), func) is main
+    assert "cli/sweep.smk" in project["tool"]["setuptools"]["package-data"]["gearrep"]
+    extras = project["project"]["optional-dependencies"]
+    core = " ".join(project["project"]["dependencies"])
+    assert "executor-plugin" not in core and "pyarrow" not in core
+    assert any("cluster-generic" in x for x in extras["cluster"]) and any("slurm" in x for x in extras["slurm"])
+    prof = yaml.safe_load((ROOT / "profiles" / "slurm" / "config.yaml").read_text())
+    assert prof["executor"] == "slurm" and {"mem_mb", "runtime"} <= set(prof["default-resources"])
+
+
+def test_replicate_wraps_the_repository_workflow(tmp_path):
+    rc, _, err = run("replicate", "--directory", tmp_path)
+    assert rc == 2 and "Snakefile" in err
+    r = subprocess.run(
+        [sys.executable, "-m", "gearrep", "replicate", "results/checks/catt.csv", "--directory", str(ROOT), "--", "-n"],
+        env=ENV,
+        capture_output=True,
+        text=True,
+    )
+    assert r.returncode == 0, r.stderr
+    assert "catt" in r.stdout

@@ -245,21 +245,27 @@ def _parser() -> argparse.ArgumentParser:
         progress(q)
         q.set_defaults(func=func)
 
-    q = sub.add_parser("sweep", help="a grid of designs run as a Snakemake workflow, split into shards")
+    q = sub.add_parser(
+        "sweep",
+        help="a grid of designs run as a Snakemake workflow, split into shards",
+        epilog="Snakemake options and targets go after --, e.g. -- --executor slurm --jobs 100",
+    )
     q.add_argument("sweep", help="sweep file (YAML)")
     q.add_argument("-o", "--output", required=True, help="output directory (created; a re-run resumes it)")
     q.add_argument("--cores", type=int, default=1, help="cores for a local run (default 1)")
     q.add_argument("--profile", help="Snakemake profile, e.g. profiles/slurm (executor, resources)")
     q.add_argument("--dry-run", action="store_true", help="list the jobs only")
-    q.add_argument("snakemake_args", nargs="*", help="further Snakemake options after --")
-    q.set_defaults(func=_cmd_sweep)
+    q.set_defaults(func=_cmd_sweep, passthrough=True)
 
-    q = sub.add_parser("replicate", help="the replications (runs the repository's Snakefile)")
+    q = sub.add_parser(
+        "replicate",
+        help="the replications (runs the repository's Snakefile)",
+        epilog="Snakemake options go after --, e.g. -- --configfile config/test.yaml",
+    )
     q.add_argument("target", nargs="?", help="a target, e.g. results/scorecard.md (default: everything)")
     q.add_argument("--cores", type=int, default=2)
     q.add_argument("--directory", default=".", help="the gearrep repository root (default: .)")
-    q.add_argument("snakemake_args", nargs="*", help="further Snakemake options after --")
-    q.set_defaults(func=_cmd_replicate)
+    q.set_defaults(func=_cmd_replicate, passthrough=True)
 
     q = sub.add_parser("schema", help="print the JSON schema of design files")
     q.add_argument("--write", help="write it to this file instead")
@@ -270,10 +276,19 @@ def _parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     """Run the command; returns the exit code (0 ok, 2 refused input, 1 failure)."""
     parser = _parser()
+    argv = list(sys.argv[1:] if argv is None else argv)
+    extra = []
+    if "--" in argv:  # sweep / replicate: everything after -- goes to Snakemake unchanged
+        i = argv.index("--")
+        argv, extra = argv[:i], argv[i + 1 :]
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:  # argparse: --help (0) or a usage error (2)
         return int(e.code or 0)
+    if extra and not getattr(args, "passthrough", False):
+        print(f"gearrep {args.command}: refused: arguments after --: {extra}; allowed: none", file=sys.stderr)
+        return EXIT_REFUSED
+    args.snakemake_args = extra
     try:
         return int(args.func(args))
     except (Refusal, SettingError, FileExistsError) as e:

@@ -243,8 +243,9 @@ def run_cli(args) -> int:
     )
     cmd = [sys.executable, "-m", "snakemake", "--snakefile", str(SNAKEFILE), "--directory", str(out)]
     cmd += ["--config", f"spec={spec_path}", "--cores", str(args.cores)]
-    if args.profile:
-        cmd += ["--profile", args.profile]
+    if args.profile:  # a path is taken relative to where the command runs, not to DIR
+        prof = Path(args.profile)
+        cmd += ["--profile", str(prof.resolve()) if prof.exists() else args.profile]
     if args.dry_run:
         cmd += ["--dry-run"]
     cmd += list(args.snakemake_args)
