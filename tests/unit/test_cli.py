@@ -278,7 +278,7 @@ def _small_sweep(tmp_path, **kw):
         "design": str(EXAMPLES / "crowned_spur.yaml"),
         "grid": {"misalignment.d_gamma_out_deg": [0.0, 0.05, 3.0], "pinion.crowning.crown_mm": [0.05, 0.1]},
         "phi1_points": 41,
-        "solves_per_shard": 82,
+        "solves_per_shard": 164,  # 82 solves per point (window + path): 2 points per shard
         **kw,
     }
     return write(tmp_path, "sweep.yaml", doc)
@@ -290,7 +290,7 @@ def test_sweep_shards_give_the_same_numbers_however_the_grid_is_split(tmp_path):
 
     raw = load_yaml(_small_sweep(tmp_path))
     tables = []
-    for per_shard in (82, 10**6):
+    for per_shard in (164, 10**6):
         spec = resolve_sweep({**raw, "solves_per_shard": per_shard}, load_yaml(raw["design"]))
         sp = tmp_path / f"spec{per_shard}.json"
         sp.write_text(json.dumps(spec))
@@ -299,16 +299,16 @@ def test_sweep_shards_give_the_same_numbers_however_the_grid_is_split(tmp_path):
             run_shard(sp, i, p)
         aggregate(sp, shards, tmp_path / f"sweep{per_shard}.csv")
         tables.append((tmp_path / f"sweep{per_shard}.csv").read_bytes())
-        assert spec["n_shards"] == (3 if per_shard == 82 else 1)
+        assert spec["n_shards"] == (3 if per_shard == 164 else 1)
     assert tables[0] == tables[1]
-    t = pd.read_csv(tmp_path / "sweep82.csv")
+    t = pd.read_csv(tmp_path / "sweep164.csv")
     assert len(t) == 6 and list(t["point"]) == list(range(6))
     refused = t[t["misalignment__d_gamma_out_deg"] == 3.0]
     assert (refused["status"] == "refused").all()
     assert refused["message"].str.contains("design.misalignment.d_gamma_out_deg").all()
     ok = t[t["status"] == "ok"]
-    assert (ok["solves"] == 41).all() and ok["contact_ratio"].between(1.5, 2.0).all()
-    prov = json.loads((tmp_path / "sweep82.csv.prov.json").read_text())
+    assert (ok["solves"] == 82).all() and ok["contact_ratio"].between(1.5, 2.0).all()
+    prov = json.loads((tmp_path / "sweep164.csv.prov.json").read_text())
     assert {"gearrep_version", "commit", "design_sha256", "settings_sha256", "sweep_sha256", "created_utc"} <= set(prov)
 
 
@@ -368,9 +368,13 @@ def test_console_script_and_profiles_are_declared():
     assert prof["executor"] == "slurm" and {"mem_mb", "runtime"} <= set(prof["default-resources"])
 
 
-def test_replicate_wraps_the_repository_workflow(tmp_path):
+def test_replicate_refuses_a_directory_without_the_workflow(tmp_path):
     rc, _, err = run("replicate", "--directory", tmp_path)
-    assert rc == 2 and "Snakefile" in err
+    assert rc == 2 and "Snakefile" in err and "Traceback" not in err
+
+
+@pytest.mark.slow  # parses the whole replication workflow (~5-15 s)
+def test_replicate_wraps_the_repository_workflow():
     r = subprocess.run(
         [sys.executable, "-m", "gearrep", "replicate", "results/checks/catt.csv", "--directory", str(ROOT), "--", "-n"],
         env=ENV,
@@ -379,3 +383,25 @@ def test_replicate_wraps_the_repository_workflow(tmp_path):
     )
     assert r.returncode == 0, r.stderr
     assert "catt" in r.stdout
+
+
+def test_aligned_unmodified_pair_is_line_contact_with_the_closed_form_contact_ratio(tmp_path):
+    from gearrep.meshing import contact_ratio_closed_form
+    from gearrep.surfaces.involute import InvoluteGearData
+
+    doc = {
+        "family": "involute",
+        "module_mm": 2.0,
+        "face_width_mm": 20.0,
+        "pinion": {"teeth": 20},
+        "gear": {"teeth": 40},
+    }
+    rc, _, err = run("tca", write(tmp_path, "line.yaml", doc), "-o", tmp_path / "o")
+    assert rc == 0, err
+    s = pd.read_csv(tmp_path / "o" / "summary.csv").iloc[0]
+    g1, g2 = (InvoluteGearData(n, 2.0, np.radians(20), 20.0) for n in (20, 40))
+    closed = contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, g1.r_p + g2.r_p, g1.base_pitch)
+    assert bool(s["line_contact"]) and s["contact_ratio"] == pytest.approx(closed, rel=1e-12)
+    assert abs(s["te_peak_to_peak_arcsec"]) < 1e-6  # conjugate flanks
+    path = pd.read_csv(tmp_path / "o" / "contact_path.csv")
+    assert path["ellipse_semi_major_mm"].isna().all()  # no ellipse for line contact

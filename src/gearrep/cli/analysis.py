@@ -26,6 +26,7 @@ __all__ = [
     "flank_grid",
     "te_metrics",
     "sweep_point",
+    "solves_per_point",
     "PARAM_NAMES",
 ]
 
@@ -38,8 +39,9 @@ PARAM_NAMES = {
 
 
 def _novikov_mask(d, c):
-    """Novikov contacts beyond the face width get status OFF_FLANK."""
-    half = 0.5 * d.values["face_width_mm"]
+    """Novikov contacts beyond the face width get status OFF_FLANK (1e-9 relative: the engagement
+    limits themselves are on the face edges)."""
+    half = 0.5 * d.values["face_width_mm"] * (1 + 1e-9)
     z = np.where(c.converged, c.position[:, 2], np.nan)
     st = c.status.copy()
     st[c.converged & ~(np.abs(z) <= half)] = Status.OFF_FLANK
@@ -60,10 +62,11 @@ def _catt_mask(d, c):
     return type(c)(**{**c.__dict__, "status": st})
 
 
-def contact_at(d, phi1, quick: bool = False):
+def contact_at(d, phi1, quick: bool = False, face: bool = True):
     """Contact points of design ``d`` at pinion angles ``phi1`` [rad] (one independent solve each,
     from the family's start); returns (ContactPoints, line_contact). ``quick``: Novikov pairs get
-    the plain Newton solve only (no damped retry)."""
+    the plain Newton solve only (no damped retry); ``face=False``: Novikov contacts beyond the face
+    width are kept (the helical tooth surface extended along its helices)."""
     from ..tca import solve_contact
 
     s = d.analysis
@@ -92,7 +95,7 @@ def contact_at(d, phi1, quick: bool = False):
             rows = np.arange(len(c))
             rows[bad] = len(c) + np.arange(len(bad))
             c = type(c).concatenate([c, c2]).take(rows)
-        return _novikov_mask(d, c), False
+        return (_novikov_mask(d, c) if face else c), False
 
 
 def _drive_sign(pair, c) -> float:
@@ -123,22 +126,17 @@ def _window(d):
         eps_b = g1.face_width * np.tan(g1.helix_angle) / (np.pi * g1.module)
         half = 1.05 * (float(eps_a) + eps_b) * p1
         return (-half, half), None
-    # Novikov: the contact crosses the face width along the helix: z ~ r_p1 phi1 / tan(beta)
-    f1 = d.pair.flank1
-    span = d.values["face_width_mm"] * abs(np.tan(np.radians(d.values["helix_angle_deg"]))) / f1.r_p
-    half = 0.6 * span + 0.5 * p1
-    return (-half, half), None
-
-
-def _engaged_limits(d, c):
-    """Novikov: pinion angles where the contact crosses the face edges (z linear in phi1 along the path)."""
+    # Novikov: the contact runs along the helix, z(phi1) linear; probed near phi1 = 0 on the
+    # extended surface, the engagement is where z crosses the face edges
+    probe = np.array([-0.25, 0.0, 0.25]) * p1
+    c, _ = contact_at(d, probe, face=False)
     ok = c.converged
-    phi, z = c.phi1[ok], c.position[ok, 2]
-    if len(phi) < 2:
-        raise ValueError("fewer than two contact points on the face width: no meshing cycle")
-    k, z0 = np.polyfit(phi, z, 1)
+    if ok.sum() < 2:
+        raise ValueError("fewer than two contact points near phi1 = 0: no path of contact to follow")
+    k, z0 = np.polyfit(c.phi1[ok], c.position[ok, 2], 1)
     half = 0.5 * d.values["face_width_mm"]
-    return tuple(sorted(((-half - z0) / k, (half - z0) / k)))
+    lim = tuple(sorted(((-half - z0) / k, (half - z0) / k)))
+    return lim, lim
 
 
 def te_metrics(d, n_phi: int):
@@ -148,17 +146,18 @@ def te_metrics(d, n_phi: int):
 
     p1 = 2.0 * np.pi / d.pair.n1
     (lo, hi), known = _window(d)
-    phi = np.linspace(lo, hi, int(n_phi))
-    c, _ = contact_at(d, phi)
-    if known is None and d.family == "involute":  # grid-resolved: the converged points of one pair
+    solves = solves_per_point(d.family, int(n_phi))
+    if known is None:  # involute (sweeps): grid-resolved, the first and last converged points of one pair
+        phi = np.linspace(lo, hi, int(n_phi))
+        c, _ = contact_at(d, phi)
         ok = np.flatnonzero(c.converged)
         if len(ok) < 2:
             raise ValueError("fewer than two contact points inside the flanks: no meshing cycle")
         b, e = float(phi[ok.min()]), float(phi[ok.max()])
-    elif known is None:
-        b, e = _engaged_limits(d, c)
     else:
         b, e = known
+    phi = np.linspace(b, e, int(n_phi))
+    c, _ = contact_at(d, phi)
     te = np.where(c.converged & (phi >= b - 1e-12) & (phi <= e + 1e-12), c.te, np.nan)
     drive = _drive_sign(d.pair, c)
     mc = (e - b) / p1
@@ -173,15 +172,18 @@ def te_metrics(d, n_phi: int):
     table = pd.DataFrame({"phi1_rad": at, "te_arcsec": env / ARCSEC, "tooth_pair": lead})
     summary = {
         "contact_ratio": float(mc),
-        "contact_ratio_method": "middle-section closed form"
-        if known is not None
-        else ("grid of converged points" if d.family == "involute" else "face crossings of the path"),
+        "contact_ratio_method": {
+            "catt": "middle-section closed form",
+            "novikov": "face crossings of the path",
+            "involute": "grid of converged points",
+        }[d.family],
         "phi1_begin_rad": float(b),
         "phi1_end_rad": float(e),
         "te_peak_to_peak_arcsec": float((np.nanmax(env) - np.nanmin(env)) / ARCSEC)
         if np.any(np.isfinite(env))
         else float("nan"),
         "drive_sense": "max" if drive > 0 else "min",
+        "solves": solves,
     }
     return c, table, summary
 
@@ -193,6 +195,14 @@ def _path_table(d, c, delta) -> pd.DataFrame:
     with np.errstate(all="ignore"):
         el = contact_ellipse(d.pair, c, delta)
     r = np.hypot(c.position[:, 0], c.position[:, 1])
+    # line contact (traced in a fixed section; relative curvature zero to rounding): no ellipse
+    ell = np.asarray(el.elliptic, bool) & (not d.line_contact)
+    el = el._replace(
+        a=np.where(ell, el.a, np.nan),
+        b=np.where(ell, el.b, np.nan),
+        area=np.where(ell, el.area, np.nan),
+        major_axis=np.where(ell[:, None], el.major_axis, np.nan),
+    )
     return pd.DataFrame(
         {
             "phi1_rad": c.phi1,
@@ -258,7 +268,9 @@ def tca_tables(d, progress=None) -> dict:
         "points_converged": int(ok.sum()),
         "points_total": len(path),
         "max_residual_mm": float(path.loc[ok, "residual"].max()) if ok.any() else float("nan"),
-        "max_ellipse_semi_major_mm": float(path["ellipse_semi_major_mm"].max()),
+        "max_ellipse_semi_major_mm": float(path["ellipse_semi_major_mm"].max())
+        if path["ellipse_semi_major_mm"].notna().any()
+        else float("nan"),
         "transfer_kind": getattr(locals().get("cyc"), "transfer_kind", "envelope of sampled pairs"),
     }
     return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary])}
@@ -361,6 +373,13 @@ def flank_cloud(d, member: int):
     return pts.reshape(n_u, n_v, 3), nrm.reshape(n_u, n_v, 3), table
 
 
+def solves_per_point(family: str, n_phi: int) -> int:
+    """Contact solves of one sweep point (:func:`te_metrics`): involute pairs solve a window and then
+    the engagement interval (2 n_phi), the others the engagement interval (n_phi; Novikov 3 more to
+    find it)."""
+    return {"involute": 2 * n_phi, "novikov": n_phi + 3, "catt": n_phi}[family]
+
+
 def sweep_point(d, n_phi: int) -> dict:
     """The metrics of one sweep point: TE over the meshing cycle (envelope of the sampled pairs),
     contact ratio, largest contact-ellipse semi-axis, convergence (``n_phi`` contact solves)."""
@@ -370,11 +389,12 @@ def sweep_point(d, n_phi: int) -> dict:
 
         el = contact_ellipse(d.pair, c, d.analysis["elastic_approach_mm"])
     ok = c.converged
+    a = np.where(np.asarray(el.elliptic, bool) & (not d.line_contact), el.a, np.nan)
     return {
         "contact_ratio": summary["contact_ratio"],
         "te_peak_to_peak_arcsec": summary["te_peak_to_peak_arcsec"],
-        "max_ellipse_semi_major_mm": float(np.nanmax(el.a)) if ok.any() else float("nan"),
-        "solves": len(c),
+        "max_ellipse_semi_major_mm": float(np.nanmax(a)) if np.isfinite(a).any() else float("nan"),
+        "solves": summary["solves"],
         "converged": int(ok.sum()),
         "max_residual_mm": float(c.residual[ok].max()) if ok.any() else float("nan"),
     }

@@ -464,7 +464,7 @@ def _largest_with_contact(values: dict, name: str, x: float, steps: int = 6) -> 
         )
         if d.mesh is not None:
             d.mesh.gear_pair = d.pair
-        c, _ = contact_at(d, np.array([0.0]), quick=True)
+        c, _ = contact_at(d, np.array([0.0]), quick=True, face=False)
         lo, hi = (mid, hi) if c.converged[0] else (lo, mid)
     return hi
 
@@ -477,7 +477,7 @@ def check(raw, *, contact: bool = True) -> Design:
     values = resolve(raw)
     d = build(values)
     if contact:
-        c, line = contact_at(d, np.array([0.0]))
+        c, line = contact_at(d, np.array([0.0]), face=False)  # Novikov: anywhere along the helix
         d.line_contact = line
         if not c.converged[0]:
             mis = {k: x for k, x in values["misalignment"].items() if x != 0.0}

@@ -112,7 +112,9 @@ def resolve_sweep(raw, base_design) -> dict:
     n = math.prod(len(v) for _, v in axes)
     if n > _MAX_POINTS:
         raise SettingError(f"sweep.grid: {n} points; allowed: at most {_MAX_POINTS}")
-    pps = max(1, math.ceil(out["solves_per_shard"] / out["phi1_points"]))
+    from .analysis import solves_per_point
+
+    pps = max(1, math.ceil(out["solves_per_shard"] / solves_per_point(base["family"], out["phi1_points"])))
     out.update(
         grid={k: v for k, v in axes},
         axes=[[k, v] for k, v in axes],
