@@ -405,3 +405,20 @@ def test_aligned_unmodified_pair_is_line_contact_with_the_closed_form_contact_ra
     assert abs(s["te_peak_to_peak_arcsec"]) < 1e-6  # conjugate flanks
     path = pd.read_csv(tmp_path / "o" / "contact_path.csv")
     assert path["ellipse_semi_major_mm"].isna().all()  # no ellipse for line contact
+
+
+def test_a_modified_copy_of_an_example_gives_its_own_results(spur_run, tmp_path):
+    """The README's new-user path: copy an example, change the crowning, analyse both."""
+    text = (EXAMPLES / "crowned_spur.yaml").read_text().replace("crown_mm: 0.09315", "crown_mm: 0.2")
+    assert "crown_mm: 0.2" in text
+    p = tmp_path / "my_pair.yaml"
+    p.write_text(text)
+    rc, _, err = run("tca", p, "-o", tmp_path / "mine")
+    assert rc == 0, err
+    a = pd.read_csv(spur_run / "contact_path.csv")["ellipse_semi_major_mm"].max()
+    b = pd.read_csv(tmp_path / "mine" / "contact_path.csv")["ellipse_semi_major_mm"].max()
+    assert b < a  # more crowning, shorter contact ellipse
+    prov = [
+        json.loads((d / "summary.csv.prov.json").read_text())["design_sha256"] for d in (spur_run, tmp_path / "mine")
+    ]
+    assert prov[0] != prov[1]
