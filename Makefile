@@ -15,7 +15,7 @@ PIP_TOOLS := pip-tools==7.6.2
 LOCK_PYTHON ?= python3.11
 PIP    := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-.PHONY: setup reproduce test test-all lint format schema stress bench screenshot clean lock
+.PHONY: setup reproduce test test-all test-cluster lint format schema stress bench screenshot clean lock
 
 $(STAMP): $(LOCK) pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -46,12 +46,12 @@ test: lint
 lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
-	$(BIN)/snakefmt --check Snakefile workflow/rules
+	$(BIN)/snakefmt --check Snakefile workflow/rules src/gearrep/cli/sweep.smk
 
 format: $(STAMP)
 	$(BIN)/ruff check --fix .
 	$(BIN)/ruff format .
-	$(BIN)/snakefmt Snakefile workflow/rules
+	$(BIN)/snakefmt Snakefile workflow/rules src/gearrep/cli/sweep.smk
 
 # config/schema.yaml from the settings declarations (a test keeps them equal).
 schema: $(STAMP)
@@ -59,6 +59,11 @@ schema: $(STAMP)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -m ''
+
+# `gearrep sweep` through Snakemake's cluster-generic executor with a local submit script (needs
+# snakemake-executor-plugin-cluster-generic, a test extra; skipped with that reason without it).
+test-cluster: $(STAMP)
+	$(BIN)/python -m pytest -n 0 -m cluster
 
 # Numerical stress suite, full version (the default `make test` runs its fast subset).
 stress: $(STAMP)

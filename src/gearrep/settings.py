@@ -216,7 +216,9 @@ def resolve(decl: Mapping[str, Setting], *layers: Mapping | None, where: str = "
             if s.kind == "group":
                 if not isinstance(v, Mapping):
                     raise SettingError(f"{key}: got {v!r}; allowed: {s.allowed()}")
-                out[k] = resolve(s.fields, out[k], v, where=key)
+                # the values so far as the first layer, without the unset (None: required) ones
+                so_far = {kk: vv for kk, vv in out[k].items() if vv is not None}
+                out[k] = resolve(s.fields, so_far, v, where=key)
             else:
                 out[k] = _coerce(s, v, key)
     return out

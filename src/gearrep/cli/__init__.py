@@ -1,0 +1,307 @@
+"""The ``gearrep`` command (also ``python -m gearrep``): analyses of your own gear pair from a
+design file, sweeps on Snakemake, and the replications.
+
+    gearrep check DESIGN.yaml                 validate only (exit 0 / 2)
+    gearrep tca DESIGN.yaml -o DIR            TCA over the meshing cycle: tables, figures, summary.html
+    gearrep curvature DESIGN.yaml -o DIR      principal curvatures and directions on a grid
+    gearrep sweep SWEEP.yaml -o DIR           a grid of designs as a Snakemake workflow (sharded)
+    gearrep replicate [TARGET]                the replications (the repository's Snakefile)
+    gearrep schema                            the JSON schema of design files
+
+This package is the file-reading layer: it reads design files, checks them before any work
+(:mod:`gearrep.cli.design`), and writes into a temporary directory renamed at the end
+(:mod:`gearrep.cli.output`). A refused design or option prints one line naming the key, the value
+and the allowed range on stderr and exits with code 2, leaving no output directory.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from ..settings import SettingError
+
+__all__ = ["main", "load_yaml", "Refusal"]
+
+EXIT_REFUSED = 2
+
+
+class Refusal(Exception):
+    """A refused input (file, option or design): the message names it; exit code 2."""
+
+
+def load_yaml(path) -> object:
+    """The YAML document of ``path``: floats like ``1e-3`` read as numbers (YAML 1.2), repeated
+    keys refused. Raises Refusal naming the file (and line) on any problem."""
+    import re
+
+    import yaml
+
+    class Loader(yaml.SafeLoader):
+        pass
+
+    Loader.add_implicit_resolver(
+        "tag:yaml.org,2002:float",
+        re.compile(
+            r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?|[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
+            |\.[0-9_]+(?:[eE][-+]?[0-9]+)?|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$""",
+            re.X,
+        ),
+        list("-+0123456789."),
+    )
+
+    def mapping(loader, node):
+        loader.flatten_mapping(node)
+        out = {}
+        for kn, vn in node.value:
+            k = loader.construct_object(kn, deep=True)
+            if not isinstance(k, (str, int, float, bool)) and k is not None:
+                raise Refusal(f"{path}: line {kn.start_mark.line + 1}: key {k!r} is not a plain key")
+            if k in out:
+                raise Refusal(f"{path}: line {kn.start_mark.line + 1}: key {k!r} repeated; allowed: each key once")
+            out[k] = loader.construct_object(vn, deep=True)
+        return out
+
+    Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, mapping)
+    p = Path(path)
+    try:
+        text = p.read_text()
+    except (OSError, UnicodeDecodeError) as e:
+        raise Refusal(
+            f"{path}: cannot read ({e.__class__.__name__}: {e}); allowed: a readable UTF-8 YAML file"
+        ) from None
+    try:
+        return yaml.load(text, Loader=Loader)
+    except yaml.YAMLError as e:
+        mark = getattr(e, "problem_mark", None)
+        where = f" line {mark.line + 1}" if mark is not None else ""
+        raise Refusal(f"{path}:{where} not valid YAML ({getattr(e, 'problem', None) or e})") from None
+    except RecursionError:
+        raise Refusal(f"{path}: nested too deeply; allowed: a design mapping (see the schema)") from None
+
+
+class _Progress:
+    """One status line on stderr (only when stderr is a terminal, or with --progress)."""
+
+    def __init__(self, enabled: bool, label: str):
+        self.enabled, self.label = enabled, label
+
+    def __call__(self, what: str, fraction: float):
+        if self.enabled:
+            sys.stderr.write(f"\r[gearrep {self.label}] {fraction * 100:5.1f} % {what:<40}")
+            sys.stderr.flush()
+
+    def done(self):
+        if self.enabled:
+            sys.stderr.write(f"\r[gearrep {self.label}] done{' ' * 48}\n")
+
+
+def _parquet_ok(args):
+    if getattr(args, "parquet", False):
+        import importlib.util
+
+        if importlib.util.find_spec("pyarrow") is None and importlib.util.find_spec("fastparquet") is None:
+            raise Refusal(
+                "--parquet: pyarrow is not installed; allowed: install the extra (pip install 'gearrep[parquet]') "
+                "or leave out --parquet (CSV is always written)"
+            )
+
+
+def _design(path, contact=True):
+    from .design import check
+
+    return check(load_yaml(path), contact=contact)
+
+
+def _out_dir(args):
+    out = Path(args.output)
+    if out.exists() and (not out.is_dir() or any(out.iterdir())):
+        raise Refusal(f"-o {out}: exists and is not an empty directory; allowed: a new or empty directory")
+    return out
+
+
+def _cmd_check(args) -> int:
+    d = _design(args.design)
+    v = d.values
+    print(
+        f"ok: {args.design}: {v['name']!r} ({d.family}, {v['pinion']['teeth']}/{v['gear']['teeth']} teeth"
+        f"{', line contact' if d.line_contact else ''})"
+    )
+    return 0
+
+
+def _yaml_text(values) -> str:
+    import yaml
+
+    return yaml.safe_dump(values, sort_keys=False)
+
+
+def _cmd_tca(args) -> int:
+    from . import analysis, figures
+    from .output import Writer, atomic_dir, provenance, stl_text, summary_html
+
+    out = _out_dir(args)
+    _parquet_ok(args)
+    d = _design(args.design)
+    prog = _Progress(args.progress, "tca")
+    tables = analysis.tca_tables(d, progress=prog)
+    prov = provenance(d.values, "tca")
+    with atomic_dir(out) as tmp:
+        w = Writer(tmp, prov, parquet=args.parquet)
+        for name, df in tables.items():
+            w.table(name, df)
+        prog("flank point clouds and STL", 0.8)
+        for member, name in ((1, "pinion"), (2, "gear")):
+            pts, _, cloud = analysis.flank_cloud(d, member)
+            w.table(f"flank_{name}", cloud)
+            w.text(f"flank_{name}.stl", stl_text(pts, f"{d.name} {name} flank"))
+        prog("figures", 0.9)
+        figs = {k: w.figure(k, f) for k, f in figures.tca_figures(d, tables).items()}
+        w.text("design.yaml", _yaml_text(d.values))
+        w.text("summary.html", summary_html(d.name, _yaml_text(d.values), tables["summary"], figs, prov))
+    prog.done()
+    print(f"wrote {out}/ ({len(w.files)} files, each with a .prov.json sidecar)")
+    return 0
+
+
+def _cmd_curvature(args) -> int:
+    from . import analysis
+    from .output import Writer, atomic_dir, provenance
+
+    out = _out_dir(args)
+    _parquet_ok(args)
+    d = _design(args.design, contact=False)
+    table = analysis.curvature_table(d)
+    with atomic_dir(out) as tmp:
+        w = Writer(tmp, provenance(d.values, "curvature"), parquet=args.parquet)
+        w.table("curvatures", table)
+        w.text("design.yaml", _yaml_text(d.values))
+    print(f"wrote {out}/curvatures.csv ({len(table)} points)")
+    return 0
+
+
+def _cmd_schema(args) -> int:
+    from .design import json_schema
+
+    text = json.dumps(json_schema(), indent=1) + "\n"
+    if args.write:
+        Path(args.write).write_text(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+def _cmd_sweep(args) -> int:
+    from . import sweep
+
+    return sweep.run_cli(args)
+
+
+def _cmd_replicate(args) -> int:
+    import subprocess
+
+    root = Path(args.directory)
+    if not (root / "Snakefile").is_file() or not (root / "workflow").is_dir():
+        raise Refusal(
+            f"--directory {root}: no gearrep repository here (Snakefile and workflow/ missing); allowed: the root of a "
+            "gearrep checkout (the replications need its data/ and workflow/)"
+        )
+    cmd = [sys.executable, "-m", "snakemake", "--cores", str(args.cores), *([args.target] if args.target else [])]
+    cmd += args.snakemake_args
+    print("running:", " ".join(cmd), f"(in {root})", file=sys.stderr)
+    return subprocess.run(cmd, cwd=root).returncode
+
+
+def _parser() -> argparse.ArgumentParser:
+    from .. import __version__
+
+    p = argparse.ArgumentParser(prog="gearrep", description="Tooth contact analysis of your own gear pair.")
+    p.add_argument("--version", action="version", version=f"gearrep {__version__}")
+    p.add_argument("--debug", action="store_true", help="show the traceback of an unexpected error")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    def progress(q):
+        q.add_argument(
+            "--progress",
+            action=argparse.BooleanOptionalAction,
+            default=sys.stderr.isatty(),
+            help="status line on stderr (default: when stderr is a terminal)",
+        )
+
+    q = sub.add_parser("check", help="validate a design file (exit 0: valid, 2: refused)")
+    q.add_argument("design", help="design file (YAML)")
+    q.set_defaults(func=_cmd_check)
+
+    for name, func, what in (
+        ("tca", _cmd_tca, "TCA over the meshing cycle: TE, contact path, ellipses, contact ratio, figures, HTML"),
+        ("curvature", _cmd_curvature, "principal curvatures and directions of both flanks on a grid"),
+    ):
+        q = sub.add_parser(name, help=what)
+        q.add_argument("design", help="design file (YAML)")
+        q.add_argument("-o", "--output", required=True, help="output directory (must not exist, or be empty)")
+        q.add_argument("--parquet", action="store_true", help="also write Parquet tables (needs pyarrow)")
+        progress(q)
+        q.set_defaults(func=func)
+
+    q = sub.add_parser(
+        "sweep",
+        help="a grid of designs run as a Snakemake workflow, split into shards",
+        epilog="Snakemake options and targets go after --, e.g. -- --executor slurm --jobs 100",
+    )
+    q.add_argument("sweep", help="sweep file (YAML)")
+    q.add_argument("-o", "--output", required=True, help="output directory (created; a re-run resumes it)")
+    q.add_argument("--cores", type=int, default=1, help="cores for a local run (default 1)")
+    q.add_argument("--profile", help="Snakemake profile, e.g. profiles/slurm (executor, resources)")
+    q.add_argument("--dry-run", action="store_true", help="list the jobs only")
+    q.set_defaults(func=_cmd_sweep, passthrough=True)
+
+    q = sub.add_parser(
+        "replicate",
+        help="the replications (runs the repository's Snakefile)",
+        epilog="Snakemake options go after --, e.g. -- --configfile config/test.yaml",
+    )
+    q.add_argument("target", nargs="?", help="a target, e.g. results/scorecard.md (default: everything)")
+    q.add_argument("--cores", type=int, default=2)
+    q.add_argument("--directory", default=".", help="the gearrep repository root (default: .)")
+    q.set_defaults(func=_cmd_replicate, passthrough=True)
+
+    q = sub.add_parser("schema", help="print the JSON schema of design files")
+    q.add_argument("--write", help="write it to this file instead")
+    q.set_defaults(func=_cmd_schema)
+    return p
+
+
+def main(argv=None) -> int:
+    """Run the command; returns the exit code (0 ok, 2 refused input, 1 failure)."""
+    parser = _parser()
+    argv = list(sys.argv[1:] if argv is None else argv)
+    extra = []
+    if "--" in argv:  # sweep / replicate: everything after -- goes to Snakemake unchanged
+        i = argv.index("--")
+        argv, extra = argv[:i], argv[i + 1 :]
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as e:  # argparse: --help (0) or a usage error (2)
+        return int(e.code or 0)
+    if extra and not getattr(args, "passthrough", False):
+        print(f"gearrep {args.command}: refused: arguments after --: {extra}; allowed: none", file=sys.stderr)
+        return EXIT_REFUSED
+    args.snakemake_args = extra
+    try:
+        return int(args.func(args))
+    except (Refusal, SettingError, FileExistsError) as e:
+        print(f"gearrep {args.command}: refused: {e}", file=sys.stderr)
+        return EXIT_REFUSED
+    except KeyboardInterrupt:
+        print(f"gearrep {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as e:
+        if args.debug:
+            raise
+        print(
+            f"gearrep {args.command}: failed: {e.__class__.__name__}: {e} (run with --debug for the traceback)",
+            file=sys.stderr,
+        )
+        return 1

@@ -1,0 +1,501 @@
+"""Design files of the ``gearrep`` command: one declaration per surface family, checked before any work.
+
+A design is a mapping (read from YAML by the command; this module reads no files). Its keys are
+declared once here with :mod:`gearrep.settings` (value, range, unit, reason; value ``None`` marks
+a required key); :func:`json_schema` generates the schema shipped in ``examples/design.schema.json``
+from the same declarations. :func:`check` resolves a mapping against its family's declaration and
+then checks the geometry (undercut limit, cutter radius against the face width, relief lengths,
+contact inside the flanks under the given misalignment). Every refusal is a
+:class:`gearrep.settings.SettingError` whose message starts with the key (``design.<key>``), the
+value and the allowed range.
+
+Lengths are in mm, angles in degrees in the file (radians inside the library). The ``analysis``
+block holds the numerical settings of the analyses (hashed apart from the design in provenance).
+"""
+
+from __future__ import annotations
+
+import copy
+import hashlib
+import json
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import settings as _s
+from ..settings import SettingError
+
+__all__ = [
+    "FAMILIES",
+    "DECLARATIONS",
+    "Design",
+    "check",
+    "resolve",
+    "json_schema",
+    "canonical_hash",
+    "split_settings",
+    "set_dotted",
+]
+
+FAMILIES = ("involute", "novikov", "catt")
+
+_MISALIGNMENT = _s.group(
+    "assembly errors of the gear (member 2), pivoting about the mid-face point of its axis",
+    d_gamma_in_deg=_s.number(0.0, "deg", "rotation in the plane of the axes (axes intersect)", ge=-5, le=5),
+    d_gamma_out_deg=_s.number(0.0, "deg", "rotation about the centre line (axes cross)", ge=-5, le=5),
+    d_E_mm=_s.number(0.0, "mm", "centre-distance change", ge=-100, le=100),
+    d_H_mm=_s.number(0.0, "mm", "offset perpendicular to the centre line and the axis", ge=-100, le=100),
+    d_Z_mm=_s.number(0.0, "mm", "axial displacement of the gear", ge=-100, le=100),
+)
+
+
+def _grid(value, reason, most):
+    return _s.array(value, "1", reason, _s.integer(None, "1", "", ge=2, le=most), min_items=2, max_items=2)
+
+
+_ANALYSIS = _s.group(
+    "numerical settings of the analyses (hashed as the settings in every provenance sidecar)",
+    n_points=_s.integer(41, "1", "contact positions on the path and on the meshing cycle", ge=5, le=2001),
+    elastic_approach_mm=_s.number(
+        0.00632, "mm", "elastic approach of the contact ellipses (thesis/NASA use 6.32e-3 mm)", gt=0, le=1
+    ),
+    tol=_s.number(1e-10, "mm", "Newton residual of every contact solve", ge=1e-14, le=1e-4),
+    maxiter=_s.integer(50, "1", "Newton iterations per contact solve", ge=1, le=1000),
+    curvature_grid=_grid([9, 7], "grid (profile x face) of the curvature table", 201),
+    flank_grid=_grid([25, 25], "grid (profile x face) of the flank point clouds and STL", 501),
+)
+
+
+def _head(family: str, module_reason: str) -> dict:
+    """The keys every family starts with: family, name, module_mm, face_width_mm."""
+    return dict(
+        family=_s.choice(family, (family,), "surface family of both members"),
+        name=_s.text("unnamed design", "a name for the reports"),
+        module_mm=_s.number(None, "mm", module_reason, gt=0, le=100),
+        face_width_mm=_s.number(None, "mm", "face width of both members", gt=0, le=5000),
+    )
+
+
+_TAIL = dict(misalignment=_MISALIGNMENT, analysis=_ANALYSIS)
+
+
+_CROWNING = _s.group(
+    "longitudinal crowning of the member (material removed toward the face edges)",
+    kind=_s.choice("none", ("none", "parabolic", "circular", "logarithmic"), "crowning form (thesis eq 10-12)"),
+    crown_mm=_s.number(0.0, "mm", "material removed at the face edges", ge=0, le=10),
+    log_shape=_s.number(0.9, "1", "logarithmic crowning shape a2 (a1 follows from crown_mm)", ge=0.01, lt=1),
+)
+
+_RELIEF = _s.group(
+    "profile relief (parabolic, thesis eq 13)",
+    amount_mm=_s.number(0.0, "mm", "material removed at the tip (tip relief) or form circle (root relief)", ge=0, le=5),
+    length_mm=_s.number(0.5, "mm", "radial length of the relief", gt=0, le=100),
+)
+
+
+def _involute_member(reason):
+    return _s.group(
+        reason,
+        teeth=_s.integer(None, "1", "number of teeth", ge=3, le=10000),
+        profile_shift=_s.number(0.0, "1", "profile-shift coefficient x", ge=-1.5, le=1.5),
+        crowning=_CROWNING,
+        tip_relief=_RELIEF,
+        root_relief=_RELIEF,
+    )
+
+
+INVOLUTE = _s.declare(
+    **_head("involute", "normal module"),
+    pressure_angle_deg=_s.number(20.0, "deg", "normal pressure angle", ge=10, le=35),
+    helix_angle_deg=_s.number(0.0, "deg", "helix angle at the pitch cylinder (0: spur)", ge=0, le=45),
+    hand=_s.choice("right", ("right", "left"), "helix hand of the pinion (the gear has the other hand)"),
+    addendum=_s.number(1.0, "1", "addendum coefficient h_a", ge=0.5, le=1.5),
+    dedendum=_s.number(1.25, "1", "dedendum coefficient h_f", ge=0.8, le=2),
+    pinion=_involute_member("the driving member (member 1)"),
+    gear=_involute_member("the driven member (member 2)"),
+    **_TAIL,
+)
+
+NOVIKOV = _s.declare(
+    **_head("novikov", "normal module (1 / normal diametral pitch)"),
+    pressure_angle_deg=_s.number(25.0, "deg", "normal pressure angle at the rack contact point Q", ge=10, le=35),
+    helix_angle_deg=_s.number(None, "deg", "helix angle (Novikov-Wildhaber gears are helical)", ge=5, le=45),
+    hand=_s.choice("left", ("left", "right"), "helix hand of the pinion"),
+    pinion=_s.group(
+        "the driving member (member 1), generated by the convex-profile rack",
+        teeth=_s.integer(None, "1", "number of teeth", ge=5, le=10000),
+        rack_radius_modules=_s.number(5.88, "1", "rack profile radius in modules (NASA report: 5.88)", gt=1, le=1000),
+    ),
+    gear=_s.group(
+        "the driven member (member 2), generated by the concave-profile rack",
+        teeth=_s.integer(None, "1", "number of teeth", ge=5, le=10000),
+        rack_radius_modules=_s.number(6.35, "1", "rack profile radius in modules (NASA report: 6.35)", gt=1, le=1000),
+    ),
+    **_TAIL,
+)
+
+CATT = _s.declare(
+    **_head("catt", "module of the middle section"),
+    cutter_radius_mm=_s.number(None, "mm", "cutter (tooth-trace arc) radius R_T", gt=0, le=1e5),
+    pressure_angle_deg=_s.number(20.0, "deg", "blade pressure angle", ge=10, le=35),
+    addendum=_s.number(1.0, "1", "addendum coefficient h*", ge=0.5, le=1.5),
+    clearance=_s.number(0.25, "1", "clearance coefficient c*", ge=0, le=0.5),
+    flank_pair=_s.choice(
+        "B", ("A", "B"), "A: pinion convex on gear concave; B: pinion concave on gear convex (seed 004 assembly)"
+    ),
+    pinion=_s.group("the driving member (member 1)", teeth=_s.integer(None, "1", "number of teeth", ge=5, le=10000)),
+    gear=_s.group("the driven member (member 2)", teeth=_s.integer(None, "1", "number of teeth", ge=5, le=10000)),
+    **_TAIL,
+)
+
+DECLARATIONS = {"involute": INVOLUTE, "novikov": NOVIKOV, "catt": CATT}
+
+
+def _required(decl, prefix="") -> list[str]:
+    out = []
+    for k, s in decl.items():
+        if s.kind == "group":
+            out += _required(s.fields, f"{prefix}{k}.")
+        elif s.value is None:
+            out.append(f"{prefix}{k}")
+    return out
+
+
+def _mark_required(schema: dict, decl) -> dict:
+    req = [k for k, s in decl.items() if s.kind != "group" and s.value is None]
+    req += [k for k, s in decl.items() if s.kind == "group" and _required(s.fields)]
+    if req:
+        schema["required"] = req
+    for k, s in decl.items():
+        if s.kind == "group":
+            _mark_required(schema["properties"][k], s.fields)
+    return schema
+
+
+def json_schema() -> dict:
+    """JSON schema of a design file: one alternative per family (keys, ranges, units, required keys)."""
+    alts = []
+    for fam, decl in DECLARATIONS.items():
+        sch = _mark_required(_s.json_schema(decl, f"a {fam} gear pair"), decl)
+        sch["required"] = ["family"] + sch.get("required", [])
+        alts.append(sch)
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "gearrep design file",
+        "description": "generated from gearrep.cli.design.DECLARATIONS (python -m gearrep schema)",
+        "oneOf": alts,
+    }
+
+
+def resolve(raw) -> dict:
+    """The design mapping resolved against its family's declaration (types, ranges, unknown and
+    missing keys); no geometry checks. Raises SettingError naming the key."""
+    if not isinstance(raw, Mapping):
+        raise SettingError(f"design: got {_short(raw)}; allowed: a mapping with keys family, ... (see the schema)")
+    fam = raw.get("family")
+    if fam is None:
+        raise SettingError(f"design.family: missing; allowed: one of {list(FAMILIES)}")
+    if not isinstance(fam, str) or fam not in DECLARATIONS:
+        raise SettingError(f"design.family: got {_short(fam)}; allowed: one of {list(FAMILIES)}")
+    decl = DECLARATIONS[fam]
+    _refuse_unknown(decl, raw, "design")
+    out = _s.resolve(decl, raw, where="design")
+    for key in _required(decl):
+        v = out
+        for part in key.split("."):
+            v = v[part]
+        if v is None:
+            s = _lookup(decl, key)
+            raise SettingError(f"design.{key}: missing; allowed: {s.allowed()}")
+    return out
+
+
+def _refuse_unknown(decl, raw: Mapping, where: str):
+    """An unknown key anywhere in ``raw`` refused with its value, the closest declared key and the
+    keys allowed there."""
+    for k, v in raw.items():
+        if k not in decl:
+            name = k if isinstance(k, str) and re.fullmatch(r"[A-Za-z_]\w*", k) else repr(k)
+            raise SettingError(
+                f"{where}.{name}: got {_short(v)} under an unknown key{_s.closest(k, decl)}; allowed keys here: "
+                f"{sorted(decl)}"
+            )
+        if decl[k].kind == "group" and isinstance(v, Mapping):
+            _refuse_unknown(decl[k].fields, v, f"{where}.{k}")
+
+
+def _short(v) -> str:
+    r = repr(v)
+    return r if len(r) <= 80 else r[:77] + "..."
+
+
+def _lookup(decl, dotted):
+    parts = dotted.split(".")
+    s = decl[parts[0]]
+    for p in parts[1:]:
+        s = s.fields[p]
+    return s
+
+
+def set_dotted(d: dict, dotted: str, value) -> dict:
+    """A deep copy of ``d`` with the dotted key set (the sweep's grid axes)."""
+    out = copy.deepcopy(d)
+    node = out
+    parts = dotted.split(".")
+    for p in parts[:-1]:
+        if not isinstance(node.get(p), dict):
+            node[p] = {}
+        node = node[p]
+    node[parts[-1]] = value
+    return out
+
+
+def split_settings(values: dict) -> tuple[dict, dict]:
+    """(design without ``analysis``, the ``analysis`` settings)."""
+    d = {k: v for k, v in values.items() if k != "analysis"}
+    return d, dict(values.get("analysis", {}))
+
+
+def canonical_hash(obj) -> str:
+    """sha256 of the canonical JSON of ``obj`` (sorted keys; floats by repr)."""
+    return hashlib.sha256(json.dumps(obj, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+
+
+# ----------------------------------------------------------------------------------------------
+# the pair built from a resolved design
+# ----------------------------------------------------------------------------------------------
+@dataclass
+class Design:
+    """A checked design: ``values`` (resolved mapping), the library ``pair`` (gearrep.tca.GearPair),
+    the family and its helpers (``mesh`` for CATT), and the contact found at phi1 = 0."""
+
+    values: dict
+    family: str
+    pair: object
+    line_contact: bool = False
+    mesh: object = None
+
+    @property
+    def analysis(self) -> dict:
+        return self.values["analysis"]
+
+    @property
+    def name(self) -> str:
+        return self.values["name"]
+
+
+def _misalignment(v):
+    from ..tca import Misalignment
+
+    m = v["misalignment"]
+    return Misalignment(
+        d_gamma_in=math.radians(m["d_gamma_in_deg"]),
+        d_gamma_out=math.radians(m["d_gamma_out_deg"]),
+        d_E=m["d_E_mm"],
+        d_H=m["d_H_mm"],
+        d_Z=m["d_Z_mm"],
+    )
+
+
+def _crowning(c, face_width):
+    from ..surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning
+
+    if c["kind"] == "none" or c["crown_mm"] == 0.0:
+        return None
+    h = 0.5 * face_width
+    if c["kind"] == "parabolic":
+        return ParabolicCrowning(c["crown_mm"] / h**2)
+    if c["kind"] == "circular":
+        return CircularCrowning(c["crown_mm"], face_width)
+    return LogarithmicCrowning(c["crown_mm"] / math.log(1.0 / (1.0 - c["log_shape"])), c["log_shape"], h)
+
+
+def _involute(v) -> Design:
+    from ..surfaces.involute import InvoluteFlank, InvoluteGearData, RootRelief, TipRelief, undercut_limit
+    from ..tca import GearPair
+
+    gears, flanks = [], []
+    for i, member in enumerate(("pinion", "gear")):
+        mv = v[member]
+        g = InvoluteGearData(
+            mv["teeth"],
+            v["module_mm"],
+            math.radians(v["pressure_angle_deg"]),
+            v["face_width_mm"],
+            math.radians(v["helix_angle_deg"]),
+            x=mv["profile_shift"],
+            h_a=v["addendum"],
+            h_f=v["dedendum"],
+        )
+        lim = undercut_limit(g)
+        if mv["teeth"] < lim:
+            raise SettingError(
+                f"design.{member}.teeth: got {mv['teeth']}; allowed: an integer >= {math.ceil(lim - 1e-9)} "
+                f"(undercut limit {lim:.4g} teeth for x = {mv['profile_shift']:g}; raise {member}.profile_shift "
+                "to lower it)"
+            )
+        if v["face_width_mm"] > 20 * g.r_p:
+            raise SettingError(
+                f"design.face_width_mm: got {v['face_width_mm']!r}; allowed: at most 20 pitch radii of the "
+                f"{member} ({20 * g.r_p:.6g} mm)"
+            )
+        c = mv["crowning"]
+        if c["kind"] == "circular" and not c["crown_mm"] < 0.5 * v["face_width_mm"]:
+            raise SettingError(
+                f"design.{member}.crowning.crown_mm: got {c['crown_mm']!r}; allowed: below half the face width "
+                f"({0.5 * v['face_width_mm']:g} mm) for a circular crown"
+            )
+        if c["kind"] != "none" and c["crown_mm"] == 0.0:
+            raise SettingError(
+                f"design.{member}.crowning.crown_mm: got 0.0; allowed: > 0 mm for crowning kind {c['kind']!r} "
+                "(or kind: none)"
+            )
+        u_lo, u_hi = max(g.r_b, g.r_f), g.r_a
+        relief = []
+        for kind, cls in (("tip_relief", TipRelief), ("root_relief", RootRelief)):
+            r = mv[kind]
+            if r["amount_mm"] == 0.0:
+                continue
+            if not r["length_mm"] < u_hi - u_lo:
+                raise SettingError(
+                    f"design.{member}.{kind}.length_mm: got {r['length_mm']!r}; allowed: below the radial height of "
+                    f"the involute flank ({u_hi - u_lo:.6g} mm)"
+                )
+            u0 = u_hi - r["length_mm"] if kind == "tip_relief" else u_lo + r["length_mm"]
+            relief.append(cls(u0, r["length_mm"], r["amount_mm"]))
+        gears.append(g)
+        hand = 1 if v["hand"] == "right" else -1
+        flanks.append(
+            InvoluteFlank(
+                g, 1, hand if i == 0 else -hand, crowning=_crowning(c, v["face_width_mm"]), relief=tuple(relief)
+            )
+        )
+    a = gears[0].r_p + gears[1].r_p
+    pair = GearPair(flanks[0], flanks[1], gears[0].n_teeth, gears[1].n_teeth, a, misalignment=_misalignment(v))
+    return Design(v, "involute", pair)
+
+
+def _novikov(v) -> Design:
+    from ..replications.nasa.geometry import make_flank
+    from ..tca import GearPair
+
+    if not v["gear"]["rack_radius_modules"] > v["pinion"]["rack_radius_modules"]:
+        raise SettingError(
+            f"design.gear.rack_radius_modules: got {v['gear']['rack_radius_modules']!r}; allowed: a number above "
+            f"pinion.rack_radius_modules = {v['pinion']['rack_radius_modules']!r} (the concave gear profile must be "
+            "flatter than the convex pinion profile for point contact)"
+        )
+    m = v["module_mm"]
+    an = math.radians(v["pressure_angle_deg"])
+    beta = math.radians(v["helix_angle_deg"]) * (-1.0 if v["hand"] == "left" else 1.0)
+    d = {"N1": v["pinion"]["teeth"], "N2": v["gear"]["teeth"], "P_n_per_in": 1.0 / m}  # lengths in mm here
+    flanks = []
+    for member in ("pinion", "gear"):
+        rho = v[member]["rack_radius_modules"] * m
+        f = make_flank(d, 1.0 / (2.0 * rho), an, math.cos(an) * m, beta, member, tol=1e-13)
+        half = 0.5 * v["face_width_mm"] / math.cos(beta)
+        f.lower = np.array([-1.2 * m, -1.5 * half])
+        f.upper = np.array([1.2 * m, 1.5 * half])
+        flanks.append(f)
+    a = flanks[0].r_p + flanks[1].r_p
+    pair = GearPair(flanks[0], flanks[1], d["N1"], d["N2"], a, misalignment=_misalignment(v), phase2=0.0)
+    return Design(v, "novikov", pair)
+
+
+def _catt(v) -> Design:
+    from ..replications.catt.assembly import assemble
+    from ..surfaces.involute import InvoluteGearData, undercut_limit
+
+    m, B, R_T = v["module_mm"], v["face_width_mm"], v["cutter_radius_mm"]
+    least = 0.5 * B + math.pi * m
+    if not R_T > least:
+        raise SettingError(
+            f"design.cutter_radius_mm: got {R_T!r}; allowed: above half the face width plus pi modules "
+            f"({least:.6g} mm), so that the arc spans the face"
+        )
+    for member in ("pinion", "gear"):
+        z = v[member]["teeth"]
+        # the middle section is an involute cut by a straight rack of addendum h* (seed 004 eq 5)
+        lim = undercut_limit(
+            InvoluteGearData(max(z, 3), m, math.radians(v["pressure_angle_deg"]), B, h_a=v["addendum"])
+        )
+        if z < lim:
+            raise SettingError(
+                f"design.{member}.teeth: got {z}; allowed: an integer >= {math.ceil(lim - 1e-9)} "
+                f"(undercut limit {lim:.4g} teeth of the middle section)"
+            )
+    design = {"z1": v["pinion"]["teeth"], "z2": v["gear"]["teeth"], "module": m, "R_T": R_T, "face_width": B}
+    prm = {"pressure_angle_deg": v["pressure_angle_deg"], "addendum": v["addendum"], "clearance": v["clearance"]}
+    mesh = assemble(design, v["flank_pair"], prm)
+    mesh.gear_pair = mesh.gear_pair.with_misalignment(_misalignment(v))
+    return Design(v, "catt", mesh.gear_pair, mesh=mesh)
+
+
+_BUILDERS = {"involute": _involute, "novikov": _novikov, "catt": _catt}
+
+
+def build(values: dict) -> Design:
+    """The pair of a resolved design (geometry checks included, no contact solve)."""
+    try:
+        with np.errstate(all="ignore"):
+            return _BUILDERS[values["family"]](values)
+    except SettingError:
+        raise
+    except (ValueError, ZeroDivisionError, OverflowError) as e:  # a library refusal the checks above missed
+        raise SettingError(f"design: {e}; allowed: a design the {values['family']} family can build") from None
+
+
+def _largest_with_contact(values: dict, name: str, x: float, steps: int = 6) -> float:
+    """Bisection on the magnitude of misalignment ``name`` (same sign as ``x``) between 0 (contact)
+    and ``x`` (none): the smallest magnitude found without contact, to 2^-steps of |x| (plain
+    Newton solves: an estimate of the limit, which the message calls approximate)."""
+    from .analysis import contact_at
+
+    lo, hi = 0.0, abs(x)
+    base = build(values)
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        d = Design(values, base.family, None, mesh=base.mesh)
+        d.pair = base.pair.with_misalignment(
+            _misalignment(set_dotted(values, f"misalignment.{name}", math.copysign(mid, x)))
+        )
+        if d.mesh is not None:
+            d.mesh.gear_pair = d.pair
+        c, _ = contact_at(d, np.array([0.0]), quick=True, face=False)
+        lo, hi = (mid, hi) if c.converged[0] else (lo, mid)
+    return hi
+
+
+def check(raw, *, contact: bool = True) -> Design:
+    """Resolve and build ``raw``; with ``contact``, also solve the contact at phi1 = 0 (the pitch
+    point) and refuse a misalignment that moves it off the flanks. Raises SettingError naming the key."""
+    from .analysis import contact_at
+
+    values = resolve(raw)
+    d = build(values)
+    if contact:
+        c, line = contact_at(d, np.array([0.0]), face=False)  # Novikov: anywhere along the helix
+        d.line_contact = line
+        if not c.converged[0]:
+            mis = {k: x for k, x in values["misalignment"].items() if x != 0.0}
+            if not mis:
+                raise SettingError(
+                    f"design: no contact inside the flanks at the pitch position of the aligned pair (solve status "
+                    f"{c.status_name[0]}); allowed: a pair whose flanks meet there (check teeth, module and profile "
+                    "shifts)"
+                )
+            if len(mis) == 1:
+                name, x = next(iter(mis.items()))
+                limit = _largest_with_contact(values, name, x)
+                raise SettingError(
+                    f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.2g} for this pair (larger "
+                    f"values move the contact at the pitch position off the flanks: status {c.status_name[0]})"
+                )
+            raise SettingError(
+                f"design.misalignment: got {mis!r}; allowed: a misalignment that keeps the contact at the pitch "
+                f"position inside the flanks (solve status there: {c.status_name[0]})"
+            )
+    return d

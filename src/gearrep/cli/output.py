@@ -1,0 +1,187 @@
+"""Writing results of the ``gearrep`` command: a temporary directory renamed at the end, tidy CSV
+(optional Parquet), STL, figures, the one-page HTML summary, and a provenance sidecar
+``<file>.prov.json`` beside every result file (gearrep version, commit, hashes of the settings and
+of the design, creation time)."""
+
+from __future__ import annotations
+
+import base64
+import contextlib
+import datetime as _dt
+import html
+import io
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from .. import __version__
+from .design import canonical_hash, split_settings
+
+__all__ = ["atomic_dir", "commit", "provenance", "Writer", "stl_text", "exact"]
+
+
+@contextlib.contextmanager
+def atomic_dir(target: Path):
+    """A temporary directory beside ``target``, renamed to ``target`` when the block succeeds and
+    removed when it fails (so a failed run leaves no output directory). ``target`` must not exist
+    or be an empty directory."""
+    target = Path(target)
+    if target.exists() and (not target.is_dir() or any(target.iterdir())):
+        raise FileExistsError(f"-o {target}: exists and is not an empty directory; allowed: a new directory")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private; the result is an ordinary directory
+    try:
+        yield tmp
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    if target.exists():
+        target.rmdir()
+    os.replace(tmp, target)
+
+
+def commit() -> str:
+    """The git commit of the gearrep source tree (with ``-dirty`` for uncommitted changes), or
+    ``unknown`` outside a git checkout."""
+    here = Path(__file__).resolve().parent
+    try:
+        sha = subprocess.run(
+            ["git", "-C", str(here), "rev-parse", "HEAD"], capture_output=True, text=True, timeout=10, check=True
+        ).stdout.strip()
+        dirty = subprocess.run(
+            ["git", "-C", str(here), "status", "--porcelain", "--untracked-files=no", "--", "."],
+            capture_output=True,
+            text=True,
+            timeout=10,
+        ).stdout.strip()
+        return sha + ("-dirty" if dirty else "")
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def provenance(values: dict, command: str, extra: dict | None = None) -> dict:
+    """The provenance record of a result made from the resolved design ``values``."""
+    design, analysis = split_settings(values)
+    out = {
+        "gearrep_version": __version__,
+        "commit": commit(),
+        "command": command,
+        "design_sha256": canonical_hash(design),
+        "settings_sha256": canonical_hash(analysis),
+        "created_utc": _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
+    }
+    if extra:
+        out.update(extra)
+    return out
+
+
+def stl_text(points: np.ndarray, name: str) -> str:
+    """ASCII STL of a grid surface ``points`` (n_u, n_v, 3), two triangles per grid cell whose four
+    corners exist (NaN corners are left out); facet normals from the triangle winding."""
+    lines = [f"solid {name}"]
+    n_u, n_v, _ = points.shape
+    for i in range(n_u - 1):
+        for j in range(n_v - 1):
+            quad = points[i : i + 2, j : j + 2]
+            if not np.all(np.isfinite(quad)):
+                continue
+            for a, b, c in ((quad[0, 0], quad[1, 0], quad[1, 1]), (quad[0, 0], quad[1, 1], quad[0, 1])):
+                n = np.cross(b - a, c - a)
+                ln = np.linalg.norm(n)
+                n = n / ln if ln > 0 else n
+                lines.append(f"  facet normal {n[0]:.9e} {n[1]:.9e} {n[2]:.9e}")
+                lines.append("    outer loop")
+                for p in (a, b, c):
+                    lines.append(f"      vertex {p[0]:.9e} {p[1]:.9e} {p[2]:.9e}")
+                lines.append("    endloop")
+                lines.append("  endfacet")
+    lines.append(f"endsolid {name}")
+    return "\n".join(lines) + "\n"
+
+
+def exact(x) -> str:
+    """A float as its shortest round-trip text (the CSV tables keep every digit, nothing more)."""
+    return repr(float(x))
+
+
+_exact = exact
+
+
+class Writer:
+    """Writes result files into ``root`` (the temporary directory), each with its sidecar."""
+
+    def __init__(self, root: Path, prov: dict, parquet: bool = False):
+        self.root = Path(root)
+        self.prov = prov
+        self.parquet = parquet
+        self.files: list[str] = []
+
+    def _sidecar(self, path: Path):
+        rec = dict(self.prov, file=path.name)
+        path.with_name(path.name + ".prov.json").write_text(json.dumps(rec, indent=1, sort_keys=True) + "\n")
+        self.files.append(path.name)
+
+    def table(self, name: str, df: pd.DataFrame):
+        p = self.root / f"{name}.csv"
+        df.to_csv(p, index=False, float_format=_exact)
+        self._sidecar(p)
+        if self.parquet:
+            q = self.root / f"{name}.parquet"
+            df.to_parquet(q, index=False)
+            self._sidecar(q)
+
+    def text(self, name: str, text: str):
+        p = self.root / name
+        p.write_text(text)
+        self._sidecar(p)
+
+    def figure(self, name: str, fig) -> str:
+        """Save ``fig`` as PNG; returns it base64-encoded (for the HTML page)."""
+        import matplotlib.pyplot as plt
+
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
+        plt.close(fig)
+        p = self.root / "figures" / f"{name}.png"
+        p.parent.mkdir(exist_ok=True)
+        p.write_bytes(buf.getvalue())
+        self._sidecar(p)
+        return base64.b64encode(buf.getvalue()).decode()
+
+
+def _table_html(df: pd.DataFrame) -> str:
+    return df.to_html(index=False, float_format=lambda x: f"{x:.6g}", border=0, classes="t")
+
+
+def summary_html(title: str, design_yaml: str, summary: pd.DataFrame, figures: dict, prov: dict) -> str:
+    """One-page HTML summary (opens offline: the figures are embedded)."""
+    figs = "".join(
+        f'<figure><img alt="{html.escape(k)}" src="data:image/png;base64,{v}"><figcaption>{html.escape(k)}'
+        "</figcaption></figure>"
+        for k, v in figures.items()
+    )
+    rows = summary.T.reset_index()
+    rows.columns = ["quantity", "value"]
+    prov_rows = pd.DataFrame({"field": list(prov), "value": [str(v) for v in prov.values()]})
+    return f"""<!doctype html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
+<style>body{{font-family:sans-serif;max-width:1100px;margin:1em auto}}table.t{{border-collapse:collapse}}
+table.t td,table.t th{{padding:2px 8px;border-bottom:1px solid #ddd;text-align:left}}
+figure{{display:inline-block;margin:4px}}img{{max-width:520px}}pre{{background:#f6f6f6;padding:6px}}</style>
+</head><body><h1>{html.escape(title)}</h1>
+<h2>Results</h2>{_table_html(rows)}
+<h2>Figures</h2>{figs}
+<h2>Design</h2><pre>{html.escape(design_yaml)}</pre>
+<h2>Provenance</h2>{_table_html(prov_rows)}
+<p>Tables: contact_path.csv (contact points, TE, contact ellipses), te_cycle.csv (TE over the meshing
+cycle), summary.csv; flanks: flank_pinion.csv / flank_gear.csv (points and outward normals) and .stl.</p>
+</body></html>
+"""
