@@ -110,7 +110,6 @@ def probe(html: Path, timeout_s: float = 180) -> dict:
             "--no-first-run",
             "--disable-extensions",
             "--window-size=1280,1800",
-            "--virtual-time-budget=30000",
             "--dump-dom",
             Path(tmp.name).as_uri(),
         ]
@@ -150,7 +149,9 @@ def unresolved_links(page: Path, hrefs, page_ids: set[str]) -> list[str]:
             bad.append(href)
             continue
         if frag:
-            ids = cache.setdefault(target, _ids(target)) if target.suffix == ".html" else set()
+            if target not in cache:
+                cache[target] = _ids(target) if target.suffix == ".html" else set()
+            ids = cache[target]
             if frag not in ids and parts.fragment not in ids:
                 bad.append(href)
     return bad
