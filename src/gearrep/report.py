@@ -19,6 +19,7 @@ apart from the results and never enters a verdict.
 from __future__ import annotations
 
 import base64
+import fnmatch
 import html
 import io
 import re
@@ -42,6 +43,7 @@ __all__ = [
     "anchor",
     "apart_statuses",
     "findings",
+    "highlight",
     "ordered_sources",
     "parity_png",
     "render",
@@ -281,14 +283,33 @@ def findings(
 ) -> list[str]:
     """Three to five headline findings of one paper, written from its check records (HTML strings).
 
-    1. what is reproduced in full, table by table, in the paper's order;
-    2. where the printed numbers deviate, the largest groups and their recorded explanation;
-    3. the statements that hold and those that fail;
-    4. what is not computed and why (the most frequent reasons);
-    5. the errata we found in the paper (``errata``: rows of data/errata.csv for this paper).
+    1. where the printed numbers deviate, the largest groups and their recorded explanation;
+    2. what is not computed and why (the most frequent reasons);
+    3. the errata we found in the paper (``errata``: rows of data/errata.csv for this paper);
+    4. what is reproduced in full, table by table, in the paper's order;
+    5. the statements that hold and those that fail.
     """
     res = grp[grp["status"].isin(result_statuses())]
     out = []
+    dev = res[res["status"] == "deviates"]
+    if len(dev):
+        worst = dev["source"].value_counts().head(3)
+        where = ", ".join(f"{html.escape(s)} ({c})" for s, c in worst.items())
+        expl = "; ".join(f"{c} of them: {html.escape(t)}" for c, t in _group_notes(dev))
+        n = f"{len(dev)} printed number{'s deviate' if len(dev) > 1 else ' deviates'}"
+        out.append(f"<b>{n}</b>, most in {where}. Recorded explanations: {expl}")
+
+    nc = res[res["status"].isin(OPEN)]
+    if len(nc):
+        reasons = "; ".join(f"{c}: {html.escape(t)}" for c, t in _group_notes(nc, n=3, width=200))
+        out.append(f"<b>{len(nc)} item{'s' if len(nc) > 1 else ''} not computed</b>. Why: {reasons}")
+
+    if errata is not None and len(errata):
+        locs = ", ".join(html.escape(str(x)) for x in errata["location"])
+        out.append(
+            f"<b>{len(errata)} errata in the paper</b> found and corrected, each with its evidence "
+            f"(<a href='#errata'>Errata</a>): {locs}."
+        )
     by_src = []
     for key in ordered_sources(res, order):
         g = res[res["source"] == key[1]]
@@ -307,13 +328,6 @@ def findings(
     else:
         out.append("<b>The paper prints no numbers we compare</b>: every check is a stated trend or claim.")
 
-    dev = res[res["status"] == "deviates"]
-    if len(dev):
-        worst = dev["source"].value_counts().head(3)
-        where = ", ".join(f"{html.escape(s)} ({c})" for s, c in worst.items())
-        expl = "; ".join(f"{c} of them: {html.escape(t)}" for c, t in _group_notes(dev))
-        out.append(f"<b>{len(dev)} printed numbers deviate</b>, most in {where}. Recorded explanations: {expl}")
-
     cl = res[res["status"].isin(("qualitative-holds", "qualitative-fails"))]
     if len(cl):
         fails = cl[cl["status"] == "qualitative-fails"]
@@ -327,18 +341,42 @@ def findings(
             text += f"; failing: {items}{more}"
         out.append(text + ".")
 
-    nc = res[res["status"].isin(OPEN)]
-    if len(nc):
-        reasons = "; ".join(f"{c}: {html.escape(t)}" for c, t in _group_notes(nc, n=3, width=200))
-        out.append(f"<b>{len(nc)} items not computed</b>. Why: {reasons}")
-
-    if errata is not None and len(errata):
-        locs = ", ".join(html.escape(str(x)) for x in errata["location"])
-        out.append(
-            f"<b>{len(errata)} errata in the paper</b> found and corrected, each with its evidence "
-            f"(<a href='#errata'>Errata</a>): {locs}."
-        )
     return out[:5]
+
+
+def highlight(card: pd.DataFrame, text: str, ids, statuses) -> tuple[bool, str]:
+    """A hand-written headline finding checked against the records it rests on.
+
+    ``ids``: check ids or fnmatch patterns (``000-T5.4-*-KE``); ``statuses``: the statuses the
+    finding claims for all of them. Returns (supported, HTML): the text with the evidence
+    ("12 records, all reproduced"), or, when a record is missing or now has another status, the
+    text struck through and the records that no longer support it, so a finding can never
+    outlive its evidence silently."""
+    ids, statuses = list(ids or []), set(statuses or [])
+    if not ids or not statuses:
+        raise ValueError(f"highlight {text[:40]!r}: needs ids and statuses (got ids={ids}, statuses={statuses})")
+    unknown = sorted(statuses - set(_checks.STATUSES))
+    if unknown:
+        raise ValueError(f"highlight {text[:40]!r}: statuses {unknown} not in gearrep.checks.STATUSES")
+    all_ids = card["id"].astype(str)
+    hit = pd.Series(False, index=card.index)
+    empty = []
+    for pat in ids:
+        m = all_ids.map(lambda i, _p=pat: fnmatch.fnmatchcase(i, _p))
+        if not m.any():
+            empty.append(pat)
+        hit |= m
+    rows = card[hit]
+    wrong = rows[~rows["status"].isin(statuses)]
+    if empty or len(wrong):
+        why = [f"no record {html.escape(p)}" for p in empty]
+        why += [f"{html.escape(str(r['id']))}: {html.escape(str(r['status']))}" for _, r in wrong.head(5).iterrows()]
+        return False, (
+            f"<s>{html.escape(text)}</s> <span class='status' style='color:{_COLOURS['deviates']}'>"
+            f"(the check records no longer support this: {'; '.join(why)})</span>"
+        )
+    st = " or ".join(sorted(set(rows["status"])))
+    return True, f"{html.escape(text)} <span class='apart'>(check records: {len(rows)}, all {st})</span>"
 
 
 # ----------------------------------------------------------------------------- parity plot
@@ -402,6 +440,11 @@ def parity_png(rows: pd.DataFrame, title: str) -> bytes:
     return buf.getvalue()
 
 
+def _paper_findings(grp, errata, order, specs) -> list[str]:
+    own = [highlight(grp, h["text"], h.get("ids"), h.get("statuses"))[1] for h in specs]
+    return (own + findings(grp, errata, order))[: max(5, len(own))]
+
+
 def _img(png: bytes, alt: str) -> str:
     return f"<img alt='{html.escape(alt)}' src='data:image/png;base64,{base64.b64encode(png).decode('ascii')}'>"
 
@@ -424,6 +467,7 @@ def render(
     order: Mapping[tuple[str, str], int] | None = None,
     design: pd.DataFrame | None = None,
     parity: bool = True,
+    highlights: Mapping[str, list] | None = None,
 ) -> str:
     """HTML of the report.
 
@@ -438,6 +482,9 @@ def render(
         (gearrep.published.document_order); without it sources sort as strings
     design : gearrep.published.design_table of every paper (one row per example)
     parity : draw a parity plot for every source with computed numbers
+    highlights : {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each
+        checked against its records by :func:`highlight`; the findings of a paper are these
+        followed by :func:`findings`, five at most
     """
     if "status" not in card.columns or "seed" not in card.columns:
         raise ValueError("scorecard needs 'seed' and 'status' columns")
@@ -548,7 +595,7 @@ def render(
         er = errata[errata["seed"] == seed] if "seed" in errata.columns else errata.iloc[:0]
         parts.append(
             f"<h3 id='findings-{seed}'>Headline findings</h3><ul class='findings'>"
-            + "".join(f"<li>{f}</li>" for f in findings(grp, er, order))
+            + "".join(f"<li>{f}</li>" for f in _paper_findings(grp, er, order, (highlights or {}).get(seed, [])))
             + "</ul>"
         )
 

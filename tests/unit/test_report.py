@@ -201,7 +201,7 @@ def test_findings_are_written_from_the_records(paper):
     assert 3 <= len(f) <= 5
     text = " ".join(f)
     assert "Table 4.3 (2 of 2)" in text and "Section 5.5 (1 of 1)" in text
-    assert "1 printed numbers deviate" in text and "the text names neither point nor radius" in text
+    assert "1 printed number deviates" in text and "the text names neither point nor radius" in text
     assert "1 of 2 stated trends and claims hold" in text and "c2" in text
     assert "data of Table 5.2 did not survive" in text
     assert "eq 4.23" in text
@@ -340,3 +340,52 @@ def test_fixture_report_probed_in_headless_browser(paper, tmp_path):
     assert all(p["visible"] and p["images"] == [True] for p in seen["parity"])
     assert seen["design"] == [{"cls": "design design-000", "visible": True, "rows": 1}]
     assert seen["unresolved"] == [] and len(seen["links"]) > 10
+
+
+def test_a_highlight_is_checked_against_its_records(paper):
+    card, _ = paper
+    ok, text = report.highlight(card, "Table 4.3 holds", ["t*"], ["reproduced"])
+    assert ok and "(check records: 2, all reproduced)" in text
+    ok, text = report.highlight(card, "all reproduced", ["t1", "f1", "zz*"], ["reproduced"])
+    assert not ok and text.startswith("<s>") and "f1: deviates" in text and "no record zz*" in text
+    with pytest.raises(ValueError, match="needs ids"):
+        report.highlight(card, "x", [], ["reproduced"])
+    with pytest.raises(ValueError, match="not in gearrep.checks.STATUSES"):
+        report.highlight(card, "x", ["t1"], ["holds"])
+    html = report.render(
+        card, {}, pd.DataFrame(), {}, highlights={"000": [{"text": "Mine", "ids": ["t1"], "statuses": ["reproduced"]}]}
+    )
+    findings = html.split("<ul class='findings'>", 1)[1].split("</ul>", 1)[0]
+    assert findings.startswith("<li>Mine") and findings.count("<li>") <= 5
+
+
+def _yaml(name):
+    import yaml
+    from conftest import ROOT
+
+    return yaml.safe_load((ROOT / "workflow" / "report" / name).read_text(encoding="utf-8"))
+
+
+def test_the_written_highlights_hold_on_the_reference_scorecard():
+    """workflow/report/highlights.yaml against tests/data/scorecard_reference.csv (the scorecard
+    of main): every finding is supported by the records it names."""
+    from conftest import ROOT
+
+    card = pd.read_csv(ROOT / "tests" / "data" / "scorecard_reference.csv", dtype=str, keep_default_na=False)
+    specs = _yaml("highlights.yaml")
+    assert set(specs) == set(published.SEEDS)
+    for seed, items in specs.items():
+        assert 1 <= len(items) <= 3, seed
+        for h in items:
+            ok, text = report.highlight(card[card["seed"] == seed], h["text"], h["ids"], h["statuses"])
+            assert ok, text
+
+
+def test_every_key_figure_has_a_caption():
+    from gearrep.replications import REGISTRY, load
+
+    captions = _yaml("captions.yaml")
+    keys = {load(k).FIGURES[f] for k in REGISTRY for f in load(k).REPORT_FIGURES}
+    assert keys <= set(captions), sorted(keys - set(captions))
+    for key, spec in captions.items():
+        assert len(spec["shows"]) > 80 and spec.get("sources"), key

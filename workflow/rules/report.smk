@@ -31,6 +31,7 @@ rule report:
         published=published_files(),
         manifest=f"{PUBLISHED_DIR}/MANIFEST.csv",
         captions="workflow/report/captions.yaml",
+        highlights="workflow/report/highlights.yaml",
         config="config/config.yaml",
         lock="requirements.lock",
         code=script_lib("workflow/scripts/report.py"),
