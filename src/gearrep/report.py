@@ -520,16 +520,18 @@ def render(
 
     # summary by paper -----------------------------------------------------------------
     parts.append("<h2 id='summary'>Summary by paper</h2>")
-    head = ["seed", "paper", "verdict", "", *res_st, "total"] + ([f"{s} (not a result)" for s in apart_st])
+    head = ["seed", "paper", "verdict", "agree", "", *res_st, "total"] + ([f"{s} (not a result)" for s in apart_st])
     rows = []
     verdicts = {}
     for seed, grp in card.groupby("seed", sort=True):
         verdicts[seed] = verdict(grp) if grp["status"].isin(res_st).any() else ("no results", "")
         counts = _counts(grp)
         v = verdicts[seed][0]
+        agree, scored = sum(counts[s] for s in AGREE if s in counts), sum(counts[s] for s in res_st)
         rows.append(
             f"<tr><td>{html.escape(seed)}</td><td><a href='#paper-{seed}'>{html.escape(PAPERS.get(seed, ''))}</a></td>"
             f"<td><span class='status' style='color:{_VERDICT_COLOURS.get(v, '#1f2328')}'>{v}</span></td>"
+            f"<td class='num'>{agree} of {scored} ({100 * agree / max(scored, 1):.0f} %)</td>"
             f"<td>{_bar(counts)}</td>"
             + "".join(f"<td class='num'>{counts[s]}</td>" for s in res_st)
             + f"<td class='num'>{sum(counts[s] for s in res_st)}</td>"
