@@ -6,7 +6,7 @@ Sources
   operator, principal curvatures/directions, Gaussian K and mean H curvature: Litvin & Fuentes,
   *Gear Geometry and Applied Theory* (2nd ed.), ch. 7 ("Curvatures of surfaces and curves"),
   and any differential-geometry text (e.g. do Carmo, sect. 3-2/3-3). Seed 004 eq (7)-(16)
-  uses the same quantities (with the typos listed in READING_GUIDE.md: eq (8) must divide by
+  uses the same quantities (with the typos of docs/reading-notes.md, 004-A: eq (8) must divide by
   |r_theta x r_phi|, eq (15) reads x^2 - 2 H x + K = 0 and eq (16) k = H +- sqrt(H^2 - K)).
 * Euler's formula k_n(theta) = k_I cos^2 theta + k_II sin^2 theta (Litvin ch. 7).
 * Relative (induced) normal curvature of two surfaces in tangency,

@@ -21,7 +21,7 @@ the relative velocity in S_1 is w_j = Omega_j r_1 + t_j, and f_j = n_1 . w_j.
 
 Generated surface. The 2 + k parameters q = (u, v, m) satisfy k equations, so two of them
 (``free``) parameterise the envelope and the other k (``solved``) follow from (E) by
-:func:`gearrep.solve.newton`. Seed 000 (READING_GUIDE) needs free = (l, psi), solved =
+:func:`gearrep.solve.newton`. Seed 000 (docs/reading-notes.md, 000-C) needs free = (l, psi), solved =
 (phi, theta), because the Jacobian of (E) in (theta, psi) is singular at mid-face; any choice
 is allowed here. The first derivatives of the generated surface are analytic (implicit
 differentiation: dq_S/dq_F = -(df/dq_S)^{-1} df/dq_F). Every partial derivative of r_2 with

@@ -42,6 +42,8 @@ __all__ = [
     "load",
     "parse_row",
     "param_table",
+    "design_table",
+    "document_order",
     "ERRATA_COLUMNS",
     "load_errata",
     "MANIFEST_NAME",
@@ -338,6 +340,58 @@ def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> 
     if sel.empty:
         raise KeyError(f"no parameters for file={file!r} example={example!r}")
     return dict(zip(sel["parameter"], sel["value"]))
+
+
+def design_table(params: pd.DataFrame, seed: str | None = None) -> pd.DataFrame:
+    """The design data of every example (of ``seed``, if given), one row per example in the
+    order the document prints them: columns ``seed``, ``example``, ``source`` (where it is
+    printed, with its first seed-file line), ``file`` (its params files) and ``design``
+    (``name = printed unit; ...`` as printed, in the files' order; ``name = (not printed)`` for a
+    value the text only implies)."""
+    missing = [c for c in ("file", *PARAM_COLUMNS) if c not in params.columns]
+    if missing:
+        raise ValueError(f"params lacks columns {missing} (pass Published.params of load())")
+    if seed is not None and seed not in SEEDS:
+        raise ValueError(f"seed={seed!r} is not one of {list(SEEDS)}")
+    p = params if seed is None else params[params["seed"] == seed]
+    rows = []
+    for (s, example), g in p.groupby(["seed", "example"], sort=False):
+        items = []
+        for r in g.itertuples(index=False):
+            printed = str(r.printed).strip()
+            unit = "" if r.unit in ("1", "count") else f" {r.unit}"
+            items.append(f"{r.parameter} = {printed}{unit}" if printed else f"{r.parameter} = (not printed)")
+        sources = list(dict.fromkeys(str(x) for x in g["source"]))
+        rows.append(
+            {
+                "seed": s,
+                "example": example,
+                "source": "; ".join(sources) + f" (line {int(g['line'].min())})",
+                "file": "; ".join(dict.fromkeys(g["file"])),
+                "design": "; ".join(items),
+                "_line": int(g["line"].min()),
+            }
+        )
+    out = pd.DataFrame(rows, columns=["seed", "example", "source", "file", "design", "_line"])
+    return (
+        out.sort_values(["seed", "_line", "file", "example"], kind="stable")
+        .drop(columns="_line")
+        .reset_index(drop=True)
+    )
+
+
+def document_order(*frames: pd.DataFrame) -> dict[tuple[str, str], int]:
+    """``{(seed, source): line}``: the first seed-file line of each source over the given values /
+    claims / params frames, i.e. where the paper prints it. Sorting sources by it gives the paper's
+    order ("Table 4.3" before "Fig. 5.7" before "Section 5.5"), not the string order."""
+    order: dict[tuple[str, str], int] = {}
+    for f in frames:
+        missing = [c for c in ("seed", "source", "line") if c not in f.columns]
+        if missing:
+            raise ValueError(f"frame lacks columns {missing} (pass frames of load())")
+        for (s, src), line in f.groupby(["seed", "source"])["line"].min().items():
+            order[(s, src)] = min(int(line), order.get((s, src), int(line)))
+    return order
 
 
 # ----------------------------------------------------------------------------- manifest

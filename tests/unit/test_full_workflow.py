@@ -153,6 +153,9 @@ def test_dry_run_after_full_run_plans_nothing(run):
 
 
 def test_real_report_in_headless_browser(run):
+    """The real report in a real browser (issue 21): a verdict per paper, one parity plot per table
+    with computed numbers (image decoded), the design table of every paper, all laid out visibly,
+    and every link (in-page anchors, notebooks and their headings) resolves."""
     spec = importlib.util.spec_from_file_location("screenshot", ROOT / "workflow" / "scripts" / "screenshot.py")
     shot = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(shot)
@@ -160,10 +163,58 @@ def test_real_report_in_headless_browser(run):
         pytest.skip("no Chromium-family browser installed")
     import matplotlib.image as mpimg
 
-    img = mpimg.imread(
-        shot.screenshot(run / "results" / "report.html", run / "results" / "report.png", width=1200, height=900)
-    )[..., :3]
+    from gearrep import published, report
+
+    page = run / "results" / "report.html"
+    img = mpimg.imread(shot.screenshot(page, run / "results" / "report.png", width=1200, height=900))[..., :3]
     assert img.std() > 0.05, "screenshot of the report is blank"
+
+    seen = shot.probe(page)
+    card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str}, keep_default_na=False, na_values=[""])
+    seeds = sorted(card["seed"].unique())
+    verdicts = {v["id"]: v for v in seen["verdicts"]}
+    assert sorted(verdicts) == [f"verdict-{s}" for s in seeds]
+    for v in verdicts.values():
+        assert v["visible"] and any(w in v["text"] for w in report.VERDICTS), v
+    numeric = card[card["published"].notna() & card["computed"].notna() & card["status"].isin(report.result_statuses())]
+    expected = sorted(set(zip(numeric["seed"], numeric["source"])))
+    got = sorted((p["id"].split("-")[1], p["source"]) for p in seen["parity"])
+    assert got == expected, "one parity plot per table with computed numbers"
+    assert all(p["visible"] and p["images"] == [True] for p in seen["parity"])
+    params = published.load(ROOT / "data" / "published").params
+    design = published.design_table(params)
+    tables = {d["cls"].split()[-1]: d for d in seen["design"]}
+    assert sorted(tables) == [f"design-{s}" for s in seeds]
+    for s in seeds:
+        assert tables[f"design-{s}"]["visible"] and tables[f"design-{s}"]["rows"] == int((design["seed"] == s).sum())
+    assert seen["unresolved"] == [], seen["unresolved"][:10]
+    assert any(h.startswith("notebooks/") and "#" in h for h in seen["links"])
+
+
+def test_no_rendered_file_shows_an_absolute_path(run):
+    """No page under results/ (report, notebooks, scorecard) names a path of the machine that built
+    it: not the run directory, not the interpreter's prefix, not any absolute path."""
+    from gearrep.report import absolute_paths
+
+    pages = [p for ext in ("*.html", "*.md", "*.svg") for p in (run / "results").rglob(ext)]
+    assert {p.name for p in pages} >= {"report.html", "scorecard.md"} | {f"{n}.html" for n in notebooks(run)}
+    for p in pages:
+        text = p.read_text(encoding="utf-8", errors="replace")
+        assert str(run) not in text and sys.prefix not in text, p.name
+        assert not absolute_paths(text), (p.name, absolute_paths(text)[:5])
+
+
+def test_rendered_notebooks_hide_the_preamble_and_fold_the_code(run):
+    """Issue 21: no Snakemake preamble, code folded, the design data at the top and at least as
+    many embedded images as the study has figure files."""
+    from gearrep.replications import load
+
+    for name in notebooks(run):
+        text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
+        assert "snakemake-job-properties" not in text and "os.chdir" not in text, name
+        assert text.count('<details class="gearrep-code">') >= 3, name
+        assert "design data" in text, name
+        assert text.count("<img") >= len(load(name).FIGURES), f"{name}: fewer images than figure files"
 
 
 def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):

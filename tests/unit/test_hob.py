@@ -17,7 +17,7 @@ L_GRID = np.linspace(4.3814841, 10.354, 5)
 def test_hob_constants_table_5_1():
     h = ZAHob()
     assert np.degrees(h.lead_angle_rad) == pytest.approx(2.866, abs=5e-4)  # Table 5.1 prints 2.866 deg
-    assert h.apex_radius_mm == pytest.approx(23.52641, abs=5e-6)  # READING_GUIDE reconstruction
+    assert h.apex_radius_mm == pytest.approx(23.52641, abs=5e-6)  # reconstruction of docs/reading-notes.md 000-C
     assert h.lead_per_rad_mm == pytest.approx(3.0 / (2 * np.cos(h.lead_angle_rad)), rel=1e-15)
     assert h.beta_rad == 0.0 and ZAHob(variant="printed").beta_rad == h.lead_angle_rad
 
@@ -62,7 +62,7 @@ def test_thread_principal_curvatures():
 def test_tip_row_and_tooth_symmetry():
     g = GeneratedGear.flank("R")
     lt = g.l_at_radius(33.0)
-    assert lt.status[0] == 0 and lt.x[0, 0] == pytest.approx(4.38148, abs=5e-6)  # READING_GUIDE: 4.38148
+    assert lt.status[0] == 0 and lt.x[0, 0] == pytest.approx(4.38148, abs=5e-6)  # docs/reading-notes.md 000-C: 4.38148
     pR, nR, recR = GeneratedGear.flank("R").points(L_GRID, 0.0)
     pL, nL, recL = GeneratedGear.flank("L").points(L_GRID, 0.0)
     assert np.all(recR.converged) and np.all(recL.converged)
@@ -134,7 +134,7 @@ def test_printed_variant_differs():
     a = GeneratedGear.flank("R").curvatures(np.array([5.0, 10.0]))
     p = GeneratedGear(hob=ZAHob(variant="printed"), side=1).curvatures(np.array([5.0, 10.0]))
     assert np.all(p.result.converged)
-    # close (READING_GUIDE: within ~1e-4) but beyond the tables' 6 printed decimals
+    # close (docs/reading-notes.md 000-C: within ~1e-4) but beyond the tables' 6 printed decimals
     rel = np.abs(p.k_q / a.k_q - 1)
     assert np.all((rel > 1e-5) & (rel < 1e-3))
 

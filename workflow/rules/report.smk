@@ -1,22 +1,27 @@
-# Notebooks (executed by Snakemake's notebook directive, via papermill) rendered to HTML, and the
-# one-page report. Each replication's rules add to NOTEBOOKS (names of notebooks/<name>.py.ipynb
+# Notebooks (executed by Snakemake's notebook directive, via papermill) rendered to HTML for
+# readers, and the one-page report. Each replication's rules add to NOTEBOOKS (names of notebooks/<name>.py.ipynb
 # whose executing rule writes results/notebooks/<name>.executed) and to REPORT_FIGURES.
 
 
 rule render_notebook:
     input:
         "results/notebooks/{name}.executed",
+        template="workflow/report/notebook/collapsed.html.j2",
+        code=script_lib("workflow/scripts/render_notebook.py"),
     output:
         "results/notebooks/{name}.html",
     log:
         "results/logs/render_{name}.log",
+    benchmark:
+        "results/benchmarks/render_{name}.tsv"
     conda:
         "../envs/gearrep.yaml"
     params:
-        python=PYTHON,  # nbconvert of the interpreter running Snakemake, not of PATH
-    shell:
-        "{params.python:q} -m nbconvert --to html --output-dir results/notebooks --output {wildcards.name} "
-        "results/notebooks/{wildcards.name}.ipynb > {log} 2>&1"
+        notebook="results/notebooks/{name}.ipynb",
+    script:
+        # nbconvert of the interpreter running Snakemake; the Snakemake preamble removed, code
+        # folded, machine paths replaced
+        "../scripts/render_notebook.py"
 
 
 rule report:
@@ -25,6 +30,10 @@ rule report:
         notebooks=expand("results/notebooks/{name}.html", name=NOTEBOOKS),
         figures=REPORT_FIGURES,
         errata="data/errata.csv",
+        published=published_files(),
+        manifest=f"{PUBLISHED_DIR}/MANIFEST.csv",
+        captions="workflow/report/captions.yaml",
+        highlights="workflow/report/highlights.yaml",
         config="config/config.yaml",
         lock="requirements.lock",
         code=script_lib("workflow/scripts/report.py"),

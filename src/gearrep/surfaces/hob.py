@@ -7,8 +7,8 @@ Sources
   :func:`gearrep.curvature.principal_curvatures`, the same quantities from the fundamental forms).
   In eq 4.40 the upper sign is the right-side thread surface, the lower sign the left side.
 * Generation (two-parameter enveloping, seed 000 eq 4.1-4.5 and sec. 4.5): seed 000 chapters 2-3
-  (the machine kinematics) are NOT in the text; the set-up below is the reconstruction given in
-  /work/shared/READING_GUIDE.md (seed 000 part), verified here against the surviving numbers of
+  (the machine kinematics) are NOT in the text; the set-up below is the reconstruction written up in
+  docs/reading-notes.md (section 000-C), verified here against the surviving numbers of
   Tables 4.3/4.4 (see :mod:`gearrep.replications.tseng_curvature`):
 
   - hob of Table 5.1: normal module m = 3 mm, alpha_n = 20 deg, pitch radius r_h = 30 mm,
@@ -44,7 +44,7 @@ by +pi/N about Z (``GeneratedGear.frame_rotation_rad``). The mid-face Z_f = 0 is
 
 Parameterisation of the generated surface: (l, psi) free, (phi, theta) solved from the two
 equations of meshing, because the Jacobian of the meshing equations in (theta, psi) is singular
-at mid-face (READING_GUIDE; tested in tests/unit/test_envelope.py).
+at mid-face (docs/reading-notes.md, 000-C; tested in tests/unit/test_envelope.py).
 """
 
 from __future__ import annotations

@@ -2,8 +2,8 @@
 merged with the design (:func:`gearrep.replications.tseng_curvature.merged`), and computes only
 its table; the l_1 grid (one Newton solve for the tip row) is recomputed by each job.
 
-Model: :mod:`gearrep.surfaces.hob` (hob eq 4.40-4.48, generation set-up reconstructed from the
-reading guide, seed 000 ch. 2-3 being missing). Curvatures two ways at every tabulated point:
+Model: :mod:`gearrep.surfaces.hob` (hob eq 4.40-4.48, generation set-up reconstructed as in
+docs/reading-notes.md 000-C, seed 000 ch. 2-3 being missing). Curvatures two ways at every tabulated point:
 (a) direct differential geometry of the generated surface r(l, psi); (b) the chapter's
 two-parameter method (eq 4.33 with eq 4.37-4.39 sign-corrected, 4.24-4.26;
 :mod:`gearrep.curvature_relations`). The findings are told in ``notebooks/tseng_curvature.ipynb``.
