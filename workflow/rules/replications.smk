@@ -22,10 +22,10 @@ for _key in REGISTRY:
                 design=published_files(*_study.DESIGN_DATA),
             output:
                 **{t: f"results/{p}" for t, p in _spec.tables.items()},
+                # the job's own wall, CPU and compute seconds (replication_io.write_timing)
+                job_timing=f"results/benchmarks/{_key}/{_job}.tsv",
             log:
                 f"results/logs/{_key}/{_job}.log",
-            benchmark:
-                f"results/benchmarks/{_key}/{_job}.tsv"
             # scheduling only: every table job before any checks/figures/notebook job (priority 0,
             # which would otherwise starve a short table job to the end of a cold run), the longest
             # first (Job.priority), so the run ends on short steps
@@ -51,10 +51,9 @@ for _key in REGISTRY:
             code=_code,
         output:
             **{n: f"results/{p}" for n, p in _study.CHECK_OUTPUTS.items()},
+            job_timing=f"results/benchmarks/{_key}/checks.tsv",
         log:
             f"results/logs/{_key}/checks.log",
-        benchmark:
-            f"results/benchmarks/{_key}/checks.tsv"
         conda:
             "../envs/gearrep.yaml"
         params:

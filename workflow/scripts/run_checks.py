@@ -14,7 +14,9 @@ with replication_io.logged(smk.log[0]):
     study = load(smk.params.study)
     tables = replication_io.read_tables(smk.input.tables)
     # exactly the published files the rule declares as inputs
-    out = study.checks(tables, published.load(Path(smk.input.published[0]).parent, smk.input.published))
+    seconds, out = replication_io.timed(
+        study.checks, tables, published.load(Path(smk.input.published[0]).parent, smk.input.published)
+    )
     missing = sorted(set(study.CHECK_OUTPUTS) - set(out))
     if missing:
         raise RuntimeError(f"{smk.params.study}.checks returned no {missing}")
@@ -23,3 +25,4 @@ with replication_io.logged(smk.log[0]):
             replication_io.write_checks(out[name], smk.output[name], smk.log[0])
         else:
             replication_io.write_table(out[name], smk.output[name])
+    replication_io.write_timing(smk.output.job_timing, seconds)

@@ -18,4 +18,6 @@ with replication_io.logged(smk.log[0]):
     # exactly the design-data files the rule declares as inputs
     design = study.params_from_published(published.load(Path(smk.input.design[0]).parent, smk.input.design))
     seconds, tables = replication_io.timed(job.compute, dict(smk.params.settings), design)
-    replication_io.write_tables(tables, smk.output, smk.log[0], f"{smk.params.study}.{smk.params.job}", seconds)
+    outputs = [path for name, path in smk.output.items() if name != "job_timing"]
+    replication_io.write_tables(tables, outputs, smk.log[0], f"{smk.params.study}.{smk.params.job}", seconds)
+    replication_io.write_timing(smk.output.job_timing, seconds)

@@ -1,31 +1,26 @@
 """Where the time of a workflow run goes, job by job (Snakemake script of `results/bench/workflow_jobs.csv`).
 
-Reads the Snakemake benchmark file of every job (wall seconds ``s`` and ``cpu_time`` of the job's
-process tree, peak ``max_rss`` in MB) and, for the replication jobs, the compute seconds their
-log records (``<study>.<job>: <seconds> s; ...``, written by replication_io.write_tables). The
+Reads the timing file of every job: the replication and check jobs write their own
+(replication_io.write_timing: wall seconds ``s`` and ``cpu_time`` of the process, peak ``max_rss``
+in MB, and ``compute_s``, the computation alone); the figure, notebook, render, scorecard and
+report jobs have Snakemake benchmark files (the same columns, without ``compute_s``). The
 difference between a job's wall time and its compute time is what the job pays to exist: the
 interpreter, the imports, reading its inputs and writing its tables. Rows are sorted by CPU time;
 the last row sums them.
 """
 
-import re
 from pathlib import Path
 
 import pandas as pd
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
-_COMPUTE = re.compile(r"^[\w.]+: ([0-9.]+) s;", re.MULTILINE)
-
 rows = []
 for tsv in map(Path, smk.input.benchmarks):
     b = pd.read_csv(tsv, sep="\t").iloc[-1]
     rel = tsv.relative_to("results/benchmarks").with_suffix("")
     study, step = (rel.parts[0], rel.parts[1]) if len(rel.parts) == 2 else ("", rel.parts[0])
-    compute = float("nan")
-    log = Path("results/logs", study, f"{step}.log")
-    if study and log.is_file() and (m := _COMPUTE.search(log.read_text())):
-        compute = float(m.group(1))
+    compute = float(b["compute_s"]) if "compute_s" in b.index else float("nan")
     rows.append(
         {
             "study": study,
