@@ -10,6 +10,11 @@ passes the computation and the settings; nothing here reads files or the config.
   error of each against a reference result computed in the same process at the most accurate
   setting (the caller supplies the reference setting and the error metric).
 * :func:`pareto_front`: the settings that no other setting beats in both time and error.
+* :func:`reference_kernel`: a fixed numpy computation (per element 20 sin/cos and 300
+  multiply-adds) that run times are expressed in, so that a throughput figure measured on one
+  machine under some load can be compared with one measured elsewhere; :func:`time_interleaved`
+  times several computations and the reference kernel in turns (best of several rounds), so that
+  a change of load during the run hits all of them alike.
 * :func:`knee`: the setting chosen as default: on the Pareto front, in log10(time)-log10(error)
   coordinates scaled to the unit square, the point farthest below the chord joining the fastest
   and the most accurate front points (the "knee": past it, extra time buys little accuracy).
@@ -34,6 +39,10 @@ __all__ = [
     "Timing",
     "load_average",
     "time_call",
+    "REFERENCE_SIN_COS",
+    "REFERENCE_MULTIPLY_ADDS",
+    "reference_kernel",
+    "time_interleaved",
     "sweep",
     "pareto_front",
     "knee",
@@ -77,6 +86,54 @@ def time_call(fn: Callable[[], Any], *, repeats: int = 5, warmup: int = 1) -> tu
         result = fn()
         times.append(time.perf_counter() - t0)
     return result, Timing(float(np.median(times)), float(np.min(times)), int(repeats), load_average())
+
+
+#: per element of :func:`reference_kernel`: transcendental calls and multiply-adds
+REFERENCE_SIN_COS = 20
+REFERENCE_MULTIPLY_ADDS = 300
+
+
+def reference_kernel(n: int) -> np.ndarray:
+    """The fixed reference computation on ``n`` elements: 10 rounds of (one sine, one cosine, then
+    15 times y <- y * a + s and y <- y * b + c), i.e. 20 sin/cos and 300 multiply-adds per element,
+    with numpy in place on float64 arrays (each multiply-add two array passes). Returns y (bounded,
+    so that no overflow or denormal slows it down)."""
+    if not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"n must be an integer >= 1, got {n!r}")
+    y = np.linspace(0.1, 1.0, int(n))
+    s = np.empty_like(y)
+    c = np.empty_like(y)
+    for _ in range(REFERENCE_SIN_COS // 2):
+        np.sin(y, out=s)
+        np.cos(y, out=c)
+        for _ in range(REFERENCE_MULTIPLY_ADDS // 20):
+            y *= 0.5
+            y += s
+            y *= 0.5
+            y += c
+    return y
+
+
+def time_interleaved(fns: dict[str, Callable[[], Any]], *, repeats: int = 5, warmup: int = 1) -> dict[str, float]:
+    """Best (minimum) wall time in seconds of each computation in ``fns`` over ``repeats`` rounds;
+    in every round each is called once, in the given order, so that all see the same load.
+    ``warmup`` untimed rounds first."""
+    if not isinstance(repeats, (int, np.integer)) or repeats < 1:
+        raise ValueError(f"repeats must be an integer >= 1, got {repeats!r}")
+    if not isinstance(warmup, (int, np.integer)) or warmup < 0:
+        raise ValueError(f"warmup must be an integer >= 0, got {warmup!r}")
+    if not fns:
+        raise ValueError("fns must hold at least one computation")
+    for _ in range(warmup):
+        for fn in fns.values():
+            fn()
+    best = {k: np.inf for k in fns}
+    for _ in range(repeats):
+        for k, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            best[k] = min(best[k], time.perf_counter() - t0)
+    return {k: float(v) for k, v in best.items()}
 
 
 def sweep(

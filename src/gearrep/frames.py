@@ -52,6 +52,9 @@ __all__ = [
     "rotation_about_line",
     "misalignment_rotation",
     "gear_mounting",
+    "rotate_z",
+    "apply_matrix",
+    "matrix_applier",
 ]
 
 
@@ -175,6 +178,45 @@ def rotation_about_axis_with_derivatives(axis, a):
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
     return np.eye(3) + s * K + (1.0 - c) * K2, c * K + s * K2, -s * K + c * K2
+
+
+def rotate_z(c, s, v):
+    """rot_z(a) applied to a vector given by components (structure of arrays), with c = cos a and
+    s = sin a given (computed once by the caller): (c v0 - s v1, s v0 + c v1, v2). ``v`` is a
+    3-tuple of broadcastable arrays or floats; returns a 3-tuple."""
+    v0, v1, v2 = v
+    return (c * v0 - s * v1, s * v0 + c * v1, v2)
+
+
+def matrix_applier(M, t=None):
+    """The map v -> M v (+ t) for ONE fixed 3 x 3 matrix ``M`` (the mounting of a member, say) on
+    vectors given by components (3-tuples of broadcastable arrays or floats), written out term by
+    term: entries that are exactly 0 or +-1 cost nothing and no (n, 3, 3) stack is built. Prepared
+    once (the matrix is inspected here), applied many times. ``t``: optional fixed 3-vector."""
+    M = np.asarray(M, dtype=float)
+    if M.shape != (3, 3) or not np.all(np.isfinite(M)):
+        raise ValueError(f"M must be one finite 3x3 matrix, got shape {M.shape}")
+    tt = (0.0, 0.0, 0.0) if t is None else tuple(float(x) for x in np.asarray(t, dtype=float).reshape(3))
+    rows = [([(j, float(M[i, j])) for j in range(3) if M[i, j] != 0.0], tt[i]) for i in range(3)]
+
+    def apply(v):
+        out = []
+        for terms, ti in rows:
+            acc = None
+            for j, m in terms:
+                term = v[j] if m == 1.0 else (-v[j] if m == -1.0 else m * v[j])
+                acc = term if acc is None else acc + term
+            if ti != 0.0:
+                acc = ti if acc is None else acc + ti
+            out.append(0.0 if acc is None else acc)
+        return tuple(out)
+
+    return apply
+
+
+def apply_matrix(M, v, t=None):
+    """M v (+ t) for one fixed 3 x 3 matrix and a vector by components (:func:`matrix_applier`)."""
+    return matrix_applier(M, t)(v)
 
 
 def homogeneous(R=None, t=None) -> np.ndarray:

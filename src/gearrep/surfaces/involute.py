@@ -556,6 +556,29 @@ class InvoluteFlank(Surface):
         put(r_vv, -u * pv * pv, u * pvv)
         return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
 
+    def evaluate_components(self, u, v) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays, see
+        :meth:`gearrep.surface.Surface.evaluate_components`): the same expressions without the
+        (..., 3) arrays; the constant axial components are the floats 0.0 and 1.0."""
+        u = np.asarray(u, dtype=float)
+        v = np.asarray(v, dtype=float)
+        u, v = np.broadcast_arrays(u, v)
+        psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
+        c, s = np.cos(psi), np.sin(psi)
+        upv = u * pv
+        b_u = u * pu
+        a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
+        a_uv, b_uv = -u * pu * pv, pv + u * puv
+        a_vv, b_vv = -upv * pv, u * pvv
+        return (
+            (u * c, u * s, v),
+            (c - b_u * s, s + b_u * c, 0.0),
+            (-(upv * s), upv * c, 1.0),
+            (a_uu * c - b_uu * s, a_uu * s + b_uu * c, 0.0),
+            (a_uv * c - b_uv * s, a_uv * s + b_uv * c, 0.0),
+            (a_vv * c - b_vv * s, a_vv * s + b_vv * c, 0.0),
+        )
+
     def outward_normal(self, u, v) -> np.ndarray:
         """Unit normal pointing out of the tooth material."""
         return self.outward_sign * self.evaluate(u, v).normal

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..frames import rotate_z
 from ..solve import SolveResult, Status, newton
-from ..surface import cross
-from ._pair import ContactPoints, GearPair, _mv, _wrap, transmission_error
+from ..surface import cross, cross3, dot3
+from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 
 __all__ = [
     "normal_derivatives",
@@ -33,51 +34,102 @@ def normal_derivatives(P, sign):
     return sign * n, sign * dnu, sign * dnv
 
 
+def _normal_derivatives3(P, sign):
+    """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
+    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple."""
+    _, ru, rv, ruu, ruv, rvv = P
+    N0, N1, N2 = cross3(ru, rv)
+    L = np.sqrt(N0 * N0 + N1 * N1 + N2 * N2)
+    n = (N0 / L, N1 / L, N2 / L)
+    a, b = cross3(ruu, rv), cross3(ru, ruv)
+    dNu = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    a, b = cross3(ruv, rv), cross3(ru, rvv)
+    dNv = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    pu, pv = dot3(n, dNu), dot3(n, dNv)
+    dnu = tuple((d - m * pu) / L for d, m in zip(dNu, n))
+    dnv = tuple((d - m * pv) / L for d, m in zip(dNv, n))
+    if sign == 1:
+        return n, dnu, dnv
+    return tuple(tuple(-x for x in vec) for vec in (n, dnu, dnv))
+
+
+def _stack3(v, n):
+    """(n, 3) array of a vector given by components (floats broadcast)."""
+    out = np.empty((n, 3))
+    out[:, 0], out[:, 1], out[:, 2] = v
+    return out
+
+
+def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
+    """The reduced formulation's explicit back-substitution (eq 37-44) in structure-of-arrays form.
+
+    ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
+    of components: u2, v2, phi2 (arrays), r, n1, n2 (3-tuples) and, with ``derivs``, the
+    derivatives with respect to u1 (suffix _u) and, with ``v_column``, v1 (suffix _v):
+    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples)."""
+    g = pair._soa
+    P1 = pair.flank1.evaluate_components(u1, v1)
+    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    r = rotate_z(c1, s1, P1[0])
+    n1 = rotate_z(c1, s1, n1l)
+    s = g["Q"](g["minus_O2"](r))  # member-2 axis frame, before Rz(-phi2)
+    sx, sy, v2 = s
+    rho2 = sx * sx + sy * sy
+    u2 = np.sqrt(rho2)
+    th = np.arctan2(sy, sx)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        P2 = pair.flank2.evaluate_components(u2, v2)
+    r2 = P2[0]
+    ang2 = np.arctan2(r2[1], r2[0])
+    ref = pair.ratio * phi1
+    phi2 = ref + _wrap(ang2 - th - ref)
+    a2 = pair.phase2 - phi2
+    c2, s2 = np.cos(a2), np.sin(a2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    n2 = g["A2"](rotate_z(c2, s2, n2l))
+    out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2)
+    if not derivs:
+        return out
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q2 = r2[0] * r2[0] + r2[1] * r2[1]
+        ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
+        ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
+        w2xn2 = cross3(g["w2"], n2)
+        for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
+            if j == "_v" and not v_column:
+                break
+            dr = rotate_z(c1, s1, rj)
+            ds = g["Q"](dr)
+            du2 = (sx * ds[0] + sy * ds[1]) / u2
+            dth = (sx * ds[1] - sy * ds[0]) / rho2
+            dv2 = ds[2]
+            dphi2 = ang_u * du2 + ang_v * dv2 - dth
+            dn2l = tuple(a * du2 + b * dv2 for a, b in zip(dn2u, dn2v))
+            dn2 = g["A2"](rotate_z(c2, s2, dn2l))
+            out["dr" + j] = dr
+            out["dn1" + j] = rotate_z(c1, s1, dnj)
+            out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
+            out["dn2" + j] = tuple(a + b * dphi2 for a, b in zip(dn2, w2xn2))
+    return out
+
+
 def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     """Explicit back-substitution of the reduced formulation (eq 37-44) and derivatives w.r.t. (u1, v1).
 
-    Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f) and, with
-    ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1).
+    Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f, (n, 3))
+    and, with ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1).
     """
-    P1 = pair.flank1.evaluate(u1, v1)
-    R1 = pair.R1(phi1)
-    r = _mv(R1, P1.r)
-    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
-    n1 = _mv(R1, n1l)
-    s = _mv(pair._Q, r - pair.O2)  # member-2 axis frame, before Rz(-phi2)
-    v2 = s[..., 2]
-    rho2 = s[..., 0] ** 2 + s[..., 1] ** 2
-    u2 = np.sqrt(rho2)
-    th = np.arctan2(s[..., 1], s[..., 0])
-    with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate(u2, v2)
-    ang2 = np.arctan2(P2.r[..., 1], P2.r[..., 0])
-    ref = pair.ratio * np.asarray(phi1, float)
-    phi2 = ref + _wrap(ang2 - th - ref)
-    R2 = pair.R2(phi2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
-    n2 = _mv(R2, n2l)
-    out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2, P1=P1, P2=P2)
-    if not derivs:
-        return out
-    # derivatives with respect to (u1, v1): stack directions on axis -2
-    dr = _mv(R1[..., None, :, :], np.stack([P1.r_u, P1.r_v], axis=-2))  # (n,2,3)
-    dn1 = _mv(R1[..., None, :, :], np.stack([dn1u, dn1v], axis=-2))
-    ds = _mv(pair._Q, dr)
-    sx, sy = s[..., 0, None], s[..., 1, None]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        du2 = (sx * ds[..., 0] + sy * ds[..., 1]) / u2[..., None]
-        dth = (sx * ds[..., 1] - sy * ds[..., 0]) / rho2[..., None]
-        dv2 = ds[..., 2]
-        r2 = P2.r
-        q2 = r2[..., 0] ** 2 + r2[..., 1] ** 2
-        ang_u = (r2[..., 0] * P2.r_u[..., 1] - r2[..., 1] * P2.r_u[..., 0]) / q2
-        ang_v = (r2[..., 0] * P2.r_v[..., 1] - r2[..., 1] * P2.r_v[..., 0]) / q2
-        dphi2 = ang_u[..., None] * du2 + ang_v[..., None] * dv2 - dth
-        dn2l = dn2u[..., None, :] * du2[..., None] + dn2v[..., None, :] * dv2[..., None]
-        dn2 = _mv(R2[..., None, :, :], dn2l) + cross(pair.w2, n2)[..., None, :] * dphi2[..., None]
-    out.update(dr=dr, dn1=dn1, du2=du2, dv2=dv2, dphi2=dphi2, dn2=dn2)
+    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
+    K = _reduced3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), derivs=derivs)
+    n = np.broadcast_shapes(u1.shape, v1.shape, phi1.shape)[0]
+    out = {k: K[k] for k in ("u2", "v2", "phi2")}
+    out.update({k: _stack3(K[k], n) for k in ("r", "n1", "n2")})
+    if derivs:
+        for k in ("dr", "dn1", "dn2"):
+            out[k] = np.stack([_stack3(K[k + "_u"], n), _stack3(K[k + "_v"], n)], axis=-2)
+        for k in ("du2", "dv2", "dphi2"):
+            out[k] = np.stack(np.broadcast_arrays(K[k + "_u"], K[k + "_v"]), axis=-1)
     return out
 
 
@@ -90,39 +142,101 @@ def _keep(vec, drop):
     return np.take_along_axis(vec, idx[:, None, :], axis=-1)
 
 
-def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
-    K = _reduced_kernel(pair, u1, v1, phi1, derivs=derivs)
-    c = cross(K["n1"], K["n2"])
-    F = _keep(c, drop)
+def _keep3(v, first0, last2):
+    """The two components of a vector by components other than the dropped one (per row):
+    (v1 if drop = 0 else v0, v1 if drop = 2 else v2); ``first0`` = (drop == 0), ``last2`` = (drop == 2)."""
+    return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
+
+
+def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
+    """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components."""
+    K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
+    n1, n2 = K["n1"], K["n2"]
+    c = cross3(n1, n2)
+    f0, f1 = _keep3(c, first0, last2)
+    F = np.empty((len(f0), 2))
+    F[:, 0], F[:, 1] = f0, f1
     if not derivs:
         return F, None, K
-    dc = cross(K["dn1"], K["n2"][..., None, :]) + cross(K["n1"][..., None, :], K["dn2"])  # (n,2,3)
-    J = np.swapaxes(_keep(dc, drop), -1, -2)  # (n, 2 eq, 2 unknowns)
+    cols = ("_u", "_v") if v_column else ("_u",)
+    J = np.empty((len(f0), 2, len(cols)))
+    for k, j in enumerate(cols):
+        a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
+        J[:, 0, k], J[:, 1, k] = _keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2)
     return F, J, K
 
 
-def _conventional_FJ(pair, x, phi1, drop, derivs=True):
+def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
+    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
+    drop = np.asarray(drop)
+    F, J, K = _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
+    return F, J, K
+
+
+def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
+    """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``cols``:
+    the free unknowns among (u1, v1, u2, v2, phi2); ``drop`` None keeps all three normal
+    components (six equations)."""
+    g = pair._soa
     u1, v1, u2, v2, phi2 = (x[:, i] for i in range(5))
-    P1 = pair.flank1.evaluate(u1, v1)
-    R1 = pair.R1(phi1)
+    P1 = pair.flank1.evaluate_components(u1, v1)
     with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate(u2, v2)
-        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
-    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
-    R2 = pair.R2(phi2)
-    r1 = _mv(R1, P1.r)
-    rel2 = _mv(R2, P2.r)
-    n1 = _mv(R1, n1l)
-    n2 = _mv(R2, n2l)
-    F = np.concatenate([r1 - (pair.O2 + rel2), n1 + n2 if drop is None else _keep(n1 + n2, drop)], axis=-1)
+        P2 = pair.flank2.evaluate_components(u2, v2)
+        n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    a2 = pair.phase2 - phi2
+    c2, s2 = np.cos(a2), np.sin(a2)
+
+    def R2(v):
+        return g["A2"](rotate_z(c2, s2, v))
+
+    r1 = rotate_z(c1, s1, P1[0])
+    rel2 = R2(P2[0])
+    n1 = rotate_z(c1, s1, n1l)
+    n2 = R2(n2l)
+    O2 = pair.O2
+    m = 6 if drop is None else 5
+    F = np.empty((len(u1), m))
+    for i in range(3):
+        F[:, i] = r1[i] - (O2[i] + rel2[i])
+    ns = tuple(a + b for a, b in zip(n1, n2))
+    if drop is None:
+        F[:, 3], F[:, 4], F[:, 5] = ns
+    else:
+        F[:, 3], F[:, 4] = _keep3(ns, first0, last2)
     if not derivs:
         return F, None
-    cols_r = [_mv(R1, P1.r_u), _mv(R1, P1.r_v), -_mv(R2, P2.r_u), -_mv(R2, P2.r_v), -cross(pair.w2, rel2)]
-    cols_n = [_mv(R1, dn1u), _mv(R1, dn1v), _mv(R2, dn2u), _mv(R2, dn2v), cross(pair.w2, n2)]
-    Jr = np.stack(cols_r, axis=-1)  # (n,3,5)
-    Jn = np.stack(cols_n, axis=-2)  # (n,5,3)
-    J = np.concatenate([Jr, np.swapaxes(Jn if drop is None else _keep(Jn, drop), -1, -2)], axis=-2)
+    J = np.empty((len(u1), m, len(cols)))
+    for k, col in enumerate(cols):
+        if col == 0:
+            jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
+        elif col == 1:
+            jr, jn = rotate_z(c1, s1, P1[2]), rotate_z(c1, s1, dn1v)
+        elif col == 2:
+            jr, jn = R2(P2[1]), R2(dn2u)
+            jr = tuple(-a for a in jr)
+        elif col == 3:
+            jr, jn = R2(P2[2]), R2(dn2v)
+            jr = tuple(-a for a in jr)
+        else:
+            jr = tuple(-a for a in cross3(g["w2"], rel2))
+            jn = cross3(g["w2"], n2)
+        J[:, 0, k], J[:, 1, k], J[:, 2, k] = jr
+        if drop is None:
+            J[:, 3, k], J[:, 4, k], J[:, 5, k] = jn
+        else:
+            J[:, 3, k], J[:, 4, k] = _keep3(jn, first0, last2)
     return F, J
+
+
+def _conventional_FJ(pair, x, phi1, drop, derivs=True):
+    x = np.asarray(x, float)
+    phi1 = np.broadcast_to(np.asarray(phi1, float), (len(x),))
+    c1, s1 = np.cos(phi1), np.sin(phi1)
+    d = None if drop is None else np.asarray(drop)
+    f0 = None if d is None else d == 0
+    l2 = None if d is None else d == 2
+    return _conventional_FJ3(pair, x, c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs)
 
 
 def conventional_system(pair: GearPair, phi1: float, drop: int | None):
@@ -287,10 +401,14 @@ def solve_contact(
         raise ValueError("the reduced formulation needs flank2 in cylindrical form (flank2.cylindrical = True)")
 
     # dropped normal component: the largest of member 1's normal at the start
+    c1, s1 = np.cos(phi1), np.sin(phi1)
     if drop is None:
-        with np.errstate(invalid="ignore", over="ignore"):  # a non-finite start ends as status DIVERGED
-            _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
-            drop = np.argmax(np.nan_to_num(np.abs(n1s), nan=0.0), axis=-1).astype(float)
+        with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # a non-finite start ends as DIVERGED
+            P = pair.flank1.evaluate_components(start[:, 0], start[:, 1])
+            N = rotate_z(c1, s1, cross3(P[1], P[2]))
+            L = np.sqrt(dot3(N, N))
+            a = np.abs(np.stack(np.broadcast_arrays(*(x / L for x in N)), axis=-1))
+            drop = np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
     else:
         if drop not in (0, 1, 2):
             raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
@@ -311,26 +429,26 @@ def solve_contact(
             full[:, 1] = p[:, 2]
         return full
 
+    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1
+    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1])
     if formulation == "reduced":
 
-        def FJ(x, p):
-            full = expand(x, p)
-            Fv, J, _ = _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1])
-            return Fv, J[:, :, free]
-
-        def Fonly(x, p):
-            full = expand(x, p)
-            return _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1], derivs=False)[0]
+        def FJ(x, p, derivs=True):
+            v1 = p[:, 2] if fixed else x[:, 1]
+            d = p[:, 1]
+            return _reduced_FJ3(
+                pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
+            )[:2]
     else:
+        cols = tuple(free)
 
-        def FJ(x, p):
-            Fv, J = _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1])
-            return Fv, J[:, :, free]
+        def FJ(x, p, derivs=True):
+            d = p[:, 1]
+            return _conventional_FJ3(pair, expand(x, p), p[:, 3], p[:, 4], d, d == 0, d == 2, cols, derivs=derivs)
 
-        def Fonly(x, p):
-            return _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1], derivs=False)[0]
+    def Fonly(x, p):
+        return FJ(x, p, derivs=False)[0]
 
-    params = np.column_stack([phi1, drop] + ([start[:, 1]] if fixed else []))
     with np.errstate(invalid="ignore", over="ignore"):  # non-finite iterates end as status DIVERGED
         res = newton_rows(
             Fonly,
