@@ -195,6 +195,7 @@ def newton(
     keep_inside: bool = False,
     rcond: float = 1e-13,
     rows: bool = False,
+    fun_jac: Callable | None = None,
 ) -> SolveResult:
     """Solve ``fun(x) = 0`` for a batch of independent problems.
 
@@ -214,6 +215,10 @@ def newton(
     rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
         (into the batch) of the rows of ``x``: the solver passes only the active rows, so
         per-problem data (e.g. fixed parameters) can be looked up by ``idx``
+    fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
+        evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
+        ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
+        whose step the line search shortened is computed afresh). F must equal ``fun(x)``.
 
     Returns
     -------
@@ -241,9 +246,22 @@ def newton(
             return _fun(xx, _idx["i"])
 
         jac = None if _jac is None else (lambda xx: _jac(xx, _idx["i"]))
+        if fun_jac is not None:
+            _fj = fun_jac
+
+            def fun_jac(xx):
+                return _fj(xx, _idx["i"])
     else:
         _idx = {"i": None}
-    F = np.asarray(fun(x), dtype=float).reshape(n, -1)
+    if fun_jac is not None:
+        F, Jc = fun_jac(x)
+        F = np.asarray(F, dtype=float).reshape(n, -1)
+        Jc = np.asarray(Jc, dtype=float).reshape(n, F.shape[1], k)
+        fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+        if jac is None:
+            jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
+    else:
+        F = np.asarray(fun(x), dtype=float).reshape(n, -1)
     if F.shape[1] < k:
         raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
     res = np.linalg.norm(F, axis=1)
@@ -261,7 +279,15 @@ def newton(
             break
         xa, Fa = x[act], F[act]
         _idx["i"] = act
-        Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
+        if fun_jac is not None:
+            Ja = Jc[act]
+            stale = np.flatnonzero(~fresh[act])
+            if stale.size:
+                _idx["i"] = act[stale]
+                Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, Fa.shape[1], k)
+                _idx["i"] = act
+        else:
+            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
         bad_j = ~np.all(np.isfinite(Ja), axis=(1, 2))
         Ja = np.where(bad_j[:, None, None], 0.0, Ja)
@@ -275,7 +301,13 @@ def newton(
         x_new = xa + d
         if keep_inside:
             x_new = np.clip(x_new, lo, hi)
-        F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
+        if fun_jac is not None:
+            F_new, J_new = fun_jac(x_new)
+            F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
+            Jc[act] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], k)
+            fresh[act] = True
+        else:
+            F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
         r_new = np.linalg.norm(F_new, axis=1)
         if damped:
             r_old = res[act]
@@ -293,6 +325,8 @@ def newton(
                 _idx["i"] = act
                 rt = np.linalg.norm(Ft, axis=1)
                 x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
+                if fun_jac is not None:
+                    fresh[act[idx]] = False
                 need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
             # no decrease found: keep the old iterate and stop this point
             stall = need

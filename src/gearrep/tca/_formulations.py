@@ -276,8 +276,10 @@ def newton_rows(
     """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
 
     ``F(x, p) -> (n, m)``; ``FJ(x, p) -> (F, J)`` with J (n, m, k) (analytic; ignored when
-    ``jacobian="numeric"``, which differentiates F by central differences). Each row's
-    parameters follow it through the solve (``newton(..., rows=True)``).
+    ``jacobian="numeric"``, which differentiates F by central differences; its F must equal
+    ``F(x, p)``: the solver takes the residual at each full step from it, ``fun_jac`` of
+    :func:`gearrep.solve.newton`). Each row's parameters follow it through the solve
+    (``newton(..., rows=True)``).
     """
     x0 = np.atleast_2d(np.asarray(x0, float))
     params = np.atleast_2d(np.asarray(params, float))
@@ -293,16 +295,21 @@ def newton_rows(
     def jac(x, idx):
         return FJ(x, params[idx])[1]
 
+    def fun_jac(x, idx):
+        return FJ(x, params[idx])
+
+    analytic = jacobian == "analytic"
     return newton(
         fun,
         x0,
-        jac if jacobian == "analytic" else None,
+        jac if analytic else None,
         tol=tol,
         maxiter=maxiter,
         damped=damped,
         lower=lower,
         upper=upper,
         rows=True,
+        fun_jac=fun_jac if analytic else None,
     )
 
 
