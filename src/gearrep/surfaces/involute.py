@@ -492,21 +492,26 @@ class InvoluteFlank(Surface):
         v = np.asarray(v, dtype=float)
         u, v = np.broadcast_arrays(u, v)
         inv, i1, i2 = _inv_derivs(u, self.r_b)
-        dp = np.zeros_like(u)
-        dp1 = np.zeros_like(u)
-        dp2 = np.zeros_like(u)
-        for r in self.relief:
-            a, b, c = r(u)
-            dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
         if self.crowning is not None:
             dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
         else:
             dl = dl1 = dl2 = 0.0
         tw, tw1, tw2 = self.twist(v)
         s, rb = self.side, self.r_b
-        psi = s * (self.c - inv - (dp + dl) / rb) + tw
-        psi_u = s * (-i1 - dp1 / rb)
-        psi_uu = s * (-i2 - dp2 / rb)
+        if self.relief:
+            dp = np.zeros_like(u)
+            dp1 = np.zeros_like(u)
+            dp2 = np.zeros_like(u)
+            for r in self.relief:
+                a, b, c = r(u)
+                dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+            psi = s * (self.c - inv - (dp + dl) / rb) + tw
+            psi_u = s * (-i1 - dp1 / rb)
+            psi_uu = s * (-i2 - dp2 / rb)
+        else:  # the same numbers without the zero profile terms (0 + dl = dl, -i - 0 / rb = -i)
+            psi = s * (self.c - inv - dl / rb) + tw
+            psi_u = s * -i1
+            psi_uu = s * -i2
         psi_v = tw1 - s * dl1 / rb
         psi_vv = tw2 - s * dl2 / rb
         return psi, psi_u, np.broadcast_to(psi_v, u.shape), psi_uu, np.zeros_like(u), np.broadcast_to(psi_vv, u.shape)
@@ -563,12 +568,12 @@ class InvoluteFlank(Surface):
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
         u, v = np.broadcast_arrays(u, v)
-        psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
+        psi, pu, pv, puu, _, pvv = self.polar_angle_derivs(u, v)
         c, s = np.cos(psi), np.sin(psi)
         upv = u * pv
         b_u = u * pu
         a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
-        a_uv, b_uv = -u * pu * pv, pv + u * puv
+        a_uv, b_uv = -u * pu * pv, pv  # psi_uv = 0 (eq B: a function of u plus one of v), so pv + u psi_uv = pv
         a_vv, b_vv = -upv * pv, u * pvv
         return (
             (u * c, u * s, v),

@@ -480,6 +480,8 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
         if formulation == "reduced":
             K = _reduced_kernel(pair, u1, v1, phi1, derivs=False)
             u2, v2, phi2, r, n1, n2 = K["u2"], K["v2"], K["phi2"], K["r"], K["n1"], K["n2"]
+            for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
+                vec[~np.isfinite(vec).all(axis=1)] = np.nan
         else:
             u2, v2, phi2 = sol[:, 2], sol[:, 3], sol[:, 4]
             ref = pair.ratio * phi1
