@@ -197,21 +197,22 @@ def matrix_applier(M, t=None):
     if M.shape != (3, 3) or not np.all(np.isfinite(M)):
         raise ValueError(f"M must be one finite 3x3 matrix, got shape {M.shape}")
     tt = (0.0, 0.0, 0.0) if t is None else tuple(float(x) for x in np.asarray(t, dtype=float).reshape(3))
-    rows = [([(j, float(M[i, j])) for j in range(3) if M[i, j] != 0.0], tt[i]) for i in range(3)]
-
-    def apply(v):
-        out = []
-        for terms, ti in rows:
-            acc = None
-            for j, m in terms:
-                term = v[j] if m == 1.0 else (-v[j] if m == -1.0 else m * v[j])
-                acc = term if acc is None else acc + term
-            if ti != 0.0:
-                acc = ti if acc is None else acc + ti
-            out.append(0.0 if acc is None else acc)
-        return tuple(out)
-
-    return apply
+    if not all(math.isfinite(x) for x in tt):
+        raise ValueError(f"t must be a finite 3-vector, got {t!r}")
+    # the three sums written out as one expression (constants by repr, which round-trips exactly),
+    # summed left to right like a loop would: one Python call per application
+    rows = []
+    for i in range(3):
+        terms = []
+        for j in range(3):
+            m = float(M[i, j])
+            if m == 0.0:
+                continue
+            terms.append(f"v[{j}]" if m == 1.0 else (f"(-v[{j}])" if m == -1.0 else f"{m!r} * v[{j}]"))
+        if tt[i] != 0.0:
+            terms.append(repr(tt[i]))
+        rows.append(" + ".join(terms) if terms else "0.0")
+    return eval(f"lambda v: ({rows[0]}, {rows[1]}, {rows[2]})")  # noqa: S307 (built from floats only)
 
 
 def apply_matrix(M, v, t=None):

@@ -115,6 +115,12 @@ def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None,
     return np.stack(cols, axis=-1)
 
 
+def _row_norms(F):
+    """Euclidean norms of the rows of F (what ``np.linalg.norm(F, axis=1)`` computes, without its
+    Python overhead)."""
+    return np.sqrt(np.add.reduce(F * F, axis=1))
+
+
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
     """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask (plus the
     extreme singular values, or bounds of them, for the condition number).
@@ -159,12 +165,16 @@ def _step_2x2(J, F, rcond):
     a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
     s1 = np.hypot(0.5 * (a + d), 0.5 * (c - b)) + np.hypot(0.5 * (a - d), 0.5 * (c + b))
     det = a * d - b * c
+    n = len(J)
+    step = np.empty((n, 2))
+    sv = np.empty((n, 2))
     with np.errstate(divide="ignore", invalid="ignore"):
         s2 = np.where(s1 > 0, np.abs(det) / s1, 0.0)
         singular = ~(s2 > rcond * s1)
-        step = -np.stack([d * F[:, 0] - b * F[:, 1], a * F[:, 1] - c * F[:, 0]], axis=-1) / det[:, None]
-    sv = np.stack([s1, s2], axis=-1)
-    if np.any(singular):
+        step[:, 0] = -(d * F[:, 0] - b * F[:, 1]) / det
+        step[:, 1] = -(a * F[:, 1] - c * F[:, 0]) / det
+    sv[:, 0], sv[:, 1] = s1, s2
+    if singular.any():
         idx = np.flatnonzero(singular)
         step[idx], _, sv[idx] = _svd_step(J[idx], F[idx], rcond)
     return step, singular, sv
@@ -264,7 +274,7 @@ def newton(
         F = np.asarray(fun(x), dtype=float).reshape(n, -1)
     if F.shape[1] < k:
         raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
-    res = np.linalg.norm(F, axis=1)
+    res = _row_norms(F)
     iters = np.zeros(n, dtype=int)
     status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
     status[~np.isfinite(res)] = int(Status.DIVERGED)
@@ -274,7 +284,7 @@ def newton(
     cond = np.full(n, np.nan)
 
     for _ in range(int(maxiter)):
-        act = np.flatnonzero(~done)
+        act = (~done).nonzero()[0]
         if act.size == 0:
             break
         xa, Fa = x[act], F[act]
@@ -289,8 +299,9 @@ def newton(
         else:
             Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
-        bad_j = ~np.all(np.isfinite(Ja), axis=(1, 2))
-        Ja = np.where(bad_j[:, None, None], 0.0, Ja)
+        bad_j = ~np.isfinite(Ja).all(axis=(1, 2))
+        if bad_j.any():
+            Ja = np.where(bad_j[:, None, None], 0.0, Ja)
         d, singular, sv = _lstsq_step(Ja, Fa, rcond)
         singular |= bad_j
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -308,14 +319,14 @@ def newton(
             fresh[act] = True
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
-        r_new = np.linalg.norm(F_new, axis=1)
+        r_new = _row_norms(F_new)
         if damped:
             r_old = res[act]
             need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
             for _h in range(int(max_halvings)):
-                if not np.any(need):
+                if not need.any():
                     break
-                idx = np.flatnonzero(need)
+                idx = need.nonzero()[0]
                 lam[idx] *= 0.5
                 xt = xa[idx] + lam[idx, None] * d[idx]
                 if keep_inside:
@@ -323,7 +334,7 @@ def newton(
                 _idx["i"] = act[idx]
                 Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
                 _idx["i"] = act
-                rt = np.linalg.norm(Ft, axis=1)
+                rt = _row_norms(Ft)
                 x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
                 if fun_jac is not None:
                     fresh[act[idx]] = False
@@ -334,7 +345,7 @@ def newton(
             stalled[act[stall]] = True
 
         x[act], F[act], res[act] = x_new, F_new, r_new
-        nonfinite = ~np.isfinite(r_new) | ~np.all(np.isfinite(x_new), axis=1)
+        nonfinite = ~np.isfinite(r_new) | ~np.isfinite(x_new).all(axis=1)
         conv = (r_new < tol) & ~nonfinite
         sing_stop = singular & ~conv
         status[act[conv]] = int(Status.CONVERGED)

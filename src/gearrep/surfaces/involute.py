@@ -71,6 +71,7 @@ polar angle of the involute that starts on the x axis), i.e. the ``side = -1`` f
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -564,7 +565,11 @@ class InvoluteFlank(Surface):
     def evaluate_components(self, u, v) -> tuple:
         """:meth:`evaluate` by components (structure of arrays, see
         :meth:`gearrep.surface.Surface.evaluate_components`): the same expressions without the
-        (..., 3) arrays; the constant axial components are the floats 0.0 and 1.0."""
+        (..., 3) arrays; the constant axial components are the floats 0.0 and 1.0. For ``u``, ``v``
+        Python floats (one point) the same expressions are evaluated with :mod:`math` on floats;
+        inside the base circle that raises ValueError (where arrays give NaN)."""
+        if type(u) is float and type(v) is float:
+            return self._components_of_one_point(u, v)
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
         u, v = np.broadcast_arrays(u, v)
@@ -582,6 +587,49 @@ class InvoluteFlank(Surface):
             (a_uu * c - b_uu * s, a_uu * s + b_uu * c, 0.0),
             (a_uv * c - b_uv * s, a_uv * s + b_uv * c, 0.0),
             (a_vv * c - b_vv * s, a_vv * s + b_vv * c, 0.0),
+        )
+
+    def _components_of_one_point(self, u: float, v: float) -> tuple:
+        """:meth:`evaluate_components` of one point on Python floats: the expressions of
+        :func:`_inv_derivs`, :meth:`polar_angle_derivs` and :meth:`evaluate_components` in the
+        same order (the modifications' own functions are called and their values taken as floats)."""
+        rb = float(self.r_b)  # Python floats throughout: no numpy scalar (and no numpy warning) enters
+        sq = math.sqrt(u * u - rb * rb)
+        t = sq / rb
+        inv, i1, i2 = t - math.atan(t), sq / (rb * u), rb / (sq * u * u)
+        if self.crowning is not None:
+            dl, dl1, dl2 = (float(x) for x in self.crowning(v))
+        else:
+            dl = dl1 = dl2 = 0.0
+        tw, tw1, tw2 = (float(x) for x in self.twist(v))
+        s = self.side
+        if self.relief:
+            dp = dp1 = dp2 = 0.0
+            for r in self.relief:
+                a, b, c = (float(x) for x in r(u))
+                dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+            psi = s * (float(self.c) - inv - (dp + dl) / rb) + tw
+            pu = s * (-i1 - dp1 / rb)
+            puu = s * (-i2 - dp2 / rb)
+        else:
+            psi = s * (float(self.c) - inv - dl / rb) + tw
+            pu = s * -i1
+            puu = s * -i2
+        pv = tw1 - s * dl1 / rb
+        pvv = tw2 - s * dl2 / rb
+        c, sn = math.cos(psi), math.sin(psi)
+        upv = u * pv
+        b_u = u * pu
+        a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
+        a_uv, b_uv = -u * pu * pv, pv
+        a_vv, b_vv = -upv * pv, u * pvv
+        return (
+            (u * c, u * sn, v),
+            (c - b_u * sn, sn + b_u * c, 0.0),
+            (-(upv * sn), upv * c, 1.0),
+            (a_uu * c - b_uu * sn, a_uu * sn + b_uu * c, 0.0),
+            (a_uv * c - b_uv * sn, a_uv * sn + b_uv * c, 0.0),
+            (a_vv * c - b_vv * sn, a_vv * sn + b_vv * c, 0.0),
         )
 
     def outward_normal(self, u, v) -> np.ndarray:

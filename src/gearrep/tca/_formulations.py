@@ -3,6 +3,8 @@ Newton with per-row data, and the public solves (see :mod:`gearrep.tca`)."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..frames import rotate_z
@@ -34,12 +36,36 @@ def normal_derivatives(P, sign):
     return sign * n, sign * dnu, sign * dnv
 
 
+# one-point solves run the same kernels on Python floats (a numpy call on a 1-element array costs
+# as much as on thousands of elements); these pick the math or the numpy function by the argument
+def _sqrt(x):
+    return math.sqrt(x) if type(x) is float else np.sqrt(x)
+
+
+def _atan2(y, x):
+    return math.atan2(y, x) if type(x) is float and type(y) is float else np.arctan2(y, x)
+
+
+def _cos_sin(x):
+    return (math.cos(x), math.sin(x)) if type(x) is float else (np.cos(x), np.sin(x))
+
+
+def _wrap_any(x):
+    """:func:`_wrap` for arrays or floats (round half to even in both)."""
+    return x - 2.0 * math.pi * round(x / (2.0 * math.pi)) if type(x) is float else _wrap(x)
+
+
+#: a one-point kernel on floats raises these where the array kernel gives inf/NaN; the caller then
+#: repeats it on arrays, so that both give the same statuses
+_SCALAR_ERRORS = (ArithmeticError, ValueError)
+
+
 def _normal_derivatives3(P, sign):
     """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
     :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple."""
     _, ru, rv, ruu, ruv, rvv = P
     N0, N1, N2 = cross3(ru, rv)
-    L = np.sqrt(N0 * N0 + N1 * N1 + N2 * N2)
+    L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
     n = (N0 / L, N1 / L, N2 / L)
     a, b = cross3(ruu, rv), cross3(ru, ruv)
     dNu = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
@@ -66,7 +92,8 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
     ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
     of components: u2, v2, phi2 (arrays), r, n1, n2 (3-tuples) and, with ``derivs``, the
     derivatives with respect to u1 (suffix _u) and, with ``v_column``, v1 (suffix _v):
-    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples)."""
+    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples). Callers set ``np.errstate`` (off the flanks
+    the arrays hold NaN/inf)."""
     g = pair._soa
     P1 = pair.flank1.evaluate_components(u1, v1)
     n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
@@ -75,42 +102,38 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
     s = g["Q"](g["minus_O2"](r))  # member-2 axis frame, before Rz(-phi2)
     sx, sy, v2 = s
     rho2 = sx * sx + sy * sy
-    u2 = np.sqrt(rho2)
-    th = np.arctan2(sy, sx)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate_components(u2, v2)
+    u2 = _sqrt(rho2)
+    th = _atan2(sy, sx)
+    P2 = pair.flank2.evaluate_components(u2, v2)
     r2 = P2[0]
-    ang2 = np.arctan2(r2[1], r2[0])
+    ang2 = _atan2(r2[1], r2[0])
     ref = pair.ratio * phi1
-    phi2 = ref + _wrap(ang2 - th - ref)
-    a2 = pair.phase2 - phi2
-    c2, s2 = np.cos(a2), np.sin(a2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    phi2 = ref + _wrap_any(ang2 - th - ref)
+    c2, s2 = _cos_sin(pair.phase2 - phi2)
+    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
     n2 = g["A2"](rotate_z(c2, s2, n2l))
     out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2)
     if not derivs:
         return out
-    with np.errstate(invalid="ignore", divide="ignore"):
-        q2 = r2[0] * r2[0] + r2[1] * r2[1]
-        ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
-        ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
-        w2xn2 = cross3(g["w2"], n2)
-        for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
-            if j == "_v" and not v_column:
-                break
-            dr = rotate_z(c1, s1, rj)
-            ds = g["Q"](dr)
-            du2 = (sx * ds[0] + sy * ds[1]) / u2
-            dth = (sx * ds[1] - sy * ds[0]) / rho2
-            dv2 = ds[2]
-            dphi2 = ang_u * du2 + ang_v * dv2 - dth
-            dn2l = tuple(a * du2 + b * dv2 for a, b in zip(dn2u, dn2v))
-            dn2 = g["A2"](rotate_z(c2, s2, dn2l))
-            out["dr" + j] = dr
-            out["dn1" + j] = rotate_z(c1, s1, dnj)
-            out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
-            out["dn2" + j] = tuple(a + b * dphi2 for a, b in zip(dn2, w2xn2))
+    q2 = r2[0] * r2[0] + r2[1] * r2[1]
+    ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
+    ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
+    w2xn2 = cross3(g["w2"], n2)
+    for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
+        if j == "_v" and not v_column:
+            break
+        dr = rotate_z(c1, s1, rj)
+        ds = g["Q"](dr)
+        du2 = (sx * ds[0] + sy * ds[1]) / u2
+        dth = (sx * ds[1] - sy * ds[0]) / rho2
+        dv2 = ds[2]
+        dphi2 = ang_u * du2 + ang_v * dv2 - dth
+        dn2l = tuple(a * du2 + b * dv2 for a, b in zip(dn2u, dn2v))
+        dn2 = g["A2"](rotate_z(c2, s2, dn2l))
+        out["dr" + j] = dr
+        out["dn1" + j] = rotate_z(c1, s1, dnj)
+        out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
+        out["dn2" + j] = tuple(a + b * dphi2 for a, b in zip(dn2, w2xn2))
     return out
 
 
@@ -121,8 +144,22 @@ def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     and, with ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1).
     """
     u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
-    K = _reduced3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), derivs=derivs)
     n = np.broadcast_shapes(u1.shape, v1.shape, phi1.shape)[0]
+    K = None
+    if n == 1 and not derivs:  # one point: on floats (see _SCALAR_ERRORS)
+        f = tuple(float(a.reshape(-1)[0]) for a in (u1, v1, phi1))
+        try:
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                K1 = _reduced3(pair, f[0], f[1], f[2], *_cos_sin(f[2]), derivs=False)
+            K = {
+                k: (np.array([v]) if k in ("u2", "v2", "phi2") else tuple(np.array([x]) for x in v))
+                for k, v in K1.items()
+            }
+        except _SCALAR_ERRORS:
+            K = None
+    if K is None:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            K = _reduced3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), derivs=derivs)
     out = {k: K[k] for k in ("u2", "v2", "phi2")}
     out.update({k: _stack3(K[k], n) for k in ("r", "n1", "n2")})
     if derivs:
@@ -145,6 +182,8 @@ def _keep(vec, drop):
 def _keep3(v, first0, last2):
     """The two components of a vector by components other than the dropped one (per row):
     (v1 if drop = 0 else v0, v1 if drop = 2 else v2); ``first0`` = (drop == 0), ``last2`` = (drop == 2)."""
+    if type(first0) is bool:
+        return (v[1] if first0 else v[0]), (v[1] if last2 else v[2])
     return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
 
 
@@ -154,12 +193,12 @@ def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_colum
     n1, n2 = K["n1"], K["n2"]
     c = cross3(n1, n2)
     f0, f1 = _keep3(c, first0, last2)
-    F = np.empty((len(f0), 2))
+    F = np.empty((np.size(f0), 2))
     F[:, 0], F[:, 1] = f0, f1
     if not derivs:
         return F, None, K
     cols = ("_u", "_v") if v_column else ("_u",)
-    J = np.empty((len(f0), 2, len(cols)))
+    J = np.empty((np.size(f0), 2, len(cols)))
     for k, j in enumerate(cols):
         a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
         J[:, 0, k], J[:, 1, k] = _keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2)
@@ -169,23 +208,21 @@ def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_colum
 def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
     u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
     drop = np.asarray(drop)
-    F, J, K = _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
-    return F, J, K
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
 
 
 def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
-    """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``cols``:
-    the free unknowns among (u1, v1, u2, v2, phi2); ``drop`` None keeps all three normal
-    components (six equations)."""
+    """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``x``: the
+    five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
+    the free ones; ``drop`` None keeps all three normal components (six equations)."""
     g = pair._soa
-    u1, v1, u2, v2, phi2 = (x[:, i] for i in range(5))
+    u1, v1, u2, v2, phi2 = x
     P1 = pair.flank1.evaluate_components(u1, v1)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate_components(u2, v2)
-        n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    P2 = pair.flank2.evaluate_components(u2, v2)
+    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
     n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
-    a2 = pair.phase2 - phi2
-    c2, s2 = np.cos(a2), np.sin(a2)
+    c2, s2 = _cos_sin(pair.phase2 - phi2)
 
     def R2(v):
         return g["A2"](rotate_z(c2, s2, v))
@@ -194,9 +231,10 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
     rel2 = R2(P2[0])
     n1 = rotate_z(c1, s1, n1l)
     n2 = R2(n2l)
-    O2 = pair.O2
+    O2 = g["O2"]
     m = 6 if drop is None else 5
-    F = np.empty((len(u1), m))
+    n = np.size(u1)
+    F = np.empty((n, m))
     for i in range(3):
         F[:, i] = r1[i] - (O2[i] + rel2[i])
     ns = tuple(a + b for a, b in zip(n1, n2))
@@ -206,7 +244,7 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
         F[:, 3], F[:, 4] = _keep3(ns, first0, last2)
     if not derivs:
         return F, None
-    J = np.empty((len(u1), m, len(cols)))
+    J = np.empty((n, m, len(cols)))
     for k, col in enumerate(cols):
         if col == 0:
             jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
@@ -236,7 +274,10 @@ def _conventional_FJ(pair, x, phi1, drop, derivs=True):
     d = None if drop is None else np.asarray(drop)
     f0 = None if d is None else d == 0
     l2 = None if d is None else d == 2
-    return _conventional_FJ3(pair, x, c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return _conventional_FJ3(
+            pair, tuple(x[:, i] for i in range(5)), c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs
+        )
 
 
 def conventional_system(pair: GearPair, phi1: float, drop: int | None):
@@ -345,6 +386,28 @@ def _prep(phi1, start, width):
     return np.broadcast_to(phi1, (n,)).copy(), np.broadcast_to(start, (n, width)).copy()
 
 
+def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
+    """Per row the index (as float) of the largest component of member 1's unit normal in S_f at
+    (u1, v1) turned by (cos, sin) = (c1, s1); 0 where it is not finite (the solve reports those)."""
+    if len(u1) == 1:  # one point: on floats (numpy scalars where the family has no float path)
+        try:
+            with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+                P = pair.flank1.evaluate_components(float(u1[0]), float(v1[0]))
+                N = rotate_z(float(c1[0]), float(s1[0]), cross3(P[1], P[2]))
+                L = math.sqrt(dot3(N, N))
+                a = [abs(x / L) for x in N]
+            if all(math.isfinite(x) for x in a):  # else as arrays (NaN counts as 0 there)
+                return np.array([float(a.index(max(a)))])
+        except _SCALAR_ERRORS:
+            pass
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # a non-finite start ends as DIVERGED
+        P = pair.flank1.evaluate_components(u1, v1)
+        N = rotate_z(c1, s1, cross3(P[1], P[2]))
+        L = np.sqrt(dot3(N, N))
+        a = np.abs(np.stack(np.broadcast_arrays(*(x / L for x in N)), axis=-1))
+        return np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
+
+
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
     phi1 = _angles(phi1)
@@ -410,12 +473,7 @@ def solve_contact(
     # dropped normal component: the largest of member 1's normal at the start
     c1, s1 = np.cos(phi1), np.sin(phi1)
     if drop is None:
-        with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # a non-finite start ends as DIVERGED
-            P = pair.flank1.evaluate_components(start[:, 0], start[:, 1])
-            N = rotate_z(c1, s1, cross3(P[1], P[2]))
-            L = np.sqrt(dot3(N, N))
-            a = np.abs(np.stack(np.broadcast_arrays(*(x / L for x in N)), axis=-1))
-            drop = np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
+        drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1)
     else:
         if drop not in (0, 1, 2):
             raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
@@ -441,6 +499,23 @@ def solve_contact(
     if formulation == "reduced":
 
         def FJ(x, p, derivs=True):
+            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+                q = p[0].tolist()
+                try:
+                    return _reduced_FJ3(
+                        pair,
+                        float(x[0, 0]),
+                        q[2] if fixed else float(x[0, 1]),
+                        q[0],
+                        q[3],
+                        q[4],
+                        q[1] == 0,
+                        q[1] == 2,
+                        derivs=derivs,
+                        v_column=not fixed,
+                    )[:2]
+                except _SCALAR_ERRORS:
+                    pass
             v1 = p[:, 2] if fixed else x[:, 1]
             d = p[:, 1]
             return _reduced_FJ3(
@@ -450,13 +525,24 @@ def solve_contact(
         cols = tuple(free)
 
         def FJ(x, p, derivs=True):
+            full = expand(x, p)
+            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+                q = p[0].tolist()
+                try:
+                    return _conventional_FJ3(
+                        pair, tuple(full[0].tolist()), q[3], q[4], q[1], q[1] == 0, q[1] == 2, cols, derivs=derivs
+                    )
+                except _SCALAR_ERRORS:
+                    pass
             d = p[:, 1]
-            return _conventional_FJ3(pair, expand(x, p), p[:, 3], p[:, 4], d, d == 0, d == 2, cols, derivs=derivs)
+            return _conventional_FJ3(
+                pair, tuple(full[:, i] for i in range(5)), p[:, 3], p[:, 4], d, d == 0, d == 2, cols, derivs=derivs
+            )
 
     def Fonly(x, p):
         return FJ(x, p, derivs=False)[0]
 
-    with np.errstate(invalid="ignore", over="ignore"):  # non-finite iterates end as status DIVERGED
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
         res = newton_rows(
             Fonly,
             FJ,

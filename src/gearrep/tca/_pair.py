@@ -147,12 +147,13 @@ class GearPair:
     def _soa(self) -> dict:
         """The fixed part of the pair's frames prepared once for the structure-of-arrays kernels of
         :mod:`gearrep.tca._formulations`: ``A2``, ``Q`` (v -> A2 v, Q v on component tuples),
-        ``minus_O2`` (v -> v - O2) and ``w2`` (a tuple)."""
+        ``minus_O2`` (v -> v - O2), ``w2`` and ``O2`` (tuples of floats)."""
         return {
             "A2": matrix_applier(self.A2),
             "Q": matrix_applier(self._Q),
             "minus_O2": matrix_applier(np.eye(3), -self.O2),
             "w2": tuple(float(x) for x in self.w2),
+            "O2": tuple(float(x) for x in self.O2),
         }
 
     def R1(self, phi1):
