@@ -382,6 +382,25 @@ class InvoluteGearData:
         return 2.0 * np.pi * self.r_b / self.n_teeth
 
 
+def _flank_components(u, v, c, s, pu, pv, puu, pvv):
+    """r, r_u, r_v, r_uu, r_uv, r_vv of eq (A) by components from cos/sin of psi and its partials
+    (arrays or floats; see :meth:`InvoluteFlank.evaluate`): a e_r + b e_t in x, y. psi_uv = 0 (eq B
+    is a function of u plus one of v), so the e_t part of r_uv is psi_v."""
+    upv = u * pv
+    b_u = u * pu
+    a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
+    a_uv = -u * pu * pv
+    a_vv, b_vv = -upv * pv, u * pvv
+    return (
+        (u * c, u * s, v),
+        (c - b_u * s, s + b_u * c, 0.0),
+        (-(upv * s), upv * c, 1.0),
+        (a_uu * c - b_uu * s, a_uu * s + b_uu * c, 0.0),
+        (a_uv * c - pv * s, a_uv * s + pv * c, 0.0),
+        (a_vv * c - b_vv * s, a_vv * s + b_vv * c, 0.0),
+    )
+
+
 class InvoluteFlank(Surface):
     """One flank of an involute spur or helical tooth, r(u, v) of eq (A)-(B) of the module docstring.
 
@@ -574,20 +593,7 @@ class InvoluteFlank(Surface):
         v = np.asarray(v, dtype=float)
         u, v = np.broadcast_arrays(u, v)
         psi, pu, pv, puu, _, pvv = self.polar_angle_derivs(u, v)
-        c, s = np.cos(psi), np.sin(psi)
-        upv = u * pv
-        b_u = u * pu
-        a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
-        a_uv, b_uv = -u * pu * pv, pv  # psi_uv = 0 (eq B: a function of u plus one of v), so pv + u psi_uv = pv
-        a_vv, b_vv = -upv * pv, u * pvv
-        return (
-            (u * c, u * s, v),
-            (c - b_u * s, s + b_u * c, 0.0),
-            (-(upv * s), upv * c, 1.0),
-            (a_uu * c - b_uu * s, a_uu * s + b_uu * c, 0.0),
-            (a_uv * c - b_uv * s, a_uv * s + b_uv * c, 0.0),
-            (a_vv * c - b_vv * s, a_vv * s + b_vv * c, 0.0),
-        )
+        return _flank_components(u, v, np.cos(psi), np.sin(psi), pu, pv, puu, pvv)
 
     def _components_of_one_point(self, u: float, v: float) -> tuple:
         """:meth:`evaluate_components` of one point on Python floats: the expressions of
@@ -617,20 +623,7 @@ class InvoluteFlank(Surface):
             puu = s * -i2
         pv = tw1 - s * dl1 / rb
         pvv = tw2 - s * dl2 / rb
-        c, sn = math.cos(psi), math.sin(psi)
-        upv = u * pv
-        b_u = u * pu
-        a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
-        a_uv, b_uv = -u * pu * pv, pv
-        a_vv, b_vv = -upv * pv, u * pvv
-        return (
-            (u * c, u * sn, v),
-            (c - b_u * sn, sn + b_u * c, 0.0),
-            (-(upv * sn), upv * c, 1.0),
-            (a_uu * c - b_uu * sn, a_uu * sn + b_uu * c, 0.0),
-            (a_uv * c - b_uv * sn, a_uv * sn + b_uv * c, 0.0),
-            (a_vv * c - b_vv * sn, a_vv * sn + b_vv * c, 0.0),
-        )
+        return _flank_components(u, v, math.cos(psi), math.sin(psi), pu, pv, puu, pvv)
 
     def outward_normal(self, u, v) -> np.ndarray:
         """Unit normal pointing out of the tooth material."""
