@@ -134,3 +134,49 @@ def test_closed_form_2x2_step_matches_the_svd_step():
     np.testing.assert_allclose(d1[ok][10:], d2[ok][10:], rtol=1e-9)  # well-conditioned rows
     np.testing.assert_allclose(d1[50:60], d2[50:60], rtol=1e-5)  # condition ~1e9: same step to its accuracy
     np.testing.assert_array_equal(d1[:50], d2[:50])  # singular rows: the SVD pseudo-inverse step itself
+
+
+def test_residual_and_jacobian_in_one_call_give_the_same_solves():
+    """newton(fun_jac=...) (issue 20): the same iterates and records as fun + jac, with fewer calls."""
+    rng = np.random.default_rng(3)
+    p = rng.uniform(0.5, 2.0, (40, 2))
+    calls = {"fj": 0}
+
+    def fun(x, i):
+        return np.column_stack([x[:, 0] ** 3 + x[:, 1] - p[i, 0], np.sin(x[:, 0]) + x[:, 1] ** 2 - p[i, 1]])
+
+    def jac(x, i):
+        J = np.empty((len(x), 2, 2))
+        J[:, 0, 0], J[:, 0, 1] = 3 * x[:, 0] ** 2, 1.0
+        J[:, 1, 0], J[:, 1, 1] = np.cos(x[:, 0]), 2 * x[:, 1]
+        return J
+
+    def fun_jac(x, i):
+        calls["fj"] += 1
+        return fun(x, i), jac(x, i)
+
+    x0 = rng.uniform(-2, 2, (40, 2))
+    for damped in (True, False):
+        a = newton(fun, x0, jac, rows=True, damped=damped)
+        b = newton(fun, x0, jac, rows=True, damped=damped, fun_jac=fun_jac)
+        for f in ("x", "residual", "iterations", "status", "condition"):
+            np.testing.assert_array_equal(getattr(a, f), getattr(b, f))
+    assert calls["fj"] > 0
+
+
+def test_square_step_matches_the_svd_step_and_flags_the_same_rows():
+    from gearrep.solve import _step_square, _svd_step
+
+    rng = np.random.default_rng(8)
+    J = rng.normal(size=(300, 5, 5)) * 10.0 ** rng.uniform(-3, 3, size=(300, 1, 1))
+    J[:20, 4] = 2.0 * J[:20, 0]  # exactly singular rows
+    J[20:30, 4] = J[20:30, 0] + 1e-11 * rng.normal(size=(10, 5)) * np.abs(J[20:30, 0]).max(axis=-1, keepdims=True)
+    F = rng.normal(size=(300, 5))
+    d1, sing1, sv1 = _step_square(J, F, 1e-13)
+    d2, sing2, s2 = _svd_step(J, F, 1e-13)
+    np.testing.assert_array_equal(sing1, sing2)
+    ok = ~sing1
+    np.testing.assert_allclose(d1[30:], d2[30:], rtol=1e-8, atol=1e-10 * np.abs(d2[30:]).max())
+    # bounds: ||J||_F >= s_max, 1/||J^-1||_F <= s_min, ratio within a factor k = 5 of the 2-norm condition
+    c1, c2 = sv1[ok, 0] / sv1[ok, 1], s2[ok, 0] / s2[ok, -1]
+    assert np.all(c1 >= c2 * (1 - 1e-9)) and np.all(c1 <= 5 * c2 * (1 + 1e-9))
