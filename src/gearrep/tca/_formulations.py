@@ -212,10 +212,11 @@ def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
         return _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
 
 
-def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
+def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, keep=None):
     """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``x``: the
     five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
-    the free ones; ``drop`` None keeps all three normal components (six equations)."""
+    the free ones; ``drop`` None keeps all three normal components (six equations); ``keep``: a dict
+    that receives r (member 1's point), n1 and n2 (outward normals) by components."""
     g = pair._soa
     u1, v1, u2, v2, phi2 = x
     P1 = pair.flank1.evaluate_components(u1, v1)
@@ -231,6 +232,8 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True):
     rel2 = R2(P2[0])
     n1 = rotate_z(c1, s1, n1l)
     n2 = R2(n2l)
+    if keep is not None:
+        keep.update(r=r1, n1=n1, n2=n2)
     O2 = g["O2"]
     m = 6 if drop is None else 5
     n = np.size(u1)
@@ -418,6 +421,32 @@ def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndar
     return np.column_stack([np.tile(mid1, (len(phi1), 1)), np.tile(mid2, (len(phi1), 1)), pair.ratio * phi1])
 
 
+class _Record:
+    """The contact geometry the last kernel evaluation of each row gave (u2, v2, phi2 of the reduced
+    form; point r and normals n1, n2 of both), kept with the unknowns it was evaluated at, so that
+    the contact record of a row whose final iterate was the last point evaluated is not computed
+    a second time (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are)."""
+
+    def __init__(self, n: int, k: int):
+        self.x = np.full((n, k), np.nan)
+        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
+        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+
+    def store(self, rows, x, K):
+        rows = rows.astype(int)
+        self.x[rows] = x
+        for key, arr in self.scalars.items():
+            if key in K:
+                arr[rows] = K[key]
+        for key, arr in self.vectors.items():
+            v = K[key]
+            arr[rows, 0], arr[rows, 1], arr[rows, 2] = v[0], v[1], v[2]
+
+    def at(self, x):
+        """(mask of the rows recorded at exactly ``x``, the record)."""
+        return (self.x == x).all(axis=1), self
+
+
 def solve_contact(
     pair: GearPair,
     phi1,
@@ -494,15 +523,17 @@ def solve_contact(
             full[:, 1] = p[:, 2]
         return full
 
-    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1
-    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1])
+    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1, row number
+    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1, np.arange(n)])
+    record = _Record(n, len(free))
     if formulation == "reduced":
 
         def FJ(x, p, derivs=True):
+            out = None
             if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
                 q = p[0].tolist()
                 try:
-                    return _reduced_FJ3(
+                    out = _reduced_FJ3(
                         pair,
                         float(x[0, 0]),
                         q[2] if fixed else float(x[0, 1]),
@@ -513,31 +544,57 @@ def solve_contact(
                         q[1] == 2,
                         derivs=derivs,
                         v_column=not fixed,
-                    )[:2]
+                    )
                 except _SCALAR_ERRORS:
                     pass
-            v1 = p[:, 2] if fixed else x[:, 1]
-            d = p[:, 1]
-            return _reduced_FJ3(
-                pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
-            )[:2]
+            if out is None:
+                v1 = p[:, 2] if fixed else x[:, 1]
+                d = p[:, 1]
+                out = _reduced_FJ3(
+                    pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
+                )
+            record.store(p[:, 5], x, out[2])
+            return out[:2]
     else:
         cols = tuple(free)
 
         def FJ(x, p, derivs=True):
             full = expand(x, p)
+            keep = {}
+            out = None
             if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
                 q = p[0].tolist()
                 try:
-                    return _conventional_FJ3(
-                        pair, tuple(full[0].tolist()), q[3], q[4], q[1], q[1] == 0, q[1] == 2, cols, derivs=derivs
+                    out = _conventional_FJ3(
+                        pair,
+                        tuple(full[0].tolist()),
+                        q[3],
+                        q[4],
+                        q[1],
+                        q[1] == 0,
+                        q[1] == 2,
+                        cols,
+                        derivs=derivs,
+                        keep=keep,
                     )
                 except _SCALAR_ERRORS:
                     pass
-            d = p[:, 1]
-            return _conventional_FJ3(
-                pair, tuple(full[:, i] for i in range(5)), p[:, 3], p[:, 4], d, d == 0, d == 2, cols, derivs=derivs
-            )
+            if out is None:
+                d = p[:, 1]
+                out = _conventional_FJ3(
+                    pair,
+                    tuple(full[:, i] for i in range(5)),
+                    p[:, 3],
+                    p[:, 4],
+                    d,
+                    d == 0,
+                    d == 2,
+                    cols,
+                    derivs=derivs,
+                    keep=keep,
+                )
+            record.store(p[:, 5], x, keep)
+            return out
 
     def Fonly(x, p):
         return FJ(x, p, derivs=False)[0]
@@ -556,24 +613,42 @@ def solve_contact(
             damped=damped,
         )
     sol = expand(res.x, params)
-    return _finish(pair, formulation, sol, phi1, res, phi10, phi20)
+    return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
 
 
-def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
+def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> ContactPoints:
+    """Contact record of the solved rows; ``recorded`` = (mask, :class:`_Record`): the rows whose
+    geometry the solve's last kernel evaluation already gave at exactly these unknowns."""
     status = res.status.copy()
     u1, v1 = sol[:, 0], sol[:, 1]
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    n = len(sol)
+    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
+    miss = np.flatnonzero(~hit)
+    r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
+    if formulation == "reduced":
+        u2, v2, phi2 = (np.empty(n) for _ in range(3))
+    else:
+        u2, v2 = sol[:, 2], sol[:, 3]
+        ref = pair.ratio * phi1
+        phi2 = ref + _wrap(sol[:, 4] - ref)
+    if rec is not None and hit.any():
+        for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
+            arr[hit] = rec.vectors[key][hit]
         if formulation == "reduced":
-            K = _reduced_kernel(pair, u1, v1, phi1, derivs=False)
-            u2, v2, phi2, r, n1, n2 = K["u2"], K["v2"], K["phi2"], K["r"], K["n1"], K["n2"]
-            for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
-                vec[~np.isfinite(vec).all(axis=1)] = np.nan
-        else:
-            u2, v2, phi2 = sol[:, 2], sol[:, 3], sol[:, 4]
-            ref = pair.ratio * phi1
-            phi2 = ref + _wrap(phi2 - ref)
-            r, n1 = pair.member1(u1, v1, phi1)
-            r2, n2 = pair.member2(u2, v2, phi2)
+            for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
+                arr[hit] = rec.scalars[key][hit]
+    if miss.size:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if formulation == "reduced":
+                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
+                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
+                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
+            else:
+                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
+                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
+    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
+        vec[~np.isfinite(vec).all(axis=1)] = np.nan
+    with np.errstate(invalid="ignore", over="ignore"):
         opposite = np.sum(n1 * n2, axis=-1) < 0
         if formulation == "conventional":
             opposite &= np.linalg.norm(n1 + n2, axis=-1) < 1e-6
