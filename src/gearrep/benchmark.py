@@ -208,7 +208,7 @@ def tca_throughput(
     ONE interleaved run (:func:`time_interleaved`, best of ``repeats``, CPU time of the process:
     on a shared machine the load of other processes stretches wall times unevenly, the short
     reference kernel finding a quiet moment more often than a long solve) with the reference kernel
-    on as many elements as there are angles: vectorised (one :func:`gearrep.tca.solve_contact`
+    on as many elements as there are angles (at least 10 000): vectorised (one :func:`gearrep.tca.solve_contact`
     call), single point (``n_single`` calls of one point each) and, with ``scipy_points`` > 0,
     :func:`scipy_root_solves` on that many points. Returns seconds and reference elements per
     solve (per call for the single points; CPU seconds), the converged fractions, and the machine
@@ -236,8 +236,9 @@ def tca_throughput(
         )
 
     out = {}
+    n_ref = max(n, 10_000)  # enough elements that the kernel's own per-call overhead does not count
     fns = {
-        "reference": lambda: reference_kernel(n),
+        "reference": lambda: reference_kernel(n_ref),
         "vectorised": lambda: out.__setitem__("vec", solve_contact(pair, phi1, start, formulation=formulation, **kw)),
         "single": lambda: out.__setitem__("single", [one(i) for i in range(n_single)]),
     }
@@ -247,7 +248,7 @@ def tca_throughput(
         )
     load0 = load_average()
     t = time_interleaved(fns, repeats=repeats, clock=time.process_time)
-    ref = t["reference"] / n
+    ref = t["reference"] / n_ref
     row = {
         "formulation": formulation,
         "n_vectorised": n,
