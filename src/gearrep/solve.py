@@ -15,6 +15,7 @@ condition); only rows that bound cannot clear of singularity go through the SVD.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from enum import IntEnum
@@ -162,6 +163,8 @@ def _step_square(J, F, rcond):
 
 
 def _step_2x2(J, F, rcond):
+    if len(J) == 1:
+        return _step_2x2_one(J, F, rcond)
     a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
     s1 = np.hypot(0.5 * (a + d), 0.5 * (c - b)) + np.hypot(0.5 * (a - d), 0.5 * (c + b))
     det = a * d - b * c
@@ -180,6 +183,20 @@ def _step_2x2(J, F, rcond):
     return step, singular, sv
 
 
+def _step_2x2_one(J, F, rcond):
+    """:func:`_step_2x2` of one system on Python floats (the same operations; np.hypot kept)."""
+    a, b, c, d = J[0].ravel().tolist()
+    f0, f1 = F[0].tolist()
+    s1 = float(np.hypot(0.5 * (a + d), 0.5 * (c - b))) + float(np.hypot(0.5 * (a - d), 0.5 * (c + b)))
+    det = a * d - b * c
+    s2 = abs(det) / s1 if s1 > 0 else 0.0
+    singular = not (s2 > rcond * s1)
+    if singular:  # the SVD decides and steps, as for a batch
+        step, _, sv = _svd_step(J, F, rcond)
+        return step, np.array([True]), sv
+    return np.array([[-(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det]]), np.array([False]), np.array([[s1, s2]])
+
+
 def _svd_step(J, F, rcond):
     U, s, Vt = np.linalg.svd(J, full_matrices=False)
     smax = s[:, :1]
@@ -189,6 +206,86 @@ def _svd_step(J, F, rcond):
     coef = np.einsum("nmk,nm->nk", U, F) * inv
     d = -np.einsum("nkj,nk->nj", Vt, coef)
     return d, singular, s
+
+
+def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi, rcond) -> SolveResult:
+    """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
+    arithmetic (steps by :func:`_lstsq_step`, residual norms by :func:`_row_norms`, the same
+    Armijo test and statuses), with the per-row bookkeeping on Python scalars instead of index
+    arrays, which on one row cost more than the residual itself (tests/unit/test_solve.py)."""
+    k = x.shape[1]
+    if fun_jac is not None:
+        F, J = fun_jac(x)
+        F = np.asarray(F, dtype=float).reshape(1, -1)
+        J = np.asarray(J, dtype=float).reshape(1, F.shape[1], k)
+    else:
+        F, J = np.asarray(fun(x), dtype=float).reshape(1, -1), None
+    m = F.shape[1]
+    if m < k:
+        raise ValueError(f"fun returns {m} equations for {k} unknowns; need m >= k")
+    res = float(_row_norms(F)[0])
+    iters, cond = 0, np.nan
+    finite = math.isfinite(res)
+    status = Status.CONVERGED if res < tol else (Status.NOT_CONVERGED if finite else Status.DIVERGED)
+    done = res < tol or not finite
+    for _ in range(maxiter):
+        if done:
+            break
+        if J is None:
+            J = jac(x) if jac is not None else numeric_jacobian(fun, x, F)
+            J = np.asarray(J, dtype=float).reshape(1, m, k)
+        bad_j = not np.isfinite(J).all()
+        if bad_j:
+            J = np.zeros_like(J)
+        d, singular, sv = _lstsq_step(J, F, rcond)
+        singular = bool(singular[0]) or bad_j
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cond = np.nan if bad_j else float(sv[0, 0] / sv[0, -1])
+        iters += 1
+        lam = 1.0
+        x_new = x + d
+        J_new = None
+        if fun_jac is not None:
+            F_new, J_new = fun_jac(x_new)
+            F_new = np.asarray(F_new, dtype=float).reshape(1, -1)
+            J_new = np.asarray(J_new, dtype=float).reshape(1, m, k)
+        else:
+            F_new = np.asarray(fun(x_new), dtype=float).reshape(1, -1)
+        r_new = float(_row_norms(F_new)[0])
+        stalled = False
+        if damped:
+            r_old = res
+            need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
+            for _h in range(max_halvings):
+                if not need:
+                    break
+                lam *= 0.5
+                xt = x + lam * d
+                Ft = np.asarray(fun(xt), dtype=float).reshape(1, -1)
+                x_new, F_new, r_new, J_new = xt, Ft, float(_row_norms(Ft)[0]), None
+                need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
+            if need:  # no decrease found: keep the old iterate and stop
+                x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True
+        x, F, res, J = x_new, F_new, r_new, J_new
+        nonfinite = not math.isfinite(r_new) or not np.isfinite(x_new).all()
+        conv = r_new < tol and not nonfinite
+        if conv:
+            status = Status.CONVERGED
+        elif nonfinite:
+            status = Status.DIVERGED
+        elif singular:
+            status = Status.SINGULAR
+        done = conv or nonfinite or singular or stalled
+    inside = bool(np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi)))))
+    if status == Status.CONVERGED and not inside:
+        status = Status.OFF_FLANK
+    return SolveResult(
+        x=x,
+        residual=np.array([res]),
+        iterations=np.array([iters]),
+        status=np.array([int(status)]),
+        condition=np.array([cond]),
+    )
 
 
 def newton(
@@ -263,6 +360,8 @@ def newton(
                 return _fj(xx, _idx["i"])
     else:
         _idx = {"i": None}
+    if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
+        return _newton_one(fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond)
     if fun_jac is not None:
         F, Jc = fun_jac(x)
         F = np.asarray(F, dtype=float).reshape(n, -1)
