@@ -8,9 +8,9 @@ the solver never hands one back looking like a converged one.
 The step is the least-squares Newton step computed by SVD, so square (n equations, n unknowns)
 and over-determined systems (more equations than unknowns, e.g. the vector equations of tooth
 contact) are handled by one code path, and a rank-deficient Jacobian is detected from its
-singular values instead of being inverted. Square systems take a cheaper route to the same step
-(2 x 2 in closed form, larger ones by the batched inverse with a Frobenius-norm bound of the
-condition); only rows that bound cannot clear of singularity go through the SVD.
+singular values instead of being inverted. 2 x 2 systems take the same step in closed form, and
+with ``inverse_square`` larger square ones by the batched inverse with a Frobenius-norm bound of
+the condition; only rows that bound cannot clear of singularity go through the SVD then.
 """
 
 from __future__ import annotations
@@ -66,9 +66,10 @@ class SolveResult:
     iterations : (n,) Newton iterations taken
     status : (n,) :class:`Status` codes
     condition : (n,) 2-norm condition number s_max/s_min of the Jacobian at the last iteration
-        (inf where it was exactly singular, NaN where no iteration was taken); for square systems
-        larger than 2 x 2 the Frobenius condition number ||J||_F ||J^-1||_F instead (an upper
-        bound, at most k times the 2-norm one), except in rows the SVD examined as nearly singular
+        (inf where it was exactly singular, NaN where no iteration was taken); with
+        ``newton(inverse_square=True)``, for square systems larger than 2 x 2, the Frobenius
+        condition number ||J||_F ||J^-1||_F instead (an upper bound, at most k times the 2-norm
+        one), except in rows the SVD examined as nearly singular
     """
 
     x: np.ndarray
@@ -122,7 +123,7 @@ def _row_norms(F):
     return np.sqrt(np.add.reduce(F * F, axis=1))
 
 
-def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
+def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
     """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask (plus the
     extreme singular values, or bounds of them, for the condition number).
 
@@ -132,7 +133,7 @@ def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
     singular go through the SVD so that they get the same pseudo-inverse step."""
     if J.shape[1:] == (2, 2):
         return _step_2x2(J, F, rcond)
-    if J.shape[1] == J.shape[2] and J.shape[0] > 0:
+    if inverse_square and J.shape[1] == J.shape[2] > 2 and J.shape[0] > 0:
         return _step_square(J, F, rcond)
     return _svd_step(J, F, rcond)
 
@@ -208,7 +209,7 @@ def _svd_step(J, F, rcond):
     return d, singular, s
 
 
-def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi, rcond) -> SolveResult:
+def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi, rcond, inverse_square) -> SolveResult:
     """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
     arithmetic (steps by :func:`_lstsq_step`, residual norms by :func:`_row_norms`, the same
     Armijo test and statuses), with the per-row bookkeeping on Python scalars instead of index
@@ -237,7 +238,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
         bad_j = not np.isfinite(J).all()
         if bad_j:
             J = np.zeros_like(J)
-        d, singular, sv = _lstsq_step(J, F, rcond)
+        d, singular, sv = _lstsq_step(J, F, rcond, inverse_square)
         singular = bool(singular[0]) or bad_j
         with np.errstate(divide="ignore", invalid="ignore"):
             cond = np.nan if bad_j else float(sv[0, 0] / sv[0, -1])
@@ -303,6 +304,7 @@ def newton(
     rcond: float = 1e-13,
     rows: bool = False,
     fun_jac: Callable | None = None,
+    inverse_square: bool = False,
 ) -> SolveResult:
     """Solve ``fun(x) = 0`` for a batch of independent problems.
 
@@ -326,6 +328,10 @@ def newton(
         evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
         whose step the line search shortened is computed afresh). F must equal ``fun(x)``.
+    inverse_square : square systems larger than 2 x 2 take their step from the batched inverse
+        (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
+        examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
+        the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
 
     Returns
     -------
@@ -361,7 +367,9 @@ def newton(
     else:
         _idx = {"i": None}
     if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
-        return _newton_one(fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond)
+        return _newton_one(
+            fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square
+        )
     if fun_jac is not None:
         F, Jc = fun_jac(x)
         F = np.asarray(F, dtype=float).reshape(n, -1)
@@ -401,7 +409,7 @@ def newton(
         bad_j = ~np.isfinite(Ja).all(axis=(1, 2))
         if bad_j.any():
             Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-        d, singular, sv = _lstsq_step(Ja, Fa, rcond)
+        d, singular, sv = _lstsq_step(Ja, Fa, rcond, inverse_square)
         singular |= bad_j
         with np.errstate(divide="ignore", invalid="ignore"):
             cond[act] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])

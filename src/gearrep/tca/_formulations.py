@@ -315,7 +315,18 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
 # newton with frozen per-row parameters
 # ----------------------------------------------------------------------------------------------
 def newton_rows(
-    F, FJ, x0, params, *, lower=None, upper=None, jacobian="analytic", tol=1e-12, maxiter=50, damped=True
+    F,
+    FJ,
+    x0,
+    params,
+    *,
+    lower=None,
+    upper=None,
+    jacobian="analytic",
+    tol=1e-12,
+    maxiter=50,
+    damped=True,
+    inverse_square=False,
 ) -> SolveResult:
     """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
 
@@ -323,7 +334,8 @@ def newton_rows(
     ``jacobian="numeric"``, which differentiates F by central differences; its F must equal
     ``F(x, p)``: the solver takes the residual at each full step from it, ``fun_jac`` of
     :func:`gearrep.solve.newton`). Each row's parameters follow it through the solve
-    (``newton(..., rows=True)``).
+    (``newton(..., rows=True)``). ``inverse_square``: as :func:`gearrep.solve.newton` (the
+    contact solves of :func:`solve_contact` use it).
     """
     x0 = np.atleast_2d(np.asarray(x0, float))
     params = np.atleast_2d(np.asarray(params, float))
@@ -354,6 +366,7 @@ def newton_rows(
         upper=upper,
         rows=True,
         fun_jac=fun_jac if analytic else None,
+        inverse_square=inverse_square,
     )
 
 
@@ -611,6 +624,7 @@ def solve_contact(
             tol=tol,
             maxiter=maxiter,
             damped=damped,
+            inverse_square=True,
         )
     sol = expand(res.x, params)
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))

@@ -137,7 +137,7 @@ def solve_conventional(
     else:
         kw.update(damped=(variant == "damped"))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return newton(F, np.asarray(x0, float), J, **kw)
+        return newton(F, np.asarray(x0, float), J, inverse_square=True, **kw)
 
 
 def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
