@@ -10,6 +10,14 @@ passes the computation and the settings; nothing here reads files or the config.
   error of each against a reference result computed in the same process at the most accurate
   setting (the caller supplies the reference setting and the error metric).
 * :func:`pareto_front`: the settings that no other setting beats in both time and error.
+* :func:`reference_kernel`: a fixed numpy computation (per element 20 sin/cos and 300
+  multiply-adds) that run times are expressed in, so that a throughput figure measured on one
+  machine under some load can be compared with one measured elsewhere; :func:`time_interleaved`
+  times several computations and the reference kernel in turns (best of several rounds), so that
+  a change of load during the run hits all of them alike.
+* :func:`tca_throughput`: contact solves of one gear pair vectorised, one point per call, and
+  with ``scipy.optimize.root`` point by point (:func:`scipy_root_solves`, the baseline a user
+  would write), each in reference-kernel elements per solve, measured in one interleaved run.
 * :func:`knee`: the setting chosen as default: on the Pareto front, in log10(time)-log10(error)
   coordinates scaled to the unit square, the point farthest below the chord joining the fastest
   and the most accurate front points (the "knee": past it, extra time buys little accuracy).
@@ -34,6 +42,13 @@ __all__ = [
     "Timing",
     "load_average",
     "time_call",
+    "REFERENCE_SIN_COS",
+    "REFERENCE_MULTIPLY_ADDS",
+    "reference_kernel",
+    "time_interleaved",
+    "THROUGHPUT_TARGETS",
+    "scipy_root_solves",
+    "tca_throughput",
     "sweep",
     "pareto_front",
     "knee",
@@ -77,6 +92,191 @@ def time_call(fn: Callable[[], Any], *, repeats: int = 5, warmup: int = 1) -> tu
         result = fn()
         times.append(time.perf_counter() - t0)
     return result, Timing(float(np.median(times)), float(np.min(times)), int(repeats), load_average())
+
+
+#: per element of :func:`reference_kernel`: transcendental calls and multiply-adds
+REFERENCE_SIN_COS = 20
+REFERENCE_MULTIPLY_ADDS = 300
+
+
+def reference_kernel(n: int) -> np.ndarray:
+    """The fixed reference computation on ``n`` elements: 10 rounds of (one sine, one cosine, then
+    15 times y <- y * a + s and y <- y * b + c), i.e. 20 sin/cos and 300 multiply-adds per element,
+    with numpy in place on float64 arrays (each multiply-add two array passes). Returns y (bounded,
+    so that no overflow or denormal slows it down)."""
+    if not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"n must be an integer >= 1, got {n!r}")
+    y = np.linspace(0.1, 1.0, int(n))
+    s = np.empty_like(y)
+    c = np.empty_like(y)
+    for _ in range(REFERENCE_SIN_COS // 2):
+        np.sin(y, out=s)
+        np.cos(y, out=c)
+        for _ in range(REFERENCE_MULTIPLY_ADDS // 20):
+            y *= 0.5
+            y += s
+            y *= 0.5
+            y += c
+    return y
+
+
+def time_interleaved(
+    fns: dict[str, Callable[[], Any]],
+    *,
+    repeats: int = 5,
+    warmup: int = 1,
+    clock: Callable[[], float] = time.perf_counter,
+) -> dict[str, float]:
+    """Best (minimum) time in seconds of each computation in ``fns`` over ``repeats`` rounds; in
+    every round each is called once, in the given order, so that all see the same load.
+    ``warmup`` untimed rounds first. ``clock``: wall time (default) or e.g. ``time.process_time``
+    (CPU time of this process, which other processes on a shared machine do not inflate)."""
+    if not isinstance(repeats, (int, np.integer)) or repeats < 1:
+        raise ValueError(f"repeats must be an integer >= 1, got {repeats!r}")
+    if not isinstance(warmup, (int, np.integer)) or warmup < 0:
+        raise ValueError(f"warmup must be an integer >= 0, got {warmup!r}")
+    if not fns:
+        raise ValueError("fns must hold at least one computation")
+    for _ in range(warmup):
+        for fn in fns.values():
+            fn()
+    best = {k: np.inf for k in fns}
+    for _ in range(repeats):
+        for k, fn in fns.items():
+            t0 = clock()
+            fn()
+            best[k] = min(best[k], clock() - t0)
+    return {k: float(v) for k, v in best.items()}
+
+
+#: targets of issue 20 in reference-kernel elements per solve (vectorised) or per call (single
+#: point), for the crowned 52/72 spur pair of the README
+THROUGHPUT_TARGETS = {"reduced": 6.0, "conventional": 12.0, "single": 1000.0}
+
+
+def scipy_root_solves(pair, phi1, start, formulation: str = "reduced", *, tol: float = 1e-12):
+    """The same contact solves with ``scipy.optimize.root`` (MINPACK hybrid method), one point per
+    call, as a user of the public API would write them: the conventional system from
+    :func:`gearrep.tca.conventional_system` (its analytic Jacobian, the dropped normal component
+    the largest at the start), the reduced one as two components of n_f1 x n_f2 with member 2
+    back-substituted by :func:`gearrep.tca.reduced_unknowns` (finite-difference Jacobian).
+    Returns (x (n, 2 or 5), success (n,) bool)."""
+    from scipy.optimize import root
+
+    from .tca import conventional_system, reduced_unknowns
+
+    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    start = np.atleast_2d(np.asarray(start, float))
+    if formulation not in ("reduced", "conventional"):
+        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
+    if len(start) != len(phi1):
+        raise ValueError(f"start has {len(start)} rows for {len(phi1)} angles")
+    xs, ok = [], []
+    for p, x0 in zip(phi1, start):
+        _, n1 = pair.member1(x0[:1], x0[1:2], np.array([p]))
+        drop = int(np.argmax(np.abs(n1[0])))
+        if formulation == "conventional":
+            F, J = conventional_system(pair, p, drop)
+            r = root(lambda x: F(x)[0], x0, jac=lambda x: J(x)[0], method="hybr", tol=tol)
+        else:
+            keep = [i for i in range(3) if i != drop]
+
+            def fun(x, p=p, keep=keep):
+                u2, v2, phi2 = reduced_unknowns(pair, x[:1], x[1:2], np.array([p]))
+                _, a = pair.member1(x[:1], x[1:2], np.array([p]))
+                _, b = pair.member2(u2, v2, phi2)
+                return np.cross(a[0], b[0])[keep]
+
+            r = root(fun, x0, method="hybr", tol=tol)
+        xs.append(r.x)
+        ok.append(bool(r.success))
+    return np.array(xs), np.array(ok)
+
+
+def tca_throughput(
+    pair,
+    phi1,
+    start,
+    *,
+    formulation: str,
+    n_single: int,
+    repeats: int = 5,
+    solve_kwargs: dict | None = None,
+    scipy_points: int = 0,
+) -> dict:
+    """Contact solves of ``pair`` at the angles ``phi1`` from ``start`` (one row per angle), timed in
+    ONE interleaved run (:func:`time_interleaved`, best of ``repeats``, CPU time of the process:
+    on a shared machine the load of other processes stretches wall times unevenly, the short
+    reference kernel finding a quiet moment more often than a long solve) with the reference kernel
+    on as many elements as there are angles (at least 10 000): vectorised (one :func:`gearrep.tca.solve_contact`
+    call), single point (``n_single`` calls of one point each) and, with ``scipy_points`` > 0,
+    :func:`scipy_root_solves` on that many points. Returns seconds and reference elements per
+    solve (per call for the single points; CPU seconds), the converged fractions, and the machine
+    load before and after."""
+    from .tca import solve_contact
+
+    kw = dict(solve_kwargs or {})
+    phi1 = np.asarray(phi1, float)
+    start = np.asarray(start, float)
+    n = len(phi1)
+    if n < 1 or len(start) != n:
+        raise ValueError(f"phi1 and start must have the same length >= 1, got {n} and {len(start)}")
+    if not isinstance(n_single, (int, np.integer)) or not 1 <= n_single <= n:
+        raise ValueError(f"n_single must be an integer in [1, {n}], got {n_single!r}")
+    if not isinstance(scipy_points, (int, np.integer)) or not 0 <= scipy_points <= n:
+        raise ValueError(f"scipy_points must be an integer in [0, {n}], got {scipy_points!r}")
+
+    def one(i):
+        return solve_contact(
+            pair,
+            phi1[i : i + 1],
+            start[i : i + 1],
+            formulation=formulation,
+            **{k: (v[i : i + 1] if isinstance(v, np.ndarray) else v) for k, v in kw.items()},
+        )
+
+    out = {}
+    n_ref = max(n, 10_000)  # enough elements that the kernel's own per-call overhead does not count
+    fns = {
+        "reference": lambda: reference_kernel(n_ref),
+        "vectorised": lambda: out.__setitem__("vec", solve_contact(pair, phi1, start, formulation=formulation, **kw)),
+        "single": lambda: out.__setitem__("single", [one(i) for i in range(n_single)]),
+    }
+    if scipy_points:
+        fns["scipy"] = lambda: out.__setitem__(
+            "scipy", scipy_root_solves(pair, phi1[:scipy_points], start[:scipy_points], formulation)
+        )
+    load0 = load_average()
+    t = time_interleaved(fns, repeats=repeats, clock=time.process_time)
+    ref = t["reference"] / n_ref
+    row = {
+        "formulation": formulation,
+        "n_vectorised": n,
+        "n_single": int(n_single),
+        "reference_s_per_element": ref,
+        "vectorised_s_per_solve": t["vectorised"] / n,
+        "vectorised_elements_per_solve": t["vectorised"] / n / ref,
+        "single_s_per_call": t["single"] / n_single,
+        "single_elements_per_call": t["single"] / n_single / ref,
+        "converged_fraction_vectorised": float(np.mean(out["vec"].converged)),
+        "converged_fraction_single": float(np.mean([c.converged[0] for c in out["single"]])),
+        "load_1min_before": load0,
+        "load_1min_after": load_average(),
+    }
+    if scipy_points:
+        xs, ok = out["scipy"]
+        mine = out["vec"].unknowns(formulation)[:scipy_points]
+        both = ok & out["vec"].converged[:scipy_points]
+        row.update(
+            scipy_points=int(scipy_points),
+            scipy_s_per_solve=t["scipy"] / scipy_points,
+            scipy_elements_per_solve=t["scipy"] / scipy_points / ref,
+            scipy_over_vectorised=(t["scipy"] / scipy_points) / (t["vectorised"] / n),
+            scipy_over_single=(t["scipy"] / scipy_points) / (t["single"] / n_single),
+            scipy_success_fraction=float(np.mean(ok)),
+            scipy_max_abs_difference=float(np.max(np.abs(xs[both] - mine[both]))) if both.any() else float("nan"),
+        )
+    return row
 
 
 def sweep(

@@ -52,6 +52,9 @@ __all__ = [
     "rotation_about_line",
     "misalignment_rotation",
     "gear_mounting",
+    "rotate_z",
+    "apply_matrix",
+    "matrix_applier",
 ]
 
 
@@ -175,6 +178,46 @@ def rotation_about_axis_with_derivatives(axis, a):
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
     return np.eye(3) + s * K + (1.0 - c) * K2, c * K + s * K2, -s * K + c * K2
+
+
+def rotate_z(c, s, v):
+    """rot_z(a) applied to a vector given by components (structure of arrays), with c = cos a and
+    s = sin a given (computed once by the caller): (c v0 - s v1, s v0 + c v1, v2). ``v`` is a
+    3-tuple of broadcastable arrays or floats; returns a 3-tuple."""
+    v0, v1, v2 = v
+    return (c * v0 - s * v1, s * v0 + c * v1, v2)
+
+
+def matrix_applier(M, t=None):
+    """The map v -> M v (+ t) for ONE fixed 3 x 3 matrix ``M`` (the mounting of a member, say) on
+    vectors given by components (3-tuples of broadcastable arrays or floats), written out term by
+    term: entries that are exactly 0 or +-1 cost nothing and no (n, 3, 3) stack is built. Prepared
+    once (the matrix is inspected here), applied many times. ``t``: optional fixed 3-vector."""
+    M = np.asarray(M, dtype=float)
+    if M.shape != (3, 3) or not np.all(np.isfinite(M)):
+        raise ValueError(f"M must be one finite 3x3 matrix, got shape {M.shape}")
+    tt = (0.0, 0.0, 0.0) if t is None else tuple(float(x) for x in np.asarray(t, dtype=float).reshape(3))
+    if not all(math.isfinite(x) for x in tt):
+        raise ValueError(f"t must be a finite 3-vector, got {t!r}")
+    # the three sums written out as one expression (constants by repr, which round-trips exactly),
+    # summed left to right like a loop would: one Python call per application
+    rows = []
+    for i in range(3):
+        terms = []
+        for j in range(3):
+            m = float(M[i, j])
+            if m == 0.0:
+                continue
+            terms.append(f"v[{j}]" if m == 1.0 else (f"(-v[{j}])" if m == -1.0 else f"{m!r} * v[{j}]"))
+        if tt[i] != 0.0:
+            terms.append(repr(tt[i]))
+        rows.append(" + ".join(terms) if terms else "0.0")
+    return eval(f"lambda v: ({rows[0]}, {rows[1]}, {rows[2]})")  # noqa: S307 (built from floats only)
+
+
+def apply_matrix(M, v, t=None):
+    """M v (+ t) for one fixed 3 x 3 matrix and a vector by components (:func:`matrix_applier`)."""
+    return matrix_applier(M, t)(v)
 
 
 def homogeneous(R=None, t=None) -> np.ndarray:

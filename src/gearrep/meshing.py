@@ -307,8 +307,8 @@ def meshing_cycle(
     coordinate for line contact (None for point contact); ``n_points``: grid size of the path and
     of the real-cycle TE.
     """
-    if int(n_points) < 5:
-        raise ValueError(f"n_points must be >= 5, got {n_points!r}")
+    if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or n_points < 5:
+        raise ValueError(f"n_points must be an integer >= 5, got {n_points!r}")
     b, e = engagement_limits(pair, phi1_start, start, v1=v1, tol=tol)
     mc = float(contact_ratio(b.phi1, e.phi1, pair.n1))
     p1 = 2.0 * np.pi / pair.n1
@@ -387,6 +387,13 @@ def pair_te_curves(
     restricts where a pair is in contact. Needs >= 2 finite samples.
     """
     phi1, te, at = (np.asarray(x, float) for x in (phi1, te, at))
+    if phi1.ndim != 1 or te.shape != phi1.shape:
+        raise ValueError(
+            f"phi1 and te must be 1-D arrays of the same length (pair 0's TE on a grid), got shapes "
+            f"{phi1.shape} and {te.shape}"
+        )
+    if at.ndim > 1:
+        raise ValueError(f"at must be a scalar or a 1-D array of angles [rad], got shape {at.shape}")
     ok = np.isfinite(te) & np.isfinite(phi1)
     if ok.sum() < 2:
         raise ValueError(f"pair_te_curves needs >= 2 finite TE samples, got {int(ok.sum())}")

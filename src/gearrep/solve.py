@@ -8,11 +8,14 @@ the solver never hands one back looking like a converged one.
 The step is the least-squares Newton step computed by SVD, so square (n equations, n unknowns)
 and over-determined systems (more equations than unknowns, e.g. the vector equations of tooth
 contact) are handled by one code path, and a rank-deficient Jacobian is detected from its
-singular values instead of being inverted.
+singular values instead of being inverted. 2 x 2 systems take the same step in closed form, and
+with ``inverse_square`` larger square ones by the batched inverse with a Frobenius-norm bound of
+the condition; only rows that bound cannot clear of singularity go through the SVD then.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from enum import IntEnum
@@ -63,7 +66,10 @@ class SolveResult:
     iterations : (n,) Newton iterations taken
     status : (n,) :class:`Status` codes
     condition : (n,) 2-norm condition number s_max/s_min of the Jacobian at the last iteration
-        (inf where it was exactly singular, NaN where no iteration was taken)
+        (inf where it was exactly singular, NaN where no iteration was taken); with
+        ``newton(inverse_square=True)``, for square systems larger than 2 x 2, the Frobenius
+        condition number ||J||_F ||J^-1||_F instead (an upper bound, at most k times the 2-norm
+        one), except in rows the SVD examined as nearly singular
     """
 
     x: np.ndarray
@@ -111,8 +117,15 @@ def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None,
     return np.stack(cols, axis=-1)
 
 
-def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
-    """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask.
+def _row_norms(F):
+    """Euclidean norms of the rows of F (what ``np.linalg.norm(F, axis=1)`` computes, without its
+    Python overhead)."""
+    return np.sqrt(np.add.reduce(F * F, axis=1))
+
+
+def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
+    """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask (plus the
+    extreme singular values, or bounds of them, for the condition number).
 
     Square 2x2 systems (the reduced TCA) take a closed form: singular values from the
     rotation/reflection split of the matrix (s1 = Q + R, s2 = |det| / s1 with
@@ -120,22 +133,69 @@ def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float):
     singular go through the SVD so that they get the same pseudo-inverse step."""
     if J.shape[1:] == (2, 2):
         return _step_2x2(J, F, rcond)
+    if inverse_square and J.shape[1] == J.shape[2] > 2 and J.shape[0] > 0:
+        return _step_square(J, F, rcond)
     return _svd_step(J, F, rcond)
 
 
+def _step_square(J, F, rcond):
+    """Square k x k systems (k > 2, e.g. the conventional TCA): the step from the batched inverse,
+    and instead of the singular values the bounds ||J||_F >= s_max and 1 / ||J^-1||_F <= s_min,
+    whose ratio (the Frobenius condition number) is at most k times the 2-norm one. Rows where
+    that ratio exceeds 1 / rcond (only these can be singular) go through the SVD, which decides
+    and gives them the pseudo-inverse step and their exact extreme singular values. Falls back to
+    the SVD for the whole batch if a matrix is exactly singular for the LU factorisation."""
+    fro = np.sqrt(np.einsum("nij,nij->n", J, J))
+    try:
+        inv = np.linalg.inv(J)
+    except np.linalg.LinAlgError:
+        d, singular, s = _svd_step(J, F, rcond)
+        return d, singular, s[:, [0, -1]]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        step = -np.matmul(inv, F[:, :, None])[:, :, 0]
+        sv = np.stack([fro, 1.0 / np.sqrt(np.einsum("nij,nij->n", inv, inv))], axis=-1)
+        flagged = ~(sv[:, 1] > rcond * sv[:, 0])
+    singular = np.zeros(len(J), dtype=bool)
+    if np.any(flagged):
+        idx = np.flatnonzero(flagged)
+        step[idx], singular[idx], s = _svd_step(J[idx], F[idx], rcond)
+        sv[idx] = s[:, [0, -1]]
+    return step, singular, sv
+
+
 def _step_2x2(J, F, rcond):
+    if len(J) == 1:
+        return _step_2x2_one(J, F, rcond)
     a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
     s1 = np.hypot(0.5 * (a + d), 0.5 * (c - b)) + np.hypot(0.5 * (a - d), 0.5 * (c + b))
     det = a * d - b * c
+    n = len(J)
+    step = np.empty((n, 2))
+    sv = np.empty((n, 2))
     with np.errstate(divide="ignore", invalid="ignore"):
         s2 = np.where(s1 > 0, np.abs(det) / s1, 0.0)
         singular = ~(s2 > rcond * s1)
-        step = -np.stack([d * F[:, 0] - b * F[:, 1], a * F[:, 1] - c * F[:, 0]], axis=-1) / det[:, None]
-    sv = np.stack([s1, s2], axis=-1)
-    if np.any(singular):
+        step[:, 0] = -(d * F[:, 0] - b * F[:, 1]) / det
+        step[:, 1] = -(a * F[:, 1] - c * F[:, 0]) / det
+    sv[:, 0], sv[:, 1] = s1, s2
+    if singular.any():
         idx = np.flatnonzero(singular)
         step[idx], _, sv[idx] = _svd_step(J[idx], F[idx], rcond)
     return step, singular, sv
+
+
+def _step_2x2_one(J, F, rcond):
+    """:func:`_step_2x2` of one system on Python floats (the same operations; np.hypot kept)."""
+    a, b, c, d = J[0].ravel().tolist()
+    f0, f1 = F[0].tolist()
+    s1 = float(np.hypot(0.5 * (a + d), 0.5 * (c - b))) + float(np.hypot(0.5 * (a - d), 0.5 * (c + b)))
+    det = a * d - b * c
+    s2 = abs(det) / s1 if s1 > 0 else 0.0
+    singular = not (s2 > rcond * s1)
+    if singular:  # the SVD decides and steps, as for a batch
+        step, _, sv = _svd_step(J, F, rcond)
+        return step, np.array([True]), sv
+    return np.array([[-(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det]]), np.array([False]), np.array([[s1, s2]])
 
 
 def _svd_step(J, F, rcond):
@@ -147,6 +207,86 @@ def _svd_step(J, F, rcond):
     coef = np.einsum("nmk,nm->nk", U, F) * inv
     d = -np.einsum("nkj,nk->nj", Vt, coef)
     return d, singular, s
+
+
+def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi, rcond, inverse_square) -> SolveResult:
+    """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
+    arithmetic (steps by :func:`_lstsq_step`, residual norms by :func:`_row_norms`, the same
+    Armijo test and statuses), with the per-row bookkeeping on Python scalars instead of index
+    arrays, which on one row cost more than the residual itself (tests/unit/test_solve.py)."""
+    k = x.shape[1]
+    if fun_jac is not None:
+        F, J = fun_jac(x)
+        F = np.asarray(F, dtype=float).reshape(1, -1)
+        J = np.asarray(J, dtype=float).reshape(1, F.shape[1], k)
+    else:
+        F, J = np.asarray(fun(x), dtype=float).reshape(1, -1), None
+    m = F.shape[1]
+    if m < k:
+        raise ValueError(f"fun returns {m} equations for {k} unknowns; need m >= k")
+    res = float(_row_norms(F)[0])
+    iters, cond = 0, np.nan
+    finite = math.isfinite(res)
+    status = Status.CONVERGED if res < tol else (Status.NOT_CONVERGED if finite else Status.DIVERGED)
+    done = res < tol or not finite
+    for _ in range(maxiter):
+        if done:
+            break
+        if J is None:
+            J = jac(x) if jac is not None else numeric_jacobian(fun, x, F)
+            J = np.asarray(J, dtype=float).reshape(1, m, k)
+        bad_j = not np.isfinite(J).all()
+        if bad_j:
+            J = np.zeros_like(J)
+        d, singular, sv = _lstsq_step(J, F, rcond, inverse_square)
+        singular = bool(singular[0]) or bad_j
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cond = np.nan if bad_j else float(sv[0, 0] / sv[0, -1])
+        iters += 1
+        lam = 1.0
+        x_new = x + d
+        J_new = None
+        if fun_jac is not None:
+            F_new, J_new = fun_jac(x_new)
+            F_new = np.asarray(F_new, dtype=float).reshape(1, -1)
+            J_new = np.asarray(J_new, dtype=float).reshape(1, m, k)
+        else:
+            F_new = np.asarray(fun(x_new), dtype=float).reshape(1, -1)
+        r_new = float(_row_norms(F_new)[0])
+        stalled = False
+        if damped:
+            r_old = res
+            need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
+            for _h in range(max_halvings):
+                if not need:
+                    break
+                lam *= 0.5
+                xt = x + lam * d
+                Ft = np.asarray(fun(xt), dtype=float).reshape(1, -1)
+                x_new, F_new, r_new, J_new = xt, Ft, float(_row_norms(Ft)[0]), None
+                need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
+            if need:  # no decrease found: keep the old iterate and stop
+                x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True
+        x, F, res, J = x_new, F_new, r_new, J_new
+        nonfinite = not math.isfinite(r_new) or not np.isfinite(x_new).all()
+        conv = r_new < tol and not nonfinite
+        if conv:
+            status = Status.CONVERGED
+        elif nonfinite:
+            status = Status.DIVERGED
+        elif singular:
+            status = Status.SINGULAR
+        done = conv or nonfinite or singular or stalled
+    inside = bool(np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi)))))
+    if status == Status.CONVERGED and not inside:
+        status = Status.OFF_FLANK
+    return SolveResult(
+        x=x,
+        residual=np.array([res]),
+        iterations=np.array([iters]),
+        status=np.array([int(status)]),
+        condition=np.array([cond]),
+    )
 
 
 def newton(
@@ -163,6 +303,8 @@ def newton(
     keep_inside: bool = False,
     rcond: float = 1e-13,
     rows: bool = False,
+    fun_jac: Callable | None = None,
+    inverse_square: bool = False,
 ) -> SolveResult:
     """Solve ``fun(x) = 0`` for a batch of independent problems.
 
@@ -182,6 +324,14 @@ def newton(
     rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
         (into the batch) of the rows of ``x``: the solver passes only the active rows, so
         per-problem data (e.g. fixed parameters) can be looked up by ``idx``
+    fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
+        evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
+        ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
+        whose step the line search shortened is computed afresh). F must equal ``fun(x)``.
+    inverse_square : square systems larger than 2 x 2 take their step from the batched inverse
+        (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
+        examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
+        the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
 
     Returns
     -------
@@ -209,12 +359,29 @@ def newton(
             return _fun(xx, _idx["i"])
 
         jac = None if _jac is None else (lambda xx: _jac(xx, _idx["i"]))
+        if fun_jac is not None:
+            _fj = fun_jac
+
+            def fun_jac(xx):
+                return _fj(xx, _idx["i"])
     else:
         _idx = {"i": None}
-    F = np.asarray(fun(x), dtype=float).reshape(n, -1)
+    if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
+        return _newton_one(
+            fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square
+        )
+    if fun_jac is not None:
+        F, Jc = fun_jac(x)
+        F = np.asarray(F, dtype=float).reshape(n, -1)
+        Jc = np.asarray(Jc, dtype=float).reshape(n, F.shape[1], k)
+        fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+        if jac is None:
+            jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
+    else:
+        F = np.asarray(fun(x), dtype=float).reshape(n, -1)
     if F.shape[1] < k:
         raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
-    res = np.linalg.norm(F, axis=1)
+    res = _row_norms(F)
     iters = np.zeros(n, dtype=int)
     status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
     status[~np.isfinite(res)] = int(Status.DIVERGED)
@@ -224,16 +391,25 @@ def newton(
     cond = np.full(n, np.nan)
 
     for _ in range(int(maxiter)):
-        act = np.flatnonzero(~done)
+        act = (~done).nonzero()[0]
         if act.size == 0:
             break
         xa, Fa = x[act], F[act]
         _idx["i"] = act
-        Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
+        if fun_jac is not None:
+            Ja = Jc[act]
+            stale = np.flatnonzero(~fresh[act])
+            if stale.size:
+                _idx["i"] = act[stale]
+                Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, Fa.shape[1], k)
+                _idx["i"] = act
+        else:
+            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
-        bad_j = ~np.all(np.isfinite(Ja), axis=(1, 2))
-        Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-        d, singular, sv = _lstsq_step(Ja, Fa, rcond)
+        bad_j = ~np.isfinite(Ja).all(axis=(1, 2))
+        if bad_j.any():
+            Ja = np.where(bad_j[:, None, None], 0.0, Ja)
+        d, singular, sv = _lstsq_step(Ja, Fa, rcond, inverse_square)
         singular |= bad_j
         with np.errstate(divide="ignore", invalid="ignore"):
             cond[act] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
@@ -243,15 +419,21 @@ def newton(
         x_new = xa + d
         if keep_inside:
             x_new = np.clip(x_new, lo, hi)
-        F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
-        r_new = np.linalg.norm(F_new, axis=1)
+        if fun_jac is not None:
+            F_new, J_new = fun_jac(x_new)
+            F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
+            Jc[act] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], k)
+            fresh[act] = True
+        else:
+            F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
+        r_new = _row_norms(F_new)
         if damped:
             r_old = res[act]
             need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
             for _h in range(int(max_halvings)):
-                if not np.any(need):
+                if not need.any():
                     break
-                idx = np.flatnonzero(need)
+                idx = need.nonzero()[0]
                 lam[idx] *= 0.5
                 xt = xa[idx] + lam[idx, None] * d[idx]
                 if keep_inside:
@@ -259,8 +441,10 @@ def newton(
                 _idx["i"] = act[idx]
                 Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
                 _idx["i"] = act
-                rt = np.linalg.norm(Ft, axis=1)
+                rt = _row_norms(Ft)
                 x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
+                if fun_jac is not None:
+                    fresh[act[idx]] = False
                 need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
             # no decrease found: keep the old iterate and stop this point
             stall = need
@@ -268,7 +452,7 @@ def newton(
             stalled[act[stall]] = True
 
         x[act], F[act], res[act] = x_new, F_new, r_new
-        nonfinite = ~np.isfinite(r_new) | ~np.all(np.isfinite(x_new), axis=1)
+        nonfinite = ~np.isfinite(r_new) | ~np.isfinite(x_new).all(axis=1)
         conv = (r_new < tol) & ~nonfinite
         sing_stop = singular & ~conv
         status[act[conv]] = int(Status.CONVERGED)

@@ -17,7 +17,17 @@ import numpy as np
 
 from . import frames
 
-__all__ = ["Surface", "SurfacePoint", "RotatedSurface", "AxialForm", "cross", "fd_derivatives", "unit"]
+__all__ = [
+    "Surface",
+    "SurfacePoint",
+    "RotatedSurface",
+    "AxialForm",
+    "cross",
+    "cross3",
+    "dot3",
+    "fd_derivatives",
+    "unit",
+]
 
 
 def unit(v: np.ndarray, axis: int = -1) -> np.ndarray:
@@ -40,6 +50,19 @@ def cross(a, b) -> np.ndarray:
     return out
 
 
+def cross3(a, b):
+    """Cross product of two vectors given by components (structure of arrays): ``a`` and ``b`` are
+    3-tuples of broadcastable arrays or floats; returns the 3-tuple of components (no stacking)."""
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
+
+
+def dot3(a, b):
+    """Dot product of two vectors given by components (3-tuples, as :func:`cross3`)."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
 @dataclass(frozen=True)
 class SurfacePoint:
     """Position and partial derivatives of a surface at parameters (u, v); each (..., 3)."""
@@ -55,6 +78,13 @@ class SurfacePoint:
     def normal(self) -> np.ndarray:
         """Unit normal n = (r_u x r_v) / |r_u x r_v| (the orientation every curvature uses)."""
         return unit(cross(self.r_u, self.r_v))
+
+    def components(self) -> tuple:
+        """The six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each as a 3-tuple of component arrays
+        (views, no copies): the structure-of-arrays form of :meth:`Surface.evaluate_components`."""
+        return tuple(
+            (x[..., 0], x[..., 1], x[..., 2]) for x in (self.r, self.r_u, self.r_v, self.r_uu, self.r_uv, self.r_vv)
+        )
 
     def flipped(self) -> SurfacePoint:
         """The same point with the parameters swapped (v, u): the normal changes sign."""
@@ -113,6 +143,12 @@ class Surface:
         """Position and first/second derivatives at (u, v)."""
         return fd_derivatives(self.position, u, v, *self.fd_step)
 
+    def evaluate_components(self, u, v) -> tuple:
+        """:meth:`evaluate` in structure-of-arrays form: (r, r_u, r_v, r_uu, r_uv, r_vv), each a
+        3-tuple of components (arrays, or floats for components that are constant). Families whose
+        equations allow it override this to skip the (..., 3) arrays (the TCA kernels use it)."""
+        return self.evaluate(u, v).components()
+
     def normal(self, u, v) -> np.ndarray:
         """Unit normal (r_u x r_v)/|r_u x r_v| at (u, v)."""
         return self.evaluate(u, v).normal
@@ -135,6 +171,8 @@ class RotatedSurface(Surface):
         self.surface = surface
         self.Q = Q
         self.t = np.asarray(t, float).reshape(3)
+        self._apply_r = frames.matrix_applier(Q, self.t)
+        self._apply = frames.matrix_applier(Q)
         for name in self._PASSED:
             if hasattr(surface, name):
                 setattr(self, name, getattr(surface, name))
@@ -150,6 +188,10 @@ class RotatedSurface(Surface):
         return SurfacePoint(
             self._q(P.r) + self.t, self._q(P.r_u), self._q(P.r_v), self._q(P.r_uu), self._q(P.r_uv), self._q(P.r_vv)
         )
+
+    def evaluate_components(self, u, v) -> tuple:
+        P = self.surface.evaluate_components(u, v)
+        return (self._apply_r(P[0]),) + tuple(self._apply(x) for x in P[1:])
 
     def contains(self, u, v, tol: float = 1e-9):
         """The wrapped surface's ``contains`` (parameters are unchanged by the motion)."""

@@ -7,7 +7,7 @@ import warnings
 import numpy as np
 import pytest
 
-from gearrep.meshing import engagement_limits, meshing_cycle
+from gearrep.meshing import engagement_limits, meshing_cycle, pair_te_curves
 from gearrep.surfaces.involute import (
     InvoluteFlank,
     InvoluteGearData,
@@ -15,7 +15,19 @@ from gearrep.surfaces.involute import (
     mating_flanks,
     standard_centre_distance,
 )
-from gearrep.tca import GearPair, default_start, line_of_action_start, line_of_action_starts, solve_contact, trace_path
+from gearrep.tca import (
+    GearPair,
+    default_start,
+    guard_reduced_starts,
+    line_of_action_start,
+    line_of_action_starts,
+    robust_start,
+    solve_contact,
+    solve_conventional,
+    solve_variant,
+    trace_path,
+    transverse_stage,
+)
 
 ALPHA = np.radians(20.0)
 CROWN = ParabolicCrowning(0.003)  # point contact: the meshing cycle needs no v1
@@ -187,3 +199,102 @@ def test_a_non_finite_or_huge_start_is_reported_diverged_without_warnings(formul
     c = solve_contact(pair, 0.0, start, formulation=formulation)
     assert c.status_name.tolist() == ["diverged"]
     assert trace_path(pair, [0.0, 0.01], start[0], formulation=formulation).status_name.tolist() == ["diverged"] * 2
+
+
+# ---------------------------------------------------------------------------------------------
+# secondary TCA entry points and the meshing cycle's grid size (issue 16 leftovers)
+# ---------------------------------------------------------------------------------------------
+STARTS_UV = [
+    ("u1 2-D", np.zeros((2, 2)), np.zeros(2), r"u1 and v1 must be non-empty 1-D arrays .*shapes \(2, 2\) and \(2,\)"),
+    ("lengths differ", np.full(3, 10.5), np.zeros(2), r"u1 and v1 must be .*shapes \(3,\) and \(2,\)"),
+    ("empty", np.zeros(0), np.zeros(0), r"u1 and v1 must be non-empty"),
+]
+
+
+@pytest.mark.parametrize("u1, v1, msg", [s[1:] for s in STARTS_UV], ids=[s[0] for s in STARTS_UV])
+@pytest.mark.parametrize("call", [robust_start, transverse_stage, guard_reduced_starts])
+def test_start_stages_refuse_mismatched_start_arrays(call, u1, v1, msg):
+    with pytest.raises(ValueError, match=msg):
+        call(_pair(), 0.0, u1, v1)
+
+
+@pytest.mark.parametrize(
+    "phi1, msg",
+    [(np.zeros(3), r"phi1 must be one angle or one per start \(length 2\)"), (np.nan, "phi1 must be finite")],
+)
+@pytest.mark.parametrize("call", [robust_start, transverse_stage, guard_reduced_starts])
+def test_start_stages_refuse_bad_angles(call, phi1, msg):
+    with pytest.raises(ValueError, match=msg):
+        call(_pair(), phi1, np.full(2, 10.5), np.zeros(2))
+
+
+@pytest.mark.parametrize(
+    "call, kw, msg",
+    [
+        (transverse_stage, {"tol": 0.0}, r"tol must be a finite number > 0, got 0.0"),
+        (transverse_stage, {"maxiter": 2.5}, r"maxiter must be an integer >= 1, got 2.5"),
+        (guard_reduced_starts, {"n_bisect": 0}, r"n_bisect must be an integer >= 1, got 0"),
+    ],
+)
+def test_start_stages_refuse_bad_solver_knobs(call, kw, msg):
+    with pytest.raises(ValueError, match=msg):
+        call(_pair(), 0.0, np.full(2, 10.5), np.zeros(2), **kw)
+
+
+@pytest.mark.parametrize("call", [solve_variant, solve_conventional])
+@pytest.mark.parametrize(
+    "starts, msg",
+    [
+        (np.zeros((3, 2)), r"must be an \(n, 5\) array of starts .*shape \(3, 2\)"),
+        (np.zeros(5), r"must be an \(n, 5\) array of starts .*shape \(5,\)"),
+        (np.zeros((0, 5)), r"must be an \(n, 5\) array of starts .*shape \(0, 5\)"),
+    ],
+)
+def test_conventional_entry_points_refuse_start_shapes(call, starts, msg):
+    with pytest.raises(ValueError, match=msg):
+        call(_pair(), 0.0, starts, "plain") if call is solve_variant else call(_pair(), 0.0, starts)
+
+
+@pytest.mark.parametrize("call", [solve_variant, solve_conventional])
+@pytest.mark.parametrize("phi1", [np.array([0.0, 0.1]), np.nan, np.zeros((1, 1))])
+def test_conventional_entry_points_take_one_finite_angle(call, phi1):
+    starts = np.tile([10.5, 0.0, 20.5, 0.0, 0.0], (2, 1))
+    with pytest.raises(ValueError, match=r"phi1 must be one finite angle"):
+        call(_pair(), phi1, starts, "plain") if call is solve_variant else call(_pair(), phi1, starts)
+
+
+def test_solve_variant_names_the_variants():
+    with pytest.raises(ValueError, match=r"variant must be one of .*'reduced_robust'.*got 'newton'"):
+        solve_variant(_pair(), 0.0, np.tile([10.5, 0.0, 20.5, 0.0, 0.0], (2, 1)), "newton")
+
+
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"maxiter": 0}, r"maxiter must be an integer >= 1, got 0"),
+        ({"tol": -1.0}, r"tol must be a finite number > 0"),
+        ({"margin": 0.7}, r"margin must be in \[0, 0.5\)"),
+    ],
+)
+def test_solve_conventional_refuses_bad_knobs(kw, msg):
+    with pytest.raises(ValueError, match=msg):
+        solve_conventional(_pair(), 0.0, np.tile([10.5, 0.0, 20.5, 0.0, 0.0], (2, 1)), **kw)
+
+
+@pytest.mark.parametrize("n_points", [5.5, 4, "81", True])
+def test_meshing_cycle_takes_an_integer_grid_size(n_points):
+    with pytest.raises(ValueError, match=rf"n_points must be an integer >= 5, got {n_points!r}"):
+        meshing_cycle(_pair(), n_points=n_points)
+
+
+@pytest.mark.parametrize(
+    "phi1, te, at, msg",
+    [
+        (np.zeros((2, 3)), np.zeros((2, 3)), np.zeros(2), r"phi1 and te must be 1-D arrays of the same length"),
+        (np.linspace(0, 1, 4), np.zeros(3), np.zeros(2), r"shapes \(4,\) and \(3,\)"),
+        (np.linspace(0, 1, 4), np.zeros(4), np.zeros((2, 2)), r"at must be a scalar or a 1-D array"),
+    ],
+)
+def test_pair_te_curves_refuses_mismatched_shapes(phi1, te, at, msg):
+    with pytest.raises(ValueError, match=msg):
+        pair_te_curves(phi1, te, 0.1, at)

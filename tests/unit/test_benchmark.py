@@ -67,3 +67,40 @@ def test_sweep_measures_error_against_the_reference():
     assert out["knee"].sum() == 1
     with pytest.raises(ValueError, match="knobs"):
         B.sweep(lambda s: 0.0, [{"n": 1}, {"m": 2}], {"n": 3}, lambda r, ref: 0.0)
+
+
+def test_reference_kernel_and_interleaved_timing():
+    y = B.reference_kernel(7)
+    assert y.shape == (7,) and np.all(np.isfinite(y))
+    assert B.REFERENCE_SIN_COS == 20 and B.REFERENCE_MULTIPLY_ADDS == 300
+    calls = []
+    t = B.time_interleaved({"a": lambda: calls.append("a"), "b": lambda: calls.append("b")}, repeats=3, warmup=1)
+    assert calls == ["a", "b"] * 4 and set(t) == {"a", "b"} and all(v >= 0 for v in t.values())
+    for bad in ({"repeats": 0}, {"warmup": -1}):
+        with pytest.raises(ValueError, match=next(iter(bad))):
+            B.time_interleaved({"a": lambda: None}, **bad)
+    with pytest.raises(ValueError, match="n must be"):
+        B.reference_kernel(0)
+
+
+def test_scipy_baseline_finds_the_same_contacts():
+    from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance
+    from gearrep.tca import GearPair, Misalignment, default_start, solve_contact
+
+    g1, g2 = InvoluteGearData(52, 1.0, np.radians(20), 11.42), InvoluteGearData(72, 1.0, np.radians(20), 11.42)
+    f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(0.002857))
+    pair = GearPair(f1, f2, 52, 72, standard_centre_distance(g1, g2), misalignment=Misalignment(d_gamma_out=1e-3))
+    phi = np.array([-0.05, -0.03, 0.0])
+    for form in ("reduced", "conventional"):
+        start = default_start(pair, phi, form)
+        x, ok = B.scipy_root_solves(pair, phi, start, form)
+        c = solve_contact(pair, phi, start, formulation=form)
+        assert ok.all() and c.converged.all()
+        np.testing.assert_allclose(x, c.unknowns(form), atol=1e-9)
+    r = B.tca_throughput(
+        pair, phi, default_start(pair, phi, "reduced"), formulation="reduced", n_single=2, repeats=1, scipy_points=2
+    )
+    assert r["converged_fraction_vectorised"] == 1.0 and r["scipy_success_fraction"] == 1.0
+    assert r["vectorised_elements_per_solve"] > 0 and r["scipy_over_single"] > 0
+    with pytest.raises(ValueError, match="n_single"):
+        B.tca_throughput(pair, phi, default_start(pair, phi, "reduced"), formulation="reduced", n_single=5)

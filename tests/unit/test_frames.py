@@ -215,3 +215,26 @@ def test_rotation_about_axis_derivatives_match_finite_differences():
         fr.drotation_about_axis(k, 0.1, order=0)
     with pytest.raises(ValueError):
         fr.drotation_about_axis([0, 0, 0], 0.1)
+
+
+def test_component_rotations_equal_the_matrix_products():
+    """rotate_z and matrix_applier (structure of arrays, issue 20) against rot_z / M @ v + t."""
+    rng = np.random.default_rng(4)
+    v = rng.normal(size=(50, 3))
+    a = rng.uniform(-3, 3, 50)
+    got = np.column_stack(fr.rotate_z(np.cos(a), np.sin(a), tuple(v.T)))
+    np.testing.assert_allclose(got, np.einsum("nij,nj->ni", fr.rot_z(a), v), rtol=0, atol=1e-15)
+    M = rng.normal(size=(3, 3))
+    M[0, 1], M[1, 1], M[2, 0], M[2, 2] = 0.0, 1.0, -1.0, 0.0  # the skipped and the free terms
+    t = np.array([0.5, 0.0, -2.0])
+    ap = fr.matrix_applier(M, t)
+    np.testing.assert_allclose(np.column_stack(ap(tuple(v.T))), v @ M.T + t, rtol=0, atol=1e-14)
+    one = ap(tuple(float(x) for x in v[0]))  # floats in, floats out
+    assert all(type(x) is float for x in one)
+    np.testing.assert_allclose(one, M @ v[0] + t, atol=1e-14)
+    assert fr.apply_matrix(np.zeros((3, 3)), (1.0, 2.0, 3.0)) == (0.0, 0.0, 0.0)
+    for bad in (np.eye(2), np.full((3, 3), np.nan)):
+        with pytest.raises(ValueError, match="M must be one finite 3x3 matrix"):
+            fr.matrix_applier(bad)
+    with pytest.raises(ValueError, match="t must be a finite 3-vector"):
+        fr.matrix_applier(np.eye(3), [0.0, np.inf, 0.0])

@@ -134,3 +134,103 @@ def test_closed_form_2x2_step_matches_the_svd_step():
     np.testing.assert_allclose(d1[ok][10:], d2[ok][10:], rtol=1e-9)  # well-conditioned rows
     np.testing.assert_allclose(d1[50:60], d2[50:60], rtol=1e-5)  # condition ~1e9: same step to its accuracy
     np.testing.assert_array_equal(d1[:50], d2[:50])  # singular rows: the SVD pseudo-inverse step itself
+
+
+def test_residual_and_jacobian_in_one_call_give_the_same_solves():
+    """newton(fun_jac=...) (issue 20): the same iterates and records as fun + jac, with fewer calls."""
+    rng = np.random.default_rng(3)
+    p = rng.uniform(0.5, 2.0, (40, 2))
+    calls = {"fj": 0}
+
+    def fun(x, i):
+        return np.column_stack([x[:, 0] ** 3 + x[:, 1] - p[i, 0], np.sin(x[:, 0]) + x[:, 1] ** 2 - p[i, 1]])
+
+    def jac(x, i):
+        J = np.empty((len(x), 2, 2))
+        J[:, 0, 0], J[:, 0, 1] = 3 * x[:, 0] ** 2, 1.0
+        J[:, 1, 0], J[:, 1, 1] = np.cos(x[:, 0]), 2 * x[:, 1]
+        return J
+
+    def fun_jac(x, i):
+        calls["fj"] += 1
+        return fun(x, i), jac(x, i)
+
+    x0 = rng.uniform(-2, 2, (40, 2))
+    for damped in (True, False):
+        a = newton(fun, x0, jac, rows=True, damped=damped)
+        b = newton(fun, x0, jac, rows=True, damped=damped, fun_jac=fun_jac)
+        for f in ("x", "residual", "iterations", "status", "condition"):
+            np.testing.assert_array_equal(getattr(a, f), getattr(b, f))
+    assert calls["fj"] > 0
+
+
+def test_square_step_matches_the_svd_step_and_flags_the_same_rows():
+    from gearrep.solve import _step_square, _svd_step
+
+    rng = np.random.default_rng(8)
+    J = rng.normal(size=(300, 5, 5)) * 10.0 ** rng.uniform(-3, 3, size=(300, 1, 1))
+    J[:20, 4] = 2.0 * J[:20, 0]  # exactly singular rows
+    J[20:30, 4] = J[20:30, 0] + 1e-11 * rng.normal(size=(10, 5)) * np.abs(J[20:30, 0]).max(axis=-1, keepdims=True)
+    F = rng.normal(size=(300, 5))
+    d1, sing1, sv1 = _step_square(J, F, 1e-13)
+    d2, sing2, s2 = _svd_step(J, F, 1e-13)
+    np.testing.assert_array_equal(sing1, sing2)
+    ok = ~sing1
+    np.testing.assert_allclose(d1[30:], d2[30:], rtol=1e-8, atol=1e-10 * np.abs(d2[30:]).max())
+    # bounds: ||J||_F >= s_max, 1/||J^-1||_F <= s_min, ratio within a factor k = 5 of the 2-norm condition
+    c1, c2 = sv1[ok, 0] / sv1[ok, 1], s2[ok, 0] / s2[ok, -1]
+    assert np.all(c1 >= c2 * (1 - 1e-9)) and np.all(c1 <= 5 * c2 * (1 + 1e-9))
+
+
+@pytest.mark.parametrize("damped", [True, False])
+@pytest.mark.parametrize("mode", ["analytic", "numeric", "fun_jac", "least_squares"])
+def test_one_problem_alone_gives_its_batch_record(damped, mode):
+    """newton on one row (its own scalar bookkeeping) returns exactly what the same row gets in a
+    batch: solution, residual, iterations, status and condition, for converging, diverging,
+    singular, stalling and non-finite starts."""
+    rng = np.random.default_rng(5)
+    x0 = np.vstack(
+        [
+            rng.uniform(-3, 3, (30, 2)),
+            [[0.0, 0.0], [np.nan, 1.0], [1e200, 1.0], [np.pi / 2, 0.0], [-1.0, 4.0]],
+        ]
+    )
+    p = rng.uniform(0.2, 1.5, (len(x0), 2))
+
+    def fun(x, i):
+        f = np.column_stack([np.sin(x[:, 0]) * x[:, 1] - p[i, 0], x[:, 0] ** 2 + np.cos(x[:, 1]) - p[i, 1]])
+        if mode == "least_squares":
+            f = np.column_stack([f, 0.1 * (x[:, 0] - x[:, 1])])
+        return f
+
+    def jac(x, i):
+        J = np.zeros((len(x), 3 if mode == "least_squares" else 2, 2))
+        J[:, 0, 0], J[:, 0, 1] = np.cos(x[:, 0]) * x[:, 1], np.sin(x[:, 0])
+        J[:, 1, 0], J[:, 1, 1] = 2 * x[:, 0], -np.sin(x[:, 1])
+        if mode == "least_squares":
+            J[:, 2, 0], J[:, 2, 1] = 0.1, -0.1
+        return J
+
+    kw = dict(rows=True, damped=damped, maxiter=25, lower=[-2.5, -np.inf], upper=[2.5, np.inf])
+    if mode == "fun_jac":
+        kw["fun_jac"] = lambda x, i: (fun(x, i), jac(x, i))
+    j = None if mode == "numeric" else jac
+    with np.errstate(all="ignore"):
+        batch = newton(fun, x0, j, **kw)
+        for r in range(len(x0)):
+            one = newton(
+                lambda x, i, r=r: fun(x, np.array([r])),
+                x0[r : r + 1],
+                None if j is None else (lambda x, i, r=r: jac(x, np.array([r]))),
+                **{
+                    **kw,
+                    **(
+                        {"fun_jac": lambda x, i, r=r: (fun(x, np.array([r])), jac(x, np.array([r])))}
+                        if mode == "fun_jac"
+                        else {}
+                    ),
+                },
+            )
+            for f in ("x", "residual", "iterations", "status", "condition"):
+                np.testing.assert_array_equal(getattr(one, f)[0], getattr(batch, f)[r], err_msg=f"row {r} {f}")
+    assert len(set(batch.status.tolist())) >= 3  # converged, diverged and another outcome are all exercised

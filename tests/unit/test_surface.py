@@ -72,3 +72,39 @@ def test_rotated_surface_moves_points_keeps_curvatures_and_passes_attributes():
     assert s.outward_sign == -1 and s.upper[1] == 2.0 and not hasattr(s, "side")
     with pytest.raises(ValueError, match="proper rotation"):
         RotatedSurface(base, np.diag([1.0, 1.0, -1.0]))
+
+
+def test_evaluate_components_equal_evaluate():
+    """Structure-of-arrays evaluation (issue 20): the default (from evaluate), the involute flank's
+    own (arrays and one point on floats) and a rotated surface give evaluate's numbers."""
+    from gearrep.frames import rot_x
+    from gearrep.surface import RotatedSurface, cross3, dot3
+    from gearrep.surfaces.analytic import Sphere
+    from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData, ParabolicCrowning, TipRelief
+
+    g = InvoluteGearData(31, 2.0, np.radians(20), 20.0, helix_angle=np.radians(12))
+    flanks = [
+        Sphere(5.0),
+        InvoluteFlank(g, 1, 1, crowning=ParabolicCrowning(0.002)),
+        InvoluteFlank(g, -1, -1, relief=(TipRelief(0.01, g.r_a - 0.8, g.r_a),)),
+    ]
+    flanks.append(RotatedSurface(flanks[1], rot_x(0.3), (1.0, 2.0, 3.0)))
+    rng = np.random.default_rng(2)
+    for f in flanks:
+        lo, hi = (np.array([0.3, 0.2]), np.array([1.2, 2.0])) if isinstance(f, Sphere) else (f.lower, f.upper)
+        u, v = rng.uniform(lo[0] + 0.01, hi[0], 20), rng.uniform(lo[1], hi[1], 20)
+        P = f.evaluate(u, v)
+        C = f.evaluate_components(u, v)
+        for vec, comps in zip((P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv), C):
+            got = np.column_stack(np.broadcast_arrays(*comps))
+            np.testing.assert_allclose(got, vec, rtol=0, atol=1e-12 * (1 + np.abs(vec).max()))
+        one = f.evaluate_components(float(u[0]), float(v[0]))
+        for vec, comps in zip((P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv), one):
+            np.testing.assert_allclose(
+                np.array(comps, float).reshape(3), vec[0], rtol=0, atol=1e-12 * (1 + np.abs(vec).max())
+            )
+    a, b = (1.0, 2.0, 3.0), (-1.0, 0.5, 4.0)
+    np.testing.assert_array_equal(cross3(a, b), np.cross(a, b))
+    assert dot3(a, b) == 12.0
+    with pytest.raises(ValueError):  # one point inside the base circle: floats raise (arrays give NaN)
+        flanks[1].evaluate_components(float(0.5 * g.r_b), 0.0)

@@ -424,6 +424,29 @@ def test_performance_10000_aligned_spur_solves():
     assert best < 1.0
 
 
+@pytest.mark.bench
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_throughput_in_reference_kernel_elements(formulation):
+    """Issue 20 targets on the README pair (crowned 52/72 spur, 0.05 deg out-of-plane), in elements
+    of the reference kernel timed in the same run (gearrep.benchmark): at most 6 (reduced) or 12
+    (conventional) per vectorised solve and 1000 per single-point call; fails above 1.5 x target."""
+    from gearrep import benchmark
+
+    pair, _, _ = spur_pair(crown1=ParabolicCrowning(0.002857), mis=Misalignment(d_gamma_out=D(0.05)))
+    rng = np.random.default_rng(7)
+    phi = -np.pi / 104 + rng.uniform(-0.4, 0.4, 20_000) * 2 * np.pi / 52
+    r = benchmark.tca_throughput(pair, phi, default_start(pair, phi, formulation), formulation=formulation, n_single=50)
+    assert r["converged_fraction_vectorised"] == 1.0 and r["converged_fraction_single"] == 1.0
+    print(
+        f"\n{formulation}: {r['vectorised_elements_per_solve']:.1f} reference elements per solve, "
+        f"{r['single_elements_per_call']:.0f} per single-point call "
+        f"(load {r['load_1min_before']:.1f}-{r['load_1min_after']:.1f})"
+    )
+    targets = benchmark.THROUGHPUT_TARGETS
+    assert r["vectorised_elements_per_solve"] <= 1.5 * targets[formulation]
+    assert r["single_elements_per_call"] <= 1.5 * targets["single"]
+
+
 # ---------------------------------------------------------------------------------------------
 # validation
 # ---------------------------------------------------------------------------------------------

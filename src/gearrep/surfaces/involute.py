@@ -71,6 +71,7 @@ polar angle of the involute that starts on the x axis), i.e. the ``side = -1`` f
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -397,6 +398,25 @@ class InvoluteGearData:
         return 2.0 * np.pi * self.r_b / self.n_teeth
 
 
+def _flank_components(u, v, c, s, pu, pv, puu, pvv):
+    """r, r_u, r_v, r_uu, r_uv, r_vv of eq (A) by components from cos/sin of psi and its partials
+    (arrays or floats; see :meth:`InvoluteFlank.evaluate`): a e_r + b e_t in x, y. psi_uv = 0 (eq B
+    is a function of u plus one of v), so the e_t part of r_uv is psi_v."""
+    upv = u * pv
+    b_u = u * pu
+    a_uu, b_uu = -u * pu * pu, 2 * pu + u * puu
+    a_uv = -u * pu * pv
+    a_vv, b_vv = -upv * pv, u * pvv
+    return (
+        (u * c, u * s, v),
+        (c - b_u * s, s + b_u * c, 0.0),
+        (-(upv * s), upv * c, 1.0),
+        (a_uu * c - b_uu * s, a_uu * s + b_uu * c, 0.0),
+        (a_uv * c - pv * s, a_uv * s + pv * c, 0.0),
+        (a_vv * c - b_vv * s, a_vv * s + b_vv * c, 0.0),
+    )
+
+
 class InvoluteFlank(Surface):
     """One flank of an involute spur or helical tooth, r(u, v) of eq (A)-(B) of the module docstring.
 
@@ -495,21 +515,26 @@ class InvoluteFlank(Surface):
         v = np.asarray(v, dtype=float)
         u, v = np.broadcast_arrays(u, v)
         inv, i1, i2 = _inv_derivs(u, self.r_b)
-        dp = np.zeros_like(u)
-        dp1 = np.zeros_like(u)
-        dp2 = np.zeros_like(u)
-        for r in self.relief:
-            a, b, c = r(u)
-            dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
         if self.crowning is not None:
             dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
         else:
             dl = dl1 = dl2 = 0.0
         tw, tw1, tw2 = self.twist(v)
         s, rb = self.side, self.r_b
-        psi = s * (self.c - inv - (dp + dl) / rb) + tw
-        psi_u = s * (-i1 - dp1 / rb)
-        psi_uu = s * (-i2 - dp2 / rb)
+        if self.relief:
+            dp = np.zeros_like(u)
+            dp1 = np.zeros_like(u)
+            dp2 = np.zeros_like(u)
+            for r in self.relief:
+                a, b, c = r(u)
+                dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+            psi = s * (self.c - inv - (dp + dl) / rb) + tw
+            psi_u = s * (-i1 - dp1 / rb)
+            psi_uu = s * (-i2 - dp2 / rb)
+        else:  # the same numbers without the zero profile terms (0 + dl = dl, -i - 0 / rb = -i)
+            psi = s * (self.c - inv - dl / rb) + tw
+            psi_u = s * -i1
+            psi_uu = s * -i2
         psi_v = tw1 - s * dl1 / rb
         psi_vv = tw2 - s * dl2 / rb
         return psi, psi_u, np.broadcast_to(psi_v, u.shape), psi_uu, np.zeros_like(u), np.broadcast_to(psi_vv, u.shape)
@@ -558,6 +583,50 @@ class InvoluteFlank(Surface):
         put(r_uv, -u * pu * pv, pv + u * puv)
         put(r_vv, -u * pv * pv, u * pvv)
         return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
+
+    def evaluate_components(self, u, v) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays, see
+        :meth:`gearrep.surface.Surface.evaluate_components`): the same expressions without the
+        (..., 3) arrays; the constant axial components are the floats 0.0 and 1.0. For ``u``, ``v``
+        Python floats (one point) the same expressions are evaluated with :mod:`math` on floats;
+        inside the base circle that raises ValueError (where arrays give NaN)."""
+        if type(u) is float and type(v) is float:
+            return self._components_of_one_point(u, v)
+        u = np.asarray(u, dtype=float)
+        v = np.asarray(v, dtype=float)
+        u, v = np.broadcast_arrays(u, v)
+        psi, pu, pv, puu, _, pvv = self.polar_angle_derivs(u, v)
+        return _flank_components(u, v, np.cos(psi), np.sin(psi), pu, pv, puu, pvv)
+
+    def _components_of_one_point(self, u: float, v: float) -> tuple:
+        """:meth:`evaluate_components` of one point on Python floats: the expressions of
+        :func:`_inv_derivs`, :meth:`polar_angle_derivs` and :meth:`evaluate_components` in the
+        same order (the modifications' own functions are called and their values taken as floats)."""
+        rb = float(self.r_b)  # Python floats throughout: no numpy scalar (and no numpy warning) enters
+        sq = math.sqrt(u * u - rb * rb)
+        t = sq / rb
+        inv, i1, i2 = t - math.atan(t), sq / (rb * u), rb / (sq * u * u)
+        if self.crowning is not None:
+            dl, dl1, dl2 = (float(x) for x in self.crowning(v))
+        else:
+            dl = dl1 = dl2 = 0.0
+        tw, tw1, tw2 = (float(x) for x in self.twist(v))
+        s = self.side
+        if self.relief:
+            dp = dp1 = dp2 = 0.0
+            for r in self.relief:
+                a, b, c = (float(x) for x in r(u))
+                dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+            psi = s * (float(self.c) - inv - (dp + dl) / rb) + tw
+            pu = s * (-i1 - dp1 / rb)
+            puu = s * (-i2 - dp2 / rb)
+        else:
+            psi = s * (float(self.c) - inv - dl / rb) + tw
+            pu = s * -i1
+            puu = s * -i2
+        pv = tw1 - s * dl1 / rb
+        pvv = tw2 - s * dl2 / rb
+        return _flank_components(u, v, math.cos(psi), math.sin(psi), pu, pv, puu, pvv)
 
     def outward_normal(self, u, v) -> np.ndarray:
         """Unit normal pointing out of the tooth material."""

@@ -84,6 +84,17 @@ line-of-action starts) are in this package too (private module ``_starts``).
 All solves go through :func:`gearrep.solve.newton`. Per-row data (phi1, a fixed v1, the dropped
 component) are carried as extra unknowns frozen by identity rows with zero residual, because
 ``newton`` hands ``fun`` only the rows still iterating.
+
+Speed (issue 20; measured by ``make bench``, :func:`gearrep.benchmark.tca_throughput`): the
+systems are evaluated by components (structure of arrays: surfaces' ``evaluate_components``,
+:func:`gearrep.frames.rotate_z` and :func:`gearrep.frames.matrix_applier` for the fixed
+mountings, no (n, 3, 3) stacks), residual and Jacobian in one evaluation per Newton step
+(``newton(fun_jac=)``), cos/sin of phi1 once per solve, the contact record from the last
+evaluation; one-point calls run the same kernels on Python floats. A numba-compiled reduced
+residual/Jacobian (evaluated outside the repository, same expressions) gave the same numbers
+bit for bit and cost 0.57 reference-kernel elements per row against 2.6 for numpy, but importing
+numba took 1.5 s and the first compilation 15 s per process (load ~9 on 2 cores), against a
+cold-run goal of 45 s for the whole workflow: not adopted; numpy is the only path.
 """
 
 from ._bevel import BevelMisalignment, BevelPair

@@ -56,7 +56,7 @@ from ..frames import rot_y, rot_z
 from ..surface import AxialForm
 from ._pair import GearPair
 
-__all__ = ["BevelMisalignment", "BevelPair", "spherical_kernel"]
+__all__ = ["BevelMisalignment", "BevelPair", "spherical_unknowns"]
 
 
 @dataclass(frozen=True)
@@ -131,18 +131,17 @@ class BevelPair(GearPair):
         return self._axial
 
 
-def spherical_kernel(pair: BevelPair, u1, v1, phi1, *, derivs=True):
-    """The reduced back-substitution for a spherical member 2 (module docstring): the cylindrical
-    kernel on :attr:`BevelPair.axial_view`, then (rho2, z2) -> (u2, v2) = (atan2(rho2, z2), |s|)."""
-    from ._formulations import _reduced_kernel
-
-    K = _reduced_kernel(pair.axial_view, u1, v1, phi1, derivs=derivs)
+def spherical_unknowns(K: dict, derivs: bool = True, v_column: bool = True) -> dict:
+    """Member 2's spherical unknowns from the cylindrical back-substitution on the axial view (module
+    docstring): (rho2, z2) = (u2, v2) of ``K`` -> (u2, v2) = (atan2(rho2, z2), |s|), with the
+    derivatives (suffix ``_u``, and ``_v`` with ``v_column``) by the chain rule. ``K`` is the
+    structure-of-arrays dict of :func:`gearrep.tca._formulations._reduced3`; it is updated in place."""
     rho, z = K["u2"], K["v2"]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        v = np.hypot(rho, z)
-        K["u2"], K["v2"] = np.arctan2(rho, z), v
-        if derivs:
-            drho, dz = K["du2"], K["dv2"]
-            K["du2"] = (z[..., None] * drho - rho[..., None] * dz) / (v * v)[..., None]
-            K["dv2"] = (rho[..., None] * drho + z[..., None] * dz) / v[..., None]
+    v = np.hypot(rho, z)
+    K["u2"], K["v2"] = np.arctan2(rho, z), v
+    if derivs:
+        for j in ("_u", "_v") if v_column else ("_u",):
+            drho, dz = K["du2" + j], K["dv2" + j]
+            K["du2" + j] = (z * drho - rho * dz) / (v * v)
+            K["dv2" + j] = (rho * drho + z * dz) / v
     return K

@@ -3,11 +3,14 @@ Newton with per-row data, and the public solves (see :mod:`gearrep.tca`)."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from ..frames import rotate_z
 from ..solve import SolveResult, Status, newton
-from ..surface import cross
-from ._pair import ContactPoints, GearPair, _mv, _wrap, transmission_error
+from ..surface import cross, cross3, dot3
+from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 
 __all__ = [
     "normal_derivatives",
@@ -33,56 +36,145 @@ def normal_derivatives(P, sign):
     return sign * n, sign * dnu, sign * dnv
 
 
+# one-point solves run the same kernels on Python floats (a numpy call on a 1-element array costs
+# as much as on thousands of elements); these pick the math or the numpy function by the argument
+def _sqrt(x):
+    return math.sqrt(x) if type(x) is float else np.sqrt(x)
+
+
+def _atan2(y, x):
+    return math.atan2(y, x) if type(x) is float and type(y) is float else np.arctan2(y, x)
+
+
+def _cos_sin(x):
+    return (math.cos(x), math.sin(x)) if type(x) is float else (np.cos(x), np.sin(x))
+
+
+def _wrap_any(x):
+    """:func:`_wrap` for arrays or floats (round half to even in both)."""
+    return x - 2.0 * math.pi * round(x / (2.0 * math.pi)) if type(x) is float else _wrap(x)
+
+
+#: a one-point kernel on floats raises these where the array kernel gives inf/NaN; the caller then
+#: repeats it on arrays, so that both give the same statuses
+_SCALAR_ERRORS = (ArithmeticError, ValueError)
+
+
+def _normal_derivatives3(P, sign):
+    """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
+    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple."""
+    _, ru, rv, ruu, ruv, rvv = P
+    N0, N1, N2 = cross3(ru, rv)
+    L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
+    n = (N0 / L, N1 / L, N2 / L)
+    a, b = cross3(ruu, rv), cross3(ru, ruv)
+    dNu = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    a, b = cross3(ruv, rv), cross3(ru, rvv)
+    dNv = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    pu, pv = dot3(n, dNu), dot3(n, dNv)
+    dnu = tuple((d - m * pu) / L for d, m in zip(dNu, n))
+    dnv = tuple((d - m * pv) / L for d, m in zip(dNv, n))
+    if sign == 1:
+        return n, dnu, dnv
+    return tuple(tuple(-x for x in vec) for vec in (n, dnu, dnv))
+
+
+def _stack3(v, n):
+    """(n, 3) array of a vector given by components (floats broadcast)."""
+    out = np.empty((n, 3))
+    out[:, 0], out[:, 1], out[:, 2] = v
+    return out
+
+
+def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
+    """The reduced formulation's explicit back-substitution (eq 37-44) in structure-of-arrays form.
+
+    ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
+    of components: u2, v2, phi2 (arrays), r, n1, n2 (3-tuples) and, with ``derivs``, the
+    derivatives with respect to u1 (suffix _u) and, with ``v_column``, v1 (suffix _v):
+    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples). Callers set ``np.errstate`` (off the flanks
+    the arrays hold NaN/inf). A spherical member 2 (bevel pairs, ``flank2.spherical``): the
+    cylindrical back-substitution on the pair's axial view, then (rho2, z2) -> (u2, v2) by
+    :func:`gearrep.tca._bevel.spherical_unknowns`."""
+    if getattr(pair.flank2, "spherical", False):
+        from ._bevel import spherical_unknowns
+
+        K = _reduced3(pair.axial_view, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
+        return spherical_unknowns(K, derivs, v_column)
+    g = pair._soa
+    P1 = pair.flank1.evaluate_components(u1, v1)
+    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    r = rotate_z(c1, s1, P1[0])
+    n1 = rotate_z(c1, s1, n1l)
+    s = g["Q"](g["minus_O2"](r))  # member-2 axis frame, before Rz(-phi2)
+    sx, sy, v2 = s
+    rho2 = sx * sx + sy * sy
+    u2 = _sqrt(rho2)
+    th = _atan2(sy, sx)
+    P2 = pair.flank2.evaluate_components(u2, v2)
+    r2 = P2[0]
+    ang2 = _atan2(r2[1], r2[0])
+    ref = pair.ratio * phi1
+    phi2 = ref + _wrap_any(ang2 - th - ref)
+    c2, s2 = _cos_sin(pair.phase2 - phi2)
+    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    n2 = g["A2"](rotate_z(c2, s2, n2l))
+    out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2)
+    if not derivs:
+        return out
+    q2 = r2[0] * r2[0] + r2[1] * r2[1]
+    ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
+    ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
+    w2xn2 = cross3(g["w2"], n2)
+    for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
+        if j == "_v" and not v_column:
+            break
+        dr = rotate_z(c1, s1, rj)
+        ds = g["Q"](dr)
+        du2 = (sx * ds[0] + sy * ds[1]) / u2
+        dth = (sx * ds[1] - sy * ds[0]) / rho2
+        dv2 = ds[2]
+        dphi2 = ang_u * du2 + ang_v * dv2 - dth
+        dn2l = tuple(a * du2 + b * dv2 for a, b in zip(dn2u, dn2v))
+        dn2 = g["A2"](rotate_z(c2, s2, dn2l))
+        out["dr" + j] = dr
+        out["dn1" + j] = rotate_z(c1, s1, dnj)
+        out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
+        out["dn2" + j] = tuple(a + b * dphi2 for a, b in zip(dn2, w2xn2))
+    return out
+
+
 def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
     """Explicit back-substitution of the reduced formulation (eq 37-44) and derivatives w.r.t. (u1, v1).
 
-    Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f) and, with
-    ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1). A spherical member 2
-    (bevel pairs, ``flank2.spherical``) goes through :func:`gearrep.tca._bevel.spherical_kernel`.
+    Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f, (n, 3))
+    and, with ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1) (a spherical
+    member 2 as in :func:`_reduced3`).
     """
-    if getattr(pair.flank2, "spherical", False):
-        from ._bevel import spherical_kernel
-
-        return spherical_kernel(pair, u1, v1, phi1, derivs=derivs)
-    P1 = pair.flank1.evaluate(u1, v1)
-    R1 = pair.R1(phi1)
-    r = _mv(R1, P1.r)
-    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
-    n1 = _mv(R1, n1l)
-    s = _mv(pair._Q, r - pair.O2)  # member-2 axis frame, before Rz(-phi2)
-    v2 = s[..., 2]
-    rho2 = s[..., 0] ** 2 + s[..., 1] ** 2
-    u2 = np.sqrt(rho2)
-    th = np.arctan2(s[..., 1], s[..., 0])
-    with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate(u2, v2)
-    ang2 = np.arctan2(P2.r[..., 1], P2.r[..., 0])
-    ref = pair.ratio * np.asarray(phi1, float)
-    phi2 = ref + _wrap(ang2 - th - ref)
-    R2 = pair.R2(phi2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
-    n2 = _mv(R2, n2l)
-    out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2, P1=P1, P2=P2)
-    if not derivs:
-        return out
-    # derivatives with respect to (u1, v1): stack directions on axis -2
-    dr = _mv(R1[..., None, :, :], np.stack([P1.r_u, P1.r_v], axis=-2))  # (n,2,3)
-    dn1 = _mv(R1[..., None, :, :], np.stack([dn1u, dn1v], axis=-2))
-    ds = _mv(pair._Q, dr)
-    sx, sy = s[..., 0, None], s[..., 1, None]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        du2 = (sx * ds[..., 0] + sy * ds[..., 1]) / u2[..., None]
-        dth = (sx * ds[..., 1] - sy * ds[..., 0]) / rho2[..., None]
-        dv2 = ds[..., 2]
-        r2 = P2.r
-        q2 = r2[..., 0] ** 2 + r2[..., 1] ** 2
-        ang_u = (r2[..., 0] * P2.r_u[..., 1] - r2[..., 1] * P2.r_u[..., 0]) / q2
-        ang_v = (r2[..., 0] * P2.r_v[..., 1] - r2[..., 1] * P2.r_v[..., 0]) / q2
-        dphi2 = ang_u[..., None] * du2 + ang_v[..., None] * dv2 - dth
-        dn2l = dn2u[..., None, :] * du2[..., None] + dn2v[..., None, :] * dv2[..., None]
-        dn2 = _mv(R2[..., None, :, :], dn2l) + cross(pair.w2, n2)[..., None, :] * dphi2[..., None]
-    out.update(dr=dr, dn1=dn1, du2=du2, dv2=dv2, dphi2=dphi2, dn2=dn2)
+    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
+    n = np.broadcast_shapes(u1.shape, v1.shape, phi1.shape)[0]
+    K = None
+    if n == 1 and not derivs:  # one point: on floats (see _SCALAR_ERRORS)
+        f = tuple(float(a.reshape(-1)[0]) for a in (u1, v1, phi1))
+        try:
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                K1 = _reduced3(pair, f[0], f[1], f[2], *_cos_sin(f[2]), derivs=False)
+            K = {
+                k: (np.array([v]) if k in ("u2", "v2", "phi2") else tuple(np.array([x]) for x in v))
+                for k, v in K1.items()
+            }
+        except _SCALAR_ERRORS:
+            K = None
+    if K is None:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            K = _reduced3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), derivs=derivs)
+    out = {k: K[k] for k in ("u2", "v2", "phi2")}
+    out.update({k: _stack3(K[k], n) for k in ("r", "n1", "n2")})
+    if derivs:
+        for k in ("dr", "dn1", "dn2"):
+            out[k] = np.stack([_stack3(K[k + "_u"], n), _stack3(K[k + "_v"], n)], axis=-2)
+        for k in ("du2", "dv2", "dphi2"):
+            out[k] = np.stack(np.broadcast_arrays(K[k + "_u"], K[k + "_v"]), axis=-1)
     return out
 
 
@@ -95,39 +187,108 @@ def _keep(vec, drop):
     return np.take_along_axis(vec, idx[:, None, :], axis=-1)
 
 
-def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
-    K = _reduced_kernel(pair, u1, v1, phi1, derivs=derivs)
-    c = cross(K["n1"], K["n2"])
-    F = _keep(c, drop)
+def _keep3(v, first0, last2):
+    """The two components of a vector by components other than the dropped one (per row):
+    (v1 if drop = 0 else v0, v1 if drop = 2 else v2); ``first0`` = (drop == 0), ``last2`` = (drop == 2)."""
+    if type(first0) is bool:
+        return (v[1] if first0 else v[0]), (v[1] if last2 else v[2])
+    return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
+
+
+def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
+    """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components."""
+    K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
+    n1, n2 = K["n1"], K["n2"]
+    c = cross3(n1, n2)
+    f0, f1 = _keep3(c, first0, last2)
+    F = np.empty((np.size(f0), 2))
+    F[:, 0], F[:, 1] = f0, f1
     if not derivs:
         return F, None, K
-    dc = cross(K["dn1"], K["n2"][..., None, :]) + cross(K["n1"][..., None, :], K["dn2"])  # (n,2,3)
-    J = np.swapaxes(_keep(dc, drop), -1, -2)  # (n, 2 eq, 2 unknowns)
+    cols = ("_u", "_v") if v_column else ("_u",)
+    J = np.empty((np.size(f0), 2, len(cols)))
+    for k, j in enumerate(cols):
+        a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
+        J[:, 0, k], J[:, 1, k] = _keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2)
     return F, J, K
 
 
-def _conventional_FJ(pair, x, phi1, drop, derivs=True):
-    u1, v1, u2, v2, phi2 = (x[:, i] for i in range(5))
-    P1 = pair.flank1.evaluate(u1, v1)
-    R1 = pair.R1(phi1)
+def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
+    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
+    drop = np.asarray(drop)
     with np.errstate(invalid="ignore", divide="ignore"):
-        P2 = pair.flank2.evaluate(u2, v2)
-        n2l, dn2u, dn2v = normal_derivatives(P2, pair.sign2)
-    n1l, dn1u, dn1v = normal_derivatives(P1, pair.sign1)
-    R2 = pair.R2(phi2)
-    r1 = _mv(R1, P1.r)
-    rel2 = _mv(R2, P2.r)
-    n1 = _mv(R1, n1l)
-    n2 = _mv(R2, n2l)
-    F = np.concatenate([r1 - (pair.O2 + rel2), n1 + n2 if drop is None else _keep(n1 + n2, drop)], axis=-1)
+        return _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
+
+
+def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, keep=None):
+    """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``x``: the
+    five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
+    the free ones; ``drop`` None keeps all three normal components (six equations); ``keep``: a dict
+    that receives r (member 1's point), n1 and n2 (outward normals) by components."""
+    g = pair._soa
+    u1, v1, u2, v2, phi2 = x
+    P1 = pair.flank1.evaluate_components(u1, v1)
+    P2 = pair.flank2.evaluate_components(u2, v2)
+    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    c2, s2 = _cos_sin(pair.phase2 - phi2)
+
+    def R2(v):
+        return g["A2"](rotate_z(c2, s2, v))
+
+    r1 = rotate_z(c1, s1, P1[0])
+    rel2 = R2(P2[0])
+    n1 = rotate_z(c1, s1, n1l)
+    n2 = R2(n2l)
+    if keep is not None:
+        keep.update(r=r1, n1=n1, n2=n2)
+    O2 = g["O2"]
+    m = 6 if drop is None else 5
+    n = np.size(u1)
+    F = np.empty((n, m))
+    for i in range(3):
+        F[:, i] = r1[i] - (O2[i] + rel2[i])
+    ns = tuple(a + b for a, b in zip(n1, n2))
+    if drop is None:
+        F[:, 3], F[:, 4], F[:, 5] = ns
+    else:
+        F[:, 3], F[:, 4] = _keep3(ns, first0, last2)
     if not derivs:
         return F, None
-    cols_r = [_mv(R1, P1.r_u), _mv(R1, P1.r_v), -_mv(R2, P2.r_u), -_mv(R2, P2.r_v), -cross(pair.w2, rel2)]
-    cols_n = [_mv(R1, dn1u), _mv(R1, dn1v), _mv(R2, dn2u), _mv(R2, dn2v), cross(pair.w2, n2)]
-    Jr = np.stack(cols_r, axis=-1)  # (n,3,5)
-    Jn = np.stack(cols_n, axis=-2)  # (n,5,3)
-    J = np.concatenate([Jr, np.swapaxes(Jn if drop is None else _keep(Jn, drop), -1, -2)], axis=-2)
+    J = np.empty((n, m, len(cols)))
+    for k, col in enumerate(cols):
+        if col == 0:
+            jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
+        elif col == 1:
+            jr, jn = rotate_z(c1, s1, P1[2]), rotate_z(c1, s1, dn1v)
+        elif col == 2:
+            jr, jn = R2(P2[1]), R2(dn2u)
+            jr = tuple(-a for a in jr)
+        elif col == 3:
+            jr, jn = R2(P2[2]), R2(dn2v)
+            jr = tuple(-a for a in jr)
+        else:
+            jr = tuple(-a for a in cross3(g["w2"], rel2))
+            jn = cross3(g["w2"], n2)
+        J[:, 0, k], J[:, 1, k], J[:, 2, k] = jr
+        if drop is None:
+            J[:, 3, k], J[:, 4, k], J[:, 5, k] = jn
+        else:
+            J[:, 3, k], J[:, 4, k] = _keep3(jn, first0, last2)
     return F, J
+
+
+def _conventional_FJ(pair, x, phi1, drop, derivs=True):
+    x = np.asarray(x, float)
+    phi1 = np.broadcast_to(np.asarray(phi1, float), (len(x),))
+    c1, s1 = np.cos(phi1), np.sin(phi1)
+    d = None if drop is None else np.asarray(drop)
+    f0 = None if d is None else d == 0
+    l2 = None if d is None else d == 2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return _conventional_FJ3(
+            pair, tuple(x[:, i] for i in range(5)), c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs
+        )
 
 
 def conventional_system(pair: GearPair, phi1: float, drop: int | None):
@@ -162,13 +323,27 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
 # newton with frozen per-row parameters
 # ----------------------------------------------------------------------------------------------
 def newton_rows(
-    F, FJ, x0, params, *, lower=None, upper=None, jacobian="analytic", tol=1e-12, maxiter=50, damped=True
+    F,
+    FJ,
+    x0,
+    params,
+    *,
+    lower=None,
+    upper=None,
+    jacobian="analytic",
+    tol=1e-12,
+    maxiter=50,
+    damped=True,
+    inverse_square=False,
 ) -> SolveResult:
     """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
 
     ``F(x, p) -> (n, m)``; ``FJ(x, p) -> (F, J)`` with J (n, m, k) (analytic; ignored when
-    ``jacobian="numeric"``, which differentiates F by central differences). Each row's
-    parameters follow it through the solve (``newton(..., rows=True)``).
+    ``jacobian="numeric"``, which differentiates F by central differences; its F must equal
+    ``F(x, p)``: the solver takes the residual at each full step from it, ``fun_jac`` of
+    :func:`gearrep.solve.newton`). Each row's parameters follow it through the solve
+    (``newton(..., rows=True)``). ``inverse_square``: as :func:`gearrep.solve.newton` (the
+    contact solves of :func:`solve_contact` use it).
     """
     x0 = np.atleast_2d(np.asarray(x0, float))
     params = np.atleast_2d(np.asarray(params, float))
@@ -184,16 +359,22 @@ def newton_rows(
     def jac(x, idx):
         return FJ(x, params[idx])[1]
 
+    def fun_jac(x, idx):
+        return FJ(x, params[idx])
+
+    analytic = jacobian == "analytic"
     return newton(
         fun,
         x0,
-        jac if jacobian == "analytic" else None,
+        jac if analytic else None,
         tol=tol,
         maxiter=maxiter,
         damped=damped,
         lower=lower,
         upper=upper,
         rows=True,
+        fun_jac=fun_jac if analytic else None,
+        inverse_square=inverse_square,
     )
 
 
@@ -229,6 +410,28 @@ def _prep(phi1, start, width):
     return np.broadcast_to(phi1, (n,)).copy(), np.broadcast_to(start, (n, width)).copy()
 
 
+def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
+    """Per row the index (as float) of the largest component of member 1's unit normal in S_f at
+    (u1, v1) turned by (cos, sin) = (c1, s1); 0 where it is not finite (the solve reports those)."""
+    if len(u1) == 1:  # one point: on floats (numpy scalars where the family has no float path)
+        try:
+            with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+                P = pair.flank1.evaluate_components(float(u1[0]), float(v1[0]))
+                N = rotate_z(float(c1[0]), float(s1[0]), cross3(P[1], P[2]))
+                L = math.sqrt(dot3(N, N))
+                a = [abs(x / L) for x in N]
+            if all(math.isfinite(x) for x in a):  # else as arrays (NaN counts as 0 there)
+                return np.array([float(a.index(max(a)))])
+        except _SCALAR_ERRORS:
+            pass
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # a non-finite start ends as DIVERGED
+        P = pair.flank1.evaluate_components(u1, v1)
+        N = rotate_z(c1, s1, cross3(P[1], P[2]))
+        L = np.sqrt(dot3(N, N))
+        a = np.abs(np.stack(np.broadcast_arrays(*(x / L for x in N)), axis=-1))
+        return np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
+
+
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
     phi1 = _angles(phi1)
@@ -237,6 +440,32 @@ def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndar
         return np.tile(mid1, (len(phi1), 1))
     mid2 = np.where(np.isfinite(pair.lower2 + pair.upper2), 0.5 * (pair.lower2 + pair.upper2), 0.0)
     return np.column_stack([np.tile(mid1, (len(phi1), 1)), np.tile(mid2, (len(phi1), 1)), pair.ratio * phi1])
+
+
+class _Record:
+    """The contact geometry the last kernel evaluation of each row gave (u2, v2, phi2 of the reduced
+    form; point r and normals n1, n2 of both), kept with the unknowns it was evaluated at, so that
+    the contact record of a row whose final iterate was the last point evaluated is not computed
+    a second time (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are)."""
+
+    def __init__(self, n: int, k: int):
+        self.x = np.full((n, k), np.nan)
+        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
+        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+
+    def store(self, rows, x, K):
+        rows = rows.astype(int)
+        self.x[rows] = x
+        for key, arr in self.scalars.items():
+            if key in K:
+                arr[rows] = K[key]
+        for key, arr in self.vectors.items():
+            v = K[key]
+            arr[rows, 0], arr[rows, 1], arr[rows, 2] = v[0], v[1], v[2]
+
+    def at(self, x):
+        """(mask of the rows recorded at exactly ``x``, the record)."""
+        return (self.x == x).all(axis=1), self
 
 
 def solve_contact(
@@ -297,10 +526,9 @@ def solve_contact(
         )
 
     # dropped normal component: the largest of member 1's normal at the start
+    c1, s1 = np.cos(phi1), np.sin(phi1)
     if drop is None:
-        with np.errstate(invalid="ignore", over="ignore"):  # a non-finite start ends as status DIVERGED
-            _, n1s = pair.member1(start[:, 0], start[:, 1], phi1)
-            drop = np.argmax(np.nan_to_num(np.abs(n1s), nan=0.0), axis=-1).astype(float)
+        drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1)
     else:
         if drop not in (0, 1, 2):
             raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
@@ -321,27 +549,83 @@ def solve_contact(
             full[:, 1] = p[:, 2]
         return full
 
+    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1, row number
+    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1, np.arange(n)])
+    record = _Record(n, len(free))
     if formulation == "reduced":
 
-        def FJ(x, p):
-            full = expand(x, p)
-            Fv, J, _ = _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1])
-            return Fv, J[:, :, free]
-
-        def Fonly(x, p):
-            full = expand(x, p)
-            return _reduced_FJ(pair, full[:, 0], full[:, 1], p[:, 0], p[:, 1], derivs=False)[0]
+        def FJ(x, p, derivs=True):
+            out = None
+            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+                q = p[0].tolist()
+                try:
+                    out = _reduced_FJ3(
+                        pair,
+                        float(x[0, 0]),
+                        q[2] if fixed else float(x[0, 1]),
+                        q[0],
+                        q[3],
+                        q[4],
+                        q[1] == 0,
+                        q[1] == 2,
+                        derivs=derivs,
+                        v_column=not fixed,
+                    )
+                except _SCALAR_ERRORS:
+                    pass
+            if out is None:
+                v1 = p[:, 2] if fixed else x[:, 1]
+                d = p[:, 1]
+                out = _reduced_FJ3(
+                    pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
+                )
+            record.store(p[:, 5], x, out[2])
+            return out[:2]
     else:
+        cols = tuple(free)
 
-        def FJ(x, p):
-            Fv, J = _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1])
-            return Fv, J[:, :, free]
+        def FJ(x, p, derivs=True):
+            full = expand(x, p)
+            keep = {}
+            out = None
+            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+                q = p[0].tolist()
+                try:
+                    out = _conventional_FJ3(
+                        pair,
+                        tuple(full[0].tolist()),
+                        q[3],
+                        q[4],
+                        q[1],
+                        q[1] == 0,
+                        q[1] == 2,
+                        cols,
+                        derivs=derivs,
+                        keep=keep,
+                    )
+                except _SCALAR_ERRORS:
+                    pass
+            if out is None:
+                d = p[:, 1]
+                out = _conventional_FJ3(
+                    pair,
+                    tuple(full[:, i] for i in range(5)),
+                    p[:, 3],
+                    p[:, 4],
+                    d,
+                    d == 0,
+                    d == 2,
+                    cols,
+                    derivs=derivs,
+                    keep=keep,
+                )
+            record.store(p[:, 5], x, keep)
+            return out
 
-        def Fonly(x, p):
-            return _conventional_FJ(pair, expand(x, p), p[:, 0], p[:, 1], derivs=False)[0]
+    def Fonly(x, p):
+        return FJ(x, p, derivs=False)[0]
 
-    params = np.column_stack([phi1, drop] + ([start[:, 1]] if fixed else []))
-    with np.errstate(invalid="ignore", over="ignore"):  # non-finite iterates end as status DIVERGED
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
         res = newton_rows(
             Fonly,
             FJ,
@@ -353,24 +637,45 @@ def solve_contact(
             tol=tol,
             maxiter=maxiter,
             damped=damped,
+            inverse_square=True,
         )
     sol = expand(res.x, params)
-    return _finish(pair, formulation, sol, phi1, res, phi10, phi20)
+    return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
 
 
-def _finish(pair, formulation, sol, phi1, res, phi10, phi20) -> ContactPoints:
+def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> ContactPoints:
+    """Contact record of the solved rows; ``recorded`` = (mask, :class:`_Record`): the rows whose
+    geometry the solve's last kernel evaluation already gave at exactly these unknowns."""
     status = res.status.copy()
     u1, v1 = sol[:, 0], sol[:, 1]
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    n = len(sol)
+    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
+    miss = np.flatnonzero(~hit)
+    r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
+    if formulation == "reduced":
+        u2, v2, phi2 = (np.empty(n) for _ in range(3))
+    else:
+        u2, v2 = sol[:, 2], sol[:, 3]
+        ref = pair.ratio * phi1
+        phi2 = ref + _wrap(sol[:, 4] - ref)
+    if rec is not None and hit.any():
+        for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
+            arr[hit] = rec.vectors[key][hit]
         if formulation == "reduced":
-            K = _reduced_kernel(pair, u1, v1, phi1, derivs=False)
-            u2, v2, phi2, r, n1, n2 = K["u2"], K["v2"], K["phi2"], K["r"], K["n1"], K["n2"]
-        else:
-            u2, v2, phi2 = sol[:, 2], sol[:, 3], sol[:, 4]
-            ref = pair.ratio * phi1
-            phi2 = ref + _wrap(phi2 - ref)
-            r, n1 = pair.member1(u1, v1, phi1)
-            r2, n2 = pair.member2(u2, v2, phi2)
+            for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
+                arr[hit] = rec.scalars[key][hit]
+    if miss.size:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if formulation == "reduced":
+                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
+                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
+                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
+            else:
+                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
+                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
+    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
+        vec[~np.isfinite(vec).all(axis=1)] = np.nan
+    with np.errstate(invalid="ignore", over="ignore"):
         opposite = np.sum(n1 * n2, axis=-1) < 0
         if formulation == "conventional":
             opposite &= np.linalg.norm(n1 + n2, axis=-1) < 1e-6

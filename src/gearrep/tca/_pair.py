@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import ClassVar
 
 import numpy as np
 
-from ..frames import rot_x, rot_y, rot_z
+from ..frames import matrix_applier, rot_x, rot_y, rot_z
 from ..solve import Status, status_names
 from ..units import ARCSEC
 
@@ -141,6 +142,19 @@ class GearPair:
             shaft_angle=self.shaft_angle,
             phase2=self.phase2,
         )
+
+    @cached_property
+    def _soa(self) -> dict:
+        """The fixed part of the pair's frames prepared once for the structure-of-arrays kernels of
+        :mod:`gearrep.tca._formulations`: ``A2``, ``Q`` (v -> A2 v, Q v on component tuples),
+        ``minus_O2`` (v -> v - O2), ``w2`` and ``O2`` (tuples of floats)."""
+        return {
+            "A2": matrix_applier(self.A2),
+            "Q": matrix_applier(self._Q),
+            "minus_O2": matrix_applier(np.eye(3), -self.O2),
+            "w2": tuple(float(x) for x in self.w2),
+            "O2": tuple(float(x) for x in self.O2),
+        }
 
     def R1(self, phi1):
         """Rotation of member 1, Rz(phi1)."""

@@ -41,6 +41,49 @@ CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
 REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
 
 
+def _one_angle(phi1) -> float:
+    """``phi1`` as one finite angle [rad] (a scalar or a length-1 array)."""
+    a = np.asarray(phi1, dtype=float)
+    if a.size != 1 or a.ndim > 1 or not np.isfinite(a).all():
+        raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
+    return float(a.reshape(()))
+
+
+def _start_pairs(phi1, u1, v1):
+    """(phi1 (n,), u1 (n,), v1 (n,)) of (u1, v1) starts: u1, v1 1-D of one length n >= 1, finite
+    phi1 one angle or one per start."""
+    u1 = np.asarray(u1, dtype=float)
+    v1 = np.asarray(v1, dtype=float)
+    if u1.ndim != 1 or u1.size == 0 or v1.shape != u1.shape:
+        raise ValueError(
+            f"u1 and v1 must be non-empty 1-D arrays of the same length (one per start), got shapes {u1.shape} "
+            f"and {v1.shape}"
+        )
+    ph = np.asarray(phi1, dtype=float)
+    if not (ph.ndim == 0 or (ph.ndim == 1 and len(ph) in (1, len(u1)))):
+        raise ValueError(f"phi1 must be one angle or one per start (length {len(u1)}), got shape {ph.shape}")
+    if not np.all(np.isfinite(ph)):
+        raise ValueError(f"phi1 must be finite, got {phi1!r}")
+    return np.broadcast_to(ph, u1.shape), u1, v1
+
+
+def _starts5(x0, name: str = "x0") -> np.ndarray:
+    """Conventional starts as an (n, 5) array, n >= 1."""
+    a = np.asarray(x0, dtype=float)
+    if a.ndim != 2 or a.shape[0] == 0 or a.shape[1] != 5:
+        raise ValueError(
+            f"{name} must be an (n, 5) array of starts (u1, v1, u2, v2, phi2), n >= 1, got shape {a.shape}"
+        )
+    return a
+
+
+def _positive(name: str, value, *, integer: bool = False):
+    ok = (isinstance(value, (int, np.integer)) and not isinstance(value, bool)) if integer else np.isfinite(value)
+    if not ok or not value > 0:
+        kind = "an integer >= 1" if integer else "a finite number > 0"
+        raise ValueError(f"{name} must be {kind}, got {value!r}")
+
+
 def flank_boxes(pair: GearPair, margin: float = 0.0):
     """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
     moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
@@ -75,6 +118,12 @@ def solve_conventional(
     """
     if variant not in CONVENTIONAL_VARIANTS:
         raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS}, got {variant!r}")
+    phi1 = _one_angle(phi1)
+    x0 = _starts5(x0)
+    _positive("tol", tol)
+    _positive("maxiter", maxiter, integer=True)
+    if not (np.isfinite(margin) and 0.0 <= margin < 0.5):
+        raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
     if equations not in ("five", "six", "drop_nz"):
         raise ValueError(f"equations must be 'five', 'six' or 'drop_nz', got {equations!r}")
     if equations == "five" and drop not in (0, 1, 2):
@@ -88,7 +137,7 @@ def solve_conventional(
     else:
         kw.update(damped=(variant == "damped"))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return newton(F, np.asarray(x0, float), J, **kw)
+        return newton(F, np.asarray(x0, float), J, inverse_square=True, **kw)
 
 
 def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
@@ -103,9 +152,12 @@ def guard_reduced_starts(pair: GearPair, phi1, u1, v1, n_bisect: int = 40):
     """Move starts whose explicit u2 (eq 40) is below flank 2 (or undefined) down the profile of
     flank 1 (bisection in u1 towards u1_min) onto the part of flank 1 that maps onto flank 2.
     ``phi1`` scalar or one angle per start. Returns (u1, moved mask)."""
-    u1 = np.array(u1, float)
-    v1 = np.asarray(v1, float)
-    ph = np.broadcast_to(np.asarray(phi1, float), u1.shape)
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    _positive("n_bisect", n_bisect, integer=True)
+    return _guard(pair, ph, u1.copy(), v1, n_bisect)
+
+
+def _guard(pair, ph, u1, v1, n_bisect):
     lo_u2 = pair.lower2[0]
 
     def ok(u):
@@ -136,10 +188,13 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
     flat valley along the contact line that crowning makes a point. ``phi1`` scalar or one angle
     per start. Returns (u1, iterations); rows that fail keep their u1.
     """
-    u1 = np.asarray(u1, float)
-    v1 = np.asarray(v1, float)
-    ph = np.broadcast_to(np.asarray(phi1, float), u1.shape)
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    _positive("tol", tol)
+    _positive("maxiter", maxiter, integer=True)
+    return _transverse(pair, ph, u1, v1, tol, maxiter)
 
+
+def _transverse(pair, ph, u1, v1, tol, maxiter):
     def F(x, q):
         uu, vv, pp = x[:, 0], q[:, 0], q[:, 1]
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -159,8 +214,9 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
 def robust_start(pair: GearPair, phi1, u1, v1):
     """Guarded start (:func:`guard_reduced_starts`) moved onto the contact line
     (:func:`transverse_stage`). Returns (u1, iterations of the 1-D stage)."""
-    u1g, _ = guard_reduced_starts(pair, phi1, u1, v1)
-    return transverse_stage(pair, phi1, u1g, v1)
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    u1g, _ = _guard(pair, ph, u1.copy(), v1, 40)
+    return _transverse(pair, ph, u1g, v1, 1e-10, 50)
 
 
 def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduced", tol=1e-12, maxiter=50):
@@ -202,7 +258,10 @@ def solve_variant(
     """Solve conventional starts ``starts`` (n, 5) with any variant of either formulation (the
     reduced ones use only the (u1, v1) columns). Returns (x (n, 5), status, iterations); a seeded
     or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED."""
-    starts = np.asarray(starts, float)
+    if variant not in CONVENTIONAL_VARIANTS + REDUCED_VARIANTS:
+        raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS + REDUCED_VARIANTS}, got {variant!r}")
+    phi1 = _one_angle(phi1)
+    starts = _starts5(starts, "starts")
     if variant in REDUCED_VARIANTS:
         x, status, iters, _ = solve_reduced(
             pair, phi1, starts[:, 0], starts[:, 1], variant=variant, tol=tol, maxiter=maxiter
