@@ -94,8 +94,8 @@ def rule_sources() -> dict[str, tuple[Path, list[str]]]:
     for key in REGISTRY:
         dynamic = [f"gearrep.replications.{key}"]
         for job in load(key).JOBS:
-            out[f"{key}_{job}"] = (scripts / "run_job.py", dynamic)
-        out[f"{key}_checks"] = (scripts / "run_checks.py", dynamic)
+            out[f"{key}_{job}"] = (scripts / "run_study_step.py", dynamic)
+        out[f"{key}_checks"] = (scripts / "run_study_step.py", dynamic)
         out[f"{key}_figures"] = (scripts / f"{key}_figures.py", [])
         out[f"{key}_notebook"] = (ROOT / "notebooks" / f"{key}.ipynb", [])
     return out

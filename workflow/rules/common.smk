@@ -1,5 +1,6 @@
 # Shared helpers for the rules: the configuration resolved before any job, library modules as
 # inputs, published-data files, report figures.
+import json
 import os
 import sys
 from pathlib import Path
@@ -47,6 +48,13 @@ def script_lib(path, *extra):
 
 #: I/O helpers the generic run and check scripts import (declared as their input)
 REPLICATION_IO = "workflow/scripts/replication_io.py"
+#: the runner of every study step (a job or the checks), with its warm process
+STEP_RUNNER = "workflow/scripts/run_study_step.py"
+
+
+def step_request(study, step, **fields):
+    """The JSON request of one study step for STEP_RUNNER (paths relative to the working directory)."""
+    return json.dumps({"study": study, "step": step, **fields}, sort_keys=True)
 
 
 def published_files(*patterns):

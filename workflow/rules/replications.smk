@@ -18,6 +18,7 @@ for _key in REGISTRY:
                 f"{_key}_{_job}"
             input:
                 io=REPLICATION_IO,
+                runner=STEP_RUNNER,
                 code=_code,
                 design=published_files(*_study.DESIGN_DATA),
             output:
@@ -35,17 +36,27 @@ for _key in REGISTRY:
             resources:
                 runtime=10,
             params:
-                study=_key,
-                job=_job,
-                settings=SETTINGS[_key],  # a changed setting reruns the study's jobs
-            script:
-                "../scripts/run_job.py"
+                python=PYTHON,
+                # what the step runner needs (study, job, settings, files): a changed setting or
+                # file list reruns the job
+                request=step_request(
+                    _key,
+                    _job,
+                    settings=SETTINGS[_key],
+                    published=published_files(*_study.DESIGN_DATA),
+                    outputs={t: f"results/{p}" for t, p in _spec.tables.items()},
+                    timing=f"results/benchmarks/{_key}/{_job}.tsv",
+                    log=f"results/logs/{_key}/{_job}.log",
+                ),
+            shell:
+                "{params.python:q} {input.runner:q} {params.request:q}"
 
     rule:
         name:
             f"{_key}_checks"
         input:
             io=REPLICATION_IO,
+            runner=STEP_RUNNER,
             tables=_tables,
             published=_check_data,
             code=_code,
@@ -57,9 +68,18 @@ for _key in REGISTRY:
         conda:
             "../envs/gearrep.yaml"
         params:
-            study=_key,
-        script:
-            "../scripts/run_checks.py"
+            python=PYTHON,
+            request=step_request(
+                _key,
+                "checks",
+                tables=_tables,
+                published=_check_data,
+                outputs={n: f"results/{p}" for n, p in _study.CHECK_OUTPUTS.items()},
+                timing=f"results/benchmarks/{_key}/checks.tsv",
+                log=f"results/logs/{_key}/checks.log",
+            ),
+        shell:
+            "{params.python:q} {input.runner:q} {params.request:q}"
 
     if _figures:
 

@@ -1,0 +1,261 @@
+"""One step of a study, a job (its tables) or its checks, run by the generic rules of
+workflow/rules/replications.smk: ``python run_study_step.py REQUEST`` with REQUEST the JSON the rule
+builds (study, step, settings, input and output paths, log).
+
+Why not a plain script: every step of the 63 would otherwise be a fresh Python process that pays
+0.7-1 s of CPU for the interpreter, numpy, pandas and gearrep before computing anything (often for
+half a second of computation; README, Performance). So the first step of a run starts a *warm
+process* (``--serve``) that imports them once and then forks one child per step: the child runs
+the step exactly as a fresh process would (same code, same inputs; the fork shares nothing
+mutable with other steps) with this client's stdin, stdout and stderr, and its exit status becomes
+this client's. The warm process
+
+* listens on a Unix socket under ``.snakemake/`` of the working directory, readable by its owner
+  only, named after the interpreter, ``PYTHONPATH`` and this file, so another environment or
+  workflow copy never shares it;
+* refuses work and exits as soon as a source file it has imported changed (the client then starts
+  a fresh one), and exits after ``IDLE_SECONDS`` without a request;
+* is optional: with ``GEARREP_WARM_PROCESS=0``, or when it cannot be reached (e.g. a cluster node
+  that does not share the socket), the client runs the step itself, as a plain script would.
+
+The numerics are in ``gearrep.replications.<study>``; the reading and writing in replication_io.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import socket
+import struct
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+IDLE_SECONDS = 30.0
+_ACCEPTED = b"A"
+
+
+# -- the step itself ---------------------------------------------------------------------------
+def run_step(req: dict) -> None:
+    """Run one job or the checks of a study from its request (raises on failure; the traceback
+    goes to the step's log)."""
+    import replication_io
+
+    from gearrep import published
+    from gearrep.replications import load
+
+    with replication_io.logged(req["log"]):
+        study = load(req["study"])
+        data = req["published"]  # exactly the published files the rule declares as inputs
+        pub = published.load(Path(data[0]).parent, data)
+        if req["step"] == "checks":
+            tables = replication_io.read_tables(req["tables"])
+            seconds, out = replication_io.timed(study.checks, tables, pub)
+            missing = sorted(set(study.CHECK_OUTPUTS) - set(out))
+            if missing:
+                raise RuntimeError(f"{req['study']}.checks returned no {missing}")
+            for name in study.CHECK_OUTPUTS:
+                if name == "checks":
+                    replication_io.write_checks(out[name], req["outputs"][name], req["log"])
+                else:
+                    replication_io.write_table(out[name], req["outputs"][name])
+        else:
+            job = study.JOBS[req["step"]]
+            design = study.params_from_published(pub)
+            seconds, tables = replication_io.timed(job.compute, dict(req["settings"]), design)
+            label = f"{req['study']}.{req['step']}"
+            replication_io.write_tables(tables, list(req["outputs"].values()), req["log"], label, seconds)
+        replication_io.write_timing(req["timing"], seconds)
+
+
+def _run_here(req: dict) -> int:
+    try:
+        run_step(req)
+    except BaseException:  # noqa: B036  (the traceback is in the log and on stderr; exit status 1)
+        import traceback
+
+        traceback.print_exc()
+        return 1
+    return 0
+
+
+# -- the warm process ----------------------------------------------------------------------------
+def socket_path() -> Path:
+    """The socket of this environment's warm process (relative to the working directory)."""
+    key = "\0".join([sys.executable, os.environ.get("PYTHONPATH", ""), str(Path(__file__).resolve())])
+    return Path(".snakemake", f"gearrep-warm-{hashlib.sha256(key.encode()).hexdigest()[:12]}.sock")
+
+
+def _imported_sources() -> dict[str, int]:
+    """mtime_ns of every imported source file of gearrep and of the scripts beside this one."""
+    here = str(Path(__file__).resolve().parent)
+    out = {}
+    for m in list(sys.modules.values()):
+        f = getattr(m, "__file__", None)
+        if f and (m.__name__.split(".")[0] == "gearrep" or str(Path(f).resolve().parent) == here):
+            try:
+                out[f] = os.stat(f).st_mtime_ns
+            except OSError:
+                out[f] = -1
+    return out
+
+
+def _unchanged(sources: dict[str, int]) -> bool:
+    for f, t in sources.items():
+        try:
+            if os.stat(f).st_mtime_ns != t:
+                return False
+        except OSError:
+            return False
+    return True
+
+
+def serve(path: Path) -> None:
+    """The warm process: import once, then fork one child per request until idle or stale."""
+    import signal
+
+    import replication_io  # noqa: F401  (imported once for every child)
+
+    from gearrep import published  # noqa: F401
+    from gearrep.replications import REGISTRY, load
+
+    for key in REGISTRY:
+        load(key)
+    sources = _imported_sources()
+    sources[str(Path(__file__).resolve())] = os.stat(__file__).st_mtime_ns
+    tmp = path.with_name(f"{path.name}.{os.getpid()}")
+    srv = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    srv.bind(str(tmp))
+    os.chmod(tmp, 0o600)
+    srv.listen(64)
+    os.replace(tmp, path)  # atomically over a stale socket or a racing warm process's
+    signal.signal(signal.SIGCHLD, signal.SIG_IGN)  # children are reaped by the kernel
+    srv.settimeout(IDLE_SECONDS)
+    try:
+        while True:
+            try:
+                conn, _ = srv.accept()
+            except TimeoutError:
+                break
+            if not _unchanged(sources):
+                conn.close()  # not accepted: the client runs the step itself and replaces us
+                break
+            if os.fork() == 0:
+                srv.close()
+                os._exit(_child(conn))
+            conn.close()
+    finally:
+        srv.close()
+        try:
+            if _is_ours(path):
+                os.unlink(path)
+        except OSError:
+            pass
+
+
+def _is_ours(path: Path) -> bool:
+    """Whether the socket file at ``path`` is still this process's (not a newer warm process's)."""
+    try:
+        probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        probe.settimeout(0.2)
+        probe.connect(str(path))
+        probe.close()
+        return False  # someone answers: a newer process owns it
+    except OSError:
+        return True
+
+
+def _child(conn) -> int:
+    """A forked child: take the client's stdio and request, run the step, report the status."""
+    try:
+        msg, fds, _, _ = socket.recv_fds(conn, 1 << 20, 3)
+        for fd, target in zip(fds, (0, 1, 2)):
+            os.dup2(fd, target)
+            os.close(fd)
+        sys.stdout = os.fdopen(1, "w", buffering=1, closefd=False)
+        sys.stderr = os.fdopen(2, "w", buffering=1, closefd=False)
+        req = json.loads(msg)
+        os.chdir(req["cwd"])
+        conn.sendall(_ACCEPTED)
+        rc = _run_here(req)
+        sys.stdout.flush()
+        sys.stderr.flush()
+        conn.sendall(struct.pack("!i", rc))
+        return rc
+    except BaseException:  # noqa: B036
+        return 1
+
+
+# -- the client ----------------------------------------------------------------------------------
+def _connect(path: Path):
+    s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    try:
+        s.connect(str(path))
+        return s
+    except OSError:
+        s.close()
+        return None
+
+
+def _start_warm_process(path: Path):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    log = open(path.with_suffix(".log"), "ab")  # noqa: SIM115  (handed to the child process)
+    subprocess.Popen(
+        [sys.executable, __file__, "--serve", str(path)],
+        stdin=subprocess.DEVNULL,
+        stdout=log,
+        stderr=log,
+        start_new_session=True,
+        close_fds=True,
+    )
+    log.close()
+    deadline = time.monotonic() + 20.0
+    while time.monotonic() < deadline:
+        s = _connect(path)
+        if s is not None:
+            return s
+        time.sleep(0.02)
+    return None
+
+
+def _via_warm_process(req: dict) -> int | None:
+    """The step's exit status from the warm process, or None when it did not take the step."""
+    path = socket_path()
+    s = _connect(path) or _start_warm_process(path)
+    if s is None:
+        return None
+    with s:
+        try:
+            socket.send_fds(s, [json.dumps(req).encode()], [0, 1, 2])
+            if s.recv(1) != _ACCEPTED:
+                return None  # refused (stale code) before starting: run here
+        except OSError:
+            return None
+        status = b""
+        while len(status) < 4:
+            chunk = s.recv(4 - len(status))
+            if not chunk:
+                print("gearrep warm process: the step's child ended without a status", file=sys.stderr)
+                return 1
+            status += chunk
+        return struct.unpack("!i", status)[0]
+
+
+def main(argv: list[str]) -> int:
+    if argv[:1] == ["--serve"]:
+        serve(Path(argv[1]))
+        return 0
+    req = json.loads(argv[0])
+    req["cwd"] = os.getcwd()
+    if os.environ.get("GEARREP_WARM_PROCESS", "1") != "0" and hasattr(socket, "send_fds"):
+        rc = _via_warm_process(req)
+        if rc is not None:
+            return rc
+    return _run_here(req)
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    sys.exit(main(sys.argv[1:]))
