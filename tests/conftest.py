@@ -128,3 +128,16 @@ def assert_honest(c, ref=None, tol=1e-12, atol=1e-8):
         assert np.all(np.abs(c.v1[ok] - ref.v1[0]) < atol)
         assert np.all(np.abs(c.phi2[ok] - ref.phi2[0]) < atol)
     return p
+
+
+# Files that take longest (whole files per pytest-xdist worker, --dist loadfile) are handed out
+# first, so the two workers end together: the cold full workflow run, then the Snakemake plans.
+_LONG_FILES = ("tests/unit/test_full_workflow.py", "tests/unit/test_rule_graph.py")
+
+
+def pytest_collection_modifyitems(config, items):
+    def rank(item):
+        path = item.nodeid.split("::", 1)[0]
+        return _LONG_FILES.index(path) if path in _LONG_FILES else len(_LONG_FILES)
+
+    items.sort(key=rank)  # stable: the order within and among the other files is kept

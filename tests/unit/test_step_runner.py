@@ -71,9 +71,12 @@ def test_a_failing_step_keeps_its_exit_status_and_traceback(tmp_path):
         assert "no_such_job" in (tmp_path / "out" / "step.log").read_text()
 
 
-def test_a_stale_socket_is_replaced_and_a_changed_source_refused(tmp_path):
+def test_a_stale_socket_is_replaced_and_a_changed_source_refused(tmp_path, monkeypatch):
     # a dead socket file where the warm process's would be: the client starts a new one over it
-    path = tmp_path / ".snakemake" / run_study_step.socket_path().name
+    # (bound by its path relative to the working directory, as the runner does: socket paths are
+    # limited to about 100 characters)
+    monkeypatch.chdir(tmp_path)
+    path = run_study_step.socket_path()
     path.parent.mkdir()
     dead = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     dead.bind(str(path))
