@@ -98,3 +98,55 @@ def test_the_warm_process_can_be_switched_off(tmp_path):
     r = run(tmp_path, request(tmp_path / "out"), warm=False)
     assert r.returncode == 0, r.stderr
     assert not (tmp_path / ".snakemake").exists()
+
+
+def test_a_script_step_reads_the_rules_named_files_as_under_the_script_directive(tmp_path):
+    # what the figure and render scripts use of the snakemake object: named and positional
+    # access, a named list flattened in order, items(); the preloaded modules are imported once
+    script = tmp_path / "script.py"
+    script.write_text(
+        "import json, sys\n"
+        "smk = snakemake  # noqa: F821\n"
+        "out = {'tables': smk.input.tables, 'first': smk.input[0], 'flat': list(smk.input),\n"
+        "       'named': smk.output['fig'], 'items': sorted(smk.output.items()), 'study': smk.params.study,\n"
+        "       'preloaded': 'json' in sys.modules}\n"
+        "open(smk.output.fig, 'w').write(json.dumps(out))\n"
+        "open(smk.log[0], 'w').write('ok')\n"
+    )
+    for warm in (False, True, True):
+        out = tmp_path / f"out_{warm}.json"
+        req = {
+            "script": str(script),
+            "input": {"tables": ["a.csv", "b.csv"], "published": "p.csv"},
+            "output": {"fig": str(out)},
+            "log": {"log": str(tmp_path / "script.log")},
+            "params": {"study": "thesis"},
+            "timing": str(tmp_path / "timing.tsv"),
+            "preload": ["json"],
+        }
+        r = run(tmp_path, req, warm)
+        assert r.returncode == 0, r.stderr
+        got = json.loads(out.read_text())
+        assert got == {
+            "tables": ["a.csv", "b.csv"],
+            "first": "a.csv",
+            "flat": ["a.csv", "b.csv", "p.csv"],
+            "named": str(out),
+            "items": [["fig", str(out)]],
+            "study": "thesis",
+            "preloaded": True,
+        }
+        assert (tmp_path / "timing.tsv").read_text().splitlines()[0].split("\t")[-1] == "compute_s"
+
+
+def test_a_failing_script_step_keeps_its_status_and_traceback(tmp_path):
+    script = tmp_path / "bad.py"
+    script.write_text("raise ValueError('figure data missing')\n")
+    req = {"script": str(script), "log": {"log": str(tmp_path / "bad.log")}, "timing": str(tmp_path / "t.tsv")}
+    for warm in (False, True):
+        r = run(tmp_path, req, warm)
+        assert r.returncode == 1
+        assert "figure data missing" in r.stderr and "figure data missing" in (tmp_path / "bad.log").read_text()
+    # a module that cannot be preloaded: the warm process declines, the client runs the script itself
+    r = run(tmp_path, dict(req, preload=["no_such_module_xyz"]), True)
+    assert r.returncode == 1 and "figure data missing" in r.stderr

@@ -57,6 +57,29 @@ def step_request(study, step, **fields):
     return json.dumps({"study": study, "step": step, **fields}, sort_keys=True)
 
 
+#: modules the warm process imports once for every figure script (matplotlib, the plot style)
+FIGURE_MODULES = ["matplotlib", "matplotlib.pyplot", "gearrep.plotting"]
+#: and for every notebook rendering (nbconvert's HTML exporter)
+RENDER_MODULES = ["nbformat", "nbconvert"]
+
+
+def script_request(script, *, input, output, log, timing, params=None, preload=()):
+    """The JSON request of a workflow script run by STEP_RUNNER: the script reads the rule's named
+    input, output, log and params as ``snakemake.<field>.<name>`` (see StepFiles there)."""
+    return json.dumps(
+        {
+            "script": script,
+            "input": input,
+            "output": output,
+            "log": {"log": log},
+            "params": params or {},
+            "timing": timing,
+            "preload": list(preload),
+        },
+        sort_keys=True,
+    )
+
+
 def published_files(*patterns):
     """Published-data files matching any of ``patterns`` (globs in the published-data directory)."""
     d = Path(workflow.basedir, PUBLISHED_DIR)

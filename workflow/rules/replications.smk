@@ -87,23 +87,32 @@ for _key in REGISTRY:
             name:
                 f"{_key}_figures"
             input:
+                runner=STEP_RUNNER,
+                script=f"workflow/scripts/{_key}_figures.py",
                 tables=_tables,
                 published=_check_data,
                 code=script_lib(f"workflow/scripts/{_key}_figures.py"),
             output:
                 **{k: figure(p, _key) for k, p in _figures.items()},
+                job_timing=f"results/benchmarks/{_key}/figures.tsv",
             log:
                 f"results/logs/{_key}/figures.log",
-            benchmark:
-                f"results/benchmarks/{_key}/figures.tsv"
             conda:
                 "../envs/gearrep.yaml"
             params:
-                # script and notebook paths are formatted when the job runs: loop variables would
-                # then hold the last study, params hold this rule's own
-                study=_key,
-            script:
-                "../scripts/{params.study}_figures.py"
+                python=PYTHON,
+                # the script reads snakemake.input.tables / .published and snakemake.output.<key>,
+                # as under the script: directive; run by the step runner's warm process
+                request=script_request(
+                    f"workflow/scripts/{_key}_figures.py",
+                    input={"tables": _tables, "published": _check_data},
+                    output=_figures,
+                    log=f"results/logs/{_key}/figures.log",
+                    timing=f"results/benchmarks/{_key}/figures.tsv",
+                    preload=FIGURE_MODULES,
+                ),
+            shell:
+                "{params.python:q} {input.runner:q} {params.request:q}"
 
     rule:
         name:

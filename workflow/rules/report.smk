@@ -6,22 +6,32 @@
 rule render_notebook:
     input:
         "results/notebooks/{name}.executed",
+        runner=STEP_RUNNER,
+        script="workflow/scripts/render_notebook.py",
         template="workflow/report/notebook/collapsed.html.j2",
         code=script_lib("workflow/scripts/render_notebook.py"),
     output:
         "results/notebooks/{name}.html",
+        job_timing="results/benchmarks/render_{name}.tsv",
     log:
         "results/logs/render_{name}.log",
-    benchmark:
-        "results/benchmarks/render_{name}.tsv"
     conda:
         "../envs/gearrep.yaml"
     params:
-        notebook="results/notebooks/{name}.ipynb",
-    script:
-        # nbconvert of the interpreter running Snakemake; the Snakemake preamble removed, code
-        # folded, machine paths replaced
-        "../scripts/render_notebook.py"
+        python=PYTHON,
+        # nbconvert of the interpreter running Snakemake, imported once by the step runner's warm
+        # process; the Snakemake preamble removed, code folded, machine paths replaced
+        request=lambda wc: script_request(
+            "workflow/scripts/render_notebook.py",
+            input={"template": "workflow/report/notebook/collapsed.html.j2"},
+            output={"html": f"results/notebooks/{wc.name}.html"},
+            log=f"results/logs/render_{wc.name}.log",
+            timing=f"results/benchmarks/render_{wc.name}.tsv",
+            params={"notebook": f"results/notebooks/{wc.name}.ipynb"},
+            preload=RENDER_MODULES,
+        ),
+    shell:
+        "{params.python:q} {input.runner:q} {params.request:q}"
 
 
 rule report:

@@ -1,8 +1,11 @@
-"""One step of a study, a job (its tables) or its checks, run by the generic rules of
-workflow/rules/replications.smk: ``python run_study_step.py REQUEST`` with REQUEST the JSON the rule
-builds (study, step, settings, input and output paths, log).
+"""One step of the workflow, run by its rule as ``python run_study_step.py REQUEST`` with REQUEST the
+JSON the rule builds: a study's job (its tables) or its checks (workflow/rules/replications.smk:
+study, step, settings, input and output paths, log), or a workflow script (a study's figures, a
+notebook's rendering: ``script`` with the rule's named ``input``, ``output``, ``log`` and
+``params``, which the script reads as ``snakemake.input.<name>`` and so on, as under Snakemake's
+``script:`` directive, and ``preload``, modules the warm process imports once for every such step).
 
-Why not a plain script: every step of the 63 would otherwise be a fresh Python process that pays
+Why not a plain script: every step of the 70 would otherwise be a fresh Python process that pays
 0.7-1 s of CPU for the interpreter, numpy, pandas and gearrep before computing anything (often for
 half a second of computation; README, Performance). So the first step of a run starts a *warm
 process* (``--serve``) that imports them once and then forks one child per step: the child runs
@@ -24,6 +27,7 @@ The numerics are in ``gearrep.replications.<study>``; the reading and writing in
 from __future__ import annotations
 
 import hashlib
+import importlib
 import json
 import os
 import socket
@@ -38,10 +42,51 @@ _ACCEPTED = b"A"
 
 
 # -- the step itself ---------------------------------------------------------------------------
-def run_step(req: dict) -> None:
-    """Run one job or the checks of a study from its request (raises on failure; the traceback
-    goes to the step's log)."""
+class StepFiles(list):
+    """A rule's named files (or params) for a script: the values in order, a named list flattened,
+    each name also an attribute and a key (``items()``) — what the scripts use of Snakemake's
+    ``Namedlist``."""
+
+    def __init__(self, named: dict):
+        super().__init__(x for v in named.values() for x in (v if isinstance(v, list) else [v]))
+        self._named = dict(named)
+        for name, value in named.items():
+            setattr(self, name, value)
+
+    def __getitem__(self, i):
+        return self._named[i] if isinstance(i, str) else super().__getitem__(i)
+
+    def items(self):
+        return self._named.items()
+
+    def keys(self):
+        return self._named.keys()
+
+
+def run_script(req: dict) -> None:
+    """Run a workflow script with a ``snakemake`` object of the rule's named input, output, log and
+    params (raises on failure; the traceback goes to the first log)."""
+    import runpy
+    from types import SimpleNamespace
+
     import replication_io
+
+    io = {k: StepFiles(req.get(k, {})) for k in ("input", "output", "log", "params")}
+    with replication_io.logged(io["log"][0]):
+        seconds, _ = replication_io.timed(
+            runpy.run_path, req["script"], {"snakemake": SimpleNamespace(**io)}, "__main__"
+        )
+        replication_io.write_timing(req["timing"], seconds)
+
+
+def run_step(req: dict) -> None:
+    """Run one job or the checks of a study, or a workflow script, from its request (raises on
+    failure; the traceback goes to the step's log)."""
+    import replication_io
+
+    if "script" in req:
+        run_script(req)
+        return
 
     from gearrep import published
     from gearrep.replications import load
@@ -123,8 +168,8 @@ def serve(path: Path) -> None:
 
     for key in REGISTRY:
         load(key)
-    sources = _imported_sources()
-    sources[str(Path(__file__).resolve())] = os.stat(__file__).st_mtime_ns
+    sources_self = os.stat(__file__).st_mtime_ns
+    sources = _imported_sources() | {str(Path(__file__).resolve()): sources_self}
     tmp = path.with_name(f"{path.name}.{os.getpid()}")
     srv = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     srv.bind(str(tmp))
@@ -142,9 +187,21 @@ def serve(path: Path) -> None:
             if not _unchanged(sources):
                 conn.close()  # not accepted: the client runs the step itself and replaces us
                 break
+            try:
+                conn.settimeout(5.0)
+                msg, fds, _, _ = socket.recv_fds(conn, 1 << 20, 3)
+                conn.settimeout(None)
+                req = json.loads(msg)
+                if _preload(req.get("preload", ())):
+                    sources = _imported_sources() | {str(Path(__file__).resolve()): sources_self}
+            except (OSError, ValueError, ImportError):
+                conn.close()  # not accepted: the client runs the step itself
+                continue
             if os.fork() == 0:
                 srv.close()
-                os._exit(_child(conn))
+                os._exit(_child(conn, req, fds))
+            for fd in fds:
+                os.close(fd)
             conn.close()
     finally:
         srv.close()
@@ -153,6 +210,15 @@ def serve(path: Path) -> None:
                 os.unlink(path)
         except OSError:
             pass
+
+
+def _preload(modules) -> bool:
+    """Import ``modules`` into the warm process (once: later children inherit them); whether any
+    was new."""
+    new = [m for m in modules if m not in sys.modules]
+    for m in new:
+        importlib.import_module(m)
+    return bool(new)
 
 
 def _is_ours(path: Path) -> bool:
@@ -167,16 +233,14 @@ def _is_ours(path: Path) -> bool:
         return True
 
 
-def _child(conn) -> int:
-    """A forked child: take the client's stdio and request, run the step, report the status."""
+def _child(conn, req: dict, fds) -> int:
+    """A forked child: take the client's stdio, run the step, report the status."""
     try:
-        msg, fds, _, _ = socket.recv_fds(conn, 1 << 20, 3)
         for fd, target in zip(fds, (0, 1, 2)):
             os.dup2(fd, target)
             os.close(fd)
         sys.stdout = os.fdopen(1, "w", buffering=1, closefd=False)
         sys.stderr = os.fdopen(2, "w", buffering=1, closefd=False)
-        req = json.loads(msg)
         os.chdir(req["cwd"])
         conn.sendall(_ACCEPTED)
         rc = _run_here(req)
