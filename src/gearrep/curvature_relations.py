@@ -160,7 +160,7 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     k1, k2, sigma = sym2_eig(b11, b12, b22)
     R = loc.M[:, :3, :3]
 
-    def rot(v):
+    def carried(v):  # a vector of the generating frame in the frame of the surface
         return np.einsum("nab,nb->na", R, v)
 
     e1 = np.cos(sigma)[:, None] * e_f + np.sin(sigma)[:, None] * e_h
@@ -168,7 +168,7 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     A = np.zeros((q.shape[0], 2 + nk, 2 + nk))
     A[:, :2, :2], A[:, :2, 2:], A[:, 2:, :2], A[:, 2:, 2:] = B, C, np.swapaxes(C, 1, 2), E
     return GeneratedCurvatures(
-        k1, k2, rot(e1), rot(cross(loc.n, e1)), rot(loc.n), k_f, k_h, rot(e_f), rot(e_h), sigma, A
+        k1, k2, carried(e1), carried(cross(loc.n, e1)), carried(loc.n), k_f, k_h, carried(e_f), carried(e_h), sigma, A
     )
 
 

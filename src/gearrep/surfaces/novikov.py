@@ -464,13 +464,13 @@ class WormGeneratedPinion(Surface):
         psi, l = m[..., 0], m[..., 1]
         n = psi.shape
 
-        def rz(ang):  # 4x4 rotation about z and its first and second derivatives
+        def about_z(ang):  # frames' rotation about z as 4x4, with its first and second derivatives
             dR, d2R = np.zeros(n + (4, 4)), np.zeros(n + (4, 4))
             dR[..., :3, :3], d2R[..., :3, :3] = frames.drot_z(ang), frames.drot_z(ang, order=2)
             return frames.homogeneous(frames.rot_z(ang)), dR, d2R
 
-        A = rz(psi + self.kappa * l)
-        D = rz(self.ratio_w * psi)
+        A = about_z(psi + self.kappa * l)
+        D = about_z(self.ratio_w * psi)
         B = np.broadcast_to(np.eye(4), n + (4, 4)).copy()
         B[..., 0, 3], B[..., 1, 3], B[..., 2, 3] = self.E0 - self.a_pl * l**2, self.tq * l, l
         dB = np.zeros(n + (4, 4))

@@ -1,0 +1,59 @@
+"""The shape issue 15 asks of the code, kept by tests: no source file of the package above 900
+lines, rotations defined only in ``gearrep.frames``, and no import fallbacks (``except
+ImportError``) that would let a missing module pass silently. (Function sizes and the layering of
+the core have their own tests.)"""
+
+import ast
+import re
+
+import pytest
+from conftest import ROOT
+
+SRC = ROOT / "src" / "gearrep"
+SOURCES = sorted(SRC.rglob("*.py"))
+MAX_LINES = 900
+#: names of functions that would build a rotation matrix (rot_z, _rx, drot_y, rotation, ...)
+ROTATION_NAME = re.compile(r"^_?(d?rot|rx|ry|rz|drx|dry|drz|rotation)(_?[xyz])?$")
+#: the one function of that name outside frames, and why it is not a second definition
+NOT_A_ROTATION = {
+    ("envelope.py", "rotation"): "a factor of a ChainMotion, evaluated by frames.rotation_about_axis_with_derivatives",
+}
+
+
+def _rel(path):
+    return str(path.relative_to(SRC))
+
+
+@pytest.mark.parametrize("path", SOURCES, ids=_rel)
+def test_no_source_file_above_900_lines(path):
+    n = len(path.read_text().splitlines())
+    assert n <= MAX_LINES, f"{_rel(path)} has {n} lines (at most {MAX_LINES}: split it by concept)"
+
+
+def test_rotations_are_defined_only_in_frames():
+    found = []
+    for path in SOURCES:
+        if path.name == "frames.py":
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef) and ROTATION_NAME.match(node.name):
+                if (path.name, node.name) not in NOT_A_ROTATION:
+                    found.append(f"{_rel(path)}:{node.lineno} {node.name}")
+    assert not found, f"rotation functions outside gearrep.frames (use frames instead): {found}"
+
+
+def test_no_import_fallbacks():
+    found = []
+    for path in SOURCES:
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ExceptHandler) and node.type is not None:
+                names = {n.id for n in ast.walk(node.type) if isinstance(n, ast.Name)}
+                if names & {"ImportError", "ModuleNotFoundError"}:
+                    found.append(f"{_rel(path)}:{node.lineno}")
+    assert not found, f"import fallbacks (a missing module must fail loudly, or be an optional extra): {found}"
+
+
+def test_the_shape_checks_see_what_they_look_for(tmp_path):
+    assert ROTATION_NAME.match("rot_z") and ROTATION_NAME.match("_rz") and ROTATION_NAME.match("drot_x")
+    assert not ROTATION_NAME.match("rotate_points") and not ROTATION_NAME.match("root")
+    assert len(SOURCES) > 50 and any(p.name == "frames.py" for p in SOURCES)
