@@ -48,10 +48,10 @@ __all__ = [
 PARAMS = ("hob_l_mm", "swivel_psi_rad")
 
 
-def _ratio_window(pair) -> float:
+def _half_window(n_teeth: int) -> float:
     """Half-width [rad] of the pinion-angle window searched for the tip crossings: two angular
-    pitches (a contact ratio below 2 on each side of phi1 = 0), at most 60 deg."""
-    return min(2.0 * 2.0 * np.pi / pair.pinion.n_teeth, np.radians(60.0))
+    pitches of the pinion (a contact ratio below 2 on each side of phi1 = 0), at most 60 deg."""
+    return min(2.0 * 2.0 * np.pi / n_teeth, np.radians(60.0))
 
 
 def start(values, gears, assembly, tol, steps):
@@ -118,7 +118,7 @@ def check_contact(d) -> None:
     name, x = next(iter(mis.items()))
     limit = _limit(d, name, x, pair, sol if ok else None)
     raise SettingError(
-        f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.2g} for this pair (larger "
+        f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.3g} for this pair (larger "
         f"values move the contact at phi1 = 0 off the flanks: {state})"
     )
 
@@ -126,7 +126,8 @@ def check_contact(d) -> None:
 def _limit(d, name, x, pair, sol) -> float:
     """Magnitude of misalignment ``name`` at which the contact at phi1 = 0 leaves the flanks: linear
     in the margin between the aligned pair and ``sol`` (the contact moves about linearly with the
-    misalignment), or by bisection (4 halvings) where the contact under ``x`` was not found."""
+    misalignment), or by bisection (4 halvings) where the contact under ``x`` was not found or the
+    linear estimate is not inside (0, |x|)."""
     from .design import _hob_assembly, set_dotted
 
     v, s = d.values, d.analysis
@@ -140,8 +141,9 @@ def _limit(d, name, x, pair, sol) -> float:
         return 0.0
     m0 = margin(v, p0, s0)
     if sol is not None:
-        m1 = margin(v, pair, sol)
-        return abs(x) * m0 / (m0 - m1)
+        est = m0 / (m0 - margin(v, pair, sol))
+        if 0.0 < est < 1.0:
+            return abs(x) * est
     lo, hi = 0.0, 1.0
     for _ in range(4):
         mid = 0.5 * (lo + hi)
@@ -182,7 +184,7 @@ def _engagement(pair, s0, tol):
     crossing nearest phi1 = 0 on the traced window)."""
     from ..replications.tseng_tca.studies import tip_crossing
 
-    w = _ratio_window(pair)
+    w = _half_window(pair.pinion.n_teeth)
     n = window_points(pair.pinion.n_teeth)
     grid = np.linspace(-w, w, n)
     path = _path(pair, s0, grid, tol)
@@ -208,7 +210,11 @@ def _engagement(pair, s0, tol):
                 "of phi1 = 0 on converged points: no engagement interval"
             )
         k = found[2]
-        ends.append(np.radians(tip_crossing(pair, path.take([k, k + 1]), member, ra, np.degrees(w), tol)["phi1_deg"]))
+        try:
+            cross = tip_crossing(pair, path.take([k, k + 1]), member, ra, np.degrees(w), tol)
+        except RuntimeError as e:  # a secant step without a converged contact
+            raise ValueError(f"the {member} tip crossing was not found: {e}") from None
+        ends.append(np.radians(cross["phi1_deg"]))
     return tuple(sorted(ends))
 
 
@@ -218,7 +224,7 @@ N_STARTS = 9
 
 def window_points(n_teeth: int) -> int:
     """Pinion angles of the window searched for the tip crossings (steps of at most 2 deg)."""
-    return 2 * math.ceil(np.degrees(min(4.0 * np.pi / n_teeth, np.radians(60.0))) / 2.0) + 1
+    return 2 * math.ceil(np.degrees(_half_window(n_teeth)) / 2.0) + 1
 
 
 def path_solves(n_teeth: int, n_phi: int) -> int:
