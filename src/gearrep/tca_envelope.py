@@ -45,6 +45,7 @@ __all__ = [
     "require",
     "trace_path",
     "physical_contact",
+    "pinion_outward",
     "tangency_near",
     "turn_gap",
 ]
@@ -328,7 +329,7 @@ def trace_path(
     return sol
 
 
-def _pinion_outward(pair, sol: ContactPath) -> np.ndarray:
+def pinion_outward(pair, sol: ContactPath) -> np.ndarray:
     """Unit normal of the pinion flank in S_f pointing out of its tooth (n, 3). The hob normal
     keeps its side of the flank everywhere, so its outward sign is taken once, at the pitch
     point of the mid-face section (:meth:`GeneratedGear.outward` there; that test by the polar
@@ -438,7 +439,7 @@ def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, sam
 
 def _turn_gap_factor(pair, sol: ContactPath) -> np.ndarray:
     """s = (e_z x (r - O_g)) . n_p,out: normal gap per unit turn of the gear about its axis."""
-    return np.sum(np.cross([0.0, 0.0, 1.0], sol.r_f - pair.gear_origin) * _pinion_outward(pair, sol), -1)
+    return np.sum(np.cross([0.0, 0.0, 1.0], sol.r_f - pair.gear_origin) * pinion_outward(pair, sol), -1)
 
 
 def turn_gap(pair, at: ContactPath, phi2_rad) -> np.ndarray:

@@ -177,6 +177,7 @@ def test_a_few_bad_designs_through_tca_as_a_subprocess(tmp_path):
         {**BASES["helical.yaml"], "pinion": {"teeth": 5}},
         {**BASES["novikov.yaml"], "face_width_mm": "wide"},
         {**BASES["catt.yaml"], "misalignment": {"d_E_mm": 80.0}},
+        {**BASES["hobbed_curvilinear.yaml"], "pinion": {"teeth": 40, "cutter_radius_mm": 15.0}},
     ]
     for i, doc in enumerate(bad):
         p = tmp_path / f"bad{i}.yaml"

@@ -57,7 +57,7 @@ def test_at_least_three_example_designs_of_the_required_kinds_pass_check():
 def test_schema_file_is_generated_from_the_declarations():
     assert json.loads((EXAMPLES / "design.schema.json").read_text()) == json_schema(), "run: gearrep schema --write"
     families = [alt["properties"]["family"]["enum"][0] for alt in json_schema()["oneOf"]]
-    assert families == ["involute", "novikov", "catt"]
+    assert families == ["involute", "novikov", "catt", "hobbed_curvilinear"]
     inv = json_schema()["oneOf"][0]
     assert {"family", "module_mm", "face_width_mm", "pinion", "gear"} <= set(inv["required"])
     assert inv["properties"]["pinion"]["required"] == ["teeth"]
@@ -169,6 +169,13 @@ def test_curvature_of_the_uncrowned_gear_is_the_involute_curvature(tmp_path):
         ("catt.yaml", "pinion.teeth", 9, "design.pinion.teeth"),
         ("novikov.yaml", "gear.rack_radius_modules", 5.0, "design.gear.rack_radius_modules"),
         ("novikov.yaml", "helix_angle_deg", None, "design.helix_angle_deg"),
+        ("hobbed_curvilinear.yaml", "module_mm", -1, "design.module_mm"),
+        ("hobbed_curvilinear.yaml", "pinion.cutter_radius_mm", 20.0, "design.pinion.cutter_radius_mm"),
+        ("hobbed_curvilinear.yaml", "gear.cutter_radius_mm", 100.0, "design.gear.cutter_radius_mm"),
+        ("hobbed_curvilinear.yaml", "pinion.teeth", 12, "design.pinion.teeth"),
+        ("hobbed_curvilinear.yaml", "hob_pitch_radius_mm", 6.0, "design.hob_pitch_radius_mm"),
+        ("hobbed_curvilinear.yaml", "misalignment.dC_mm", 3.0, "design.misalignment.dC_mm"),
+        ("hobbed_curvilinear.yaml", "analysis.ke_table.step_deg", 3.0, "design.analysis.ke_table.step_deg"),
     ],
 )
 def test_bad_designs_are_refused_naming_key_value_and_range(tmp_path, name, key, value, named):
@@ -422,3 +429,138 @@ def test_a_modified_copy_of_an_example_gives_its_own_results(spur_run, tmp_path)
         json.loads((d / "summary.csv.prov.json").read_text())["design_sha256"] for d in (spur_run, tmp_path / "mine")
     ]
     assert prov[0] != prov[1]
+
+
+# ----------------------------------------------------------------------------------------------
+# the hobbed_curvilinear family (seed 000): an adapter onto the library's TCA of envelopes
+# ----------------------------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def hob_run(tmp_path_factory):
+    """`gearrep tca` on the example with coarse grids (11 path points, 5 x 5 flank clouds)."""
+    base = tmp_path_factory.mktemp("hob")
+    doc = example("hobbed_curvilinear.yaml")
+    doc["analysis"] = {**doc.get("analysis", {}), "n_points": 11, "flank_grid": [5, 5]}
+    rc, _, err = run("tca", write(base, "hob.yaml", doc), "-o", base / "o", "--no-progress")
+    assert rc == 0, err
+    return base / "o"
+
+
+@pytest.fixture(scope="module")
+def seed000():
+    from gearrep import published
+    from gearrep.replications import tseng_tca as T
+
+    pub = published.load(ROOT / "data" / "published")
+    return pub, T.params_from_published(pub)
+
+
+def test_hobbed_example_is_the_published_seed000_example_5_4(seed000):
+    """The example's inputs are those of data/published (Table 5.1, Example 5.4)."""
+    _, design = seed000
+    d = example("hobbed_curvilinear.yaml")
+    g, case = design.gears, design.cases["5.4"]
+    assert (d["pinion"]["teeth"], d["gear"]["teeth"], d["face_width_mm"]) == (g.n_pinion, g.n_gear, g.face_width_mm)
+    assert d["module_mm"] == g.hob.module_mm and d["hob_pitch_radius_mm"] == g.hob.pitch_radius_mm
+    assert np.radians(d["pressure_angle_deg"]) == pytest.approx(g.hob.pressure_angle_rad, rel=1e-15)
+    assert (d["pinion"]["cutter_radius_mm"], d["gear"]["cutter_radius_mm"]) == (case["R_cp_mm"], case["R_cg_mm"])
+    assert d["misalignment"] == {"dgamma_h_deg": case["dgamma_h_arcmin"] / 60.0}
+    assert case["dgamma_v_arcmin"] == case["dC_mm"] == case["dZ_mm"] == 0.0
+
+
+def test_hobbed_tca_ke_equals_the_replication_route_and_table_5_4(hob_run, seed000):
+    """The command's KE table is the tseng_tca route (continuation, path, physical contact, eq 5.12)
+    on the same pair, and it reproduces the printed Table 5.4 to its 3 decimals."""
+    from gearrep.replications import tseng_tca as T
+
+    pub, design = seed000
+    settings = {"phi1_start_deg": -10.0, "phi1_end_deg": 10.0, "phi1_step_deg": 2.0}
+    pair, sol = T.compute_case(design.gears, design.cases["5.4"], T.phi1_grid(settings), tol=1e-11, steps=4)
+    ref = T.ke_table(sol, pair.ratio)
+    ours = pd.read_csv(hob_run / "ke_table.csv")
+    assert (ours["status"] == "converged").all()
+    np.testing.assert_array_equal(ours["phi1_deg"].round(9), ref["phi1_deg"].round(9))
+    # the design file gives 0.05 deg, the replication 3 arcmin: the same angle to rounding (1e-19 rad)
+    np.testing.assert_allclose(ours["KE_arcsec"], ref["KE_arcsec"], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(ours[["Z_p_mm", "l_p_mm", "Z_g_mm"]], ref[["Z_p_mm", "l_p_mm", "Z_g_mm"]], atol=1e-9)
+    printed = pub.values[(pub.values["source"] == "Table 5.4") & (pub.values["quantity"] == "KE")]
+    assert len(printed) == 11
+    for _, row in printed.iterrows():
+        phi1 = float(row["row"].split("=")[1])
+        got = float(ours.loc[np.isclose(ours["phi1_deg"], phi1), "KE_arcsec"].iloc[0])
+        assert abs(got - float(row["value"])) <= 0.0005 + 1e-12, (phi1, got, row["value"])  # printed to 3 decimals
+
+
+def test_hobbed_tca_writes_the_tables_of_every_family(hob_run):
+    names = {p.relative_to(hob_run).as_posix() for p in hob_run.rglob("*") if p.is_file()}
+    for f in ("contact_path.csv", "te_cycle.csv", "summary.csv", "ke_table.csv", "flank_pinion.stl", "summary.html"):
+        assert f in names and f + ".prov.json" in names
+    assert {"figures/transmission_error.png", "figures/contact_path.png"} <= names
+    s = pd.read_csv(hob_run / "summary.csv").iloc[0]
+    assert s["family"] == "hobbed_curvilinear" and s["points_converged"] == s["points_total"] == 11
+    assert 1.6 < s["contact_ratio"] < 1.7  # tip to tip, seed 000 eq 5.13 (the 110/110 pair: 1.641)
+    assert np.isfinite(s["te_peak_to_peak_arcsec"]) and s["max_residual_mm"] < 1e-9
+    path = pd.read_csv(hob_run / "contact_path.csv")
+    assert path["ellipse_semi_major_mm"].gt(path["ellipse_semi_minor_mm"]).all()
+    assert path["pinion_Z_mm"].abs().max() <= 20.0 and path["radius_on_pinion_mm"].max() == pytest.approx(
+        33.0, abs=1e-8
+    )
+    n = path[["normal_x", "normal_y", "normal_z"]].to_numpy()
+    assert np.abs(np.linalg.norm(n, axis=1) - 1).max() < 1e-12
+    te = pd.read_csv(hob_run / "te_cycle.csv")
+    assert te["te_arcsec"].notna().all() and set(te["tooth_pair"]) <= {-1, 0, 1}
+    cloud = pd.read_csv(hob_run / "flank_gear.csv")
+    assert len(cloud) == 25 and cloud["z_mm"].abs().max() == pytest.approx(20.0, abs=1e-8)
+
+
+def test_hobbed_misalignment_moving_the_contact_off_the_face_is_refused_with_its_limit(tmp_path):
+    doc = example("hobbed_curvilinear.yaml")
+    doc["misalignment"] = {"dZ_mm": 2.0}
+    rc, _, err = run("tca", write(tmp_path, "bad.yaml", doc), "-o", tmp_path / "out")
+    line = err.strip()
+    assert rc == 2 and "\n" not in line and not (tmp_path / "out").exists()
+    assert line.startswith("gearrep tca: refused: design.misalignment.dZ_mm: got 2.0; allowed: |dZ_mm| below about")
+    limit = float(line.split("below about ")[1].split()[0])
+    assert 0.1 < limit < 2.0
+    doc["misalignment"] = {"dZ_mm": 0.8 * limit}  # inside the estimated limit: accepted
+    rc, _, err = run("check", write(tmp_path, "ok.yaml", doc))
+    assert rc == 0, err
+
+
+def test_hobbed_curvature_signs_convex_pinion_concave_gear_trace(tmp_path):
+    doc = example("hobbed_curvilinear.yaml")
+    doc["analysis"] = {**doc.get("analysis", {}), "curvature_grid": [3, 3]}
+    rc, _, err = run("curvature", write(tmp_path, "hob.yaml", doc), "-o", tmp_path / "k")
+    assert rc == 0, err
+    t = pd.read_csv(tmp_path / "k" / "curvatures.csv")
+    assert len(t) == 18 and t[["k1_per_mm", "k2_per_mm"]].notna().all().all()
+    pin, gear = t[t["member"] == "pinion"], t[t["member"] == "gear"]
+    assert (pin["k1_per_mm"] < 0).all()  # convex tooth: both curvatures away from the outward normal
+    assert (gear["k1_per_mm"] > 0).all() and (gear["k2_per_mm"] < 0).all()  # concave along the arc trace
+    # lengthwise curvature of the pinion at mid-face (the smaller one): near -1/R_cp times cos(alpha_n)-ish
+    mid = pin[pin["z_mm"].abs() < 1e-8]
+    assert np.all(np.abs(mid["k1_per_mm"]) < 1 / 110.0)
+
+
+def test_hobbed_sweep_point_has_the_metrics_of_gearrep_tca(hob_run, tmp_path):
+    """A sweep over a hobbed design runs the same adapter: its contact ratio (tip crossings) is the
+    command's, and a refused grid point names its key."""
+    from gearrep.cli import load_yaml
+    from gearrep.cli.sweep import aggregate, resolve_sweep, run_shard
+
+    raw = {
+        "design": str(EXAMPLES / "hobbed_curvilinear.yaml"),
+        "grid": {"gear.cutter_radius_mm": [113.0, 100.0]},
+        "phi1_points": 11,
+    }
+    spec = resolve_sweep(raw, load_yaml(raw["design"]))
+    sp = tmp_path / "spec.json"
+    sp.write_text(json.dumps(spec))
+    shards = [tmp_path / f"s{i}.csv" for i in range(spec["n_shards"])]
+    for i, p in enumerate(shards):
+        run_shard(sp, i, p)
+    aggregate(sp, shards, tmp_path / "sweep.csv")
+    t = pd.read_csv(tmp_path / "sweep.csv")
+    s = pd.read_csv(hob_run / "summary.csv").iloc[0]
+    assert list(t["status"]) == ["ok", "refused"] and "design.gear.cutter_radius_mm" in t["message"].iloc[1]
+    assert t["contact_ratio"].iloc[0] == s["contact_ratio"] and t["converged"].iloc[0] == 11
+    assert t["te_peak_to_peak_arcsec"].iloc[0] == pytest.approx(s["te_peak_to_peak_arcsec"], rel=1e-12)

@@ -25,6 +25,10 @@ __all__ = [
     "curvature_table",
     "flank_grid",
     "te_metrics",
+    "te_envelope",
+    "cycle_summary",
+    "curvature_frame",
+    "cloud",
     "sweep_point",
     "solves_per_point",
     "PARAM_NAMES",
@@ -35,6 +39,7 @@ PARAM_NAMES = {
     "involute": ("radius_mm", "axial_mm"),
     "novikov": ("rack_u_mm", "rack_theta_mm"),
     "catt": ("theta_rad", "phi_rad"),
+    "hobbed_curvilinear": ("hob_l_mm", "swivel_psi_rad"),
 }
 
 
@@ -139,11 +144,37 @@ def _window(d):
     return lim, lim
 
 
+def te_envelope(phi, te, drive, pitch, begin, n):
+    """(``n`` angles over one meshing cycle from ``begin``, TE transmitted there, leading tooth pair
+    -3..3): the envelope of the neighbouring pairs' curves (:func:`gearrep.meshing.pair_te_curves`,
+    :func:`gearrep.meshing.upper_envelope`) of one pair's TE ``te`` at ``phi`` [rad], in the drive
+    sense ``drive`` (+1: the most advanced member 2, -1: the least); NaN with fewer than 2 samples."""
+    from .. import meshing
+
+    at = np.linspace(begin, begin + pitch, int(n))
+    if np.sum(np.isfinite(te)) < 2:
+        return at, np.full(len(at), np.nan), np.zeros(len(at), int)
+    curves = meshing.pair_te_curves(phi, drive * te, pitch, at, pairs=range(-3, 4))
+    env, lead = meshing.upper_envelope(curves)
+    return at, drive * env, lead - 3
+
+
+def cycle_summary(begin, end, env, drive) -> dict:
+    """Summary entries of a meshing cycle: engagement limits [rad], TE peak to peak of the envelope
+    ``env`` [rad] and the drive sense."""
+    return {
+        "phi1_begin_rad": float(begin),
+        "phi1_end_rad": float(end),
+        "te_peak_to_peak_arcsec": float((np.nanmax(env) - np.nanmin(env)) / ARCSEC)
+        if np.any(np.isfinite(env))
+        else float("nan"),
+        "drive_sense": "max" if drive > 0 else "min",
+    }
+
+
 def te_metrics(d, n_phi: int):
     """(path ContactPoints on the engagement interval, TE envelope table, summary dict) of a
     non-involute pair; the path has ``n_phi`` positions."""
-    from .. import meshing
-
     p1 = 2.0 * np.pi / d.pair.n1
     (lo, hi), known = _window(d)
     solves = solves_per_point(d.family, int(n_phi))
@@ -161,14 +192,7 @@ def te_metrics(d, n_phi: int):
     te = np.where(c.converged & (phi >= b - 1e-12) & (phi <= e + 1e-12), c.te, np.nan)
     drive = _drive_sign(d.pair, c)
     mc = (e - b) / p1
-    at = np.linspace(b, b + p1, int(n_phi))
-    if np.sum(np.isfinite(te)) >= 2:
-        curves = meshing.pair_te_curves(phi, drive * te, p1, at, pairs=range(-3, 4))
-        env, lead = meshing.upper_envelope(curves)
-        env = drive * env
-        lead = lead - 3
-    else:
-        env, lead = np.full(len(at), np.nan), np.zeros(len(at), int)
+    at, env, lead = te_envelope(phi, te, drive, p1, b, n_phi)
     table = pd.DataFrame({"phi1_rad": at, "te_arcsec": env / ARCSEC, "tooth_pair": lead})
     summary = {
         "contact_ratio": float(mc),
@@ -177,12 +201,7 @@ def te_metrics(d, n_phi: int):
             "novikov": "face crossings of the path",
             "involute": "grid of converged points",
         }[d.family],
-        "phi1_begin_rad": float(b),
-        "phi1_end_rad": float(e),
-        "te_peak_to_peak_arcsec": float((np.nanmax(env) - np.nanmin(env)) / ARCSEC)
-        if np.any(np.isfinite(env))
-        else float("nan"),
-        "drive_sense": "max" if drive > 0 else "min",
+        **cycle_summary(b, e, env, drive),
         "solves": solves,
     }
     return c, table, summary
@@ -254,11 +273,16 @@ def tca_tables(d, progress=None) -> dict:
             "te_peak_to_peak_arcsec": cyc.te_peak_to_peak / ARCSEC,
             "drive_sense": "max",
         }
+    elif d.family == "hobbed_curvilinear":
+        from . import hobbed
+
+        path, te, summary, extra = hobbed.tca(d, progress)
     else:
         c, te, summary = te_metrics(d, n)
     if progress:
         progress("contact ellipses", 0.6)
-    path = _path_table(d, c, s["elastic_approach_mm"])
+    if d.family != "hobbed_curvilinear":
+        path, extra = _path_table(d, c, s["elastic_approach_mm"]), {}
     ok = path["status"] == "converged"
     summary = {
         "design": d.name,
@@ -273,7 +297,7 @@ def tca_tables(d, progress=None) -> dict:
         else float("nan"),
         "transfer_kind": getattr(locals().get("cyc"), "transfer_kind", "envelope of sampled pairs"),
     }
-    return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary])}
+    return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary]), **extra}
 
 
 def flank_grid(d, member: int, n_u: int, n_v: int):
@@ -294,11 +318,31 @@ def flank_grid(d, member: int, n_u: int, n_v: int):
     return flank, u, v
 
 
+def curvature_frame(member: str, names, u, v, points, pc) -> pd.DataFrame:
+    """The curvature table rows of one member: its parameters ``u``, ``v`` (columns ``names``),
+    points [mm] and :class:`gearrep.curvature.PrincipalCurvatures` ``pc`` (k [1/mm], e1, e2, normal)."""
+    return pd.DataFrame(
+        {
+            "member": member,
+            names[0]: u,
+            names[1]: v,
+            **{f"{a}_mm": points[:, i] for i, a in enumerate("xyz")},
+            "k1_per_mm": pc.k1,
+            "k2_per_mm": pc.k2,
+            **{f"{vec}_{a}": getattr(pc, vec)[:, i] for vec in ("e1", "e2", "normal") for i, a in enumerate("xyz")},
+        }
+    )
+
+
 def curvature_table(d) -> pd.DataFrame:
     """Principal curvatures [1/mm] and directions on a grid over both flanks (each in its own frame;
     curvature positive where the surface bends toward its outward normal)."""
     from ..curvature import principal_curvatures, with_opposite_normal
 
+    if d.family == "hobbed_curvilinear":
+        from . import hobbed
+
+        return hobbed.curvature_table(d)
     n_u, n_v = d.analysis["curvature_grid"][:2]
     pu, pv = PARAM_NAMES[d.family]
     rows = []
@@ -310,35 +354,17 @@ def curvature_table(d) -> pd.DataFrame:
             pc = principal_curvatures(P)
             if sign < 0:
                 pc = with_opposite_normal(pc)
-        rows.append(
-            pd.DataFrame(
-                {
-                    "member": name,
-                    pu: u,
-                    pv: v,
-                    "x_mm": P.r[:, 0],
-                    "y_mm": P.r[:, 1],
-                    "z_mm": P.r[:, 2],
-                    "k1_per_mm": pc.k1,
-                    "k2_per_mm": pc.k2,
-                    "e1_x": pc.e1[:, 0],
-                    "e1_y": pc.e1[:, 1],
-                    "e1_z": pc.e1[:, 2],
-                    "e2_x": pc.e2[:, 0],
-                    "e2_y": pc.e2[:, 1],
-                    "e2_z": pc.e2[:, 2],
-                    "normal_x": pc.normal[:, 0],
-                    "normal_y": pc.normal[:, 1],
-                    "normal_z": pc.normal[:, 2],
-                }
-            )
-        )
+        rows.append(curvature_frame(name, (pu, pv), u, v, P.r, pc))
     return pd.concat(rows, ignore_index=True)
 
 
 def flank_cloud(d, member: int):
     """Point cloud of member ``member``'s flank in its own frame: (points (n_u, n_v, 3) with NaN where
     the grid leaves the flank, outward unit normals, table)."""
+    if d.family == "hobbed_curvilinear":
+        from . import hobbed
+
+        return hobbed.flank_cloud(d, member)
     n_u, n_v = d.analysis["flank_grid"][:2]
     pair = d.pair
     lo, hi = (pair.lower1, pair.upper1) if member == 1 else (pair.lower2, pair.upper2)
@@ -355,19 +381,20 @@ def flank_cloud(d, member: int):
     with np.errstate(all="ignore"):
         P = flank.evaluate(u, v)
         nrm = sign * P.normal
-    pts = np.where(keep[:, None], P.r, np.nan)
-    nrm = np.where(keep[:, None], nrm, np.nan)
-    pu, pv = PARAM_NAMES[d.family]
+    return cloud(PARAM_NAMES[d.family], u, v, P.r, nrm, keep, n_u, n_v)
+
+
+def cloud(names, u, v, points, normals, keep, n_u: int, n_v: int):
+    """(points (n_u, n_v, 3) and normals, NaN where not ``keep``; the table of the kept points with
+    their parameters ``u``, ``v`` under the column ``names``)."""
+    pts = np.where(keep[:, None], points, np.nan)
+    nrm = np.where(keep[:, None], normals, np.nan)
     table = pd.DataFrame(
         {
-            pu: u[keep],
-            pv: v[keep],
-            "x_mm": pts[keep, 0],
-            "y_mm": pts[keep, 1],
-            "z_mm": pts[keep, 2],
-            "normal_x": nrm[keep, 0],
-            "normal_y": nrm[keep, 1],
-            "normal_z": nrm[keep, 2],
+            names[0]: u[keep],
+            names[1]: v[keep],
+            **{f"{a}_mm": pts[keep, i] for i, a in enumerate("xyz")},
+            **{f"normal_{a}": nrm[keep, i] for i, a in enumerate("xyz")},
         }
     )
     return pts.reshape(n_u, n_v, 3), nrm.reshape(n_u, n_v, 3), table
@@ -376,13 +403,32 @@ def flank_cloud(d, member: int):
 def solves_per_point(family: str, n_phi: int) -> int:
     """Contact solves of one sweep point (:func:`te_metrics`): involute pairs solve a window and then
     the engagement interval (2 n_phi), the others the engagement interval (n_phi; Novikov 3 more to
-    find it)."""
+    find it); hobbed_curvilinear pairs: an upper bound of the 9 x 9 solves of the window and the
+    path (:func:`gearrep.cli.hobbed.path_solves`)."""
+    if family == "hobbed_curvilinear":  # the largest window (60 deg each side, 4 teeth or fewer)
+        from .hobbed import path_solves
+
+        return path_solves(4, n_phi)
     return {"involute": 2 * n_phi, "novikov": n_phi + 3, "catt": n_phi}[family]
 
 
 def sweep_point(d, n_phi: int) -> dict:
     """The metrics of one sweep point: TE over the meshing cycle (envelope of the sampled pairs),
     contact ratio, largest contact-ellipse semi-axis, convergence (``n_phi`` contact solves)."""
+    if d.family == "hobbed_curvilinear":
+        from .hobbed import tca
+
+        path, _, summary, _ = tca(d, n_points=n_phi, with_ke=False)
+        ok = path["status"] == "converged"
+        a = path["ellipse_semi_major_mm"]
+        return {
+            "contact_ratio": summary["contact_ratio"],
+            "te_peak_to_peak_arcsec": summary["te_peak_to_peak_arcsec"],
+            "max_ellipse_semi_major_mm": float(a.max()) if a.notna().any() else float("nan"),
+            "solves": summary["solves"],
+            "converged": int(ok.sum()),
+            "max_residual_mm": float(path.loc[ok, "residual"].max()) if ok.any() else float("nan"),
+        }
     c, _, summary = te_metrics(d, n_phi)
     with np.errstate(all="ignore"):
         from ..tca import contact_ellipse

@@ -40,7 +40,7 @@ __all__ = [
     "set_dotted",
 ]
 
-FAMILIES = ("involute", "novikov", "catt")
+FAMILIES = ("involute", "novikov", "catt", "hobbed_curvilinear")
 
 _MISALIGNMENT = _s.group(
     "assembly errors of the gear (member 2), pivoting about the mid-face point of its axis",
@@ -151,7 +151,90 @@ CATT = _s.declare(
     **_TAIL,
 )
 
-DECLARATIONS = {"involute": INVOLUTE, "novikov": NOVIKOV, "catt": CATT}
+_HOB_MISALIGNMENT = _s.group(
+    "assembly errors of seed 000 sec 5.2 (eq 5.1-5.3): the pinion axis turned about the mid-face point of its "
+    "axis, the gear moved; the library (tseng_tca Assembly) takes at most 0.01 rad and 2 mm",
+    dgamma_h_deg=_s.number(
+        0.0,
+        "deg",
+        "horizontal misalignment: pinion axis turned about the centre-distance line (axes cross)",
+        ge=-0.5,
+        le=0.5,
+    ),
+    dgamma_v_deg=_s.number(
+        0.0,
+        "deg",
+        "vertical misalignment: pinion axis turned in the plane of the axes (axes intersect)",
+        ge=-0.5,
+        le=0.5,
+    ),
+    dC_mm=_s.number(0.0, "mm", "centre-distance change", ge=-2, le=2),
+    dZ_mm=_s.number(0.0, "mm", "axial displacement of the gear", ge=-2, le=2),
+)
+
+_HOB_ANALYSIS = _s.group(
+    "numerical settings of the analyses (hashed as the settings in every provenance sidecar)",
+    n_points=_ANALYSIS.fields["n_points"],
+    elastic_approach_mm=_ANALYSIS.fields["elastic_approach_mm"],
+    tol=_s.number(
+        1e-11,
+        "mm",
+        "residual of the 9-equation TCA system of every contact solve (seed 000 replication: 1e-11)",
+        ge=1e-13,
+        le=1e-6,
+    ),
+    continuation_steps=_s.integer(
+        4,
+        "1",
+        "warm-started solves from the ideal pair (R_cg >= R_cp + 3 mm, aligned) to the design "
+        "(seed 000 replication: 4; one step fails for its almost-line-contact Example 5.2)",
+        ge=1,
+        le=100,
+    ),
+    ke_table=_s.group(
+        "pinion angles of the kinematic-error table (KE zero at phi1 = 0; seed 000 Tables 5.2-5.9: -10 to 10 deg "
+        "in 2-deg steps); the grid must hit 0",
+        start_deg=_s.number(-10.0, "deg", "first pinion angle", ge=-60, le=0),
+        end_deg=_s.number(10.0, "deg", "last pinion angle", ge=0, le=60),
+        step_deg=_s.number(2.0, "deg", "step of the pinion angle", gt=0, le=60),
+    ),
+    curvature_grid=_ANALYSIS.fields["curvature_grid"],
+    flank_grid=_ANALYSIS.fields["flank_grid"],
+)
+
+
+def _hobbed_member(reason):
+    return _s.group(
+        reason,
+        teeth=_s.integer(None, "1", "number of teeth", ge=4, le=10000),
+        cutter_radius_mm=_s.number(
+            None, "mm", "nominal radius R_c of the circular-arc tooth trace (the hob's swivel radius)", ge=20, le=1e6
+        ),
+    )
+
+
+HOBBED_CURVILINEAR = _s.declare(
+    family=_s.choice("hobbed_curvilinear", ("hobbed_curvilinear",), "surface family of both members"),
+    name=_s.text("unnamed design", "a name for the reports"),
+    module_mm=_s.number(None, "mm", "normal module of the ZA hob (and of both members)", gt=0, le=100),
+    face_width_mm=_s.number(None, "mm", "face width of both members", gt=0, le=1000),
+    pressure_angle_deg=_s.number(20.0, "deg", "normal pressure angle of the hob", ge=10, le=35),
+    hob_pitch_radius_mm=_s.number(
+        None, "mm", "pitch radius r_h of the single-start ZA hob (seed 000 Table 5.1: 30 mm)", gt=0, le=1000
+    ),
+    hob_profile=_s.choice(
+        "axial",
+        ("axial", "printed"),
+        "axial: straight thread profile in the axial section (a true ZA hob; reproduces seed 000 Tables 4.3/4.4); "
+        "printed: seed 000 eq 4.40 as printed (profile in the normal section)",
+    ),
+    pinion=_hobbed_member("the driving member (member 1): convex flank, tooth trace arc centred on the far side"),
+    gear=_hobbed_member("the driven member (member 2): concave flank"),
+    misalignment=_HOB_MISALIGNMENT,
+    analysis=_HOB_ANALYSIS,
+)
+
+DECLARATIONS = {"involute": INVOLUTE, "novikov": NOVIKOV, "catt": CATT, "hobbed_curvilinear": HOBBED_CURVILINEAR}
 
 
 def _required(decl, prefix="") -> list[str]:
@@ -269,14 +352,18 @@ def canonical_hash(obj) -> str:
 # ----------------------------------------------------------------------------------------------
 @dataclass
 class Design:
-    """A checked design: ``values`` (resolved mapping), the library ``pair`` (gearrep.tca.GearPair),
-    the family and its helpers (``mesh`` for CATT), and the contact found at phi1 = 0."""
+    """A checked design: ``values`` (resolved mapping), the library ``pair`` (gearrep.tca.GearPair;
+    hobbed_curvilinear: gearrep.replications.tseng_tca.contact.Pair), the family and its helpers
+    (``mesh``: the CATT mesh, or the hobbed pair's PairDesign), and the contact found at phi1 = 0
+    (``start``, hobbed_curvilinear)."""
 
     values: dict
     family: str
     pair: object
     line_contact: bool = False
     mesh: object = None
+    #: hobbed_curvilinear: the physical contact at phi1 = 0 (tca_envelope.ContactPath), set by check
+    start: object = None
 
     @property
     def analysis(self) -> dict:
@@ -405,9 +492,21 @@ def _novikov(v) -> Design:
     return Design(v, "novikov", pair)
 
 
+def _middle_section_undercut(member, z, module, alpha_deg, face_width, addendum, how):
+    """Refuse ``member``'s tooth number below the undercut limit of its middle section, an involute
+    cut by a straight rack of ``addendum`` modules (CATT and hobbed curvilinear gears)."""
+    from ..surfaces.involute import InvoluteGearData, undercut_limit
+
+    lim = undercut_limit(InvoluteGearData(max(z, 3), module, math.radians(alpha_deg), face_width, h_a=addendum))
+    if z < lim:
+        raise SettingError(
+            f"design.{member}.teeth: got {z}; allowed: an integer >= {math.ceil(lim - 1e-9)} "
+            f"(undercut limit {lim:.4g} teeth of the middle section{how})"
+        )
+
+
 def _catt(v) -> Design:
     from ..replications.catt.assembly import assemble
-    from ..surfaces.involute import InvoluteGearData, undercut_limit
 
     m, B, R_T = v["module_mm"], v["face_width_mm"], v["cutter_radius_mm"]
     least = 0.5 * B + math.pi * m
@@ -419,14 +518,7 @@ def _catt(v) -> Design:
     for member in ("pinion", "gear"):
         z = v[member]["teeth"]
         # the middle section is an involute cut by a straight rack of addendum h* (seed 004 eq 5)
-        lim = undercut_limit(
-            InvoluteGearData(max(z, 3), m, math.radians(v["pressure_angle_deg"]), B, h_a=v["addendum"])
-        )
-        if z < lim:
-            raise SettingError(
-                f"design.{member}.teeth: got {z}; allowed: an integer >= {math.ceil(lim - 1e-9)} "
-                f"(undercut limit {lim:.4g} teeth of the middle section)"
-            )
+        _middle_section_undercut(member, z, m, v["pressure_angle_deg"], B, v["addendum"], "")
     design = {"z1": v["pinion"]["teeth"], "z2": v["gear"]["teeth"], "module": m, "R_T": R_T, "face_width": B}
     prm = {"pressure_angle_deg": v["pressure_angle_deg"], "addendum": v["addendum"], "clearance": v["clearance"]}
     mesh = assemble(design, v["flank_pair"], prm)
@@ -434,7 +526,51 @@ def _catt(v) -> Design:
     return Design(v, "catt", mesh.gear_pair, mesh=mesh)
 
 
-_BUILDERS = {"involute": _involute, "novikov": _novikov, "catt": _catt}
+def _hobbed_curvilinear(v) -> Design:
+    from ..replications._seed000 import za_hob
+    from ..replications.tseng_tca.contact import PairDesign, make_pair
+
+    m, B, a_deg = v["module_mm"], v["face_width_mm"], v["pressure_angle_deg"]
+    r_h = v["hob_pitch_radius_mm"]
+    least = max(0.5 * m, 0.25 * math.pi * m / math.tan(math.radians(a_deg)))
+    if not r_h > least:
+        raise SettingError(
+            f"design.hob_pitch_radius_mm: got {r_h!r}; allowed: above {least:.6g} mm for module {m:g} mm and "
+            f"{a_deg:g} deg (the radius of the thread-groove apex, r_h - (pi m / 4) / tan(alpha_n), must be positive)"
+        )
+    for member in ("pinion", "gear"):
+        z = v[member]["teeth"]
+        # the middle section (psi = 0) is cut by the hob's straight axial profile, a rack of addendum 1 module
+        _middle_section_undercut(member, z, m, a_deg, B, 1.0, ", cut by the hob's straight axial profile")
+        R = v[member]["cutter_radius_mm"]
+        if not R > 0.5 * B:
+            raise SettingError(
+                f"design.{member}.cutter_radius_mm: got {R!r}; allowed: above half the face width ({0.5 * B:g} mm), "
+                "so that the arc tooth trace spans the face"
+            )
+    R_p, R_g = v["pinion"]["cutter_radius_mm"], v["gear"]["cutter_radius_mm"]
+    if not R_g >= R_p:
+        raise SettingError(
+            f"design.gear.cutter_radius_mm: got {R_g!r}; allowed: >= pinion.cutter_radius_mm = {R_p!r} (the concave "
+            "gear trace must be as flat as the convex pinion trace or flatter, else the flanks meet at the face edges)"
+        )
+    from .hobbed import check_ke_grid
+
+    check_ke_grid(v)
+    hob = za_hob(m, a_deg, r_h, v["hob_profile"])
+    gears = PairDesign(v["pinion"]["teeth"], v["gear"]["teeth"], float(B), hob)
+    pair = make_pair(gears, R_p, R_g, _hob_assembly(v))
+    return Design(v, "hobbed_curvilinear", pair, mesh=gears)
+
+
+def _hob_assembly(v):
+    from ..replications.tseng_tca.contact import Assembly
+
+    m = v["misalignment"]
+    return Assembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])
+
+
+_BUILDERS = {"involute": _involute, "novikov": _novikov, "catt": _catt, "hobbed_curvilinear": _hobbed_curvilinear}
 
 
 def build(values: dict) -> Design:
@@ -476,7 +612,11 @@ def check(raw, *, contact: bool = True) -> Design:
 
     values = resolve(raw)
     d = build(values)
-    if contact:
+    if contact and d.family == "hobbed_curvilinear":
+        from . import hobbed
+
+        hobbed.check_contact(d)
+    elif contact:
         c, line = contact_at(d, np.array([0.0]), face=False)  # Novikov: anywhere along the helix
         d.line_contact = line
         if not c.converged[0]:

@@ -14,7 +14,7 @@ from ...solve import newton
 from ...tca_envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
 from .contact import Assembly, Pair, PairDesign, continue_to
 
-__all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
+__all__ = ["elastic_ellipses", "contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
 
 def _principal_in_fixed(flank: Flank, q, R):
@@ -26,11 +26,10 @@ def _principal_in_fixed(flank: Flank, q, R):
     return PrincipalCurvatures(gc.k1, gc.k2, rot(gc.e1), rot(gc.e2), rot(gc.normal))
 
 
-def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFrame:
-    """Elastic-approach ellipse (eq 5.14-5.17; :func:`gearrep.ellipse.elastic_ellipse_at`) at
-    every contact point of ``sol``: the chapter-4 curvatures of both flanks (two-parameter
-    relations, :func:`gearrep.curvature_relations.generated_curvatures`) at the TCA point,
-    expressed with the pinion's normal. a/b does not depend on delta (a/b = sqrt(B_e/A_e))."""
+def elastic_ellipses(pair: Pair, sol: ContactPath, delta_mm: float):
+    """(ContactEllipse with the axes as unit 3-vectors in S_f, pinion curvatures, gear curvatures
+    expressed with the pinion's normal) at every contact point of ``sol``: the computation behind
+    :func:`contact_ellipses`."""
     if not (np.isfinite(delta_mm) and delta_mm > 0):
         raise ValueError(f"delta_mm must be > 0, got {delta_mm!r}")
     cp = _principal_in_fixed(pair.pinion, sol.x[:, 0:4], pair.pinion_rotation(sol.phi1))
@@ -38,7 +37,15 @@ def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFr
     flip = np.sum(cp.normal * cg.normal, axis=-1) < 0
     cgo = with_opposite_normal(cg)
     cg = PrincipalCurvatures(*(np.where(flip if a.ndim == 1 else flip[:, None], b, a) for a, b in zip(cg, cgo)))
-    el = elastic_ellipse_at(cp, cg, delta_mm)
+    return elastic_ellipse_at(cp, cg, delta_mm), cp, cg
+
+
+def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFrame:
+    """Elastic-approach ellipse (eq 5.14-5.17; :func:`gearrep.ellipse.elastic_ellipse_at`) at
+    every contact point of ``sol``: the chapter-4 curvatures of both flanks (two-parameter
+    relations, :func:`gearrep.curvature_relations.generated_curvatures`) at the TCA point,
+    expressed with the pinion's normal. a/b does not depend on delta (a/b = sqrt(B_e/A_e))."""
+    el, cp, cg = elastic_ellipses(pair, sol, delta_mm)
     return pd.DataFrame(
         {
             "phi1_deg": np.degrees(sol.phi1),

@@ -35,6 +35,7 @@ __all__ = [
     "assembly_of",
     "compute_case",
     "solved",
+    "tip_crossing",
     "ke_table_of",
     "ke_table_two_tangencies",
     "sensitivity",
@@ -199,9 +200,11 @@ def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)
 
 
-def _tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_deg: float, tol: float) -> dict:
-    """Where the contact reaches the tip circle r = ``ra`` of ``member``: secant method on the
-    TCA path (every evaluation a converged physical contact)."""
+def tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_deg: float, tol: float) -> dict:
+    """Where the contact reaches the tip circle r = ``ra`` of ``member`` (``"pinion"`` or ``"gear"``):
+    secant method on the TCA path ``path``, which must cross that circle exactly once (every
+    evaluation a converged physical contact). Returns edge, radius_mm, phi1_deg, l_p_mm, l_g_mm,
+    radius_error_mm."""
     rad = path.radius_p if member == "pinion" else path.radius_g
     g = rad - ra
     k = np.flatnonzero(np.sign(g[:-1]) != np.sign(g[1:]))
@@ -240,8 +243,8 @@ def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
     require(path, "contact-ratio path")
     d = pd.DataFrame(
         [
-            _tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
-            _tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
+            tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
+            tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
         ]
     )
     # the library's contact ratio (the printed eq 5.13 with the angular pitch, model.contact_ratio,
