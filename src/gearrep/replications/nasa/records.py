@@ -18,7 +18,6 @@ __all__ = [
     "one",
     "evaluate",
     "check_records",
-    "NOT_COMPUTED_HEIGHTS_ARCS",
     "INPUT_RADII",
     "NOT_COMPUTED_SEC3",
 ]
@@ -34,13 +33,6 @@ class Rule:
 
     def __init__(self, needs: tuple[str, ...], fn: Callable[[dict], tuple]):
         self.needs, self.fn = tuple(needs), fn
-
-
-NOT_COMPUTED_HEIGHTS_ARCS = (
-    "heights of the circular-arc rack-cutters of versions 1-2 (refs. 1-4 of the report) are not computed: the arc "
-    "centres' placement, the rack tooth thickness and the top land of those designs are not printed (the parabolic "
-    "version 3 is computed by the undercutting and pointing analysis, job heights)"
-)
 
 
 class PrintedInput(str):
