@@ -448,7 +448,7 @@ def _rack_heights(N, a, alpha_n, l, P_n, beta, profile="parabola", addendum=None
         _, x_p, r_tip = pointing_limit(f, p_n, rack_tooth_over_pitch * p_n, top_land_Pn / P_n, u_top)
         return x_p * P_n, r_tip
 
-    return -x_u * P_n, kind, hd
+    return max(-x_u * P_n, 0.0) + 0.0, kind, hd  # 0: no working addendum (a limit at the pitch line, to rounding)
 
 
 def _required_rack_tooth(hd_of, hd_printed, t):

@@ -225,8 +225,9 @@ def _height(col, t):
         + ", ".join(f"{b:.2f}" for b in req["top_land_times_Pn"])
         + "/P_n (a pinion tooth thicker than half the pitch; with equal tooth and space even a pointed tooth gives "
         f"{sw.loc[sw['top_land_times_Pn'] == 0, 'hd_Pn'].max():.3f}); then h P_n = {req['h_Pn'].iloc[0]:.3f}. One "
-        "assumption fits the one assumption-dependent printed height (h_d, and h with it) along that curve; the only "
-        "other heights of the same rack are h_a (no assumption, 0.544 vs 0.55) and the total"
+        "assumption fits this rack's one assumption-dependent printed height (h_d, and h with it) along that curve, "
+        "but not those of the circular-arc racks (versions 1-2, same analysis): rack tooth / pitch giving each "
+        "version's printed h_d over top lands 0-0.4/P_n: " + _required_text(t["heights"])
     )
     return r[col], note
 
