@@ -150,6 +150,22 @@ def test_rack_heights(tables):
     assert req.max()[3] < min(req.min()[1], req.min()[2])
 
 
+def test_concave_pinion_rack_heights(tables, records):
+    """Sec. 3.2-3.3: inequality 3.2.1 matches the concave/convex switch of the pinion at Q only with
+    Q in the pinion dedendum; in neither placement does the gear rack's working profile cross the
+    pitch line, so the height stays not computed with that reason."""
+    ch = tables["concave_heights"].set_index("placement")
+    a, d = ch.loc["Q_in_pinion_addendum"], ch.loc["Q_in_pinion_dedendum"]
+    assert d["rho_switch_Pn"] == pytest.approx(d["rho_bound_eq_3_2_1_Pn"], rel=0.03)
+    assert a["rho_switch_Pn"] < 0.7 * a["rho_bound_eq_3_2_1_Pn"]
+    assert not ch["working_part_crosses_pitch_line"].any()
+    assert a["gear_tip_limit_x_Pn"] > 0 and a["gear_tip_limit"] == "profile_end"
+    assert d["gear_root_limit_x_Pn"] < 0 and d["gear_root_limit"] == "singular"
+    rec = records.set_index("id")
+    for i in ("002-S3.3-design=pinion_concave;N2_min=70-h_Pn", "002-S3.3-concave_pinion_height"):
+        assert rec.loc[i, "status"] == "not-computed" and "concave_heights" in rec.loc[i, "note"]
+
+
 def test_disk_inference_and_predictions(tables, records):
     """The disk size is inferred from the aligned 11.54 (one parameter, row not a check); the
     misaligned rows are predictions with it (regression values of our numbers)."""

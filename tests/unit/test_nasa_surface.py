@@ -264,3 +264,19 @@ def test_addendum_limit():
         addendum_limit(tip, 0.0)
     with pytest.raises(ValueError, match="n"):
         addendum_limit(tip, -0.3, n=3)
+
+
+def test_pointing_limit_with_q_below_the_pitch_line():
+    """A straight profile offset to the other side of P (l < 0) is the same rack shifted along the
+    pitch line: the pointing height (measured from where the profile crosses the line) is equal,
+    also when the crossing is far from Q (P_n = 1)."""
+    from gearrep.surfaces.novikov import pointing_limit
+
+    an, Pn, beta = 25 * DEG, 1.0, 0.35
+    rp = pitch_radius(17, Pn, beta)
+    p_n = np.pi / Pn
+    res = [
+        pointing_limit(RackGeneratedFlank(0.0, an, l, beta, rp, -1), p_n, 0.5 * p_n, 0.3 / Pn, 3.0 / Pn)
+        for l in (np.cos(an) / Pn, -np.cos(an) / Pn)
+    ]
+    assert res[1][1] == pytest.approx(res[0][1], abs=1e-10) and res[1][2] == pytest.approx(res[0][2], abs=1e-10)

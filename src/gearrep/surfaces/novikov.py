@@ -293,7 +293,7 @@ def pointing_limit(flank: RackGeneratedFlank, pitch_n: float, rack_tooth_n: floa
         return float(flank.rack.profile(np.array([u]))[0][0])
 
     # the rack pitch line x_b = 0 nearest to Q (u = 0): march from u = 0 against the sign of x_b
-    step = -np.sign(x_b(0.0) * flank.rack.profile(np.array([0.0]))[2][0]) * max(flank.rack.l, 1e-3)
+    step = -np.sign(x_b(0.0) * flank.rack.profile(np.array([0.0]))[2][0]) * max(abs(flank.rack.l), 1e-3)
     lo = 0.0
     for _ in range(200):
         if np.sign(x_b(lo + step)) != np.sign(x_b(lo)):

@@ -36,6 +36,7 @@ __all__ = [
     "rho_sweep",
     "parabola_relations",
     "heights",
+    "concave_heights",
 ]
 
 
@@ -528,4 +529,64 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
             row("required", v, N1, beta, _required_rack_tooth(hd_of, d["hd_Pn"][v], t), t)
     for N in range(10, 31, 2):
         row("fig2.4.2", 3, N, 20 * DEG, sr0, t0)
+    return pd.DataFrame(rows)
+
+
+def _switch_radius(N, an, l, beta, Pn, tol):
+    """Radius rho of a pinion rack bending its profile with the sign of l (centre on the side of
+    a < 0, :mod:`gearrep.surfaces.rack`) at which the generated pinion profile at Q turns from
+    concave to convex (kappa_II through zero; NaN if not in 0.2-20 /P_n)."""
+    from scipy.optimize import brentq
+
+    r_p = pitch_radius(N, Pn, beta)
+
+    def k(rho):
+        f = RackGeneratedFlank(-1 / (2 * rho), an, l, beta, r_p, -1, tol=tol)
+        return float(point_curvatures(f)["kII"][0])
+
+    rs = np.linspace(0.2, 20.0, 100) / Pn
+    v = np.array([k(r) for r in rs])
+    i = np.nonzero(np.sign(v[1:]) != np.sign(v[:-1]))[0]
+    return brentq(k, rs[i[0]], rs[i[0] + 1], xtol=1e-12) if len(i) else np.nan
+
+
+def concave_heights(s: dict, d: dict) -> pd.DataFrame:
+    """Sec. 3.2-3.3 (pinion concave, gear convex): can the undercutting and pointing analysis of the
+    heights job run on the sec. 3.2 racks (a_c = 1.25 P_n, a_t = 1.389 P_n, l_c = 0.906/P_n, alpha_n
+    = 25 deg, both profiles bending away from their pitch point on the Q side: a < 0)? Two
+    placements of Q (fig. 3.2.1 is not in the text): in the pinion addendum (l > 0, the reading of
+    job concave_pinion) or in its dedendum (l < 0). Per placement: the rack radius at which the
+    pinion's profile at Q turns from concave to convex (``rho_switch_Pn``, N1 = 17) against the
+    bound of inequality 3.2.1, N1 sin(alpha_n)/(2 P_n cos^3 beta) + l_c; and along the gear rack
+    (N2 = N2_min = 70, the gear on x_c > 0) the limits of its profile from Q towards the gear root
+    and towards the gear tip (:func:`gearrep.surfaces.novikov.addendum_limit`), and whether the part
+    between them crosses the pitch line (needed to split h = h_a + h_d and to place a tooth
+    thickness at the pitch line). Heights in units of 1/P_n."""
+    Pn, _, beta, _ = basics(d)
+    an = d["alpha_n_deg"] * DEG
+    ac, at, lc = d["s3_a_c_over_Pn"] * Pn, d["s3_a_t_over_Pn"] * Pn, d["s3_l_c_times_Pn"] / Pn
+    N1, N2 = d["N1"], int(d["s3_N2_min"])
+    bound = N1 * np.sin(an) / (2 * Pn * np.cos(beta) ** 3) + lc
+    rows = []
+    for placement, l in (("Q_in_pinion_addendum", lc), ("Q_in_pinion_dedendum", -lc)):
+        g = RackGeneratedFlank(-at, an, l, beta, pitch_radius(N2, Pn, beta), +1, tol=s["tol"])
+        u_root, x_root, k_root = addendum_limit(g, 3.0 / Pn)
+        u_tip, x_tip, k_tip = addendum_limit(g, -3.0 / Pn)
+        x = g.rack.profile(np.linspace(u_tip, u_root, 2001))[0]
+        rows.append(
+            dict(
+                placement=placement,
+                l_times_Pn=l * Pn,
+                rho_c_times_Pn=Pn / (2 * ac),
+                rho_switch_Pn=_switch_radius(N1, an, l, beta, Pn, s["tol"]) * Pn,
+                rho_bound_eq_3_2_1_Pn=bound * Pn,
+                N2=N2,
+                x_Q_Pn=float(g.rack.profile(np.array([0.0]))[0][0]) * Pn,
+                gear_root_limit_x_Pn=x_root * Pn,
+                gear_root_limit=k_root,
+                gear_tip_limit_x_Pn=x_tip * Pn,
+                gear_tip_limit=k_tip,
+                working_part_crosses_pitch_line=bool(np.any(np.diff(np.sign(x)) != 0)),
+            )
+        )
     return pd.DataFrame(rows)
