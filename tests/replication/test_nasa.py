@@ -119,20 +119,51 @@ def test_step_implied_by_table_6_2_3(tables, design):
 
 
 def test_rack_heights(tables):
-    """Table 6.2.2 version 3: the undercutting limit needs no assumption; h_d falls with a thicker rack
-    tooth and a wider top land; the 'required' rows give back the printed h_d P_n = 1.25."""
+    """Table 6.2.2: version 3's undercutting limit needs no assumption; h_d falls with a thicker rack
+    tooth and a wider top land; the 'required' rows give back the printed h_d P_n. Versions 1-2
+    (circular arcs): the arc centred on the pitch line limits the addendum at the line (h_a = 0),
+    version 2's convex tip arc is not undercut before its lowest point; the printed h_d of
+    versions 1-2 and 3 need disjoint rack tooth thicknesses (no one assumption fits all)."""
     h = tables["heights"]
-    assert h["ha_Pn"][h["N1"] == 17].nunique() == 1
-    assert h.loc[h["kind"] == "design", "ha_Pn"].iloc[0] == pytest.approx(0.54423, abs=1e-4)
-    assert h.loc[h["kind"] == "design", "hd_Pn"].iloc[0] == pytest.approx(1.01470, abs=1e-4)
-    sw = h[h["kind"] == "sweep"]
-    by_sr = (
-        sw[sw["top_land_times_Pn"] == 0.3].drop_duplicates().sort_values("rack_tooth_over_pitch")["hd_Pn"].to_numpy()
-    )
-    assert np.all(np.diff(by_sr) < 0)
-    assert np.allclose(h.loc[h["kind"] == "required", "hd_Pn"], 1.25, atol=1e-8)
-    g = h[h["kind"] == "fig2.4.2"].sort_values("N1")
+    h3 = h[h["version"] == 3]
+    assert h3["ha_Pn"][h3["N1"] == 17].nunique() == 1
+    assert h3.loc[h3["kind"] == "design", "ha_Pn"].iloc[0] == pytest.approx(0.54423, abs=1e-4)
+    assert h3.loc[h3["kind"] == "design", "hd_Pn"].iloc[0] == pytest.approx(1.01470, abs=1e-4)
+    for v, hd in ((1, 0.87), (2, 0.90), (3, 1.25)):
+        hv = h[h["version"] == v]
+        sw = hv[hv["kind"] == "sweep"]
+        by_sr = (
+            sw[sw["top_land_times_Pn"] == 0.3]
+            .drop_duplicates()
+            .sort_values("rack_tooth_over_pitch")["hd_Pn"]
+            .to_numpy()
+        )
+        assert np.all(np.diff(by_sr) < 0)
+        assert np.allclose(hv.loc[hv["kind"] == "required", "hd_Pn"], hd, atol=1e-8)
+    g = h3[h3["kind"] == "fig2.4.2"].sort_values("N1")
     assert np.all(np.diff(g["ha_Pn"]) > 0)
+    d = h[h["kind"] == "design"].set_index("version")
+    assert abs(d.loc[1, "ha_Pn"]) < 1e-12 and d.loc[1, "ha_limit"] == "zero_pressure_angle"
+    assert d.loc[2, "ha_limit"] == "profile_end" and d.loc[2, "ha_Pn"] == pytest.approx(1.2264, abs=1e-4)
+    assert d.loc[1, "hd_Pn"] == pytest.approx(0.9273, abs=1e-4) and d.loc[2, "hd_Pn"] == pytest.approx(1.0151, abs=1e-4)
+    req = h[h["kind"] == "required"].groupby("version")["rack_tooth_over_pitch"]
+    assert req.max()[3] < min(req.min()[1], req.min()[2])
+
+
+def test_concave_pinion_rack_heights(tables, records):
+    """Sec. 3.2-3.3: inequality 3.2.1 matches the concave/convex switch of the pinion at Q only with
+    Q in the pinion dedendum; in neither placement does the gear rack's working profile cross the
+    pitch line, so the height stays not computed with that reason."""
+    ch = tables["concave_heights"].set_index("placement")
+    a, d = ch.loc["Q_in_pinion_addendum"], ch.loc["Q_in_pinion_dedendum"]
+    assert d["rho_switch_Pn"] == pytest.approx(d["rho_bound_eq_3_2_1_Pn"], rel=0.03)
+    assert a["rho_switch_Pn"] < 0.7 * a["rho_bound_eq_3_2_1_Pn"]
+    assert not ch["working_part_crosses_pitch_line"].any()
+    assert a["gear_tip_limit_x_Pn"] > 0 and a["gear_tip_limit"] == "profile_end"
+    assert d["gear_root_limit_x_Pn"] < 0 and d["gear_root_limit"] == "singular"
+    rec = records.set_index("id")
+    for i in ("002-S3.3-design=pinion_concave;N2_min=70-h_Pn", "002-S3.3-concave_pinion_height"):
+        assert rec.loc[i, "status"] == "not-computed" and "concave_heights" in rec.loc[i, "note"]
 
 
 def test_disk_inference_and_predictions(tables, records):

@@ -209,3 +209,74 @@ def test_disk_ground_pinion():
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 1.0, 0.0)
     with pytest.raises(ValueError, match="a_pd"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, -1.0)
+
+
+@pytest.mark.parametrize("rho, l", [(0.2, 0.2), (0.23, 0.18), (-0.258, -0.23)])
+def test_circular_arc_flank_matches_envelope(rho, l):
+    """Circular-arc racks (seed 002 sec. 6.2): the closed-form rolling angle solves the meshing
+    equation, the closed-form point is the envelope solve's, and the analytic second derivatives
+    match finite differences (arc centred on the pitch line included)."""
+    beta = np.arccos(0.94)
+    f = RackGeneratedFlank(1 / (2 * rho), 27 * DEG, l, beta, pitch_radius(17, 5.0, beta), -1, profile="circular_arc")
+    u = np.array([-0.08, 0.0, 0.05, 0.1])
+    th = np.array([0.5, -1.0, 2.0, 0.0])
+    phi = f.rolling_angle(u, th)[0]
+    assert np.max(np.abs(f.envelope.meshing(np.column_stack([u, th, phi])))) < 1e-13
+    rec = f.solve(u, th)
+    assert np.all(rec.converged)
+    e = f.evaluate(u, th)
+    np.testing.assert_allclose(e.r, rec.point, atol=1e-12)
+    fd = fd_derivatives(f.position, u, th, 1e-4, 1e-3)
+    for a, b in ((e.r_u, fd.r_u), (e.r_uu, fd.r_uu), (e.r_uv, fd.r_uv), (e.r_vv, fd.r_vv)):
+        np.testing.assert_allclose(a, b, atol=1e-6)
+    assert f.profile_angle(0.1) == pytest.approx(0.1 / rho)
+
+
+def test_circular_arc_flank_bad_input():
+    with pytest.raises(ValueError, match="profile"):
+        RackGeneratedFlank(0.4, 25 * DEG, 0.18, 0.3, 2.0, -1, profile="ellipse")
+    with pytest.raises(ValueError, match="a must be finite and nonzero"):
+        RackGeneratedFlank(0.0, 25 * DEG, 0.18, 0.3, 2.0, -1, profile="circular_arc")
+
+
+def test_addendum_limit():
+    """addendum_limit: Litvin's line for a straight and a parabolic rack (the undercut_limit value),
+    the pitch line for an arc centred on it (zero pressure angle), the arc's lowest point for a
+    convex tip arc; bad input names the argument."""
+    from gearrep.surfaces.novikov import addendum_limit, undercut_limit
+
+    f, Pn, alpha_t = _straight_rack_member()
+    u, x_b, kind = addendum_limit(f, -3.0 / Pn)
+    assert kind == "singular" and x_b == pytest.approx(-f.r_p * np.sin(alpha_t) ** 2, rel=1e-9)
+    beta = np.arccos(0.94)
+    rp = pitch_radius(17, 5.0, beta)
+    par = RackGeneratedFlank(5.0 / (2 * 5.88), 25 * DEG, np.cos(25 * DEG) / 5.0, beta, rp, -1)
+    assert addendum_limit(par, -0.6)[1] == pytest.approx(undercut_limit(par, -0.2)[1], abs=1e-12)
+    arc = RackGeneratedFlank(1 / 0.4, 27 * DEG, 0.2, beta, rp, -1, profile="circular_arc")
+    u, x_b, kind = addendum_limit(arc, -np.pi * 0.2)
+    assert kind == "zero_pressure_angle" and abs(x_b) < 1e-14
+    assert u == pytest.approx(-0.2 * 27 * DEG, abs=1e-12)  # the tangent turns by alpha_n from Q
+    tip = RackGeneratedFlank(-1 / 0.516, 27 * DEG, -0.23, beta, rp, -1, profile="circular_arc")
+    u, x_b, kind = addendum_limit(tip, -np.pi * 0.258)
+    assert kind == "profile_end" and x_b == pytest.approx(tip.rack.centre[0] - 0.258, abs=1e-12)
+    assert np.isnan(addendum_limit(tip, -0.05)[0])  # nothing before u_end
+    with pytest.raises(ValueError, match="u_end"):
+        addendum_limit(tip, 0.0)
+    with pytest.raises(ValueError, match="n"):
+        addendum_limit(tip, -0.3, n=3)
+
+
+def test_pointing_limit_with_q_below_the_pitch_line():
+    """A straight profile offset to the other side of P (l < 0) is the same rack shifted along the
+    pitch line: the pointing height (measured from where the profile crosses the line) is equal,
+    also when the crossing is far from Q (P_n = 1)."""
+    from gearrep.surfaces.novikov import pointing_limit
+
+    an, Pn, beta = 25 * DEG, 1.0, 0.35
+    rp = pitch_radius(17, Pn, beta)
+    p_n = np.pi / Pn
+    res = [
+        pointing_limit(RackGeneratedFlank(0.0, an, l, beta, rp, -1), p_n, 0.5 * p_n, 0.3 / Pn, 3.0 / Pn)
+        for l in (np.cos(an) / Pn, -np.cos(an) / Pn)
+    ]
+    assert res[1][1] == pytest.approx(res[0][1], abs=1e-10) and res[1][2] == pytest.approx(res[0][2], abs=1e-10)

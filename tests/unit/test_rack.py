@@ -98,7 +98,7 @@ def test_vectorised_shapes():
         (lambda: StraightRackCutter(0.3, side=0), "side"),
         (lambda: StraightRackCutter(0.3, y0=np.nan), "y0"),
         (lambda: ParabolicRackCutter(np.inf, 0.3, 0.1), "a"),
-        (lambda: ParabolicRackCutter(0.4, 0.3, -0.1), "l"),
+        (lambda: ParabolicRackCutter(0.4, 0.3, np.nan), "l"),
         (lambda: vertex_pitch_distance(0.4, 0.0), "P_n"),
         (lambda: vertex_pitch_distance(2.0, 5.0), "alpha_n"),
     ],
@@ -106,3 +106,43 @@ def test_vectorised_shapes():
 def test_validation(make, match):
     with pytest.raises(ValueError, match=match):
         make()
+
+
+def test_circular_arc_profile():
+    """The arc is the osculating circle of the parabola a = 1/(2 rho) at Q (same point, tangent and
+    curvature), parameterised by arc length; its pitch crossing matches the base formula (which
+    ignores third derivatives) where the normal is not parallel to the pitch line, and is constant
+    for an arc centred on the pitch line (l = rho)."""
+    from gearrep.surfaces.rack import CircularArcRackCutter, RackCutter
+
+    an, rho, l = 27 * DEG, 0.23, 0.18
+    arc, par = CircularArcRackCutter(rho, an, l, beta=0.3), ParabolicRackCutter(1 / (2 * rho), an, l, beta=0.3)
+    pa, pp = arc.profile(np.array([0.0])), par.profile(np.array([0.0]))
+    np.testing.assert_allclose(np.ravel(pa), np.ravel(pp), atol=1e-15)
+    u = np.linspace(-0.3, 0.3, 7)
+    x, y, x1, y1, x2, y2 = arc.profile(u)
+    np.testing.assert_allclose(np.hypot(x - arc.centre[0], y - arc.centre[1]), rho, atol=1e-15)
+    np.testing.assert_allclose(np.hypot(x1, y1), 1.0, atol=1e-15)  # arc length
+    np.testing.assert_allclose(arc.profile_curvature(u), np.full(u.shape, arc.profile_curvature(0.0)), atol=1e-12)
+    # y_P: where the normal line meets x = 0, by intersecting it directly
+    yp = y - x * (-x1) / y1
+    np.testing.assert_allclose(arc.pitch_crossing(u)[0], yp, atol=1e-13)
+    h = 1e-5
+    d1 = (arc.pitch_crossing(u + h)[0] - arc.pitch_crossing(u - h)[0]) / (2 * h)
+    d2 = (arc.pitch_crossing(u + h)[1] - arc.pitch_crossing(u - h)[1]) / (2 * h)
+    np.testing.assert_allclose(arc.pitch_crossing(u)[1], d1, rtol=1e-5)
+    np.testing.assert_allclose(arc.pitch_crossing(u)[2], d2, rtol=1e-5)
+    np.testing.assert_allclose(RackCutter.pitch_crossing(par, u)[0], par.pitch_crossing(u)[0])
+    centred = CircularArcRackCutter(0.2, an, 0.2)
+    assert centred.centre[0] == 0.0
+    u0 = -0.2 * an  # the arc's crossing with the pitch line (zero pressure angle)
+    assert centred.profile(np.array([u0]))[0][0] == pytest.approx(0.0, abs=1e-15)
+    np.testing.assert_allclose(centred.pitch_crossing(np.array([u0, 0.0, 0.1]))[0], centred.centre[1], atol=0)
+    with pytest.raises(ValueError, match="rho"):
+        CircularArcRackCutter(0.0, an, 0.2)
+    with pytest.raises(ValueError, match="rho"):
+        CircularArcRackCutter(np.inf, an, 0.2)
+    with pytest.raises(ValueError, match="l"):
+        CircularArcRackCutter(0.2, an, np.nan)
+    with pytest.raises(ValueError, match="alpha_n"):
+        CircularArcRackCutter(0.2, 0.0, 0.2)

@@ -39,6 +39,14 @@ Frames (the figures of seed 002 are not in the text, so they are fixed here and 
   (:func:`gearrep.envelope.rack_generation_motion`, ``member_side``): Q lies at
   x_b(Q) = l sin alpha_n > 0, i.e. in the pinion's addendum and the gear's dedendum.
 
+* Circular-arc profile (:class:`CircularArcRackCutter`; the racks of the Novikov-Wildhaber
+  versions 1-2 of seed 002 sec. 6.2, fig. 6.2.1): the circle through Q with the same tangent and
+  the same curvature at Q as the parabola with a = 1/(2 rho) (its osculating circle), centre
+  C = Q + rho y_a, parameterised by the arc length u from Q. With l = rho the centre is the pitch
+  point P: the placement seed 002 sec. 6.2 states for the arcs that generate convex addenda.
+* l is signed for both curved profiles: l > 0 puts Q above the pitch line (x_b > 0, the pinion's
+  addendum, seed 002 sec. 2), l < 0 below it (the pinion's dedendum).
+
 Normals: N = r_u x r_theta = y_b'(u) e_x - x_b'(u) e_yb (since e_x x t = -e_yb, e_yb x t = e_x);
 for the straight profile N = side sin(alpha_n) e_x - cos(alpha_n) e_yb, always towards -y_b.
 
@@ -51,7 +59,13 @@ import numpy as np
 
 from ..surface import Surface, SurfacePoint
 
-__all__ = ["RackCutter", "StraightRackCutter", "ParabolicRackCutter", "vertex_pitch_distance"]
+__all__ = [
+    "RackCutter",
+    "StraightRackCutter",
+    "ParabolicRackCutter",
+    "CircularArcRackCutter",
+    "vertex_pitch_distance",
+]
 
 
 def _angle(x, name, lo, hi, lo_open=True, hi_open=True):
@@ -102,6 +116,20 @@ class RackCutter(Surface):
         self.e_yb = np.array([0.0, cb, -sb])  # normal to the teeth, in the pitch plane
         self.t = np.array([0.0, sb, cb])  # tooth direction a-a
 
+    def _place_q(self, alpha_n, l, y0, side):
+        """Validate and set the design point of a curved profile (module doc): alpha_n, signed l,
+        y0, side, the axes x_a (``tangent_q``) and y_a (``normal_q``, from Q towards P for l > 0)
+        in (x_b, y_b), and Q = P - l y_a (``q_point``)."""
+        self.alpha_n = _angle(alpha_n, "alpha_n (normal pressure angle)", 0.0, np.pi / 2)
+        self.l = _finite(l, "l (|QP|)")
+        self.y0 = _finite(y0, "y0")
+        self.side = _side(side)
+        ca, sa = np.cos(self.alpha_n), np.sin(self.alpha_n)
+        s = self.side
+        self.tangent_q = np.array([ca, s * sa])
+        self.normal_q = np.array([-sa, s * ca])
+        self.q_point = np.array([0.0, self.y0]) - self.l * self.normal_q
+
     def profile(self, u):  # pragma: no cover - abstract
         raise NotImplementedError
 
@@ -124,6 +152,23 @@ class RackCutter(Surface):
         r_t = np.broadcast_to(self.t, u.shape + (3,)).copy()
         r_uu = xuu[..., None] * self.e_x + yuu[..., None] * self.e_yb
         return SurfacePoint(r, r_u, r_t, r_uu, zero, zero.copy())
+
+    def pitch_crossing(self, u):
+        """Where the normal of the profile at u meets the pitch line x_b = 0, as y_b, and its first
+        two derivatives in u: y_P = y_b + x_b x_b' / y_b' (the normal direction is (y_b', -x_b')).
+        The rolling angle of the generating motion is linear in it
+        (:meth:`gearrep.surfaces.novikov.RackGeneratedFlank.rolling_angle`). This base form takes
+        the third derivatives of the profile as zero (straight and parabolic profiles);
+        :class:`CircularArcRackCutter` overrides it."""
+        u = np.asarray(u, float)
+        x, y, x1, y1, x2, y2 = self.profile(u)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            P, P1, P2 = x * x1, x1 * x1 + x * x2, 3.0 * x1 * x2  # x_b x_b' and derivatives (x''' = 0)
+            Q, Q1 = y1, y2  # y_b' and its derivative (y''' = 0)
+            h = P / Q
+            h1 = (P1 * Q - P * Q1) / Q**2
+            h2 = (P2 * Q**2 - 2.0 * P1 * Q * Q1 + 2.0 * P * Q1**2) / Q**3
+        return y + h, y1 + h1, y2 + h2
 
     def profile_curvature(self, u):
         """Signed curvature of the normal profile, (x'y'' - y'x'') / |r_u|^3 (positive when it
@@ -170,25 +215,16 @@ class ParabolicRackCutter(RackCutter):
         eq 2.5.2, 2.7.4); a > 0 bends the profile towards P; any finite value (a = 0 gives a
         straight profile offset by l from P)
     alpha_n : normal pressure angle, in (0, pi/2) rad
-    l : |QP| (length, finite, >= 0); seed 002 uses l = cos(alpha_n)/P_n
-        (:func:`vertex_pitch_distance`)
+    l : |QP| (length, finite), signed (module doc): >= 0 puts Q above the pitch line, the
+        placement of seed 002 sec. 2 (l = cos(alpha_n)/P_n, :func:`vertex_pitch_distance`);
+        < 0 below it
     beta, y0, side : as for :class:`StraightRackCutter`
     """
 
     def __init__(self, a: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
         super().__init__(beta)
         self.a = _finite(a, "a (parabola coefficient)")
-        self.alpha_n = _angle(alpha_n, "alpha_n (normal pressure angle)", 0.0, np.pi / 2)
-        self.l = _finite(l, "l (|QP|)")
-        if self.l < 0:
-            raise ValueError(f"l (|QP|) must be >= 0, got {l!r}")
-        self.y0 = _finite(y0, "y0")
-        self.side = _side(side)
-        ca, sa = np.cos(self.alpha_n), np.sin(self.alpha_n)
-        s = self.side
-        self.tangent_q = np.array([ca, s * sa])  # x_a in (x_b, y_b)
-        self.normal_q = np.array([-sa, s * ca])  # y_a: from Q towards P
-        self.q_point = np.array([0.0, self.y0]) - self.l * self.normal_q  # Q = P - l y_a
+        self._place_q(alpha_n, l, y0, side)
 
     def profile(self, u):
         u = np.asarray(u, float)
@@ -199,3 +235,64 @@ class ParabolicRackCutter(RackCutter):
         yu = d[1] + 2 * self.a * u * m[1]
         z = np.zeros_like(u)
         return x, y, xu, yu, z + 2 * self.a * m[0], z + 2 * self.a * m[1]
+
+
+class CircularArcRackCutter(RackCutter):
+    """Rack-cutter whose normal profile is a circular arc (module doc): the circle of signed radius
+    ``rho`` through Q, tangent there to the direction at alpha_n from the tooth height, centre
+    C = Q + rho y_a (rho > 0: on the side of P, like the parabola with a = 1/(2 rho) > 0),
+    parameterised by the arc length u from Q:
+
+        (x_b, y_b)(u) = C - rho [cos(u/rho) y_a - sin(u/rho) x_a].
+
+    Parameters
+    ----------
+    rho : signed radius of the arc (length, finite, nonzero)
+    alpha_n : normal pressure angle at Q, in (0, pi/2) rad
+    l : signed |QP| (length, finite; module doc); l = rho puts the centre on the pitch point P
+    beta, y0, side : as for :class:`StraightRackCutter`
+    """
+
+    def __init__(self, rho: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
+        super().__init__(beta)
+        self.rho = _finite(rho, "rho (arc radius)")
+        if self.rho == 0:
+            raise ValueError(f"rho (arc radius) must be nonzero, got {rho!r}")
+        self.a = 1.0 / (2.0 * self.rho)  # coefficient of the osculating parabola at Q
+        self._place_q(alpha_n, l, y0, side)
+        self.centre = self.q_point + self.rho * self.normal_q
+
+    def _w(self, u):
+        """Unit vector w(u) = cos(u/rho) y_a - sin(u/rho) x_a (the point is C - rho w) and w'."""
+        t = np.asarray(u, float) / self.rho
+        c, sn = np.cos(t)[..., None], np.sin(t)[..., None]
+        m, d = self.normal_q, self.tangent_q
+        return c * m - sn * d, -(sn * m + c * d) / self.rho
+
+    def profile(self, u):
+        w, w1 = self._w(u)
+        C, rho = self.centre, self.rho
+        return (
+            C[0] - rho * w[..., 0],
+            C[1] - rho * w[..., 1],
+            -rho * w1[..., 0],
+            -rho * w1[..., 1],
+            w[..., 0] / rho,  # w'' = -w / rho^2
+            w[..., 1] / rho,
+        )
+
+    def pitch_crossing(self, u):
+        """Closed form (every normal passes through the centre C): y_P = y_C - x_C tan(psi), psi
+        the polar angle of w (rate psi' = w x w', constant). Finite where the base formula is 0/0:
+        an arc centred on the pitch line has y_P = y_C at every u, its crossing with the line
+        included."""
+        w, w1 = self._w(u)
+        xc, yc = self.centre
+        if xc == 0.0:
+            z = np.zeros(w.shape[:-1])
+            return z + yc, z, z.copy()
+        dpsi = w[..., 0] * w1[..., 1] - w[..., 1] * w1[..., 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            g = w[..., 1] / w[..., 0]
+        g1 = dpsi * (1.0 + g * g)
+        return yc - xc * g, -xc * g1, -xc * 2.0 * g * g1 * dpsi

@@ -208,6 +208,7 @@ JOBS = {
     "rho_sweep": _job(studies.rho_sweep, "rho_sweep"),
     "parabola_relations": _job(studies.parabola_relations, "parabola_relations"),
     "heights": _job(studies.heights, "heights"),
+    "concave_heights": _job(studies.concave_heights, "concave_heights"),
     "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
     "worm_choices": _job(te_studies.worm_choices, "worm_choices", priority=30),
     "disk": _job(te_studies.disk, "disk", priority=10),

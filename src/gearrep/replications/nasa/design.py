@@ -55,6 +55,7 @@ def params_from_published(published) -> dict:
         "s3_a_c_over_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "a_c_over_Pn"),
         "s3_a_t_over_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "a_t_over_Pn"),
         "s3_l_c_times_Pn": _param(P, "params_002_S3.csv", "S3.2_concave_pinion", "l_c_times_Pn"),
+        "s3_N2_min": _param(P, "params_002_S3.csv", "S3.3_pointing", "N2_min"),
         "rho_v1": (_value(V, "002-T6.2.1-version=1-rho_pinion"), _value(V, "002-T6.2.1-version=1-rho_gear")),
         "rho_v2_add": (
             _value(V, "002-T6.2.1-version=2;zone=pinion_addendum-rho_pinion"),

@@ -18,7 +18,6 @@ __all__ = [
     "one",
     "evaluate",
     "check_records",
-    "NOT_COMPUTED_HEIGHTS_ARCS",
     "INPUT_RADII",
     "NOT_COMPUTED_SEC3",
 ]
@@ -36,13 +35,6 @@ class Rule:
         self.needs, self.fn = tuple(needs), fn
 
 
-NOT_COMPUTED_HEIGHTS_ARCS = (
-    "heights of the circular-arc rack-cutters of versions 1-2 (refs. 1-4 of the report) are not computed: the arc "
-    "centres' placement, the rack tooth thickness and the top land of those designs are not printed (the parabolic "
-    "version 3 is computed by the undercutting and pointing analysis, job heights)"
-)
-
-
 class PrintedInput(str):
     """A printed value that is a design input of the report, not a result (status ``input``); the
     text says why and where the replication uses it as printed."""
@@ -54,12 +46,27 @@ INPUT_RADII = PrintedInput(
     "versions 1 and 2 radii are design inputs of the circular-arc rack-cutters (refs. 1-4 of the report), not "
     "results of a computation in the report; they are used here as inputs of Table 6.2.4 and 6.2.3"
 )
-NOT_COMPUTED_SEC3 = (
-    "the tooth height of the pinion concave-gear convex design (sec. 3.3) is not computed: the undercutting and "
-    "pointing analysis (gearrep.surfaces.novikov.undercut_limit, pointing_limit; job heights for the convex pinion) "
-    "would have to be run for the convex gear of sec. 3.2 with the top land t_a = 0.3/P_n, which needs the gear "
-    "rack's tooth thickness (not printed) and the orientation of its profiles (fig. 3.2.1 is not in the text)"
-)
+
+
+def _sec3_reason(t) -> str:
+    """Why the concave-pinion height is not computed, from the table of job concave_heights."""
+    ch = t["concave_heights"].set_index("placement")
+    a, d = ch.loc["Q_in_pinion_addendum"], ch.loc["Q_in_pinion_dedendum"]
+    return (
+        "the tooth height of the pinion concave-gear convex design (sec. 3.3) is not computed: the undercutting and "
+        "pointing analysis of the heights job (h = h_a + h_d about the pitch line, tooth thickness at the pitch line) "
+        "needs a gear rack profile that crosses the pitch line between its limits, and the sec. 3.2 parabolas do not "
+        f"give one (job concave_heights, N2 = {int(a['N2'])}). With Q in the pinion addendum (our reading for the "
+        f"contact ellipse) the gear rack's profile turns back {a['gear_tip_limit_x_Pn']:.3f}/P_n above the pitch line "
+        "and never reaches it; with Q in the pinion dedendum, the placement inequality 3.2.1 implies (the pinion's "
+        f"profile at Q turns convex at rho = {d['rho_switch_Pn']:.2f}/P_n, bound {d['rho_bound_eq_3_2_1_Pn']:.2f}/P_n; "
+        f"{a['rho_switch_Pn']:.2f}/P_n with Q in the addendum), the generated gear reaches Litvin's limiting line "
+        f"{-d['gear_root_limit_x_Pn']:.3f}/P_n below the pitch line, before the profile gets there. Fig. 3.2.1, not in "
+        "the text, must show further profile segments (or another placement) that the report does not describe"
+    )
+
+
+NOT_COMPUTED_SEC3 = Rule(("concave_heights",), _sec3_reason)
 
 
 def one(df, **sel):

@@ -16,7 +16,7 @@ import pandas as pd
 
 from ... import frames
 from ...solve import Status
-from ...surfaces.novikov import RackGeneratedFlank, pitch_radius, pointing_limit, undercut_limit
+from ...surfaces.novikov import RackGeneratedFlank, addendum_limit, pitch_radius, pointing_limit
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC, DEG, MM_PER_IN
@@ -36,6 +36,7 @@ __all__ = [
     "rho_sweep",
     "parabola_relations",
     "heights",
+    "concave_heights",
 ]
 
 
@@ -425,67 +426,167 @@ def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
     )
 
 
-def _rack_heights(N, a, alpha_n, P_n, beta):
-    """h_a P_n of the rack that generates an N-tooth member on the side x_c < 0 (undercutting:
-    Litvin's limiting line) and h_d(rack tooth / pitch, top land P_n) -> (h_d P_n, tip radius)
-    (pointing). Lengths in inches."""
-    f = RackGeneratedFlank(a, alpha_n, vertex_pitch_distance(alpha_n, P_n), beta, pitch_radius(N, P_n, beta), -1)
-    _, x_u = undercut_limit(f, -1.0 / P_n)
+def _rack_heights(N, a, alpha_n, l, P_n, beta, profile="parabola", addendum=None):
+    """h_a P_n and the kind of limit of the rack that generates an N-tooth member on the side
+    x_c < 0 (:func:`gearrep.surfaces.novikov.addendum_limit`: Litvin's limiting line, a zero
+    pressure angle or the end of the profile), and h_d(rack tooth / pitch, top land P_n) ->
+    (h_d P_n, tip radius) (pointing). ``addendum`` = (a, l) of a separate arc for the rack
+    addendum (version 2's convex tip arc); lengths in inches."""
+    r_p = pitch_radius(N, P_n, beta)
+    f = RackGeneratedFlank(a, alpha_n, l, beta, r_p, -1, profile=profile)
+    if addendum is None:
+        f_add = f
+    else:
+        f_add = RackGeneratedFlank(addendum[0], alpha_n, addendum[1], beta, r_p, -1, profile=profile)
+    if profile == "parabola":
+        u_end, u_top = -3.0 / P_n, 3.0 / P_n
+    else:  # half a circle towards the member; up to the top of the arc away from it
+        u_end, u_top = -np.pi * abs(f_add.rack.rho), f.rack.rho * (np.pi / 2 - alpha_n)
+    _, x_u, kind = addendum_limit(f_add, u_end)
     p_n = np.pi / P_n
 
     def hd(rack_tooth_over_pitch, top_land_Pn):
-        _, x_p, r_tip = pointing_limit(f, p_n, rack_tooth_over_pitch * p_n, top_land_Pn / P_n, 3.0 / P_n)
+        _, x_p, r_tip = pointing_limit(f, p_n, rack_tooth_over_pitch * p_n, top_land_Pn / P_n, u_top)
         return x_p * P_n, r_tip
 
-    return -x_u * P_n, hd
+    return max(-x_u * P_n, 0.0) + 0.0, kind, hd  # 0: no working addendum (a limit at the pitch line, to rounding)
+
+
+def _required_rack_tooth(hd_of, hd_printed, t):
+    """Rack tooth thickness / pitch giving the printed h_d for top land t P_n: the first bracket on
+    a 0.025 grid over (0.2, 0.8), refined by Brent's method (NaN if none)."""
+    from scipy.optimize import brentq
+
+    def g(x):
+        return hd_of(x, t)[0] - hd_printed
+
+    xs = np.arange(0.2, 0.8001, 0.025)
+    v = np.array([g(x) for x in xs])
+    i = np.nonzero(np.isfinite(v[:-1]) & np.isfinite(v[1:]) & (v[:-1] * v[1:] <= 0))[0]
+    return brentq(g, xs[i[0]], xs[i[0] + 1], xtol=1e-10) if len(i) else np.nan
 
 
 def heights(s: dict, d: dict) -> pd.DataFrame:
-    """Active heights of the pinion's parabolic rack (sec. 2.4, Table 6.2.2 version 3): h_a P_n
-    from undercutting (Litvin's limiting line; no assumption needed) and h_d P_n from pointing,
-    which needs two inputs the report does not print: the rack tooth thickness at the pitch line
-    (``heights_rack_tooth_over_pitch``, a fraction of the normal pitch) and the minimal top land
-    (``heights_top_land_times_Pn``; sec. 3.3 states 0.3/P_n for its gear). Rows: ``design`` (the
-    stated assumption), ``sweep`` (each assumption varied alone), ``required`` (the rack tooth
-    thickness that gives the printed h_d for each swept top land), and ``fig2.4.2`` (h over
-    10 <= N1 <= 30 for beta = 20 deg, the design's rack coefficient: the sec. 2.4 claim)."""
-    from scipy.optimize import brentq
-
-    Pn, an, beta, _ = basics(d)
+    """Active heights of the pinion's racks (sec. 2.4, 6.2, Table 6.2.2), one ``version`` per rack:
+    3 the parabolic rack of sec. 2, 1 and 2 the circular arcs of sec. 6.2. h_a P_n is the
+    addendum limit (:func:`gearrep.surfaces.novikov.addendum_limit`, column ``ha_limit``: Litvin's
+    limiting line, a zero pressure angle, or the end of the arc; no assumption needed) and h_d P_n
+    comes from pointing, which needs two inputs the report does not print: the rack tooth thickness
+    at the pitch line (``heights_rack_tooth_over_pitch``, a fraction of the normal pitch) and the
+    minimal top land (``heights_top_land_times_Pn``; sec. 3.3 states 0.3/P_n for its gear), the same
+    for every version. Arc placement (sec. 6.2: the arcs that generate convex addenda are centred
+    on the pitch line): the arc through Q at alpha_n = 27 deg centred on the pitch point, |QP| =
+    rho; version 2's convex rack tip (rho = 0.258, pinion dedendum) touches the gear rack's arc
+    (0.230, centred on the pitch line) at the mirror point Q' below the line, so its centre lies on
+    the common normal 0.028 in beyond the pitch point. Rows: ``design`` (the stated assumption),
+    ``sweep`` (each assumption varied alone), ``required`` (the rack tooth thickness that gives the
+    printed h_d for each swept top land), and ``fig2.4.2`` (version 3, h over 10 <= N1 <= 30 for
+    beta = 20 deg: the sec. 2.4 claim)."""
+    Pn, an, beta, l3 = basics(d)
     a_c = Pn / (2 * d["rho_c_times_Pn"])
+    an12 = d["alpha_n_v12_deg"] * DEG
     N1 = d["N1"]
     sr0, t0 = s["heights_rack_tooth_over_pitch"], s["heights_top_land_times_Pn"]
+    rho1, rho2a, rho2d, rho2g = d["rho_v1"][0], d["rho_v2_add"][0], d["rho_v2_ded"][0], d["rho_v2_ded"][1]
+    racks = {
+        3: dict(a=a_c, alpha_n=an, l=l3, profile="parabola"),
+        1: dict(a=1 / (2 * rho1), alpha_n=an12, l=rho1, profile="circular_arc"),
+        # version 2's tip arc: Q' = P + rho_gear y_a (below the line), centre rho2d beyond Q' towards P
+        2: dict(a=1 / (2 * rho2a), alpha_n=an12, l=rho2a, profile="circular_arc", addendum=(-1 / (2 * rho2d), -rho2g)),
+    }
     rows = []
-
     limits = {}
 
-    def row(kind, N, b, sr, t):
-        if (N, b) not in limits:
-            limits[N, b] = _rack_heights(N, a_c, an, Pn, b)
-        ha, hd_of = limits[N, b]
-        hd, rt = hd_of(sr, t)
+    def row(kind, version, N, b, sr, t):
+        if (version, N, b) not in limits:
+            limits[version, N, b] = _rack_heights(N, P_n=Pn, beta=b, **racks[version])
+        ha, ha_kind, hd_of = limits[version, N, b]
+        hd, rt = hd_of(sr, t) if np.isfinite(sr) else (np.nan, np.nan)
         rows.append(
             dict(
                 kind=kind,
+                version=version,
                 N1=N,
                 beta_deg=np.degrees(b),
                 rack_tooth_over_pitch=sr,
                 top_land_times_Pn=t,
                 ha_Pn=ha,
+                ha_limit=ha_kind,
                 hd_Pn=hd,
                 h_Pn=ha + hd,
                 tip_radius_in=rt,
             )
         )
 
-    row("design", N1, beta, sr0, t0)
-    for sr in s["heights_sweep_rack_tooth_over_pitch"]:
-        row("sweep", N1, beta, sr, t0)
-    for t in s["heights_sweep_top_land_times_Pn"]:
-        row("sweep", N1, beta, sr0, t)
-    hd_printed, hd_of = d["hd_Pn"][3], limits[N1, beta][1]
-    for t in s["heights_sweep_top_land_times_Pn"]:
-        row("required", N1, beta, brentq(lambda x: hd_of(x, t)[0] - hd_printed, 0.2, 0.6, xtol=1e-10), t)
+    for v in (3, 1, 2):
+        row("design", v, N1, beta, sr0, t0)
+        for sr in s["heights_sweep_rack_tooth_over_pitch"]:
+            row("sweep", v, N1, beta, sr, t0)
+        for t in s["heights_sweep_top_land_times_Pn"]:
+            row("sweep", v, N1, beta, sr0, t)
+        hd_of = limits[v, N1, beta][2]
+        for t in s["heights_sweep_top_land_times_Pn"]:
+            row("required", v, N1, beta, _required_rack_tooth(hd_of, d["hd_Pn"][v], t), t)
     for N in range(10, 31, 2):
-        row("fig2.4.2", N, 20 * DEG, sr0, t0)
+        row("fig2.4.2", 3, N, 20 * DEG, sr0, t0)
+    return pd.DataFrame(rows)
+
+
+def _switch_radius(N, an, l, beta, Pn, tol):
+    """Radius rho of a pinion rack bending its profile with the sign of l (centre on the side of
+    a < 0, :mod:`gearrep.surfaces.rack`) at which the generated pinion profile at Q turns from
+    concave to convex (kappa_II through zero; NaN if not in 0.2-20 /P_n)."""
+    from scipy.optimize import brentq
+
+    r_p = pitch_radius(N, Pn, beta)
+
+    def k(rho):
+        f = RackGeneratedFlank(-1 / (2 * rho), an, l, beta, r_p, -1, tol=tol)
+        return float(point_curvatures(f)["kII"][0])
+
+    rs = np.linspace(0.2, 20.0, 100) / Pn
+    v = np.array([k(r) for r in rs])
+    i = np.nonzero(np.sign(v[1:]) != np.sign(v[:-1]))[0]
+    return brentq(k, rs[i[0]], rs[i[0] + 1], xtol=1e-12) if len(i) else np.nan
+
+
+def concave_heights(s: dict, d: dict) -> pd.DataFrame:
+    """Sec. 3.2-3.3 (pinion concave, gear convex): can the undercutting and pointing analysis of the
+    heights job run on the sec. 3.2 racks (a_c = 1.25 P_n, a_t = 1.389 P_n, l_c = 0.906/P_n, alpha_n
+    = 25 deg, both profiles bending away from their pitch point on the Q side: a < 0)? Two
+    placements of Q (fig. 3.2.1 is not in the text): in the pinion addendum (l > 0, the reading of
+    job concave_pinion) or in its dedendum (l < 0). Per placement: the rack radius at which the
+    pinion's profile at Q turns from concave to convex (``rho_switch_Pn``, N1 = 17) against the
+    bound of inequality 3.2.1, N1 sin(alpha_n)/(2 P_n cos^3 beta) + l_c; and along the gear rack
+    (N2 = N2_min = 70, the gear on x_c > 0) the limits of its profile from Q towards the gear root
+    and towards the gear tip (:func:`gearrep.surfaces.novikov.addendum_limit`), and whether the part
+    between them crosses the pitch line (needed to split h = h_a + h_d and to place a tooth
+    thickness at the pitch line). Heights in units of 1/P_n."""
+    Pn, _, beta, _ = basics(d)
+    an = d["alpha_n_deg"] * DEG
+    ac, at, lc = d["s3_a_c_over_Pn"] * Pn, d["s3_a_t_over_Pn"] * Pn, d["s3_l_c_times_Pn"] / Pn
+    N1, N2 = d["N1"], int(d["s3_N2_min"])
+    bound = N1 * np.sin(an) / (2 * Pn * np.cos(beta) ** 3) + lc
+    rows = []
+    for placement, l in (("Q_in_pinion_addendum", lc), ("Q_in_pinion_dedendum", -lc)):
+        g = RackGeneratedFlank(-at, an, l, beta, pitch_radius(N2, Pn, beta), +1, tol=s["tol"])
+        u_root, x_root, k_root = addendum_limit(g, 3.0 / Pn)
+        u_tip, x_tip, k_tip = addendum_limit(g, -3.0 / Pn)
+        x = g.rack.profile(np.linspace(u_tip, u_root, 2001))[0]
+        rows.append(
+            dict(
+                placement=placement,
+                l_times_Pn=l * Pn,
+                rho_c_times_Pn=Pn / (2 * ac),
+                rho_switch_Pn=_switch_radius(N1, an, l, beta, Pn, s["tol"]) * Pn,
+                rho_bound_eq_3_2_1_Pn=bound * Pn,
+                N2=N2,
+                x_Q_Pn=float(g.rack.profile(np.array([0.0]))[0][0]) * Pn,
+                gear_root_limit_x_Pn=x_root * Pn,
+                gear_root_limit=k_root,
+                gear_tip_limit_x_Pn=x_tip * Pn,
+                gear_tip_limit=k_tip,
+                working_part_crosses_pitch_line=bool(np.any(np.diff(np.sign(x)) != 0)),
+            )
+        )
     return pd.DataFrame(rows)

@@ -6,7 +6,9 @@ from __future__ import annotations
 
 from functools import partial
 
-from .records import INPUT_RADII, NOT_COMPUTED_HEIGHTS_ARCS, NOT_COMPUTED_SEC3, PrintedInput, Rule, one
+import numpy as np
+
+from .records import INPUT_RADII, NOT_COMPUTED_SEC3, PrintedInput, Rule, one
 
 __all__ = ["VALUES"]
 
@@ -193,10 +195,20 @@ def _worm(case, t):
     return w.loc[case, "te_max_arcsec"], note, _WORM_TOL_REL, _WORM_TOL_BASIS
 
 
+def _dependence_text(sw) -> str:
+    """'h1, h2, ... for (rack tooth / pitch, top land P_n) = (a1, b1), ...' of the sweep rows."""
+    return (
+        ", ".join(f"{x:.3f}" for x in sw["hd_Pn"])
+        + " for (rack tooth / pitch, top land P_n) = "
+        + ", ".join(f"({a:.2f}, {b:.2f})" for a, b in zip(sw["rack_tooth_over_pitch"], sw["top_land_times_Pn"]))
+    )
+
+
 def _height(col, t):
     """Table 6.2.2 version 3 (and sec. 3.3's 1.8 for the convex pinion): the design row of the
     heights table, with the assumption dependence in the note."""
     h = t["heights"]
+    h = h[h["version"] == 3]
     r = one(h, kind="design")
     sw = h[h["kind"] == "sweep"]
     req = h[h["kind"] == "required"]
@@ -206,19 +218,79 @@ def _height(col, t):
         "no assumption). h_d from pointing needs two unprinted inputs; assumed: rack tooth thickness at the pitch line "
         f"{r['rack_tooth_over_pitch']:.2f} x normal pitch, minimal (transverse) top land {r['top_land_times_Pn']:.2f}/P_n "
         f"(sec. 3.3's value): h_d P_n = {r['hd_Pn']:.4f}. Dependence: h_d P_n = "
-        + ", ".join(f"{x:.3f}" for x in sw["hd_Pn"])
-        + " for (rack tooth / pitch, top land P_n) = "
-        + ", ".join(f"({a:.2f}, {b:.2f})" for a, b in zip(sw["rack_tooth_over_pitch"], sw["top_land_times_Pn"]))
+        + _dependence_text(sw)
         + ". The printed h_d P_n = 1.25 needs a rack tooth of "
         + ", ".join(f"{a:.3f}" for a in req["rack_tooth_over_pitch"])
         + " pitches for top lands "
         + ", ".join(f"{b:.2f}" for b in req["top_land_times_Pn"])
         + "/P_n (a pinion tooth thicker than half the pitch; with equal tooth and space even a pointed tooth gives "
         f"{sw.loc[sw['top_land_times_Pn'] == 0, 'hd_Pn'].max():.3f}); then h P_n = {req['h_Pn'].iloc[0]:.3f}. One "
-        "assumption fits the one assumption-dependent printed height (h_d, and h with it) along that curve; the only "
-        "other heights of the same rack are h_a (no assumption, 0.544 vs 0.55) and the total"
+        "assumption fits this rack's one assumption-dependent printed height (h_d, and h with it) along that curve, "
+        "but not those of the circular-arc racks (versions 1-2, same analysis): rack tooth / pitch giving each "
+        "version's printed h_d over top lands 0-0.4/P_n: " + _required_text(t["heights"])
     )
     return r[col], note
+
+
+def _required_text(h) -> str:
+    """'v: a-b' ranges of the rack tooth / pitch that give each version's printed h_d (top lands swept)."""
+    out = []
+    for v in (3, 1, 2):
+        req = h[(h["kind"] == "required") & (h["version"] == v)]
+        x = req["rack_tooth_over_pitch"].dropna()
+        at = (
+            one(req, top_land_times_Pn=0.3)["rack_tooth_over_pitch"]
+            if (req["top_land_times_Pn"] == 0.3).any()
+            else np.nan
+        )
+        out.append(f"version {v} {x.min():.3f}-{x.max():.3f} ({at:.3f} at 0.3/P_n)")
+    return "; ".join(out)
+
+
+_HA_LIMIT = {
+    "singular": "Litvin's limiting line (undercutting)",
+    "zero_pressure_angle": (
+        "the zero pressure angle: the arc is centred on the pitch line (sec. 6.2), so it meets the line with a "
+        "profile parallel to the tooth height and below it would turn back (a rack tooth widening towards its tip)"
+    ),
+    "profile_end": (
+        "the lowest point of the convex tip arc (pressure angle 90 deg): neither undercutting nor a zero pressure "
+        "angle occurs on it, so the printed 0.90 is not an undercutting limit of this arc (it must come from the "
+        "standard racks of refs. 3-4, not in the report)"
+    ),
+}
+
+
+def _height_arc(version, col, t):
+    """Table 6.2.2 versions 1-2 (circular-arc racks): the design row of the heights table, same
+    assumption as version 3, with the dependence and the one-assumption test in the note."""
+    h = t["heights"]
+    hv = h[h["version"] == version]
+    r = one(hv, kind="design")
+    sw = hv[hv["kind"] == "sweep"]
+    if version == 1:
+        rack = "arc rho = 0.200 in centred on the pitch point (sec. 6.2), alpha_n = 27 deg at Q, |QP| = rho"
+    else:
+        rack = (
+            "addendum-generating arc rho = 0.230 in centred on the pitch point, alpha_n = 27 deg; convex tip arc "
+            "rho = 0.258 in touching the gear rack's 0.230 arc (centred on the pitch line) at the mirror point Q' "
+            "below the line, centre 0.028 in beyond the pitch point on that normal (Table 6.2.1 footnote)"
+        )
+    note = (
+        f"pinion rack of version {version} ({rack}; N1 = 17, beta = {r['beta_deg']:.3f} deg; "
+        "gearrep.surfaces.rack.CircularArcRackCutter). "
+        f"h_a P_n = {abs(r['ha_Pn']):.4f}, limited by {_HA_LIMIT[r['ha_limit']]}; no thickness or top-land "
+        "assumption. "
+        "h_d from pointing with the assumption of version 3 (rack tooth at the pitch line "
+        f"{r['rack_tooth_over_pitch']:.2f} x normal pitch, minimal transverse top land {r['top_land_times_Pn']:.2f}/P_n): "
+        f"h_d P_n = {r['hd_Pn']:.4f}. Dependence: h_d P_n = "
+        + _dependence_text(sw)
+        + ". Rack tooth / pitch that gives each version's printed h_d over top lands 0-0.4/P_n: "
+        + _required_text(h)
+        + ": no one assumption reproduces the printed h_d of all three versions (versions 1-2 need a rack tooth "
+        "thicker than half the pitch, version 3 a thinner one)"
+    )
+    return (abs(r[col]) if col == "ha_Pn" else r[col]), note
 
 
 def _disk_common(r) -> str:
@@ -277,7 +349,11 @@ VALUES: dict = {
         _CUR, partial(_rho, "gear", "eq 2.7.2: 6.35/P_n (1/(2 a_t) = 1.2690 with the printed a_t = 0.394)")
     ),
     **{vid: INPUT_RADII for vid in _RADII_12},
-    **{f"002-T6.2.2-version={v}-{q}": NOT_COMPUTED_HEIGHTS_ARCS for v in (1, 2) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
+    **{
+        f"002-T6.2.2-version={v}-{q}": Rule(("heights",), partial(_height_arc, v, q))
+        for v in (1, 2)
+        for q in ("ha_Pn", "hd_Pn", "h_Pn")
+    },
     **{f"002-T6.2.2-version=3-{q}": Rule(("heights",), partial(_height, q)) for q in ("ha_Pn", "hd_Pn", "h_Pn")},
     "002-S3.3-design=pinion_concave;N2_min=70-h_Pn": NOT_COMPUTED_SEC3,
     "002-S3.3-design=pinion_convex-h_Pn": Rule(("heights",), partial(_height, "h_Pn")),
