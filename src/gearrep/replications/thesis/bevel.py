@@ -29,6 +29,7 @@ import time
 import numpy as np
 import pandas as pd
 
+from ...meshing import sampled_cycle
 from ...published import param_table
 from ...solve import Status
 from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length
@@ -37,6 +38,7 @@ from ...tca import BevelMisalignment, BevelPair, draw_starts, seed_from_reduced,
 from ...units import DEG
 from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, run_variant
 from .model import wrap
+from .te import JUMP_TOL_ARCSEC, PAIRS
 
 CASES = ("straight_bevel_39_32", "spiral_bevel_17_17")
 #: our readings where the thesis prints nothing (module docstring)
@@ -295,9 +297,6 @@ def rng_bevel(s: dict, case: str) -> np.random.Generator:
 # ----------------------------------------------------------------------------------------------
 # contact studies (sec 5.1-5.2)
 # ----------------------------------------------------------------------------------------------
-#: a hand-over jump above this counts as a discontinuous TE (as for the cylindrical studies)
-JUMP_TOL_ARCSEC = 0.01
-PAIRS = range(-2, 3)
 
 
 def _solve_grid(pair: BevelPair, phi: np.ndarray, tol: float, rounds: int = 30):
@@ -363,14 +362,10 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
     k = -2..2). A grid point counts only if the contact lies inside both flanks (edge contact is
     not modelled: a gap in the envelope, i.e. a discontinuous TE). The hand-over test is
     :func:`gearrep.meshing.handover_gap` (a crossing between grid points is continuous)."""
-    from ...meshing import handover_gap, pair_te_curves, upper_envelope
-    from ...units import ARCSEC
-
     p1 = 2 * np.pi / pair.n1
     phi = np.linspace(-1.25 * p1, 1.25 * p1, 4 * int(n_points) + 1)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         c = _solve_grid(pair, phi, tol)
-    cyc = np.linspace(-0.5 * p1, 0.5 * p1, int(n_points))
     if c is None:
         ok = np.zeros(len(phi), bool)
         nan = np.full(len(phi), np.nan)
@@ -380,25 +375,18 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
         ok = c.converged
         te = np.where(ok, c.te, np.nan)
         c_fields = dict(u1=c.u1, v1=c.v1, u2=c.u2, v2=c.v2)
-    if ok.sum() >= 2:
-        curves = pair_te_curves(phi, te, p1, cyc, PAIRS)
-        env, lead = upper_envelope(curves)
-        jump = handover_gap(curves, lead, env)
-    else:
-        env, jump = np.full(cyc.shape, np.nan), np.nan
-    fin = np.isfinite(env)
-    jump_arcsec = jump / ARCSEC if np.isfinite(jump) else np.nan
+    cycle = sampled_cycle(phi, te, p1, int(n_points), PAIRS, handover="gap")
     return dict(
         phi1=phi,
         te=te,
         ok=ok,
         contact=c,
-        cycle_phi1=cyc,
-        cycle_te=env,
-        continuous=bool(fin.all() and jump_arcsec <= JUMP_TOL_ARCSEC),
-        te_extreme=float(env[fin][np.argmax(np.abs(env[fin]))]) if fin.any() else np.nan,
-        env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
-        jump_arcsec=jump_arcsec,
+        cycle_phi1=cycle.phi1,
+        cycle_te=cycle.te,
+        continuous=cycle.continuous(JUMP_TOL_ARCSEC),
+        te_extreme=cycle.te_extreme,
+        env_pp=cycle.te_peak_to_peak,
+        jump_arcsec=cycle.jump_arcsec,
         te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
         engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan),
         **c_fields,
