@@ -204,20 +204,7 @@ def bevel_convergence(s: dict, design) -> dict:
     for case in CASES:
         pair = convergence_pair(s, design, case)
         ref = bevel_reference(pair, READINGS["phi1_rad"], s)
-        refs.append(
-            dict(
-                case=case,
-                phi1_rad=ref.phi1,
-                u1_rad=ref.x[0],
-                v1=ref.x[1],
-                u2_rad=ref.x[2],
-                v2=ref.x[3],
-                phi2_rad=ref.x[4],
-                conventional_minus_reduced=ref.max_diff_mm,
-                conventional_minus_reduced_rad=ref.diff_rad,
-                dropped_normal_component="xyz"[ref.drop],
-            )
-        )
+        refs.append(_reference_row(case, ref))
         n = int(s["bevel_n_starts"])
         st = draw_starts(pair, n, rng_bevel(s, case), phi2_window=(ref.x[4] - w0 / 2, ref.x[4] + w0 / 2))
         study = "Table 11" if case.startswith("straight") else "Table 12"
@@ -234,60 +221,99 @@ def bevel_convergence(s: dict, design) -> dict:
             equations=EQUATION_ABLATION,
         )
         rows += r.rows
-        if case.startswith("spiral"):  # crown sensitivity of the Table 12 study (same starts)
-            for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
-                pc = bevel_pair(design, case, crown=float(c1))
-                rc = bevel_reference(pc, READINGS["phi1_rad"], s)
-                stc = st.copy()
-                stc[:, 4] += rc.x[4] - ref.x[4]
-                rows += convergence_study(
-                    f"{case}_c1_{float(c1):g}",
-                    pc,
-                    rc,
-                    stc,
-                    ("plain", "reduced", "reduced_robust"),
-                    s,
-                    window=w0,
-                    study="Table 12 (crown sensitivity)",
-                    start_rule=f"as Table 12 with c_1 = {float(c1):g}",
-                ).rows
-        for lab, (o, x, _) in r.outcomes.items():
-            ok = o == "correct"
-            d = np.abs(x[ok] - ref.x) if ok.any() else np.full((1, 5), np.nan)
-            d[:, 4] = np.abs(wrap(d[:, 4]))
-            acc.append(
-                dict(
-                    case=case,
-                    variant=lab,
-                    n_correct=int(ok.sum()),
-                    mean_abs_error=float(np.mean(d)),
-                    max_abs_error=float(np.max(d)),
-                )
-            )
-        for lab in ("plain", "reduced"):
-            batch = next(q for q in r.rows if q["variant"] == lab)
-            sub = st[: int(s["timing_loop_n"])]
-            t0 = time.perf_counter()
-            for i in range(len(sub)):
-                run_variant(pair, ref, sub[i : i + 1], lab, s)
-            loop = (time.perf_counter() - t0) / len(sub)
-            timing.append(
-                dict(
-                    case=case,
-                    formulation=batch["formulation"],
-                    variant=lab,
-                    seconds_per_solve_batch=batch["seconds_per_solve"],
-                    seconds_per_solve_loop=loop,
-                    n_loop=len(sub),
-                    correct_pct=batch["correct_pct"],
-                )
-            )
+        if case.startswith("spiral"):
+            rows += _crown_sensitivity_rows(s, design, case, ref, st, w0)
+        acc += _accuracy_rows(case, r, ref)
+        timing += _loop_timing_rows(s, case, pair, ref, r, st)
     accuracy = pd.DataFrame(acc).merge(
         pd.DataFrame(timing)[["case", "variant", "seconds_per_solve_batch", "seconds_per_solve_loop", "n_loop"]],
         on=["case", "variant"],
         how="left",
     )
     return dict(rows=rows, refs=pd.DataFrame(refs), accuracy=accuracy)
+
+
+def _reference_row(case: str, ref: Reference) -> dict:
+    """Row of bevel_references.csv: the verified reference contact of one pair."""
+    return dict(
+        case=case,
+        phi1_rad=ref.phi1,
+        u1_rad=ref.x[0],
+        v1=ref.x[1],
+        u2_rad=ref.x[2],
+        v2=ref.x[3],
+        phi2_rad=ref.x[4],
+        conventional_minus_reduced=ref.max_diff_mm,
+        conventional_minus_reduced_rad=ref.diff_rad,
+        dropped_normal_component="xyz"[ref.drop],
+    )
+
+
+def _crown_sensitivity_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
+    """Crown sensitivity of the Table 12 study: the same starts (phi2 moved with the root) on the
+    pair with each crown c_1 of the settings."""
+    rows = []
+    for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
+        pc = bevel_pair(design, case, crown=float(c1))
+        rc = bevel_reference(pc, READINGS["phi1_rad"], s)
+        stc = st.copy()
+        stc[:, 4] += rc.x[4] - ref.x[4]
+        rows += convergence_study(
+            f"{case}_c1_{float(c1):g}",
+            pc,
+            rc,
+            stc,
+            ("plain", "reduced", "reduced_robust"),
+            s,
+            window=w0,
+            study="Table 12 (crown sensitivity)",
+            start_rule=f"as Table 12 with c_1 = {float(c1):g}",
+        ).rows
+    return rows
+
+
+def _accuracy_rows(case: str, r, ref: Reference) -> list:
+    """Per variant: mean and max |x - x_ref| over the correct starts and the five unknowns (phi2 wrapped)."""
+    acc = []
+    for lab, (o, x, _) in r.outcomes.items():
+        ok = o == "correct"
+        d = np.abs(x[ok] - ref.x) if ok.any() else np.full((1, 5), np.nan)
+        d[:, 4] = np.abs(wrap(d[:, 4]))
+        acc.append(
+            dict(
+                case=case,
+                variant=lab,
+                n_correct=int(ok.sum()),
+                mean_abs_error=float(np.mean(d)),
+                max_abs_error=float(np.max(d)),
+            )
+        )
+    return acc
+
+
+def _loop_timing_rows(s: dict, case: str, pair: BevelPair, ref: Reference, r, st: np.ndarray) -> list:
+    """Plain and reduced Newton: the batch time per solve of the study beside the time of one
+    start per call over the first ``timing_loop_n`` starts."""
+    timing = []
+    for lab in ("plain", "reduced"):
+        batch = next(q for q in r.rows if q["variant"] == lab)
+        sub = st[: int(s["timing_loop_n"])]
+        t0 = time.perf_counter()
+        for i in range(len(sub)):
+            run_variant(pair, ref, sub[i : i + 1], lab, s)
+        loop = (time.perf_counter() - t0) / len(sub)
+        timing.append(
+            dict(
+                case=case,
+                formulation=batch["formulation"],
+                variant=lab,
+                seconds_per_solve_batch=batch["seconds_per_solve"],
+                seconds_per_solve_loop=loop,
+                n_loop=len(sub),
+                correct_pct=batch["correct_pct"],
+            )
+        )
+    return timing
 
 
 def rng_bevel(s: dict, case: str) -> np.random.Generator:
