@@ -24,8 +24,6 @@ and drives (phi1 given); the thesis calls the crowned member "driven" in sec 5.1
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import pandas as pd
 
@@ -36,7 +34,7 @@ from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_le
 from ...surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning, RootRelief
 from ...tca import BevelMisalignment, BevelPair, draw_starts, seed_from_reduced, solve_contact, solve_conventional
 from ...units import DEG
-from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, run_variant
+from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, loop_timing
 from .model import wrap
 from .te import JUMP_TOL_ARCSEC, PAIRS
 
@@ -224,7 +222,7 @@ def bevel_convergence(s: dict, design) -> dict:
         if case.startswith("spiral"):
             rows += _crown_sensitivity_rows(s, design, case, ref, st, w0)
         acc += _accuracy_rows(case, r, ref)
-        timing += _loop_timing_rows(s, case, pair, ref, r, st)
+        timing += [loop_timing(s, pair, ref, r.rows, st, lab) for lab in ("plain", "reduced")]
     accuracy = pd.DataFrame(acc).merge(
         pd.DataFrame(timing)[["case", "variant", "seconds_per_solve_batch", "seconds_per_solve_loop", "n_loop"]],
         on=["case", "variant"],
@@ -289,31 +287,6 @@ def _accuracy_rows(case: str, r, ref: Reference) -> list:
             )
         )
     return acc
-
-
-def _loop_timing_rows(s: dict, case: str, pair: BevelPair, ref: Reference, r, st: np.ndarray) -> list:
-    """Plain and reduced Newton: the batch time per solve of the study beside the time of one
-    start per call over the first ``timing_loop_n`` starts."""
-    timing = []
-    for lab in ("plain", "reduced"):
-        batch = next(q for q in r.rows if q["variant"] == lab)
-        sub = st[: int(s["timing_loop_n"])]
-        t0 = time.perf_counter()
-        for i in range(len(sub)):
-            run_variant(pair, ref, sub[i : i + 1], lab, s)
-        loop = (time.perf_counter() - t0) / len(sub)
-        timing.append(
-            dict(
-                case=case,
-                formulation=batch["formulation"],
-                variant=lab,
-                seconds_per_solve_batch=batch["seconds_per_solve"],
-                seconds_per_solve_loop=loop,
-                n_loop=len(sub),
-                correct_pct=batch["correct_pct"],
-            )
-        )
-    return timing
 
 
 def rng_bevel(s: dict, case: str) -> np.random.Generator:
