@@ -38,6 +38,7 @@ import numpy as np
 from .solve import SolveResult, Status, newton
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
 from .tca._formulations import _reduced_FJ
+from .units import ARCSEC
 
 __all__ = [
     "contact_ratio",
@@ -50,6 +51,8 @@ __all__ = [
     "upper_envelope",
     "handover_jump",
     "handover_gap",
+    "SampledCycle",
+    "sampled_cycle",
 ]
 
 
@@ -474,3 +477,64 @@ def handover_gap(curves, lead, envelope) -> float:
             continue
         gap = max(gap, abs(envelope[i + 1] - envelope[i]))
     return gap
+
+
+@dataclass(frozen=True)
+class SampledCycle:
+    """The TE transmitted over one mesh cycle, built from one tooth pair's sampled TE
+    (:func:`sampled_cycle`).
+
+    phi1 : the cycle's angles [rad], from -pitch/2 to +pitch/2
+    te : the transmitted TE [rad] (upper envelope of the pairs), NaN where no pair is engaged
+    jump : the largest TE step at a hand-over [rad] (:func:`handover_jump` or :func:`handover_gap`),
+        NaN when pair 0 has fewer than two finite TE samples
+    """
+
+    phi1: np.ndarray
+    te: np.ndarray
+    jump: float
+
+    @property
+    def jump_arcsec(self) -> float:
+        """:attr:`jump` in arcsec (NaN stays NaN)."""
+        return self.jump / ARCSEC if np.isfinite(self.jump) else np.nan
+
+    def continuous(self, jump_tol_arcsec: float) -> bool:
+        """A pair is engaged at every cycle angle and no hand-over steps by more than
+        ``jump_tol_arcsec`` [arcsec]."""
+        return bool(np.isfinite(self.te).all() and self.jump_arcsec <= jump_tol_arcsec)
+
+    @property
+    def te_extreme(self) -> float:
+        """The transmitted TE of largest magnitude [rad] (NaN if none is finite)."""
+        fin = np.isfinite(self.te)
+        return float(self.te[fin][np.argmax(np.abs(self.te[fin]))]) if fin.any() else np.nan
+
+    @property
+    def te_peak_to_peak(self) -> float:
+        """max - min of the finite transmitted TE [rad] (NaN if none is finite)."""
+        fin = np.isfinite(self.te)
+        return float(np.ptp(self.te[fin])) if fin.any() else np.nan
+
+
+def sampled_cycle(phi1, te, pitch: float, n_points: int, pairs=range(-2, 3), *, handover: str = "jump") -> SampledCycle:
+    """TE transmitted over one mesh cycle of ``n_points`` angles from -pitch/2 to +pitch/2, from
+    pair 0's TE sampled on a grid (``phi1``, ``te`` [rad], NaN where pair 0 has no contact on the
+    flanks): the upper envelope (:func:`upper_envelope`) of the neighbouring pairs' curves
+    (:func:`pair_te_curves`, pairs k in ``pairs``) and its largest hand-over step, measured by
+    :func:`handover_jump` (``handover="jump"``) or by the sign-aware :func:`handover_gap`
+    (``"gap"``: a crossing between grid angles is continuous). With fewer than two finite samples
+    the envelope is NaN everywhere and the step NaN."""
+    if handover not in ("jump", "gap"):
+        raise ValueError(f"handover must be 'jump' or 'gap', got {handover!r}")
+    if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or n_points < 2:
+        raise ValueError(f"n_points must be an integer >= 2, got {n_points!r}")
+    if not (np.isfinite(pitch) and pitch > 0):
+        raise ValueError(f"pitch must be > 0 rad, got {pitch!r}")
+    at = np.linspace(-0.5 * pitch, 0.5 * pitch, int(n_points))
+    if np.count_nonzero(np.isfinite(np.asarray(te, float))) < 2:
+        return SampledCycle(at, np.full(at.shape, np.nan), np.nan)
+    curves = pair_te_curves(phi1, te, pitch, at, pairs)
+    env, lead = upper_envelope(curves)
+    step = handover_gap if handover == "gap" else handover_jump
+    return SampledCycle(at, env, float(step(curves, lead, env)))

@@ -9,7 +9,7 @@ What the page holds, per paper: a verdict (:func:`verdict`, criteria in :data:`V
 headline findings written from the check records (:func:`findings`), the design data of every
 example, one row per source table in the paper's order linked to its notebook heading, and a
 parity plot (published against computed, with the tolerance band) for every table with computed
-numbers (:func:`parity_png`).
+numbers (:func:`parity_png`; the workflow draws them per paper beforehand, :func:`parity_pngs`).
 
 Statuses come from :data:`gearrep.checks.STATUSES`: the five comparison statuses are grouped as
 agreeing, disagreeing or open; any other status (e.g. one for printed design inputs) is counted
@@ -46,6 +46,8 @@ __all__ = [
     "highlight",
     "ordered_sources",
     "parity_png",
+    "parity_pngs",
+    "parity_rows",
     "render",
     "result_statuses",
     "status_meaning",
@@ -163,19 +165,24 @@ def anchor(text: str) -> str:
     return quote(re.sub(r"\s+", " ", str(text).strip()).replace(" ", "-"), safe="?/:@!$&'()*+,;=")
 
 
-#: an absolute path of a machine (POSIX roots that hold user, build or system files, a Windows drive,
-#: file:// URLs); not preceded by a character that makes it part of a URL, a base64 blob or a word
-_ABSOLUTE = re.compile(
-    r"(?<![\w.:/~+=%-])/(?:home|root|tmp|work|usr|opt|var|srv|mnt|media|private|Users|nix|gnu|scratch|data|builds?)"
+#: an absolute POSIX path under a root that holds user, build or system files, not preceded by a
+#: character that makes it part of a URL, a base64 blob or a word (the look-behind after the first
+#: "/" lets the regex engine jump from one "/" to the next: a page of megabytes scans in milliseconds)
+_POSIX = (
+    r"/(?<![\w.:/~+=%-]/)(?:home|root|tmp|work|usr|opt|var|srv|mnt|media|private|Users|nix|gnu|scratch|data|builds?)"
     r"/[^\s\"'<>)]*"
-    r"|\b[A-Za-z]:\\(?:Users|Windows|Program Files)[^\s\"'<>]*"
-    r"|file://[^\s\"'<>]+"
 )
+#: the same, a Windows drive path or a file:// URL
+_ABSOLUTE = re.compile(_POSIX + r"|\b[A-Za-z]:\\(?:Users|Windows|Program Files)[^\s\"'<>]*" + r"|file://[^\s\"'<>]+")
+_ABSOLUTE_POSIX = re.compile(_POSIX)
 
 
 def absolute_paths(text: str) -> list[str]:
-    """Absolute machine paths found in ``text`` (a rendered page must show none)."""
-    return _ABSOLUTE.findall(text)
+    """Absolute machine paths found in ``text`` (a rendered page must show none). A text without
+    ``:\\`` and ``file://`` can hold only POSIX paths, found by the fast POSIX pattern alone."""
+    if ":\\" in text or "file://" in text:
+        return _ABSOLUTE.findall(text)
+    return _ABSOLUTE_POSIX.findall(text)
 
 
 def _fmt(v) -> str:
@@ -446,6 +453,29 @@ def parity_png(rows: pd.DataFrame, title: str) -> bytes:
     return buf.getvalue()
 
 
+def parity_rows(grp: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    """{source: rows} of one paper's scorecard rows for every source that gets a parity plot: the
+    source's printed numbers with a result status (printed inputs are not results), for the sources
+    where at least one of them is computed. The rows are those :func:`parity_png` draws."""
+    missing = [c for c in ("source", "published", "computed", "status") if c not in grp.columns]
+    if missing:
+        raise ValueError(f"parity rows need scorecard columns {missing}")
+    nums = grp[grp["published"].notna() & grp["status"].isin(result_statuses())]
+    out = {}
+    for src in dict.fromkeys(nums["source"]):
+        rows = nums[nums["source"] == src]
+        if rows["computed"].notna().any():
+            out[src] = rows
+    return out
+
+
+def parity_pngs(grp: pd.DataFrame) -> dict[str, bytes]:
+    """{source: PNG} of the parity plots of one paper (its scorecard rows ``grp``): one per source
+    of :func:`parity_rows`. The workflow draws them per seed, as soon as that seed's checks exist,
+    and hands them to :func:`render`."""
+    return {src: parity_png(rows, src) for src, rows in parity_rows(grp).items()}
+
+
 def _paper_findings(grp, errata, order, specs) -> list[str]:
     own = [highlight(grp, h["text"], h.get("ids"), h.get("statuses"))[1] for h in specs]
     return (own + findings(grp, errata, order))[: max(5, len(own))]
@@ -462,42 +492,14 @@ def _agreement_word(k: int, n: int) -> str:
 # ----------------------------------------------------------------------------- page
 
 
-def render(
-    card: pd.DataFrame,
-    figures: dict[str, bytes],
-    errata: pd.DataFrame,
-    environment: dict,
-    notebooks: dict[str, str] | None = None,
-    runtime_s: float | None = None,
-    *,
-    order: Mapping[tuple[str, str], int] | None = None,
-    design: pd.DataFrame | None = None,
-    parity: bool = True,
-    highlights: Mapping[str, list] | None = None,
-) -> str:
-    """HTML of the report.
-
-    card : the scorecard (columns of gearrep.checks.scorecard plus ``replication``)
-    figures : {caption: PNG bytes}, embedded in order (the caption says what the figure shows and
-        whether it agrees)
-    errata : columns seed, location, printed, correction, evidence
-    environment : {name: value} (versions, git commit, config hash)
-    notebooks : {replication: relative href of its rendered notebook}
-    runtime_s : total workflow run time in seconds (sum of the jobs' benchmarks)
-    order : {(seed, source): line of the seed text}, the paper's order of its tables
-        (gearrep.published.document_order); without it sources sort as strings
-    design : gearrep.published.design_table of every paper (one row per example)
-    parity : draw a parity plot for every source with computed numbers
-    highlights : {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each
-        checked against its records by :func:`highlight`; the findings of a paper are these
-        followed by :func:`findings`, five at most
-    """
+def _checked_card(card: pd.DataFrame) -> pd.DataFrame:
+    """A copy of the scorecard with every column the page shows (missing ones empty); refused when
+    it lacks seed or status or holds a status unknown to gearrep.checks."""
     if "status" not in card.columns or "seed" not in card.columns:
         raise ValueError("scorecard needs 'seed' and 'status' columns")
     unknown = sorted(set(card["status"]) - set(_checks.STATUSES))
     if unknown:
         raise ValueError(f"scorecard has statuses {unknown} not in gearrep.checks.STATUSES {_checks.STATUSES}")
-    notebooks = notebooks or {}
     card = card.copy()
     for col in ("replication", "source", "note", "id", "row", "quantity", "unit"):
         if col not in card.columns:
@@ -506,9 +508,27 @@ def render(
         if col not in card.columns:
             card[col] = np.nan
     card["replication"] = card["replication"].fillna("").astype(str)
-    errata = errata if errata is not None else pd.DataFrame(columns=["seed", "location"])
-    res_st, apart_st = result_statuses(), apart_statuses()
+    return card
 
+
+def _paper_parity(seed: str, grp: pd.DataFrame, parity) -> dict[str, bytes]:
+    """{source: PNG} of one paper: drawn here (``parity`` True), none (False), or the plots drawn
+    beforehand (``parity[seed]``), which must be exactly those of :func:`parity_rows`."""
+    if parity is True:
+        return parity_pngs(grp)
+    if not parity:
+        return {}
+    given = dict(parity.get(seed, {}))
+    wanted = set(parity_rows(grp))
+    if set(given) != wanted:
+        raise ValueError(
+            f"parity plots of seed {seed}: missing for sources {sorted(wanted - set(given))}, "
+            f"given for sources without computed numbers {sorted(set(given) - wanted)}"
+        )
+    return given
+
+
+def _head(card: pd.DataFrame, runtime_s: float | None) -> list[str]:
     parts = [
         "<!doctype html><html><head><meta charset='utf-8'><title>gearrep replication report</title>"
         f"<style>{_CSS}</style></head><body>",
@@ -523,14 +543,14 @@ def render(
     ]
     if runtime_s is not None:
         parts.append(f"<p>Total workflow run time (sum of job wall times): {runtime_s:.1f} s.</p>")
+    return parts
 
-    # summary by paper -----------------------------------------------------------------
-    parts.append("<h2 id='summary'>Summary by paper</h2>")
+
+def _summary(papers: Mapping[str, pd.DataFrame], verdicts: Mapping[str, tuple[str, str]]) -> list[str]:
+    res_st, apart_st = result_statuses(), apart_statuses()
     head = ["seed", "paper", "verdict", "agree", "", *res_st, "total"] + ([f"{s} (not a result)" for s in apart_st])
     rows = []
-    verdicts = {}
-    for seed, grp in card.groupby("seed", sort=True):
-        verdicts[seed] = verdict(grp) if grp["status"].isin(res_st).any() else ("no results", "")
+    for seed, grp in papers.items():
         counts = _counts(grp)
         v = verdicts[seed][0]
         agree, scored = sum(counts[s] for s in AGREE if s in counts), sum(counts[s] for s in res_st)
@@ -544,20 +564,23 @@ def render(
             + "".join(f"<td class='num apart'>{counts[s]}</td>" for s in apart_st)
             + "</tr>"
         )
-    parts.append(
+    return [
+        "<h2 id='summary'>Summary by paper</h2>",
         "<table><thead><tr>"
         + "".join(f"<th>{html.escape(h)}</th>" for h in head)
-        + f"</tr></thead><tbody>{''.join(rows)}</tbody></table>"
-    )
+        + f"</tr></thead><tbody>{''.join(rows)}</tbody></table>",
+    ]
 
-    # statuses and verdicts ------------------------------------------------------------
-    parts.append("<h2 id='statuses'>Statuses and verdicts</h2>")
-    parts.append(
+
+def _legend() -> list[str]:
+    res_st, apart_st = result_statuses(), apart_statuses()
+    parts = [
+        "<h2 id='statuses'>Statuses and verdicts</h2>",
         "<p>Every published number and every stated claim of a paper is one row of the scorecard with one "
         "status (the vocabulary of <code>gearrep.checks</code>):</p><ul>"
         + "".join(f"<li>{_status(s)}: {html.escape(status_meaning(s))}</li>" for s in res_st)
-        + "</ul>"
-    )
+        + "</ul>",
+    ]
     if apart_st:
         parts.append(
             "<p>Not results (counted apart, never in a verdict):</p><ul>"
@@ -573,121 +596,189 @@ def render(
         + "</ul><p>The verdict is strict on purpose; the share that agrees and the findings say how much of "
         "a paper stands.</p>"
     )
+    return parts
 
-    # key figures ----------------------------------------------------------------------
-    parts.append("<h2 id='figures'>Key figures</h2>")
+
+def _key_figures(figures: Mapping[str, bytes]) -> list[str]:
+    parts = ["<h2 id='figures'>Key figures</h2>"]
     if figures:
         for caption, png in figures.items():
             parts.append(f"<div class='fig'>{_img(png, caption)}<p>{html.escape(caption)}</p></div>")
     else:
         parts.append("<p>No key figures.</p>")
+    return parts
 
-    # per paper ------------------------------------------------------------------------
-    for seed, grp in card.groupby("seed", sort=True):
-        parts.append(f"<h2 id='paper-{seed}'>Seed {seed}: {html.escape(PAPERS.get(seed, ''))}</h2>")
-        v, why = verdicts[seed]
+
+def _paper_head(seed, grp, verdict_, notebooks, errata, order, specs) -> list[str]:
+    """Heading, verdict, notebook links and headline findings of one paper."""
+    v, why = verdict_
+    colour = _VERDICT_COLOURS.get(v, "#57606a")
+    parts = [
+        f"<h2 id='paper-{seed}'>Seed {seed}: {html.escape(PAPERS.get(seed, ''))}</h2>",
+        f"<div class='verdict' id='verdict-{seed}' style='border-color:{colour}'>"
+        f"Verdict: <b style='color:{colour}'>{v}</b>. {html.escape(why)}</div>",
+    ]
+    reps = sorted({r for r in grp["replication"] if r})
+    if reps:
         parts.append(
-            f"<div class='verdict' id='verdict-{seed}' style='border-color:{_VERDICT_COLOURS.get(v, '#57606a')}'>"
-            f"Verdict: <b style='color:{_VERDICT_COLOURS.get(v, '#57606a')}'>{v}</b>. {html.escape(why)}</div>"
-        )
-        reps = sorted({r for r in grp["replication"] if r})
-        if reps:
-            parts.append(
-                "<p>Notebooks: "
-                + ", ".join(
-                    f"<a href='{html.escape(notebooks[r])}'>{html.escape(r)}</a>" if r in notebooks else html.escape(r)
-                    for r in reps
-                )
-                + "</p>"
+            "<p>Notebooks: "
+            + ", ".join(
+                f"<a href='{html.escape(notebooks[r])}'>{html.escape(r)}</a>" if r in notebooks else html.escape(r)
+                for r in reps
             )
-        er = errata[errata["seed"] == seed] if "seed" in errata.columns else errata.iloc[:0]
-        parts.append(
-            f"<h3 id='findings-{seed}'>Headline findings</h3><ul class='findings'>"
-            + "".join(f"<li>{f}</li>" for f in _paper_findings(grp, er, order, (highlights or {}).get(seed, [])))
-            + "</ul>"
+            + "</p>"
         )
+    er = errata[errata["seed"] == seed] if "seed" in errata.columns else errata.iloc[:0]
+    parts.append(
+        f"<h3 id='findings-{seed}'>Headline findings</h3><ul class='findings'>"
+        + "".join(f"<li>{f}</li>" for f in _paper_findings(grp, er, order, specs))
+        + "</ul>"
+    )
+    return parts
 
-        if design is not None:
-            d = design[design["seed"] == seed]
-            parts.append(f"<h3 id='design-{seed}'>Design data of the examples (as printed)</h3>")
-            if len(d):
-                parts.append(
-                    f"<p>{len(d)} examples, parameters exactly as printed (<code>data/published/params_{seed}_*.csv"
-                    "</code>; the line is that of the seed text).</p>"
-                    + _table(d[["example", "source", "design"]], status_col=None, cls=f"design design-{seed}")
-                )
-            else:
-                parts.append("<p>The paper prints no design data we use.</p>")
 
-        # per-table rows, document order, linked
-        parts.append(f"<h3 id='tables-{seed}'>Tables and sources, in the paper's order</h3>")
-        srcs = ordered_sources(grp, order)
-        plots = []
-        trows = []
-        for k, (_, src) in enumerate(srcs):
-            g = grp[grp["source"] == src]
-            counts = _counts(g)
-            rep = next((r for r in g["replication"] if r), "")
-            link = f"{notebooks[rep]}#{anchor(src)}" if rep in notebooks else ""
-            name = f"<a href='{html.escape(link)}'>{html.escape(src)}</a>" if link else html.escape(src)
-            nums = g[g["published"].notna() & g["status"].isin(res_st)]  # inputs are not results
-            comp = nums[nums["computed"].notna()]
-            pid = f"parity-{seed}-{k}"
-            if parity and len(comp):
-                kk = int((comp["status"] == "reproduced").sum())
-                png = parity_png(nums, src)
-                cap = (
-                    f"{src}: computed against published for {len(comp)} printed numbers (left; the band is each "
-                    f"value's tolerance from its printed precision) and the error in tolerances (right; inside "
-                    f"the band means reproduced). {kk} of {len(comp)} within tolerance: the table "
-                    f"{_agreement_word(kk, len(comp))}."
-                )
-                plots.append(
-                    f"<figure class='parity' id='{pid}' data-source='{html.escape(src)}'>{_img(png, 'parity plot: ' + src)}"
-                    f"<figcaption>{html.escape(cap)}</figcaption></figure>"
-                )
-                plot_cell = f"<a href='#{pid}'>plot</a>"
-            else:
-                plot_cell = ""
-            trows.append(
-                "<tr>"
-                + f"<td>{name}</td><td>{html.escape(rep)}</td><td>{_bar(counts)}</td>"
-                + "".join(f"<td class='num'>{counts[s]}</td>" for s in res_st)
-                + "".join(f"<td class='num apart'>{counts[s]}</td>" for s in apart_st)
-                + f"<td class='num'>{len(g)}</td><td>{plot_cell}</td></tr>"
-            )
-        th = ["source (link: notebook section)", "replication", "", *res_st]
-        th += [f"{s} (not a result)" for s in apart_st] + ["total", "parity"]
+def _design_section(seed: str, design: pd.DataFrame | None) -> list[str]:
+    if design is None:
+        return []
+    d = design[design["seed"] == seed]
+    parts = [f"<h3 id='design-{seed}'>Design data of the examples (as printed)</h3>"]
+    if len(d):
         parts.append(
-            f"<table class='sources' id='sources-{seed}'><thead><tr>"
-            + "".join(f"<th>{html.escape(h)}</th>" for h in th)
-            + f"</tr></thead><tbody>{''.join(trows)}</tbody></table>"
+            f"<p>{len(d)} examples, parameters exactly as printed (<code>data/published/params_{seed}_*.csv"
+            "</code>; the line is that of the seed text).</p>"
+            + _table(d[["example", "source", "design"]], status_col=None, cls=f"design design-{seed}")
         )
-        if plots:
-            parts.append(f"<h3 id='parity-{seed}'>Parity plots: published against computed, per table</h3>")
-            parts.append("".join(plots))
+    else:
+        parts.append("<p>The paper prints no design data we use.</p>")
+    return parts
 
-        cols = ["id", "source", "row", "quantity", "unit", "published", "computed", "abs_err", "tolerance", "status"]
-        cols += ["note", "replication"]
-        rank = {s: i for i, (_, s) in enumerate(srcs)}
-        allrows = grp.assign(_r=grp["source"].map(rank)).sort_values(["_r", "id"], kind="stable")[cols]
 
-        def link(r, _nb=notebooks):
-            rep = r.get("replication", "")
-            return f"{_nb[rep]}#{anchor(r['source'])}" if rep in _nb else ""
+def _parity_figure(pid: str, src: str, rows: pd.DataFrame, png: bytes) -> str:
+    comp = rows[rows["computed"].notna()]
+    k = int((comp["status"] == "reproduced").sum())
+    cap = (
+        f"{src}: computed against published for {len(comp)} printed numbers (left; the band is each "
+        f"value's tolerance from its printed precision) and the error in tolerances (right; inside "
+        f"the band means reproduced). {k} of {len(comp)} within tolerance: the table "
+        f"{_agreement_word(k, len(comp))}."
+    )
+    return (
+        f"<figure class='parity' id='{pid}' data-source='{html.escape(src)}'>{_img(png, 'parity plot: ' + src)}"
+        f"<figcaption>{html.escape(cap)}</figcaption></figure>"
+    )
 
-        parts.append(
-            f"<details><summary>All {len(grp)} rows</summary>" + _table(allrows, links={"source": link}) + "</details>"
+
+def _sources_section(seed, grp, srcs, notebooks, pngs: Mapping[str, bytes]) -> list[str]:
+    """The table of a paper's sources in document order (counts, notebook link, parity link) and
+    its parity plots."""
+    res_st, apart_st = result_statuses(), apart_statuses()
+    plotted = parity_rows(grp) if pngs else {}
+    plots, trows = [], []
+    for k, (_, src) in enumerate(srcs):
+        g = grp[grp["source"] == src]
+        counts = _counts(g)
+        rep = next((r for r in g["replication"] if r), "")
+        link = f"{notebooks[rep]}#{anchor(src)}" if rep in notebooks else ""
+        name = f"<a href='{html.escape(link)}'>{html.escape(src)}</a>" if link else html.escape(src)
+        pid = f"parity-{seed}-{k}"
+        plot_cell = ""
+        if src in plotted:
+            plots.append(_parity_figure(pid, src, plotted[src], pngs[src]))
+            plot_cell = f"<a href='#{pid}'>plot</a>"
+        trows.append(
+            "<tr>"
+            + f"<td>{name}</td><td>{html.escape(rep)}</td><td>{_bar(counts)}</td>"
+            + "".join(f"<td class='num'>{counts[s]}</td>" for s in res_st)
+            + "".join(f"<td class='num apart'>{counts[s]}</td>" for s in apart_st)
+            + f"<td class='num'>{len(g)}</td><td>{plot_cell}</td></tr>"
         )
+    th = ["source (link: notebook section)", "replication", "", *res_st]
+    th += [f"{s} (not a result)" for s in apart_st] + ["total", "parity"]
+    parts = [
+        f"<h3 id='tables-{seed}'>Tables and sources, in the paper's order</h3>",
+        f"<table class='sources' id='sources-{seed}'><thead><tr>"
+        + "".join(f"<th>{html.escape(h)}</th>" for h in th)
+        + f"</tr></thead><tbody>{''.join(trows)}</tbody></table>",
+    ]
+    if plots:
+        parts.append(f"<h3 id='parity-{seed}'>Parity plots: published against computed, per table</h3>")
+        parts.append("".join(plots))
+    return parts
 
-    parts.append("<h2 id='errata'>Errata found in the papers</h2>")
+
+def _all_rows(grp, srcs, notebooks) -> str:
+    """Every scorecard row of a paper, folded, in document order of the sources."""
+    cols = ["id", "source", "row", "quantity", "unit", "published", "computed", "abs_err", "tolerance", "status"]
+    cols += ["note", "replication"]
+    rank = {s: i for i, (_, s) in enumerate(srcs)}
+    allrows = grp.assign(_r=grp["source"].map(rank)).sort_values(["_r", "id"], kind="stable")[cols]
+
+    def link(r, _nb=notebooks):
+        rep = r.get("replication", "")
+        return f"{_nb[rep]}#{anchor(r['source'])}" if rep in _nb else ""
+
+    return f"<details><summary>All {len(grp)} rows</summary>" + _table(allrows, links={"source": link}) + "</details>"
+
+
+def _errata_and_environment(errata: pd.DataFrame, environment: Mapping) -> list[str]:
+    parts = ["<h2 id='errata'>Errata found in the papers</h2>"]
     if len(errata):
         parts.append(_table(errata, status_col=None))
     else:
         parts.append("<p>None recorded yet.</p>")
-
     parts.append("<h2 id='environment'>Environment</h2>")
     env = pd.DataFrame({"item": list(environment), "value": [str(v) for v in environment.values()]})
     parts.append(_table(env, status_col=None))
     parts.append("</body></html>")
-    return "\n".join(parts)
+    return parts
+
+
+def render(
+    card: pd.DataFrame,
+    figures: dict[str, bytes],
+    errata: pd.DataFrame,
+    environment: dict,
+    notebooks: dict[str, str] | None = None,
+    runtime_s: float | None = None,
+    *,
+    order: Mapping[tuple[str, str], int] | None = None,
+    design: pd.DataFrame | None = None,
+    parity: bool | Mapping[str, Mapping[str, bytes]] = True,
+    highlights: Mapping[str, list] | None = None,
+) -> str:
+    """HTML of the report.
+
+    card : the scorecard (columns of gearrep.checks.scorecard plus ``replication``)
+    figures : {caption: PNG bytes}, embedded in order (the caption says what the figure shows and
+        whether it agrees)
+    errata : columns seed, location, printed, correction, evidence
+    environment : {name: value} (versions, git commit, config hash)
+    notebooks : {replication: relative href of its rendered notebook}
+    runtime_s : total workflow run time in seconds (sum of the jobs' benchmarks)
+    order : {(seed, source): line of the seed text}, the paper's order of its tables
+        (gearrep.published.document_order); without it sources sort as strings
+    design : gearrep.published.design_table of every paper (one row per example)
+    parity : the parity plot of every source with computed numbers: True draws them here, False
+        leaves them out, and {seed: {source: PNG}} embeds plots drawn beforehand by
+        :func:`parity_pngs` (exactly one per source of :func:`parity_rows`, else ValueError)
+    highlights : {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each
+        checked against its records by :func:`highlight`; the findings of a paper are these
+        followed by :func:`findings`, five at most
+    """
+    card = _checked_card(card)
+    notebooks = notebooks or {}
+    errata = errata if errata is not None else pd.DataFrame(columns=["seed", "location"])
+    papers = dict(list(card.groupby("seed", sort=True)))
+    verdicts = {
+        seed: verdict(grp) if grp["status"].isin(result_statuses()).any() else ("no results", "")
+        for seed, grp in papers.items()
+    }
+    parts = _head(card, runtime_s) + _summary(papers, verdicts) + _legend() + _key_figures(figures)
+    for seed, grp in papers.items():
+        srcs = ordered_sources(grp, order)
+        specs = (highlights or {}).get(seed, [])
+        parts += _paper_head(seed, grp, verdicts[seed], notebooks, errata, order, specs)
+        parts += _design_section(seed, design)
+        parts += _sources_section(seed, grp, srcs, notebooks, _paper_parity(seed, grp, parity))
+        parts.append(_all_rows(grp, srcs, notebooks))
+    return "\n".join(parts + _errata_and_environment(errata, environment))

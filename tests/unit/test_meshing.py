@@ -204,3 +204,39 @@ def test_handover_gap_is_zero_at_a_crossing_and_the_step_at_an_edge():
     # no hand-over
     env, lead = upper_envelope(np.stack([x, x - 1.0]))
     assert handover_gap(np.stack([x, x - 1.0]), lead, env) == 0.0
+
+
+def test_sampled_cycle_is_the_envelope_of_the_pairs_over_one_pitch():
+    """sampled_cycle (the TE over one cycle of the thesis's cylindrical and bevel studies): the
+    envelope of the parabolic pairs is continuous with its extreme -c (p/2)^2 at the hand-over;
+    a sawtooth steps by slope x pitch (a jump by either measure); fewer than two samples give NaN."""
+    from gearrep.meshing import handover_jump, pair_te_curves, sampled_cycle, upper_envelope
+
+    p, c = 2 * np.pi / 20, 3.0
+    phi = np.linspace(-0.8 * p, 0.8 * p, 401)
+    cyc = sampled_cycle(phi, -c * phi**2, p, 101)
+    at = np.linspace(-0.5 * p, 0.5 * p, 101)
+    np.testing.assert_array_equal(cyc.phi1, at)
+    env, lead = upper_envelope(pair_te_curves(phi, -c * phi**2, p, at))
+    np.testing.assert_array_equal(cyc.te, env)
+    assert cyc.jump == handover_jump(pair_te_curves(phi, -c * phi**2, p, at), lead, env) == 0.0
+    assert cyc.continuous(jump_tol_arcsec=0.01) and cyc.jump_arcsec == 0.0
+    assert cyc.te_extreme == pytest.approx(-c * (0.5 * p) ** 2, rel=1e-3)
+    assert cyc.te_peak_to_peak == pytest.approx(c * (0.5 * p) ** 2, rel=1e-3)
+
+    s = 2e-4
+    saw = np.linspace(-0.6 * 0.1, 0.6 * 0.1, 121)
+    for how in ("jump", "gap"):
+        step = sampled_cycle(saw, s * saw, 0.1, 51, handover=how)
+        assert step.jump == pytest.approx(s * 0.1, rel=0.05) and not step.continuous(0.01)
+        assert step.jump_arcsec == pytest.approx(step.jump / ARCSEC)
+
+    none = sampled_cycle(phi, np.where(phi == phi[0], 1.0, np.nan), p, 11)
+    assert np.isnan(none.te).all() and np.isnan(none.jump) and np.isnan(none.jump_arcsec)
+    assert np.isnan(none.te_extreme) and np.isnan(none.te_peak_to_peak) and not none.continuous(1e9)
+    with pytest.raises(ValueError, match="handover"):
+        sampled_cycle(phi, -c * phi**2, p, 11, handover="step")
+    with pytest.raises(ValueError, match="n_points"):
+        sampled_cycle(phi, -c * phi**2, p, 1)
+    with pytest.raises(ValueError, match="pitch"):
+        sampled_cycle(phi, -c * phi**2, 0.0, 11)

@@ -35,6 +35,12 @@ def test_face_checker_refuses_incomplete_packages():
 
     with pytest.raises(TypeError, match="lacks"):
         _face.check_face(types.ModuleType("gearrep.replications.empty"))
+    # every face name is public: a package's __all__ starts with *FACE
+    partial = types.ModuleType("gearrep.replications.partial")
+    partial.__dict__.update({n: getattr(load("nasa"), n) for n in _face.FACE})
+    partial.__all__ = [n for n in _face.FACE if n != "bench_cases"]
+    with pytest.raises(TypeError, match=r"__all__ lacks \['bench_cases'\]"):
+        _face.check_face(partial)
     with pytest.raises(ValueError, match="must end in"):
         _face.Job(lambda s, d: {}, {"a": "x/b.csv"})
 

@@ -194,6 +194,27 @@ def test_one_parity_plot_per_table_with_computed_numbers(paper):
         report.parity_png(card[card["source"] == "Table 5.2"], "Table 5.2")
 
 
+def test_parity_plots_drawn_beforehand_give_the_same_page(paper):
+    """The workflow draws each paper's parity plots in a job of their own (parity_pngs) and the
+    report embeds them: the page is the one that draws them itself, byte for byte; plots that do
+    not match the paper's sources with computed numbers are refused, naming the sources."""
+    card, order = paper
+    assert list(report.parity_rows(card)) == ["Section 5.5", "Fig. 5.7", "Table 4.3"]  # in row order
+    assert [len(r) for r in report.parity_rows(card).values()] == [1, 1, 2]
+    pngs = report.parity_pngs(card)
+    assert all(p.startswith(b"\x89PNG") for p in pngs.values())
+    drawn = report.render(card, {}, pd.DataFrame(), {}, order=order)
+    assert report.render(card, {}, pd.DataFrame(), {}, order=order, parity={"000": pngs}) == drawn
+    assert "<figure class='parity'" not in report.render(card, {}, pd.DataFrame(), {}, order=order, parity=False)
+    fewer = {k: v for k, v in pngs.items() if k != "Table 4.3"}
+    with pytest.raises(ValueError, match=r"seed 000: missing for sources \['Table 4.3'\]"):
+        report.render(card, {}, pd.DataFrame(), {}, parity={"000": fewer})
+    with pytest.raises(ValueError, match=r"without computed numbers \['Table 5.2'\]"):
+        report.render(card, {}, pd.DataFrame(), {}, parity={"000": pngs | {"Table 5.2": pngs["Table 4.3"]}})
+    with pytest.raises(ValueError, match="computed"):
+        report.parity_rows(card.drop(columns=["computed"]))
+
+
 def test_findings_are_written_from_the_records(paper):
     card, order = paper
     errata = pd.DataFrame({"seed": ["000"], "location": ["eq 4.23"]})
@@ -259,6 +280,13 @@ def test_absolute_paths_are_found_and_urls_and_base64_are_not():
         "data:image/png;base64,iVBORw0KGgo+/tmp/AAAA/usr/x== src/gearrep/report.py 1/work/2"
     )
     assert report.absolute_paths(clean) == []
+    # the fast route (no drive path or file:// URL in the text) finds the same POSIX paths,
+    # also at the very start of the text, and none inside a URL, a word or a base64 blob
+    assert report.absolute_paths("/home/a b\n/tmp/x =/tmp/y a/home/b .:/usr/c (/opt/d)") == [
+        "/home/a",
+        "/tmp/x",
+        "/opt/d",
+    ]
 
 
 def _load_screenshot_module():

@@ -180,7 +180,7 @@ def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
     assert {"scorecard", "report", "bench_core"} <= checked
 
 
-FINAL_KINDS = re.compile(r"^results/(notebooks/|report|bench/|.*/figures/)")
+FINAL_KINDS = re.compile(r"^results/(notebooks/|report|parity/|bench/|.*/figures/)")
 
 
 def _check_files(wf) -> dict[str, str]:
@@ -228,7 +228,8 @@ def test_job_counts_of_framework_targets(wf):
 
 def test_touching_one_module_reruns_exactly_its_users(wf):
     """Mark every output of the default target as up to date (empty files + --touch), then touch
-    src/gearrep/report.py: only the report job (and the `all` target) may be planned."""
+    src/gearrep/report.py: only the report job, the per-seed parity-plot jobs that draw with it
+    (one per seed with a study) and the `all` target may be planned."""
     for job in plan(wf, "--forceall"):
         for o in job["output"]:
             p = wf / o
@@ -237,7 +238,10 @@ def test_touching_one_module_reruns_exactly_its_users(wf):
     smk(wf, "--cores", "1", "--touch", "-q")
     assert "Nothing to be done" in smk(wf, "-n")
     (wf / "src" / "gearrep" / "report.py").touch()
-    assert sorted(j["rule"] for j in plan(wf)) == ["all", "report"]
+    from gearrep.replications import REGISTRY
+
+    n_seeds = len({s.seed for s in REGISTRY.values()})
+    assert sorted(j["rule"] for j in plan(wf)) == ["all", "report"] + ["report_parity"] * n_seeds
 
 
 def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):

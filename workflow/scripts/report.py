@@ -1,6 +1,9 @@
 """Write results/report.html: verdict and findings per paper, design data, per-table rows in the
 paper's order with parity plots, key figures with captions, errata, environment.
 
+Every figure is drawn beforehand by its own job (the parity plots per seed by report_parity.py,
+results/parity/<seed>/index.csv naming each source's PNG); this job only assembles the page.
+
 Before writing, every rendered notebook and the report itself are scanned for absolute paths of
 this machine (gearrep.report.absolute_paths): a page that would show one is refused.
 """
@@ -25,6 +28,10 @@ order = published.document_order(pub.values, pub.claims)
 design = published.design_table(pub.params)
 errata = pd.read_csv(smk.input.errata, dtype=str, keep_default_na=False)
 notebooks = {Path(f).stem: "notebooks/" + Path(f).name for f in smk.input.notebooks}
+parity = {}
+for d in map(Path, smk.input.parity):
+    index = pd.read_csv(d / "index.csv", dtype=str, keep_default_na=False)
+    parity[d.name] = {r.source: (d / r.png).read_bytes() for r in index.itertuples()}
 
 # key figures: the caption says what the figure shows (workflow/report/captions.yaml) and whether it
 # agrees, counted from the check records of the sources it shows
@@ -97,7 +104,7 @@ html = report.render(
     runtime_s=runtime,
     order=order,
     design=design,
-    parity=True,
+    parity=parity,
     highlights=highlights,
 )
 pages = {smk.output[0]: html} | {f: Path(f).read_text(encoding="utf-8") for f in smk.input.notebooks}

@@ -113,10 +113,14 @@ RESERVED_OUTPUT_NAMES = ("job_timing",)
 
 
 def check_face(module: ModuleType) -> None:
-    """Raise if ``module`` lacks a name of :data:`FACE` or a name has the wrong kind."""
+    """Raise if ``module`` lacks a name of :data:`FACE` (or leaves one out of its ``__all__``, which
+    each package starts with ``*FACE``) or a name has the wrong kind."""
     missing = [n for n in FACE if not hasattr(module, n)]
     if missing:
         raise TypeError(f"{module.__name__} lacks {missing} of the replication face")
+    unlisted = [n for n in FACE if n not in getattr(module, "__all__", FACE)]
+    if unlisted:
+        raise TypeError(f"{module.__name__}.__all__ lacks {unlisted} of the replication face (start it with *FACE)")
     for n in ("params_from_published", "run", "checks", "bench_cases", "validate"):
         if not callable(getattr(module, n)):
             raise TypeError(f"{module.__name__}.{n} is not callable")

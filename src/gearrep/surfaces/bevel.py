@@ -67,7 +67,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..surface import Surface, SurfacePoint
-from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite, _flank_options
+from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite, _flank_options, _mating_pair
 
 __all__ = [
     "spherical_involute_azimuth",
@@ -370,10 +370,7 @@ def mating_bevel_flanks(
         raise ValueError(
             f"gear1.mate_teeth = {gear1.mate_teeth!r} must equal gear2.n_teeth = {gear2.n_teeth!r} and vice versa"
         )
-    for name in ("module", "pressure_angle", "shaft_angle", "spiral_angle"):
-        a, b = getattr(gear1, name), getattr(gear2, name)
-        if not np.isclose(a, b, rtol=1e-12, atol=0):
-            raise ValueError(f"gear1.{name} = {a!r} and gear2.{name} = {b!r} must be equal for meshing")
-    f1 = SphericalInvoluteFlank(gear1, side, hand1, crowning=crowning1, relief=relief1)
-    f2 = SphericalInvoluteFlank(gear2, side, -hand1, crowning=crowning2, relief=relief2)
-    return f1, f2
+    equal = ("module", "pressure_angle", "shaft_angle", "spiral_angle")
+    return _mating_pair(
+        SphericalInvoluteFlank, (gear1, gear2), equal, side, hand1, (crowning1, crowning2), (relief1, relief2)
+    )

@@ -662,12 +662,32 @@ def mating_flanks(
 
     Checks that the pair can mesh (same normal module, pressure angle and helix angle).
     """
-    for name in ("module", "pressure_angle", "helix_angle"):
+    equal = ("module", "pressure_angle", "helix_angle")
+    return _mating_pair(
+        InvoluteFlank,
+        (gear1, gear2),
+        equal,
+        side,
+        hand1,
+        (crowning1, crowning2),
+        (relief1, relief2),
+        helix_form=helix_form,
+    )
+
+
+def _mating_pair(flank_type, gears, equal, side, hand1, crownings, reliefs, **options):
+    """The two drive flanks ``flank_type(gear, side, hand, crowning=, relief=, **options)`` of the
+    pair ``gears`` (with their ``crownings`` and ``reliefs``): same ``side``, opposite hands, once
+    the attributes ``equal`` of the two gears agree (relative 1e-12; else a ValueError naming the
+    attribute and both values). Shared by :func:`mating_flanks` and
+    :func:`gearrep.surfaces.bevel.mating_bevel_flanks`."""
+    gear1, gear2 = gears
+    for name in equal:
         a, b = getattr(gear1, name), getattr(gear2, name)
         if not np.isclose(a, b, rtol=1e-12, atol=0):
             raise ValueError(f"gear1.{name} = {a!r} and gear2.{name} = {b!r} must be equal for meshing")
-    f1 = InvoluteFlank(gear1, side, hand1, crowning=crowning1, relief=relief1, helix_form=helix_form)
-    f2 = InvoluteFlank(gear2, side, -hand1, crowning=crowning2, relief=relief2, helix_form=helix_form)
+    f1 = flank_type(gear1, side, hand1, crowning=crownings[0], relief=reliefs[0], **options)
+    f2 = flank_type(gear2, side, -hand1, crowning=crownings[1], relief=reliefs[1], **options)
     return f1, f2
 
 

@@ -18,7 +18,7 @@ verdicts and check records), :mod:`.model` (the paper's printed eq 20 and 23-26 
 from __future__ import annotations
 
 from ... import settings as _s
-from .._face import Job, run_jobs
+from .._face import FACE, Job, run_jobs
 from . import studies as _studies
 from .assembly import (  # noqa: F401  (the names tests and the stress suite use)
     PAIR_NAMES,
@@ -33,25 +33,13 @@ from .assembly import (  # noqa: F401  (the names tests and the stress suite use
     solve_cycle,
     starts,
 )
-from .bench import bench_cases
+from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
 from .claims import checks, claim_verdicts  # noqa: F401
 from .contact import contact_geometry  # noqa: F401
 from .design import Design, params_from_published, validate  # noqa: F401
 
 __all__ = [
-    "SEED",
-    "SETTINGS",
-    "DESIGN_DATA",
-    "CHECK_DATA",
-    "params_from_published",
-    "JOBS",
-    "run",
-    "checks",
-    "CHECK_OUTPUTS",
-    "FIGURES",
-    "REPORT_FIGURES",
-    "bench_cases",
-    "validate",
+    *FACE,  # the replication face (gearrep.replications._face)
     "Design",
     "claim_verdicts",
     "contact_geometry",

@@ -17,29 +17,17 @@ from __future__ import annotations
 import pandas as pd
 
 from ... import settings as _s
-from .._face import Job, run_jobs
+from .._face import FACE, Job, run_jobs
 from . import studies, te_studies
-from .bench import bench_cases
+from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
 from .claims import CLAIMS
-from .design import design_beta, params_from_published
+from .design import design_beta, params_from_published  # noqa: F401  (face: in __all__ through *FACE)
 from .records import check_records
 from .values import VALUES
 
 __all__ = [
-    "SEED",
-    "SETTINGS",
-    "DESIGN_DATA",
-    "CHECK_DATA",
-    "params_from_published",
+    *FACE,  # the replication face (gearrep.replications._face)
     "design_beta",
-    "JOBS",
-    "run",
-    "checks",
-    "CHECK_OUTPUTS",
-    "FIGURES",
-    "REPORT_FIGURES",
-    "bench_cases",
-    "validate",
 ]
 
 SEED = "002"

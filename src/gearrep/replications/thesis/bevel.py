@@ -24,19 +24,19 @@ and drives (phi1 given); the thesis calls the crowned member "driven" in sec 5.1
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import pandas as pd
 
+from ...meshing import sampled_cycle
 from ...published import param_table
 from ...solve import Status
 from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length
 from ...surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning, RootRelief
 from ...tca import BevelMisalignment, BevelPair, draw_starts, seed_from_reduced, solve_contact, solve_conventional
 from ...units import DEG
-from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, run_variant
+from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, loop_timing
 from .model import wrap
+from .te import JUMP_TOL_ARCSEC, PAIRS
 
 CASES = ("straight_bevel_39_32", "spiral_bevel_17_17")
 #: our readings where the thesis prints nothing (module docstring)
@@ -202,20 +202,7 @@ def bevel_convergence(s: dict, design) -> dict:
     for case in CASES:
         pair = convergence_pair(s, design, case)
         ref = bevel_reference(pair, READINGS["phi1_rad"], s)
-        refs.append(
-            dict(
-                case=case,
-                phi1_rad=ref.phi1,
-                u1_rad=ref.x[0],
-                v1=ref.x[1],
-                u2_rad=ref.x[2],
-                v2=ref.x[3],
-                phi2_rad=ref.x[4],
-                conventional_minus_reduced=ref.max_diff_mm,
-                conventional_minus_reduced_rad=ref.diff_rad,
-                dropped_normal_component="xyz"[ref.drop],
-            )
-        )
+        refs.append(_reference_row(case, ref))
         n = int(s["bevel_n_starts"])
         st = draw_starts(pair, n, rng_bevel(s, case), phi2_window=(ref.x[4] - w0 / 2, ref.x[4] + w0 / 2))
         study = "Table 11" if case.startswith("straight") else "Table 12"
@@ -232,60 +219,74 @@ def bevel_convergence(s: dict, design) -> dict:
             equations=EQUATION_ABLATION,
         )
         rows += r.rows
-        if case.startswith("spiral"):  # crown sensitivity of the Table 12 study (same starts)
-            for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
-                pc = bevel_pair(design, case, crown=float(c1))
-                rc = bevel_reference(pc, READINGS["phi1_rad"], s)
-                stc = st.copy()
-                stc[:, 4] += rc.x[4] - ref.x[4]
-                rows += convergence_study(
-                    f"{case}_c1_{float(c1):g}",
-                    pc,
-                    rc,
-                    stc,
-                    ("plain", "reduced", "reduced_robust"),
-                    s,
-                    window=w0,
-                    study="Table 12 (crown sensitivity)",
-                    start_rule=f"as Table 12 with c_1 = {float(c1):g}",
-                ).rows
-        for lab, (o, x, _) in r.outcomes.items():
-            ok = o == "correct"
-            d = np.abs(x[ok] - ref.x) if ok.any() else np.full((1, 5), np.nan)
-            d[:, 4] = np.abs(wrap(d[:, 4]))
-            acc.append(
-                dict(
-                    case=case,
-                    variant=lab,
-                    n_correct=int(ok.sum()),
-                    mean_abs_error=float(np.mean(d)),
-                    max_abs_error=float(np.max(d)),
-                )
-            )
-        for lab in ("plain", "reduced"):
-            batch = next(q for q in r.rows if q["variant"] == lab)
-            sub = st[: int(s["timing_loop_n"])]
-            t0 = time.perf_counter()
-            for i in range(len(sub)):
-                run_variant(pair, ref, sub[i : i + 1], lab, s)
-            loop = (time.perf_counter() - t0) / len(sub)
-            timing.append(
-                dict(
-                    case=case,
-                    formulation=batch["formulation"],
-                    variant=lab,
-                    seconds_per_solve_batch=batch["seconds_per_solve"],
-                    seconds_per_solve_loop=loop,
-                    n_loop=len(sub),
-                    correct_pct=batch["correct_pct"],
-                )
-            )
+        if case.startswith("spiral"):
+            rows += _crown_sensitivity_rows(s, design, case, ref, st, w0)
+        acc += _accuracy_rows(case, r, ref)
+        timing += [loop_timing(s, pair, ref, r.rows, st, lab) for lab in ("plain", "reduced")]
     accuracy = pd.DataFrame(acc).merge(
         pd.DataFrame(timing)[["case", "variant", "seconds_per_solve_batch", "seconds_per_solve_loop", "n_loop"]],
         on=["case", "variant"],
         how="left",
     )
     return dict(rows=rows, refs=pd.DataFrame(refs), accuracy=accuracy)
+
+
+def _reference_row(case: str, ref: Reference) -> dict:
+    """Row of bevel_references.csv: the verified reference contact of one pair."""
+    return dict(
+        case=case,
+        phi1_rad=ref.phi1,
+        u1_rad=ref.x[0],
+        v1=ref.x[1],
+        u2_rad=ref.x[2],
+        v2=ref.x[3],
+        phi2_rad=ref.x[4],
+        conventional_minus_reduced=ref.max_diff_mm,
+        conventional_minus_reduced_rad=ref.diff_rad,
+        dropped_normal_component="xyz"[ref.drop],
+    )
+
+
+def _crown_sensitivity_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
+    """Crown sensitivity of the Table 12 study: the same starts (phi2 moved with the root) on the
+    pair with each crown c_1 of the settings."""
+    rows = []
+    for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
+        pc = bevel_pair(design, case, crown=float(c1))
+        rc = bevel_reference(pc, READINGS["phi1_rad"], s)
+        stc = st.copy()
+        stc[:, 4] += rc.x[4] - ref.x[4]
+        rows += convergence_study(
+            f"{case}_c1_{float(c1):g}",
+            pc,
+            rc,
+            stc,
+            ("plain", "reduced", "reduced_robust"),
+            s,
+            window=w0,
+            study="Table 12 (crown sensitivity)",
+            start_rule=f"as Table 12 with c_1 = {float(c1):g}",
+        ).rows
+    return rows
+
+
+def _accuracy_rows(case: str, r, ref: Reference) -> list:
+    """Per variant: mean and max |x - x_ref| over the correct starts and the five unknowns (phi2 wrapped)."""
+    acc = []
+    for lab, (o, x, _) in r.outcomes.items():
+        ok = o == "correct"
+        d = np.abs(x[ok] - ref.x) if ok.any() else np.full((1, 5), np.nan)
+        d[:, 4] = np.abs(wrap(d[:, 4]))
+        acc.append(
+            dict(
+                case=case,
+                variant=lab,
+                n_correct=int(ok.sum()),
+                mean_abs_error=float(np.mean(d)),
+                max_abs_error=float(np.max(d)),
+            )
+        )
+    return acc
 
 
 def rng_bevel(s: dict, case: str) -> np.random.Generator:
@@ -295,9 +296,6 @@ def rng_bevel(s: dict, case: str) -> np.random.Generator:
 # ----------------------------------------------------------------------------------------------
 # contact studies (sec 5.1-5.2)
 # ----------------------------------------------------------------------------------------------
-#: a hand-over jump above this counts as a discontinuous TE (as for the cylindrical studies)
-JUMP_TOL_ARCSEC = 0.01
-PAIRS = range(-2, 3)
 
 
 def _solve_grid(pair: BevelPair, phi: np.ndarray, tol: float, rounds: int = 30):
@@ -363,14 +361,10 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
     k = -2..2). A grid point counts only if the contact lies inside both flanks (edge contact is
     not modelled: a gap in the envelope, i.e. a discontinuous TE). The hand-over test is
     :func:`gearrep.meshing.handover_gap` (a crossing between grid points is continuous)."""
-    from ...meshing import handover_gap, pair_te_curves, upper_envelope
-    from ...units import ARCSEC
-
     p1 = 2 * np.pi / pair.n1
     phi = np.linspace(-1.25 * p1, 1.25 * p1, 4 * int(n_points) + 1)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         c = _solve_grid(pair, phi, tol)
-    cyc = np.linspace(-0.5 * p1, 0.5 * p1, int(n_points))
     if c is None:
         ok = np.zeros(len(phi), bool)
         nan = np.full(len(phi), np.nan)
@@ -380,25 +374,18 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
         ok = c.converged
         te = np.where(ok, c.te, np.nan)
         c_fields = dict(u1=c.u1, v1=c.v1, u2=c.u2, v2=c.v2)
-    if ok.sum() >= 2:
-        curves = pair_te_curves(phi, te, p1, cyc, PAIRS)
-        env, lead = upper_envelope(curves)
-        jump = handover_gap(curves, lead, env)
-    else:
-        env, jump = np.full(cyc.shape, np.nan), np.nan
-    fin = np.isfinite(env)
-    jump_arcsec = jump / ARCSEC if np.isfinite(jump) else np.nan
+    cycle = sampled_cycle(phi, te, p1, int(n_points), PAIRS, handover="gap")
     return dict(
         phi1=phi,
         te=te,
         ok=ok,
         contact=c,
-        cycle_phi1=cyc,
-        cycle_te=env,
-        continuous=bool(fin.all() and jump_arcsec <= JUMP_TOL_ARCSEC),
-        te_extreme=float(env[fin][np.argmax(np.abs(env[fin]))]) if fin.any() else np.nan,
-        env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
-        jump_arcsec=jump_arcsec,
+        cycle_phi1=cycle.phi1,
+        cycle_te=cycle.te,
+        continuous=cycle.continuous(JUMP_TOL_ARCSEC),
+        te_extreme=cycle.te_extreme,
+        env_pp=cycle.te_peak_to_peak,
+        jump_arcsec=cycle.jump_arcsec,
         te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
         engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan),
         **c_fields,

@@ -68,80 +68,99 @@ def _convergence_facts(tables: dict, f: dict) -> None:
             continue
         a = acc[acc["case"] == case].set_index("variant")
         for method, variant in _METHOD.items():
-            r = d[d["variant"] == variant].iloc[0]
-            other = d[d["variant"] == ("reduced" if variant == "plain" else "plain")].iloc[0]
-            n = int(r["n_starts"])
-            per_correct = r["seconds_per_solve"] * 100.0 / r["correct_pct"] if r["correct_pct"] > 0 else np.nan
-            base = (
-                f"our protocol (protocol.csv, Table 10's): {n} starts, u1, v1, u2, v2 uniform on the flanks, phi2 "
-                f"uniform on a full turn, {'plain conventional' if variant == 'plain' else 'reduced'} Newton, correct "
-                "root inside both flanks only; phi1 = 0 (aligned pair, contact near mid-face) and the lead crown are "
-                "our readings (settings bevel_conv_crown_*)"
-            )
-            key = f"bev_{label}_{method}"
-            f[f"{key}_convergence_rate"] = dict(
-                value=float(r["correct_pct"]),
-                n=n,
-                n_pub=1000,
-                note=(
-                    f"{base}; outcomes: wrong root {r['wrong_root_pct']:.1f} %, not converged "
-                    f"{r['not_converged_pct']:.1f} %, diverged {r['diverged_pct']:.1f} %; "
-                    + (
-                        "the seeded conventional start (eq 39-44) converges from "
-                        f"{float(d.loc[d['variant'] == 'seeded', 'correct_pct'].iloc[0]):.1f} %"
-                        if variant == "plain"
-                        else (
-                            "the failing starts leave the face in their first Newton step along the contact line "
-                            "(a light crown makes the relative curvature along the face small), where member 2 has "
-                            "no point; the robust start reaches "
-                            f"{float(d.loc[d['variant'] == 'reduced_robust', 'correct_pct'].iloc[0]):.1f} %"
-                            if r["correct_pct"] < 99
-                            else "every start converges to the reference contact"
-                        )
-                    )
-                ),
-            )
-            f[f"{key}_mean_iterations"] = dict(
-                value=float(r["mean_iterations"]),
-                note=(
-                    f"mean Newton iterations to |F| < {tables['run_info']['tol'].iloc[0]:g} over the correct starts "
-                    "(the thesis gives neither its tolerance nor its counting rule)"
-                    if "run_info" in tables
-                    else "mean Newton iterations over the correct starts"
-                ),
-            )
-            ratio = per_correct / (
-                other["seconds_per_solve"] * 100.0 / other["correct_pct"] if other["correct_pct"] > 0 else np.nan
-            )
-            if variant == "reduced":
-                ratio = 1.0 / ratio
-            f[f"{key}_total_time"] = dict(
-                value=per_correct * 1000.0,
-                note=(
-                    f"our wall time for 1000 correct points with failed starts replaced, from the vectorised batch "
-                    f"({r['seconds_per_solve'] * 1e6:.0f} us per solve, numpy); the thesis timed Mathematica on unknown "
-                    f"hardware: only the ratio compares (ours conventional/reduced {ratio:.2f}, thesis 68.31/39.58 = 1.73)"
-                ),
-            )
-            loop = float(a.loc[variant, "seconds_per_solve_loop"]) if variant in a.index else np.nan
-            f[f"{key}_mean_time_per_solve"] = dict(
-                value=loop,
-                note=(
-                    f"our seconds per solve with one start per call (the way a per-point solver is used; "
-                    f"{int(a.loc[variant, 'n_loop']) if variant in a.index else 0} calls), batch "
-                    f"{r['seconds_per_solve']:.2e} s; different software and hardware from the thesis's, only the ratio "
-                    "compares (thesis conventional/reduced 0.0633/0.0409 = 1.55)"
-                ),
-            )
-            f[f"{key}_mean_absolute_error"] = dict(
-                value=float(a.loc[variant, "mean_abs_error"]) if variant in a.index else np.nan,
-                note=(
-                    "mean |x - x_ref| over the correct starts and the five unknowns (rad and module units; phi2 "
-                    "wrapped): with our tolerance both formulations reach rounding level; the thesis does not define "
-                    "its error, and its 1e-3 for the conventional model suggests a loose stopping rule or approximate "
-                    "roots counted as converged"
-                ),
-            )
+            f.update(_method_facts(f"bev_{label}_{method}", tables, d, a, variant))
+
+
+def _method_facts(key: str, tables: dict, d, a, variant: str) -> dict:
+    """Facts of one formulation of one bevel convergence study: rate, iterations, times, error
+    (``d``: the study's rows of convergence_detail; ``a``: its bevel_accuracy rows by variant)."""
+    r = d[d["variant"] == variant].iloc[0]
+    n = int(r["n_starts"])
+    base = (
+        f"our protocol (protocol.csv, Table 10's): {n} starts, u1, v1, u2, v2 uniform on the flanks, phi2 "
+        f"uniform on a full turn, {'plain conventional' if variant == 'plain' else 'reduced'} Newton, correct "
+        "root inside both flanks only; phi1 = 0 (aligned pair, contact near mid-face) and the lead crown are "
+        "our readings (settings bevel_conv_crown_*)"
+    )
+    return {
+        f"{key}_convergence_rate": dict(
+            value=float(r["correct_pct"]),
+            n=n,
+            n_pub=1000,
+            note=(
+                f"{base}; outcomes: wrong root {r['wrong_root_pct']:.1f} %, not converged "
+                f"{r['not_converged_pct']:.1f} %, diverged {r['diverged_pct']:.1f} %; " + _rate_detail(d, r, variant)
+            ),
+        ),
+        f"{key}_mean_iterations": dict(
+            value=float(r["mean_iterations"]),
+            note=(
+                f"mean Newton iterations to |F| < {tables['run_info']['tol'].iloc[0]:g} over the correct starts "
+                "(the thesis gives neither its tolerance nor its counting rule)"
+                if "run_info" in tables
+                else "mean Newton iterations over the correct starts"
+            ),
+        ),
+        **_time_facts(key, d, a, r, variant),
+        f"{key}_mean_absolute_error": dict(
+            value=float(a.loc[variant, "mean_abs_error"]) if variant in a.index else np.nan,
+            note=(
+                "mean |x - x_ref| over the correct starts and the five unknowns (rad and module units; phi2 "
+                "wrapped): with our tolerance both formulations reach rounding level; the thesis does not define "
+                "its error, and its 1e-3 for the conventional model suggests a loose stopping rule or approximate "
+                "roots counted as converged"
+            ),
+        ),
+    }
+
+
+def _rate_detail(d, r, variant: str) -> str:
+    """What the convergence rate's note adds: the seeded start's rate (plain), or why starts fail and
+    the robust start's rate (reduced)."""
+    if variant == "plain":
+        return (
+            "the seeded conventional start (eq 39-44) converges from "
+            f"{float(d.loc[d['variant'] == 'seeded', 'correct_pct'].iloc[0]):.1f} %"
+        )
+    if r["correct_pct"] < 99:
+        return (
+            "the failing starts leave the face in their first Newton step along the contact line "
+            "(a light crown makes the relative curvature along the face small), where member 2 has "
+            "no point; the robust start reaches "
+            f"{float(d.loc[d['variant'] == 'reduced_robust', 'correct_pct'].iloc[0]):.1f} %"
+        )
+    return "every start converges to the reference contact"
+
+
+def _time_facts(key: str, d, a, r, variant: str) -> dict:
+    """Total time for 1000 correct points (batch) and the time per solve of one start per call."""
+    other = d[d["variant"] == ("reduced" if variant == "plain" else "plain")].iloc[0]
+    per_correct = r["seconds_per_solve"] * 100.0 / r["correct_pct"] if r["correct_pct"] > 0 else np.nan
+    ratio = per_correct / (
+        other["seconds_per_solve"] * 100.0 / other["correct_pct"] if other["correct_pct"] > 0 else np.nan
+    )
+    if variant == "reduced":
+        ratio = 1.0 / ratio
+    loop = float(a.loc[variant, "seconds_per_solve_loop"]) if variant in a.index else np.nan
+    return {
+        f"{key}_total_time": dict(
+            value=per_correct * 1000.0,
+            note=(
+                f"our wall time for 1000 correct points with failed starts replaced, from the vectorised batch "
+                f"({r['seconds_per_solve'] * 1e6:.0f} us per solve, numpy); the thesis timed Mathematica on unknown "
+                f"hardware: only the ratio compares (ours conventional/reduced {ratio:.2f}, thesis 68.31/39.58 = 1.73)"
+            ),
+        ),
+        f"{key}_mean_time_per_solve": dict(
+            value=loop,
+            note=(
+                f"our seconds per solve with one start per call (the way a per-point solver is used; "
+                f"{int(a.loc[variant, 'n_loop']) if variant in a.index else 0} calls), batch "
+                f"{r['seconds_per_solve']:.2e} s; different software and hardware from the thesis's, only the ratio "
+                "compares (thesis conventional/reduced 0.0633/0.0409 = 1.55)"
+            ),
+        ),
+    }
 
 
 def _contact_facts(tables: dict, f: dict) -> None:

@@ -638,34 +638,44 @@ THESIS_TABLE10_TOTAL_S = {"conventional": 839.62, "reduced": 232.09}
 TIMED_VARIANTS = ("plain", "robust", "reduced", "reduced_robust")
 
 
+def loop_timing(s: dict, pair, ref: Reference, rows: list, starts: np.ndarray, variant: str) -> dict:
+    """Seconds per solve of ``variant``: the vectorised batch of a study (its row in ``rows``) beside
+    a loop of single-start calls over the first ``timing_loop_n`` of its ``starts`` (the way a
+    per-point solver such as Mathematica's FindRoot is used)."""
+    batch = next(r for r in rows if r["variant"] == variant)
+    sub = starts[: int(s["timing_loop_n"])]
+    t0 = time.perf_counter()
+    for i in range(len(sub)):
+        run_variant(pair, ref, sub[i : i + 1], variant, s)
+    loop = (time.perf_counter() - t0) / len(sub)
+    return dict(
+        case=batch["case"],
+        formulation=batch["formulation"],
+        variant=variant,
+        seconds_per_solve_batch=batch["seconds_per_solve"],
+        seconds_per_solve_loop=loop,
+        n_loop=len(sub),
+        correct_pct=batch["correct_pct"],
+    )
+
+
 def timing_table(s: dict, res: StudyResult) -> pd.DataFrame:
-    """Seconds per solve of both formulations on the Table 10 starts: the vectorised batch of the
-    study ``res`` and a loop of single-start calls (the way a per-point solver such as
-    Mathematica's FindRoot is used)."""
-    pair, ref = res.pair, res.ref
-    st = res.starts[: int(s["timing_loop_n"])]
+    """Seconds per solve of both formulations on the Table 10 starts (:func:`loop_timing` of the
+    study ``res``), per correct solve, beside the thesis's totals."""
     rows = []
     for lab in TIMED_VARIANTS:
-        batch = next(r for r in res.rows if r["variant"] == lab)
-        t0 = time.perf_counter()
-        for i in range(len(st)):
-            run_variant(pair, ref, st[i : i + 1], lab, s)
-        loop = (time.perf_counter() - t0) / len(st)
-        thesis_total = THESIS_TABLE10_TOTAL_S[batch["formulation"]]
-        ok = batch["correct_pct"] > 0
+        row = loop_timing(s, res.pair, res.ref, res.rows, res.starts, lab)
+        thesis_total = THESIS_TABLE10_TOTAL_S[row["formulation"]]
+        ok = row["correct_pct"] > 0
         rows.append(
-            dict(
-                case=batch["case"],
-                formulation=batch["formulation"],
-                variant=lab,
-                seconds_per_solve_batch=batch["seconds_per_solve"],
-                seconds_per_solve_loop=loop,
-                n_loop=len(st),
-                correct_pct=batch["correct_pct"],
-                seconds_per_correct_solve_batch=batch["seconds_per_solve"] * 100.0 / batch["correct_pct"]
+            row
+            | dict(
+                seconds_per_correct_solve_batch=row["seconds_per_solve_batch"] * 100.0 / row["correct_pct"]
                 if ok
                 else np.nan,
-                seconds_per_correct_solve_loop=loop * 100.0 / batch["correct_pct"] if ok else np.nan,
+                seconds_per_correct_solve_loop=row["seconds_per_solve_loop"] * 100.0 / row["correct_pct"]
+                if ok
+                else np.nan,
                 thesis_total_s_5000=thesis_total,
                 thesis_seconds_per_correct_point=thesis_total / 5000,
             )

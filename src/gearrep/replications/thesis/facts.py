@@ -135,10 +135,13 @@ def _t10_facts(tables: dict) -> dict:
 def _sec61_facts(tables: dict) -> dict:
     """Sec 6.1 and the Table 9 helical study (references, rates)."""
     conv = tables["convergence"]
-    refs = tables["references"].set_index("case")
+    r = tables["references"].set_index("case").loc["spur_25_25"]
+    return _pitch_point_facts(r) | _phi2_guess_facts(conv, r) | _helical_facts(conv)
+
+
+def _pitch_point_facts(r) -> dict:
+    """Sec 6.1: the contact of the 25/25 pair at the pitch point (``r``: its references row)."""
     f = {}
-    # sec 6.1 pitch point
-    r = refs.loc["spur_25_25"]
     for k, col in (
         ("u1", "u1_mm"),
         ("v1", "v1_thesis_mm"),
@@ -157,6 +160,12 @@ def _sec61_facts(tables: dict) -> dict:
     f["s61_phi1"]["note"] = (
         "we use phi1 = pi/2 exactly; the printed 1.5707 is pi/2 cut to 4 decimals (1.5707 itself would give u1 = 31.104)"
     )
+    return f
+
+
+def _phi2_guess_facts(conv, r) -> dict:
+    """Sec 6.1: rates from fixed phi2 guesses, from the thesis's phi2 window, and misaligned."""
+    f = {}
     for g in (0.0, -1.1, -1.15, -1.2):
         rr = _row(conv, f"spur_25_25_guess_{g:+.2f}rad", "plain")
         dd = _row(conv, f"spur_25_25_guess_{g:+.2f}rad", "damped")
@@ -188,6 +197,12 @@ def _sec61_facts(tables: dict) -> dict:
             n=int(rm["n_starts"]),
             note=(f"as s61_window with in-plane misalignment ({mis[0]})"),
         )
+    return f
+
+
+def _helical_facts(conv) -> dict:
+    """Table 9: the helical 25/77 rates, aligned and misaligned (with the full-turn comparison)."""
+    f = {}
     for key, case in (
         ("hel_aligned", "helical_25_77"),
         ("hel_misaligned", next((c for c in conv["case"].unique() if c.startswith("helical_25_77_inplane")), None)),

@@ -2,7 +2,7 @@
 Tables 3-4), the crowning areas, and the candidate readings of the printed Delta phi_max.
 
 The TE transmitted over a mesh cycle is the upper envelope of the tooth pairs' TE curves
-(:func:`gearrep.meshing.pair_te_curves`, :func:`gearrep.meshing.upper_envelope`).
+(:func:`gearrep.meshing.sampled_cycle`).
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...meshing import handover_jump, pair_te_curves, upper_envelope
+from ...meshing import sampled_cycle
 from ...solve import Status
 from ...surfaces.involute import ParabolicCrowning
 from ...tca import GearPair, Misalignment, line_of_action_starts, robust_start, solve_contact
@@ -18,7 +18,7 @@ from ...units import ARCSEC, DEG
 from .design import TABLE34, Design, misalignment, pair_40_37, pair_spur_m1
 from .model import ThesisFrame, crown_curvature, crowning_object
 
-#: a hand-over jump above this counts as a discontinuous TE (0.01 arcsec ~ 5e-8 rad)
+#: a hand-over jump above this counts as a discontinuous TE (0.01 arcsec ~ 5e-8 rad; also the bevel studies')
 JUMP_TOL_ARCSEC = 0.01
 #: tooth pairs k whose TE curves (shifted by k angular pitches) enter the envelope
 PAIRS = range(-2, 3)
@@ -49,15 +49,7 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     phi, c = engagement_contacts(pair, n_points, tol)
     ok = c.status == Status.CONVERGED
     te = np.where(ok, c.te, np.nan)
-    cyc = np.linspace(-0.5 * p1, 0.5 * p1, int(n_points))
-    if ok.sum() >= 2:
-        curves = pair_te_curves(phi, te, p1, cyc, PAIRS)
-        env, lead = upper_envelope(curves)
-        jump = handover_jump(curves, lead, env)
-    else:
-        env, jump = np.full(cyc.shape, np.nan), np.nan
-    fin = np.isfinite(env)
-    jump_arcsec = jump / ARCSEC if np.isfinite(jump) else np.nan
+    cycle = sampled_cycle(phi, te, p1, int(n_points), PAIRS, handover="jump")
     i0 = int(np.argmin(np.where(ok, np.abs(phi), np.inf))) if ok.any() else None  # nearest the pitch point
     if ok.sum() >= 3:
         c2, c1, _ = np.polyfit(phi[ok], te[ok], 2)
@@ -72,16 +64,16 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
         v1=c.v1,
         u2=c.u2,
         v2=c.v2,
-        cycle_phi1=cyc,
-        cycle_te=env,
-        continuous=bool(fin.all() and jump_arcsec <= JUMP_TOL_ARCSEC),
-        te_extreme=float(env[fin][np.argmax(np.abs(env[fin]))]) if fin.any() else np.nan,
-        area=float(np.trapezoid(env, cyc)) if fin.all() else np.nan,
-        jump_arcsec=jump_arcsec,
+        cycle_phi1=cycle.phi1,
+        cycle_te=cycle.te,
+        continuous=cycle.continuous(JUMP_TOL_ARCSEC),
+        te_extreme=cycle.te_extreme,
+        area=float(np.trapezoid(cycle.te, cycle.phi1)) if np.isfinite(cycle.te).all() else np.nan,
+        jump_arcsec=cycle.jump_arcsec,
         te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
         v1_at_pitch=float(c.v1[i0]) if i0 is not None else np.nan,
         te_at_pitch=float(te[i0]) if i0 is not None else np.nan,
-        env_pp=float(np.ptp(env[fin])) if fin.any() else np.nan,
+        env_pp=cycle.te_peak_to_peak,
         te_linear_slope=lin_slope,
         te_parabolic_part=parab,
         engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan),

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
-from .._face import Job, run_jobs
+from .._face import FACE, Job, run_jobs
 from .._seed000 import table_5_1
 from . import studies
 from .checks import SURVIVING, check_records
@@ -27,19 +27,7 @@ from .claims import normalise
 from .studies import TABLE_COLUMNS, TABLES, curvature_tables, direct_curvatures, l1_grid
 
 __all__ = [
-    "SEED",
-    "SETTINGS",
-    "DESIGN_DATA",
-    "CHECK_DATA",
-    "params_from_published",
-    "JOBS",
-    "run",
-    "checks",
-    "CHECK_OUTPUTS",
-    "FIGURES",
-    "REPORT_FIGURES",
-    "bench_cases",
-    "validate",
+    *FACE,  # the replication face (gearrep.replications._face)
     "Design",
     "merged",
     "TABLES",

@@ -23,7 +23,7 @@ import pandas as pd
 
 from ... import settings as _s
 from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
-from .._face import Job, run_jobs
+from .._face import FACE, Job, run_jobs
 from .._seed000 import table_5_1
 from . import contact, studies
 from .checks import CHECK_PREFIXES, SURVIVING, check_records
@@ -32,19 +32,7 @@ from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
 
 __all__ = [
-    "SEED",
-    "SETTINGS",
-    "DESIGN_DATA",
-    "CHECK_DATA",
-    "params_from_published",
-    "JOBS",
-    "run",
-    "checks",
-    "CHECK_OUTPUTS",
-    "FIGURES",
-    "REPORT_FIGURES",
-    "bench_cases",
-    "validate",
+    *FACE,  # the replication face (gearrep.replications._face)
     "Design",
     "TABLE_EXAMPLE",
     "KE_COLUMNS",
