@@ -63,7 +63,7 @@ FIGURE_MODULES = ["matplotlib", "matplotlib.pyplot", "gearrep.plotting"]
 RENDER_MODULES = ["nbformat", "nbconvert"]
 
 
-def script_request(script, *, input, output, log, timing, params=None, preload=()):
+def script_request(script, *, input, output, log, timing, params=None, wildcards=None, preload=()):
     """The JSON request of a workflow script run by STEP_RUNNER: the script reads the rule's named
     input, output, log and params as ``snakemake.<field>.<name>`` (see StepFiles there)."""
     return json.dumps(
@@ -73,6 +73,7 @@ def script_request(script, *, input, output, log, timing, params=None, preload=(
             "output": output,
             "log": {"log": log},
             "params": params or {},
+            "wildcards": dict(wildcards or {}),
             "timing": timing,
             "preload": list(preload),
         },

@@ -47,54 +47,86 @@ SEED_CHECKS = {
 }
 
 
+def _parity_published(seed):
+    return published_files(f"values_{seed}_*.csv", f"claims_{seed}.csv")
+
+
 rule report_parity:
     input:
+        runner=STEP_RUNNER,
+        script="workflow/scripts/report_parity.py",
         checks=lambda wildcards: SEED_CHECKS[wildcards.seed],
-        published=lambda wildcards: published_files(f"values_{wildcards.seed}_*.csv", f"claims_{wildcards.seed}.csv"),
+        published=lambda wildcards: _parity_published(wildcards.seed),
         code=script_lib("workflow/scripts/report_parity.py"),
     output:
         directory("results/parity/{seed}"),
+        job_timing="results/benchmarks/parity/{seed}.tsv",
     log:
         "results/logs/parity_{seed}.log",
-    benchmark:
-        "results/benchmarks/parity/{seed}.tsv"
     wildcard_constraints:
         seed="|".join(PARITY_SEEDS),
     conda:
         "../envs/gearrep.yaml"
     params:
-        published_dir=PUBLISHED_DIR,
-    script:
-        "../scripts/report_parity.py"
+        python=PYTHON,
+        # run by the step runner's warm process, matplotlib preloaded
+        request=lambda wc: script_request(
+            "workflow/scripts/report_parity.py",
+            input={"checks": SEED_CHECKS[wc.seed], "published": _parity_published(wc.seed)},
+            output={"parity": f"results/parity/{wc.seed}"},
+            log=f"results/logs/parity_{wc.seed}.log",
+            timing=f"results/benchmarks/parity/{wc.seed}.tsv",
+            params={"published_dir": PUBLISHED_DIR},
+            wildcards={"seed": wc.seed},
+            preload=FIGURE_MODULES,
+        ),
+    shell:
+        "{params.python:q} {input.runner:q} {params.request:q}"
 
 
 BENCHMARKS.extend(expand("results/benchmarks/parity/{seed}.tsv", seed=PARITY_SEEDS))
 
+#: the report's named inputs (also the script's snakemake.input)
+REPORT_INPUT = {
+    "scorecard": "results/scorecard.csv",
+    "notebooks": expand("results/notebooks/{name}.html", name=NOTEBOOKS),
+    "figures": REPORT_FIGURES,
+    "parity": expand("results/parity/{seed}", seed=PARITY_SEEDS),
+    "errata": "data/errata.csv",
+    "published": published_files(),
+    "manifest": f"{PUBLISHED_DIR}/MANIFEST.csv",
+    "captions": "workflow/report/captions.yaml",
+    "highlights": "workflow/report/highlights.yaml",
+    "config": "config/config.yaml",
+    "lock": "requirements.lock",
+}
+
 
 rule report:
     input:
-        scorecard="results/scorecard.csv",
-        notebooks=expand("results/notebooks/{name}.html", name=NOTEBOOKS),
-        figures=REPORT_FIGURES,
-        parity=expand("results/parity/{seed}", seed=PARITY_SEEDS),
-        errata="data/errata.csv",
-        published=published_files(),
-        manifest=f"{PUBLISHED_DIR}/MANIFEST.csv",
-        captions="workflow/report/captions.yaml",
-        highlights="workflow/report/highlights.yaml",
-        config="config/config.yaml",
-        lock="requirements.lock",
+        **REPORT_INPUT,
+        runner=STEP_RUNNER,
+        script="workflow/scripts/report.py",
         code=script_lib("workflow/scripts/report.py"),
     output:
         "results/report.html",
+        job_timing="results/benchmarks/report.tsv",
     log:
         "results/logs/report.log",
-    benchmark:
-        "results/benchmarks/report.tsv"
     conda:
         "../envs/gearrep.yaml"
-    script:
-        "../scripts/report.py"
+    params:
+        python=PYTHON,
+        # run by the step runner's warm process
+        request=script_request(
+            "workflow/scripts/report.py",
+            input=REPORT_INPUT,
+            output={"html": "results/report.html"},
+            log="results/logs/report.log",
+            timing="results/benchmarks/report.tsv",
+        ),
+    shell:
+        "{params.python:q} {input.runner:q} {params.request:q}"
 
 
 # Optional (not in the default target; needs Chromium): `snakemake --cores 1 results/report.png`.

@@ -1,8 +1,8 @@
 """One step of the workflow, run by its rule as ``python run_study_step.py REQUEST`` with REQUEST the
 JSON the rule builds: a study's job (its tables) or its checks (workflow/rules/replications.smk:
 study, step, settings, input and output paths, log), or a workflow script (a study's figures, a
-notebook's rendering: ``script`` with the rule's named ``input``, ``output``, ``log`` and
-``params``, which the script reads as ``snakemake.input.<name>`` and so on, as under Snakemake's
+notebook's rendering: ``script`` with the rule's named ``input``, ``output``, ``log``, ``params``
+and ``wildcards``, which the script reads as ``snakemake.input.<name>`` and so on, as under Snakemake's
 ``script:`` directive, and ``preload``, modules the warm process imports once for every such step).
 
 Why not a plain script: every step of the 70 would otherwise be a fresh Python process that pays
@@ -71,7 +71,7 @@ def run_script(req: dict) -> None:
 
     import replication_io
 
-    io = {k: StepFiles(req.get(k, {})) for k in ("input", "output", "log", "params")}
+    io = {k: StepFiles(req.get(k, {})) for k in ("input", "output", "log", "params", "wildcards")}
     with replication_io.logged(io["log"][0]):
         seconds, _ = replication_io.timed(
             runpy.run_path, req["script"], {"snakemake": SimpleNamespace(**io)}, "__main__"
