@@ -6,13 +6,14 @@ the replication seed 000 ch. 5 being another user of it): the pair is built by
 :func:`gearrep.hobbed.make_pair`, the contact at phi1 = 0 by :func:`gearrep.hobbed.continue_to`
 (continuation from the ideal pair, then the physical contact among the tangencies found across
 the face), paths by :func:`gearrep.tca_envelope.trace_path` and
-:func:`gearrep.tca_envelope.physical_contact`, the engagement limits by
+:func:`gearrep.hobbed.physical_contact`, the engagement limits by
 :func:`gearrep.hobbed.tip_crossing` (where the contact reaches each tip circle, r_p + m), the
 contact ellipses by :func:`gearrep.hobbed.elastic_ellipses` (curvature method, eq 5.14-5.17) and
-the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at phi1 = 0). What is added here is the mapping of those results onto the command's tables, the
-check that the contact at phi1 = 0 lies on both flanks, and the parameter grid over a flank
-(hob parameter l from the tip circle to the hob's working depth, swivel psi between the face
-edges) for the curvature table and the point clouds.
+the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at phi1 = 0). What is added
+here is the mapping of those results onto the command's tables, the check that the contact at
+phi1 = 0 lies on both flanks, and the parameter grid over a flank (hob parameter l from the tip
+circle to the hob's working depth, swivel psi between the face edges) for the curvature table
+and the point clouds.
 
 Frames: contact points in the fixed frame S_f of eq 5.1-5.4 (pinion axis along z for an aligned
 pinion); flank grids and curvatures in each member's tooth frame (tooth centred on X, Z = axis).
@@ -172,10 +173,12 @@ def check_ke_grid(values) -> None:
 
 
 def _path(pair, s0, phi1, tol):
-    from ..tca_envelope import physical_contact, trace_path
+    """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
+    from ..hobbed import physical_contact
+    from ..tca_envelope import trace_path
 
     with np.errstate(all="ignore"):
-        return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), face_width_mm=pair.face_width_mm, tol=tol)
+        return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), tol=tol)
 
 
 def _engagement(pair, s0, tol):
