@@ -19,11 +19,13 @@ from conftest import study_settings
 
 from gearrep import checks as C
 from gearrep import frames, published
+from gearrep import hobbed as H
 from gearrep import tca_envelope as TE
 from gearrep.replications import tseng_tca as T
 from gearrep.replications.tseng_tca import model
 from gearrep.settings import SettingError, resolve
 from gearrep.solve import newton
+from gearrep.surfaces.hob import PairDesign
 
 ROOT = Path(__file__).parents[2]
 EXPECTED = pd.read_csv(Path(__file__).with_name("expected_tseng_tca.csv"))
@@ -85,7 +87,7 @@ def test_expected_status(records, cid):
 def test_all_points_converged(tables):
     for name in [f"ke_table_5_{i}" for i in range(2, 10)] + ["ke_example_5_3"]:
         t = tables[name]
-        assert list(t.columns[:7]) == T.KE_COLUMNS
+        assert list(t.columns[:7]) == H.KE_COLUMNS
         assert (t["status"] == "converged").all(), name
         assert t["residual"].max() < 1e-10
         assert len(t) == 11
@@ -141,7 +143,7 @@ def test_table_5_2_reports_both_tangencies(tables, settings):
     angle the flanks interpenetrate by 2.93e-6 mm at the pair, with the gear at the pair's angle
     mid-face is 2.93e-6 mm apart; from phi1' = 6 deg on both are one tangency."""
     t = tables["ke_table_5_2"]
-    assert list(t.columns[:7]) == T.KE_COLUMNS
+    assert list(t.columns[:7]) == H.KE_COLUMNS
     assert t["Z_p_midface_mm"].abs().max() < 1e-6 and t["Z_g_midface_mm"].abs().max() < 1e-6
     r = t.iloc[0]
     assert r["Z_p_mm"] == pytest.approx(2.063072665, abs=1e-6)
@@ -213,7 +215,7 @@ def test_separation_threshold_setting_is_far_below_the_physical_scales(design):
     with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
         T.validate(resolve(T.SETTINGS), thin)
     with pytest.raises(ValueError, match="Z_p_mm"):
-        TE.tangency_near(T.make_pair(design.gears, 110.0, 113.0), None, float("nan"))
+        TE.tangency_near(H.make_pair(design.gears, 110.0, 113.0), None, float("nan"))
 
 
 def test_physical_contact_has_no_interference(tables):
@@ -254,10 +256,10 @@ def test_jacobian_matches_central_differences(gears, cases):
 
 
 def test_predictor_is_first_order(gears):
-    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
+    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly())
     for d in (np.radians(1.0), np.radians(0.5)):
-        pred = T.predict(pair, s0.x, s0.phi1, [d])
-        true = T.solve_points(pair, [d], pred).x
+        pred = TE.predict(pair, s0.x, s0.phi1, [d])
+        true = TE.solve_points(pair, [d], pred).x
         err = np.abs(pred - true).max()
         assert err < 2e-4 * (d / np.radians(1.0)) ** 2 * 1.5 + 1e-9
 
@@ -267,7 +269,7 @@ def test_pair_is_physical_no_interference(gears):
     and measure the gear surface along the contact normal: the gap must be positive (clearance)
     and close to Z^2/2 (1/110 - 1/113), the lengthwise relative curvature of convex 110 in
     concave 113."""
-    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly())
+    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly())
     x = s0.x[0]
     # normal pointing from the pinion tooth into its tooth space: away from the pinion's centre
     # line X_p, i.e. along the side of the point's polar angle
@@ -310,11 +312,11 @@ def test_bad_input_raises(design):
     with pytest.raises(ValueError, match="lack examples"):
         T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0), design.gears))
     with pytest.raises(ValueError, match="dgamma_h"):
-        T.Assembly(dgamma_h=0.5)
+        H.Assembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
-        T.make_pair(design.gears, 110.0, 5.0)
-    pair = T.make_pair(design.gears, 110.0, 113.0)
-    start = T.continue_to(design.gears, 110.0, 113.0, T.Assembly())[1]
+        H.make_pair(design.gears, 110.0, 5.0)
+    pair = H.make_pair(design.gears, 110.0, 113.0)
+    start = H.continue_to(design.gears, 110.0, 113.0, H.Assembly())[1]
     with pytest.raises(ValueError, match="face_width_mm"):
         TE.physical_contact(pair, start, face_width_mm=0.0)
 
@@ -361,14 +363,14 @@ def test_design_carries_the_table_5_1_pair(design, pub):
     for k, v in (("N_pinion", 21.0), ("pinion_pitch_radius", 31.5), ("pinion_outside_diameter", 69.0)):
         changed = _with_param(changed, k, v)
     other = T.params_from_published(changed)
-    pair = T.make_pair(other.gears, 110.0, 113.0)
+    pair = H.make_pair(other.gears, 110.0, 113.0)
     assert pair.pinion.n_teeth == 21 and pair.ratio == 21 / 40
     with pytest.raises(ValueError, match="n_pinion"):
-        T.PairDesign(3, 40, 40.0, g.hob)
+        PairDesign(3, 40, 40.0, g.hob)
     with pytest.raises(ValueError, match="face_width_mm"):
-        T.PairDesign(20, 40, float("nan"), g.hob)
+        PairDesign(20, 40, float("nan"), g.hob)
     with pytest.raises(ValueError, match="face_width_mm / 2"):
-        T.make_pair(T.PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
+        H.make_pair(PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
 
 
 def test_one_job_writes_only_its_table(settings, design):
@@ -380,13 +382,21 @@ def test_one_job_writes_only_its_table(settings, design):
     assert len({p for j in T.JOBS.values() for p in j.tables.values()}) == len(T.JOBS)
 
 
-def test_printed_matrices_against_the_library_route(tables):
+def test_printed_matrices_against_the_library_route(tables, design):
     """Eq 5.1-5.4 read as active rotations equal the frames route (seed 000's misalignment:
     about X_h by -dgamma_h, then Y_h by dgamma_v); eq 5.12 re-zeroed gives the KE column; eq
     5.13 gives the contact-ratio column."""
     gh, gv, phi = 3e-3, -2e-3, np.array([0.3, -0.7])
     np.testing.assert_allclose(model.M_fh(gh) @ model.M_hv(gv), frames.misalignment_rotation(-gh, gv), atol=1e-15)
     np.testing.assert_allclose(model.dM_vp(phi), (model.M_vp(phi + 1e-6) - model.M_vp(phi - 1e-6)) / 2e-6, atol=1e-9)
+    # the library's pair (gearrep.hobbed.Pair) places the members by the printed matrices
+    pair = H.make_pair(design.gears, 110.0, 113.0, H.Assembly(dgamma_h=gh, dgamma_v=gv))
+    tilt = model.M_fh(gh) @ model.M_hv(gv)
+    for deriv, M in ((False, model.M_vp), (True, model.dM_vp)):
+        want = tilt @ M(phi) @ pair.pinion.placement
+        np.testing.assert_array_equal(pair.pinion_rotation(phi, deriv=deriv), want)
+    for deriv, M in ((False, model.M_fg), (True, model.dM_fg)):
+        np.testing.assert_array_equal(pair.gear_rotation(phi, deriv=deriv), M(phi) @ pair.gear.placement)
     t = tables["ke_table_5_4"]
     phi1, phi2 = np.radians(t["phi1_deg"]), np.radians(t["phi2_deg"])
     ke = model.kinematic_error(phi1, phi2, 20, 40)
@@ -452,19 +462,19 @@ def test_unconverged_continuation_is_reported_not_passed_on(gears):
     """Table 5.3 (110/110 under 3') in ONE continuation step from 110/113 does not converge: the
     run stops with the solver status instead of returning a wrong contact."""
     with pytest.raises(RuntimeError, match="did not converge"):
-        T.continue_to(gears, 110.0, 110.0, T.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
+        H.continue_to(gears, 110.0, 110.0, H.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
     with pytest.raises(ValueError, match="x0"):
-        pair = T.make_pair(gears, 110.0, 113.0)
-        T.solve_points(pair, [0.0], np.full((1, 9), np.nan))
+        pair = H.make_pair(gears, 110.0, 113.0)
+        TE.solve_points(pair, [0.0], np.full((1, 9), np.nan))
 
 
 def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
     """A start thrown onto another branch (one row of the batch predictor corrupted by a gear
     pitch in phi2' and half a turn in the hob angles) is flagged and re-solved by marching: the
     result equals the clean path, every point converged."""
-    pair, s0 = T.continue_to(gears, 110.0, 113.0, T.Assembly(dgamma_h=np.radians(3 / 60)))
+    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
-    clean = T.trace_path(pair, s0, phi1)
+    clean = TE.trace_path(pair, s0, phi1)
     real_predict = TE.predict
     calls = {"n": 0}
 
@@ -478,6 +488,6 @@ def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
         return out
 
     monkeypatch.setattr(TE, "predict", bad_predict)
-    sol = T.trace_path(pair, s0, phi1)
+    sol = TE.trace_path(pair, s0, phi1)
     assert sol.converged.all(), sol.status_name
     np.testing.assert_allclose(sol.x, clean.x, atol=1e-9)

@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 from conftest import PUBLISHED_DIR, assert_honest
 
+from gearrep import hobbed as tt
 from gearrep import published
 from gearrep import tca_envelope as te
 from gearrep.curvature import principal_curvatures
@@ -25,7 +26,6 @@ from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
 from gearrep.replications import tseng_curvature as tc
 from gearrep.replications import tseng_tca as tca_rep
-from gearrep.replications.tseng_tca import contact as tt
 from gearrep.replications.tseng_tca import studies as ts
 from gearrep.solve import Status
 from gearrep.surfaces.catt import (

@@ -353,7 +353,7 @@ def canonical_hash(obj) -> str:
 @dataclass
 class Design:
     """A checked design: ``values`` (resolved mapping), the library ``pair`` (gearrep.tca.GearPair;
-    hobbed_curvilinear: gearrep.replications.tseng_tca.contact.Pair), the family and its helpers
+    hobbed_curvilinear: gearrep.hobbed.Pair), the family and its helpers
     (``mesh``: the CATT mesh, or the hobbed pair's PairDesign), and the contact found at phi1 = 0
     (``start``, hobbed_curvilinear)."""
 
@@ -527,8 +527,8 @@ def _catt(v) -> Design:
 
 
 def _hobbed_curvilinear(v) -> Design:
-    from ..replications._seed000 import za_hob
-    from ..replications.tseng_tca.contact import PairDesign, make_pair
+    from ..hobbed import make_pair
+    from ..surfaces.hob import PairDesign, za_hob
 
     m, B, a_deg = v["module_mm"], v["face_width_mm"], v["pressure_angle_deg"]
     r_h = v["hob_pitch_radius_mm"]
@@ -564,7 +564,7 @@ def _hobbed_curvilinear(v) -> Design:
 
 
 def _hob_assembly(v):
-    from ..replications.tseng_tca.contact import Assembly
+    from ..hobbed import Assembly
 
     m = v["misalignment"]
     return Assembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])

@@ -1,19 +1,19 @@
 """The ``hobbed_curvilinear`` family of the ``gearrep`` command: curvilinear-tooth cylindrical gears
 cut by a ZA worm hob (seed 000), analysed by the library's TCA of two-parameter envelopes.
 
-This module is an adapter, not a second TCA: the pair is built by
-:func:`gearrep.replications.tseng_tca.contact.make_pair`, the contact at phi1 = 0 by
-:func:`~gearrep.replications.tseng_tca.contact.continue_to` (continuation from the ideal pair,
-then the physical contact among the tangencies found across the face), paths by
-:func:`gearrep.tca_envelope.trace_path` and :func:`gearrep.tca_envelope.physical_contact`, the
-engagement limits by :func:`gearrep.replications.tseng_tca.studies.tip_crossing` (where the
-contact reaches each tip circle, r_p + m), the contact ellipses by
-:func:`gearrep.replications.tseng_tca.ellipses.elastic_ellipses` (curvature method, eq 5.14-5.17)
-and the KE table by :func:`gearrep.replications.tseng_tca.contact.ke_table` (eq 5.12, zero at
-phi1 = 0). What is added here is the mapping of those results onto the command's tables, the
-check that the contact at phi1 = 0 lies on both flanks, and the parameter grid over a flank
-(hob parameter l from the tip circle to the hob's working depth, swivel psi between the face
-edges) for the curvature table and the point clouds.
+This module is an adapter, not a second TCA, and uses only the library (:mod:`gearrep.hobbed`,
+the replication seed 000 ch. 5 being another user of it): the pair is built by
+:func:`gearrep.hobbed.make_pair`, the contact at phi1 = 0 by :func:`gearrep.hobbed.continue_to`
+(continuation from the ideal pair, then the physical contact among the tangencies found across
+the face), paths by :func:`gearrep.tca_envelope.trace_path` and
+:func:`gearrep.hobbed.physical_contact`, the engagement limits by
+:func:`gearrep.hobbed.tip_crossing` (where the contact reaches each tip circle, r_p + m), the
+contact ellipses by :func:`gearrep.hobbed.elastic_ellipses` (curvature method, eq 5.14-5.17) and
+the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at phi1 = 0). What is added
+here is the mapping of those results onto the command's tables, the check that the contact at
+phi1 = 0 lies on both flanks, and the parameter grid over a flank (hob parameter l from the tip
+circle to the hob's working depth, swivel psi between the face edges) for the curvature table
+and the point clouds.
 
 Frames: contact points in the fixed frame S_f of eq 5.1-5.4 (pinion axis along z for an aligned
 pinion); flank grids and curvatures in each member's tooth frame (tooth centred on X, Z = axis).
@@ -57,7 +57,7 @@ def _half_window(n_teeth: int) -> float:
 def start(values, gears, assembly, tol, steps):
     """(pair, physical contact at phi1 = 0) of ``gears`` (PairDesign) under ``assembly``, or
     (None, reason) when the continuation from the ideal pair fails."""
-    from ..replications.tseng_tca.contact import continue_to
+    from ..hobbed import continue_to
 
     try:
         with np.errstate(all="ignore"):
@@ -154,11 +154,11 @@ def _limit(d, name, x, pair, sol) -> float:
 
 
 def _ke_grid(s) -> np.ndarray:
-    """Pinion angles [rad] of the KE table (the replication's grid function)."""
-    from ..replications.tseng_tca.studies import phi1_grid
+    """Pinion angles [rad] of the KE table (:func:`gearrep.hobbed.phi1_grid`)."""
+    from ..hobbed import phi1_grid
 
     g = s["ke_table"]
-    return phi1_grid({"phi1_start_deg": g["start_deg"], "phi1_end_deg": g["end_deg"], "phi1_step_deg": g["step_deg"]})
+    return phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
 
 
 def check_ke_grid(values) -> None:
@@ -173,16 +173,18 @@ def check_ke_grid(values) -> None:
 
 
 def _path(pair, s0, phi1, tol):
-    from ..tca_envelope import physical_contact, trace_path
+    """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
+    from ..hobbed import physical_contact
+    from ..tca_envelope import trace_path
 
     with np.errstate(all="ignore"):
-        return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), face_width_mm=pair.face_width_mm, tol=tol)
+        return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), tol=tol)
 
 
 def _engagement(pair, s0, tol):
     """(phi1_B, phi1_E) [rad]: where the contact reaches the pinion tip and the gear tip (the tip
     crossing nearest phi1 = 0 on the traced window)."""
-    from ..replications.tseng_tca.studies import tip_crossing
+    from ..hobbed import tip_crossing
 
     w = _half_window(pair.pinion.n_teeth)
     n = window_points(pair.pinion.n_teeth)
@@ -238,8 +240,7 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     """(contact_path, te_cycle, summary dict, {"ke_table": ...}) of a checked hobbed design
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
     from .. import meshing
-    from ..replications.tseng_tca.contact import ke_table
-    from ..replications.tseng_tca.ellipses import elastic_ellipses
+    from ..hobbed import elastic_ellipses, ke_table
     from ..tca_envelope import pinion_outward, turn_gap
     from .analysis import cycle_summary, te_envelope
 

@@ -1,6 +1,6 @@
 """Design data shared by the two studies of seed 000 (``tseng_curvature``, ch. 4, and ``tseng_tca``,
 ch. 5): the pinion, gear and ZA hob of Table 5.1, read and checked once from the published
-parameters (``params_000_table5_1.csv``), and the one way a hob is built from them."""
+parameters (``params_000_table5_1.csv``); the hob is built by :func:`gearrep.surfaces.hob.za_hob`."""
 
 from __future__ import annotations
 
@@ -10,21 +10,11 @@ import numpy as np
 import pandas as pd
 
 from ..published import param_table
-from ..surfaces.hob import ZAHob
+from ..surfaces.hob import ZAHob, za_hob
 
-__all__ = ["TABLE_5_1", "Table51", "table_5_1", "za_hob"]
+__all__ = ["TABLE_5_1", "Table51", "table_5_1"]
 
 TABLE_5_1 = "params_000_table5_1.csv"
-
-
-def za_hob(module_mm: float, pressure_angle_deg: float, pitch_radius_mm: float, variant: str = "axial") -> ZAHob:
-    """The ZA hob of normal module, normal pressure angle [deg] and pitch radius (single start)."""
-    return ZAHob(
-        module_mm=module_mm,
-        pressure_angle_rad=float(np.radians(pressure_angle_deg)),
-        pitch_radius_mm=pitch_radius_mm,
-        variant=variant,
-    )
 
 
 @dataclass(frozen=True)
@@ -40,7 +30,7 @@ class Table51:
     pinion_outside_diameter_mm: float
 
     def hob(self, variant: str = "axial") -> ZAHob:
-        """The Table 5.1 hob (:func:`za_hob`)."""
+        """The Table 5.1 hob (:func:`gearrep.surfaces.hob.za_hob`)."""
         return za_hob(self.module_mm, self.pressure_angle_deg, self.hob_pitch_radius_mm, variant)
 
 

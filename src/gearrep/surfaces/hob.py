@@ -74,6 +74,8 @@ __all__ = [
     "HobThread",
     "GeneratedGear",
     "FlankCurvatures",
+    "za_hob",
+    "PairDesign",
 ]
 
 HOB_VARIANTS = ("axial", "printed")
@@ -446,3 +448,56 @@ class GeneratedGear:
         if frame == "tooth":
             return RotatedSurface(s, self.to_tooth_frame)
         raise ValueError(f"frame must be 'tooth' or 'generation', got {frame!r}")
+
+
+def za_hob(module_mm: float, pressure_angle_deg: float, pitch_radius_mm: float, variant: str = "axial") -> ZAHob:
+    """The single-start ZA hob of normal module ``module_mm`` [mm], normal pressure angle
+    ``pressure_angle_deg`` [deg] and pitch radius ``pitch_radius_mm`` [mm] (ranges: :class:`ZAHob`)."""
+    a = float(pressure_angle_deg)
+    if not (np.isfinite(a) and 0.0 < a < 90.0):
+        raise ValueError(f"pressure_angle_deg must be in (0, 90) deg, got {pressure_angle_deg!r}")
+    return ZAHob(
+        module_mm=module_mm,
+        pressure_angle_rad=float(np.radians(pressure_angle_deg)),
+        pitch_radius_mm=pitch_radius_mm,
+        variant=variant,
+    )
+
+
+@dataclass(frozen=True)
+class PairDesign:
+    """The pinion and gear of a curvilinear-tooth pair cut by one hob: tooth numbers ``n_pinion``,
+    ``n_gear`` (integers in [4, 10000]), the face width ``face_width_mm`` of both members (in
+    (0, 1000] mm) and the :class:`ZAHob`. :meth:`cut` generates the two working flanks; the pair
+    for the TCA is :func:`gearrep.hobbed.make_pair`."""
+
+    n_pinion: int
+    n_gear: int
+    face_width_mm: float
+    hob: ZAHob
+
+    def __post_init__(self):
+        for name in ("n_pinion", "n_gear"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, np.integer)) and 4 <= v <= 10000):
+                raise ValueError(f"{name} must be an integer in [4, 10000], got {v!r}")
+        w = self.face_width_mm
+        if not (isinstance(w, (int, float)) and np.isfinite(w) and 0 < w <= 1000):
+            raise ValueError(f"face_width_mm must be in (0, 1000] mm, got {w!r}")
+        if not isinstance(self.hob, ZAHob):
+            raise ValueError(f"hob must be a ZAHob, got {self.hob!r}")
+
+    def with_hob(self, **changes) -> PairDesign:
+        """The same pair cut by a hob with ``changes`` (e.g. ``pitch_radius_mm``)."""
+        return replace(self, hob=replace(self.hob, **changes))
+
+    def cut(self, R_cp_mm: float, R_cg_mm: float) -> tuple[GeneratedGear, GeneratedGear]:
+        """(pinion, gear) flanks for tooth-trace radii ``R_cp_mm``, ``R_cg_mm`` [mm]: the pinion's
+        convex flank (thread side +1, arc centre -1: Sigma_2R) and the gear's concave flank (thread
+        side +1, arc centre +1), each in its generation frame."""
+        for name, v in (("R_cp_mm", R_cp_mm), ("R_cg_mm", R_cg_mm)):
+            if not (np.isfinite(v) and v > 0):
+                raise ValueError(f"{name} must be a finite radius > 0 mm, got {v!r}")
+        pin = GeneratedGear(hob=self.hob, n_teeth=int(self.n_pinion), R_c_mm=float(R_cp_mm), side=1, arc_centre=-1)
+        gear = GeneratedGear(hob=self.hob, n_teeth=int(self.n_gear), R_c_mm=float(R_cg_mm), side=1, arc_centre=1)
+        return pin, gear

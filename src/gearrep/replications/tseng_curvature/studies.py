@@ -17,8 +17,7 @@ import pandas as pd
 from ...curvature import principal_curvatures
 from ...ellipse import elastic_ellipse_from_relative
 from ...solve import status_names
-from ...surfaces.hob import GeneratedGear, ZAHob
-from .._seed000 import za_hob
+from ...surfaces.hob import GeneratedGear, ZAHob, za_hob
 
 __all__ = [
     "TABLES",
@@ -52,7 +51,7 @@ TABLE_COLUMNS = ["l1_mm", "k_s_per_mm", "e_s_x", "e_s_y", "e_s_z", "k_q_per_mm",
 
 def hob(p: dict, variant: str = "axial", pressure_angle_deg: float | None = None) -> ZAHob:
     """The Table 5.1 hob of the design ``p`` (or at another pressure angle): one route with
-    tseng_tca (:func:`gearrep.replications._seed000.za_hob`)."""
+    tseng_tca (:func:`gearrep.surfaces.hob.za_hob`)."""
     a = p["pressure_angle_deg"] if pressure_angle_deg is None else pressure_angle_deg
     return za_hob(p["module_mm"], a, p["hob_pitch_radius_mm"], variant)
 

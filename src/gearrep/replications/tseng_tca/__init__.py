@@ -3,8 +3,8 @@ hob, the kinematic-error (KE) tables 5.2-5.9 and the claims of sections 5.4-5.6.
 
 Tooth surfaces: :class:`gearrep.surfaces.hob.GeneratedGear` (the two-parameter envelope of ch. 4,
 set-up verified by ``tseng_curvature`` on Tables 4.3/4.4). TCA: the 9-unknown tangency system of
-eq 5.1-5.11 (:mod:`gearrep.tca_envelope`; the pair of Table 5.1 in :mod:`.contact`, matrices
-of :mod:`.model`); each Example is reached from the ideal 110/113 pair by continuation in the
+eq 5.1-5.11 (:mod:`gearrep.tca_envelope`; the hob-cut pair, its continuation and KE table in
+:mod:`gearrep.hobbed`, the printed matrices in :mod:`.model`); each Example is reached from the ideal 110/113 pair by continuation in the
 assembly errors (and in R_cg for 110/110), then traced along phi1'. KE (eq 5.12) is re-zeroed at phi1' = 0 like the printed tables, in arc-seconds. Contact
 ellipses by curvature analysis and by surface topology (:mod:`.ellipses`). The findings
 (ill-conditioned Z, several tangencies of the 110/110 pair, the Z_g sign erratum) are told in
@@ -22,12 +22,13 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
-from ...tca_envelope import ContactPath, predict, require, solve_points, trace_path
+from ...hobbed import clear_start_cache, ke_table
+from ...surfaces.hob import PairDesign
+from ...tca_envelope import require
 from .._face import FACE, Job, run_jobs
 from .._seed000 import table_5_1
-from . import contact, studies
+from . import studies
 from .checks import CHECK_PREFIXES, SURVIVING, check_records
-from .contact import KE_COLUMNS, Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 from .studies import TABLE_EXAMPLE, Design, compute_case, phi1_grid
 
@@ -35,20 +36,8 @@ __all__ = [
     *FACE,  # the replication face (gearrep.replications._face)
     "Design",
     "TABLE_EXAMPLE",
-    "KE_COLUMNS",
     "SURVIVING",
     "CHECK_PREFIXES",
-    "Assembly",
-    "PairDesign",
-    "Pair",
-    "ContactPath",
-    "make_pair",
-    "solve_points",
-    "predict",
-    "continue_to",
-    "trace_path",
-    "physical_contact",
-    "ke_table",
     "compute_case",
     "phi1_grid",
     "contact_ellipses",
@@ -318,7 +307,7 @@ def bench_cases(settings: dict, design: Design) -> dict[str, dict]:
     reference = {"tol": 1e-13, "continuation_steps": 8}
 
     def run_one(setting):
-        contact._START_CACHE.clear()
+        clear_start_cache()
         pair, sol = compute_case(design.gears, case, phi1, tol=setting["tol"], steps=setting["continuation_steps"])
         require(sol, f"bench {setting}")
         return ke_table(sol, pair.ratio)

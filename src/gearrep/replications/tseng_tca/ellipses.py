@@ -7,37 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...curvature import PrincipalCurvatures, with_opposite_normal
-from ...curvature_relations import generated_curvatures
-from ...ellipse import elastic_ellipse_at
+from ...hobbed import Assembly, Pair, continue_to, elastic_ellipses
 from ...solve import newton
+from ...surfaces.hob import PairDesign
 from ...tca_envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
-from .contact import Assembly, Pair, PairDesign, continue_to
 
-__all__ = ["elastic_ellipses", "contact_ellipses", "pitch_point_ratio", "topology_pattern"]
-
-
-def _principal_in_fixed(flank: Flank, q, R):
-    """Principal curvatures of a member at full parameters q (n, 4), vectors rotated into S_f
-    by R (n, 3, 3) (generation frame -> S_f)."""
-    env = flank.gear.envelope()
-    gc = generated_curvatures(env, q)
-    rot = lambda v: np.einsum("nab,nb->na", R, v)  # noqa: E731
-    return PrincipalCurvatures(gc.k1, gc.k2, rot(gc.e1), rot(gc.e2), rot(gc.normal))
-
-
-def elastic_ellipses(pair: Pair, sol: ContactPath, delta_mm: float):
-    """(ContactEllipse with the axes as unit 3-vectors in S_f, pinion curvatures, gear curvatures
-    expressed with the pinion's normal) at every contact point of ``sol``: the computation behind
-    :func:`contact_ellipses`."""
-    if not (np.isfinite(delta_mm) and delta_mm > 0):
-        raise ValueError(f"delta_mm must be > 0, got {delta_mm!r}")
-    cp = _principal_in_fixed(pair.pinion, sol.x[:, 0:4], pair.pinion_rotation(sol.phi1))
-    cg = _principal_in_fixed(pair.gear, sol.x[:, 4:8], pair.gear_rotation(sol.phi2))
-    flip = np.sum(cp.normal * cg.normal, axis=-1) < 0
-    cgo = with_opposite_normal(cg)
-    cg = PrincipalCurvatures(*(np.where(flip if a.ndim == 1 else flip[:, None], b, a) for a, b in zip(cg, cgo)))
-    return elastic_ellipse_at(cp, cg, delta_mm), cp, cg
+__all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
 
 def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFrame:
@@ -45,7 +20,7 @@ def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFr
     every contact point of ``sol``: the chapter-4 curvatures of both flanks (two-parameter
     relations, :func:`gearrep.curvature_relations.generated_curvatures`) at the TCA point,
     expressed with the pinion's normal. a/b does not depend on delta (a/b = sqrt(B_e/A_e))."""
-    el, cp, cg = elastic_ellipses(pair, sol, delta_mm)
+    el, cp, cg = elastic_ellipses(pair, sol, delta_mm)  # the library route (gearrep.hobbed)
     return pd.DataFrame(
         {
             "phi1_deg": np.degrees(sol.phi1),
@@ -138,11 +113,7 @@ def topology_pattern(pair: Pair, sol: ContactPath, i: int, delta_mm: float, n_di
         raise ValueError(f"n_dirs must be a positive multiple of 4, got {n_dirs!r}")
     one = sol.take([i])
     el = contact_ellipses(pair, one, delta_mm).iloc[0]
-    cp = _principal_in_fixed(pair.pinion, one.x[:, 0:4], pair.pinion_rotation(one.phi1))
-    cg = _principal_in_fixed(pair.gear, one.x[:, 4:8], pair.gear_rotation(one.phi2))
-    flip = np.sum(cp.normal * cg.normal, -1) < 0
-    cg = with_opposite_normal(cg) if flip[0] else cg
-    ell = elastic_ellipse_at(cp, cg, delta_mm)
+    ell, cp, _ = elastic_ellipses(pair, one, delta_mm)
     n = cp.normal[0]
     t1 = ell.major_axis[0] / np.linalg.norm(ell.major_axis[0])
     t2 = np.cross(n, t1)

@@ -11,12 +11,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ... import meshing
+from ... import hobbed, meshing
+from ...hobbed import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact, tip_crossing
+from ...surfaces.hob import PairDesign
 from ...tca_envelope import (
     ContactPath,
     dropped_component,
     member_geometry,
-    predict,
     require,
     solve_points,
     tangency_near,
@@ -25,7 +26,6 @@ from ...tca_envelope import (
     turn_gap,
 )
 from ...units import ARCSEC
-from .contact import Assembly, Pair, PairDesign, continue_to, ke_table, make_pair, physical_contact
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
 __all__ = [
@@ -35,7 +35,6 @@ __all__ = [
     "assembly_of",
     "compute_case",
     "solved",
-    "tip_crossing",
     "ke_table_of",
     "ke_table_two_tangencies",
     "sensitivity",
@@ -75,12 +74,9 @@ class Design:
 
 
 def phi1_grid(settings: dict) -> np.ndarray:
-    """phi1' [rad] from phi1_start_deg to phi1_end_deg in phi1_step_deg steps (0 exactly on it)."""
-    s = settings
-    n = int(round((s["phi1_end_deg"] - s["phi1_start_deg"]) / s["phi1_step_deg"]))
-    g = s["phi1_start_deg"] + s["phi1_step_deg"] * np.arange(n + 1)
-    g[np.abs(g) < 1e-9] = 0.0
-    return np.radians(g)
+    """phi1' [rad] of the settings' grid, phi1_start_deg to phi1_end_deg in phi1_step_deg steps
+    (:func:`gearrep.hobbed.phi1_grid`; 0 exactly on it)."""
+    return hobbed.phi1_grid(settings["phi1_start_deg"], settings["phi1_end_deg"], settings["phi1_step_deg"])
 
 
 def assembly_of(case: dict) -> Assembly:
@@ -92,7 +88,7 @@ def assembly_of(case: dict) -> Assembly:
 def compute_case(gears: PairDesign, case: dict, phi1_rad, *, tol=1e-11, steps=4) -> tuple[Pair, ContactPath]:
     """(pair, path) of one Example of the pair ``gears``: continuation at phi1' = 0, then the path,
     and at every phi1' the physical contact among the tangencies found
-    (:func:`.contact.physical_contact`)."""
+    (:func:`gearrep.hobbed.physical_contact`)."""
     pair, s0 = continue_to(gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=steps, tol=tol)
     return pair, physical_contact(pair, trace_path(pair, s0, phi1_rad, tol=tol), tol=tol)
 
@@ -198,37 +194,6 @@ def sensitivity(settings: dict, design: Design) -> pd.DataFrame:
         s.insert(0, "table", table)
         frames.append(s)
     return pd.concat(frames, ignore_index=True)
-
-
-def tip_crossing(pair: Pair, path: ContactPath, member: str, ra: float, window_deg: float, tol: float) -> dict:
-    """Where the contact reaches the tip circle r = ``ra`` of ``member`` (``"pinion"`` or ``"gear"``):
-    secant method on the TCA path ``path``, which must cross that circle exactly once (every
-    evaluation a converged physical contact). Returns edge, radius_mm, phi1_deg, l_p_mm, l_g_mm,
-    radius_error_mm."""
-    rad = path.radius_p if member == "pinion" else path.radius_g
-    g = rad - ra
-    k = np.flatnonzero(np.sign(g[:-1]) != np.sign(g[1:]))
-    if k.size != 1:
-        raise RuntimeError(f"contact ratio: the {member} tip is not crossed once in +-{window_deg} deg")
-    a, b = path.phi1[k[0]], path.phi1[k[0] + 1]
-    ga, gb = g[k[0]], g[k[0] + 1]
-    cur = path.take([k[0]])
-    for _ in range(30):
-        c = b - gb * (b - a) / (gb - ga)
-        s = physical_contact(pair, solve_points(pair, [c], predict(pair, cur.x, cur.phi1, [c]), tol=tol), tol=tol)
-        require(s, "contact-ratio secant")
-        gc = (s.radius_p if member == "pinion" else s.radius_g)[0] - ra
-        a, ga, b, gb, cur = b, gb, c, gc, s
-        if abs(gc) < 1e-10:
-            break
-    return {
-        "edge": f"{member}_tip",
-        "radius_mm": ra,
-        "phi1_deg": np.degrees(b),
-        "l_p_mm": cur.x[0, 0],
-        "l_g_mm": cur.x[0, 4],
-        "radius_error_mm": gb,
-    }
 
 
 def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:

@@ -1,0 +1,82 @@
+"""gearrep.hobbed (the TCA of a pair cut by one ZA hob) and gearrep.surfaces.hob.PairDesign: bad
+input is refused at the public entry points with a ValueError naming the argument, before any
+solve; the pinion-angle grid and the pair's geometry. (Results: tests/replication/test_tseng_tca.py
+and the hobbed_curvilinear tests of tests/unit/test_cli.py.)"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from gearrep import hobbed as H
+from gearrep.surfaces.hob import PairDesign, ZAHob, za_hob
+
+
+@pytest.fixture(scope="module")
+def design():
+    return PairDesign(20, 40, 40.0, za_hob(3.0, 20.0, 30.0))
+
+
+def test_za_hob_and_pair_design():
+    hob = za_hob(3.0, 20.0, 30.0, "printed")
+    assert hob == ZAHob(3.0, float(np.radians(20.0)), 30.0, "printed")
+    with pytest.raises(ValueError, match="pressure_angle_deg"):
+        za_hob(3.0, 95.0, 30.0)
+    with pytest.raises(ValueError, match="n_gear"):
+        PairDesign(20, 3, 40.0, hob)
+    d = PairDesign(20, 40, 40.0, hob)
+    pin, gear = d.cut(110.0, 113.0)
+    assert (pin.n_teeth, pin.R_c_mm, pin.arc_centre) == (20, 110.0, -1)
+    assert (gear.n_teeth, gear.R_c_mm, gear.arc_centre) == (40, 113.0, 1)
+    with pytest.raises(ValueError, match="R_cg_mm"):
+        d.cut(110.0, -1.0)
+    assert d.with_hob(pitch_radius_mm=40.0).hob.pitch_radius_mm == 40.0
+
+
+def test_pair_geometry(design):
+    pair = H.make_pair(design, 110.0, 113.0, H.Assembly(dC=0.5, dZ=-0.2))
+    assert pair.ratio == 0.5 and pair.face_width_mm == 40.0
+    assert pair.centre_distance == pytest.approx(30.0 + 60.0 + 0.5, abs=1e-12)
+    np.testing.assert_array_equal(pair.gear_origin, [pair.centre_distance, 0.0, -0.2])
+    phi = np.array([0.2, -0.4])
+    for rot in (pair.pinion_rotation, pair.gear_rotation):  # the derivative is the difference quotient
+        fd = (rot(phi + 1e-6) - rot(phi - 1e-6)) / 2e-6
+        np.testing.assert_allclose(rot(phi, deriv=True), fd, atol=1e-9)
+    assert H.Assembly(1e-3, 0.0, 1.0, 0.0).scaled(0.5) == H.Assembly(5e-4, 0.0, 0.5, 0.0)
+
+
+def test_phi1_grid():
+    g = np.degrees(H.phi1_grid(-10.0, 10.0, 2.0))
+    assert len(g) == 11 and g[5] == 0.0
+    np.testing.assert_allclose(g, np.arange(-10.0, 10.1, 2.0), atol=1e-12)
+    assert np.count_nonzero(H.phi1_grid(-0.3, 0.3, 0.1) == 0.0) == 1  # 0 exactly, not -3e-17
+    with pytest.raises(ValueError, match="step_deg"):
+        H.phi1_grid(-10.0, 10.0, 0.0)
+    with pytest.raises(ValueError, match="end_deg"):
+        H.phi1_grid(-10.0, float("nan"), 2.0)
+
+
+def test_bad_input_names_the_argument(design):
+    pair = H.make_pair(design, 110.0, 113.0)
+    refusals = [
+        ("dgamma_v", lambda: H.Assembly(dgamma_v=0.02)),
+        ("dC", lambda: H.Assembly(dC=float("inf"))),
+        ("design", lambda: H.make_pair(object(), 110.0, 113.0)),
+        ("R_cp_mm", lambda: H.make_pair(design, 10.0, 113.0)),
+        ("R_cg_mm", lambda: H.make_pair(design, 110.0, 15.0)),
+        ("assembly", lambda: H.make_pair(design, 110.0, 113.0, (0.0, 0.0, 0.0, 0.0))),
+        ("pair", lambda: H.ideal_start(object())),
+        ("tol", lambda: H.ideal_start(pair, tol=0.0)),
+        ("steps", lambda: H.continue_to(design, 110.0, 113.0, H.Assembly(), steps=0)),
+        ("assembly", lambda: H.continue_to(design, 110.0, 113.0, None)),
+        ("R_gap_mm", lambda: H.continue_to(design, 110.0, 113.0, H.Assembly(), R_gap_mm=-1.0)),
+        ("tol", lambda: H.continue_to(design, 110.0, 113.0, H.Assembly(), tol=1.0)),
+        ("pair", lambda: H.physical_contact(None, None)),
+        ("ratio", lambda: H.ke_table(None, 0.0)),
+        ("member", lambda: H.tip_crossing(pair, None, "wheel", 33.0, 10.0, 1e-11)),
+        ("ra", lambda: H.tip_crossing(pair, None, "gear", -1.0, 10.0, 1e-11)),
+        ("delta_mm", lambda: H.elastic_ellipses(pair, None, 0.0)),
+    ]
+    for name, call in refusals:
+        with pytest.raises(ValueError, match=name):
+            call()
