@@ -80,7 +80,7 @@ def _plan(cwd, *args) -> list[dict]:
 
 def rule_sources() -> dict[str, tuple[Path, list[str]]]:
     """rule name -> (the script or notebook it runs, modules it imports dynamically); rules with
-    shell/run blocks are left out. The replication rules are generated from the registry."""
+    shell/run blocks are left out, but for those running a script through the step runner. The replication rules are generated from the registry."""
     from gearrep.replications import REGISTRY, load
 
     out = {}
@@ -90,6 +90,10 @@ def rule_sources() -> dict[str, tuple[Path, list[str]]]:
             m = re.search(r"^\s+(?:script|notebook):\s*\n?\s*f?\"([^\"]+)\"", body, flags=re.M)
             if m:
                 out[name] = ((smk_file.parent / m.group(1)).resolve(), [])
+            # a script run by the step runner: its input named script (relative to the workflow)
+            m = re.search(r"^\s+script=\"([^\"]+)\",", body, flags=re.M)
+            if m:
+                out[name] = ((ROOT / m.group(1)).resolve(), [])
     scripts = ROOT / "workflow" / "scripts"
     for key in REGISTRY:
         dynamic = [f"gearrep.replications.{key}"]
