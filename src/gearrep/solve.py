@@ -119,8 +119,16 @@ def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None,
 
 def _row_norms(F):
     """Euclidean norms of the rows of F (what ``np.linalg.norm(F, axis=1)`` computes, without its
-    Python overhead)."""
-    return np.sqrt(np.add.reduce(F * F, axis=1))
+    Python overhead): the squares summed column by column, left to right (the order numpy's
+    reduction of a short row takes), which avoids a reduction over a short axis."""
+    if F.shape[1] > 8:
+        return np.sqrt(np.add.reduce(F * F, axis=1))
+    c = F[:, 0]
+    acc = c * c
+    for j in range(1, F.shape[1]):
+        c = F[:, j]
+        acc += c * c
+    return np.sqrt(acc)
 
 
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
@@ -289,6 +297,33 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
     )
 
 
+def _check_bounds(lower, upper, k):
+    """(lo, hi) (k,) arrays of the bounds (+-inf where None); ValueError if lo > hi somewhere."""
+    lo = np.full(k, -np.inf) if lower is None else np.broadcast_to(np.asarray(lower, float), (k,))
+    hi = np.full(k, np.inf) if upper is None else np.broadcast_to(np.asarray(upper, float), (k,))
+    if np.any(lo > hi):
+        raise ValueError("lower bound exceeds upper bound")
+    return lo, hi
+
+
+def _bind_rows(fun, jac, fun_jac, n):
+    """For ``rows=True``: the callables with the active row indices bound (read from the returned
+    box's ``"i"``, which the solver sets before each call)."""
+    box = {"i": np.arange(n)}
+    _fun, _jac, _fj = fun, jac, fun_jac
+
+    def fun(xx):
+        return _fun(xx, box["i"])
+
+    jac = None if _jac is None else (lambda xx: _jac(xx, box["i"]))
+    if _fj is not None:
+
+        def fun_jac(xx):
+            return _fj(xx, box["i"])
+
+    return fun, jac, fun_jac, box
+
+
 def newton(
     fun: Callable,
     x0,
@@ -322,8 +357,8 @@ def newton(
     keep_inside : project every iterate onto the bounds (the "domain-kept" variant)
     rcond : relative singular-value threshold below which the Jacobian counts as singular
     rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
-        (into the batch) of the rows of ``x``: the solver passes only the active rows, so
-        per-problem data (e.g. fixed parameters) can be looked up by ``idx``
+        (into the batch, increasing) of the rows of ``x``: the solver passes only the active rows,
+        so per-problem data (e.g. fixed parameters) can be looked up by ``idx``
     fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
         evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
@@ -344,123 +379,163 @@ def newton(
         raise ValueError(f"maxiter must be >= 1, got {maxiter!r}")
     x = np.atleast_2d(np.array(x0, dtype=float))
     n, k = x.shape
-    lo = np.full(k, -np.inf) if lower is None else np.broadcast_to(np.asarray(lower, float), (k,))
-    hi = np.full(k, np.inf) if upper is None else np.broadcast_to(np.asarray(upper, float), (k,))
-    if np.any(lo > hi):
-        raise ValueError("lower bound exceeds upper bound")
+    lo, hi = _check_bounds(lower, upper, k)
     if keep_inside:
         x = np.clip(x, lo, hi)
-
+    box = {"i": None}
     if rows:
-        _fun, _jac = fun, jac
-        _idx = {"i": np.arange(n)}
-
-        def fun(xx):
-            return _fun(xx, _idx["i"])
-
-        jac = None if _jac is None else (lambda xx: _jac(xx, _idx["i"]))
-        if fun_jac is not None:
-            _fj = fun_jac
-
-            def fun_jac(xx):
-                return _fj(xx, _idx["i"])
-    else:
-        _idx = {"i": None}
+        fun, jac, fun_jac, box = _bind_rows(fun, jac, fun_jac, n)
     if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
         return _newton_one(
             fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square
         )
-    if fun_jac is not None:
-        F, Jc = fun_jac(x)
-        F = np.asarray(F, dtype=float).reshape(n, -1)
-        Jc = np.asarray(Jc, dtype=float).reshape(n, F.shape[1], k)
-        fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
-        if jac is None:
-            jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
-    else:
-        F = np.asarray(fun(x), dtype=float).reshape(n, -1)
-    if F.shape[1] < k:
-        raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
-    res = _row_norms(F)
-    iters = np.zeros(n, dtype=int)
-    status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
-    status[~np.isfinite(res)] = int(Status.DIVERGED)
-    status[res < tol] = int(Status.CONVERGED)  # a start that already solves the system
-    done = (res < tol) | ~np.isfinite(res)
-    stalled = np.zeros(n, dtype=bool)
-    cond = np.full(n, np.nan)
+    opts = _BatchOptions(tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square, keep_inside)
+    return _newton_batch(fun, jac, fun_jac, x, box, opts)
 
-    for _ in range(int(maxiter)):
-        act = (~done).nonzero()[0]
+
+@dataclass(frozen=True)
+class _BatchOptions:
+    tol: float
+    maxiter: int
+    damped: bool
+    max_halvings: int
+    lo: np.ndarray
+    hi: np.ndarray
+    rcond: float
+    inverse_square: bool
+    keep_inside: bool
+
+
+class _BatchState:
+    """Iterates, residuals and bookkeeping of a batch solve (:func:`_newton_batch`)."""
+
+    def __init__(self, fun, fun_jac, x, opts: _BatchOptions):
+        n, k = x.shape
+        self.x, self.k = x, k
+        self.Jc = self.fresh = None
+        if fun_jac is not None:
+            F, Jc = fun_jac(x)
+            self.F = np.asarray(F, dtype=float).reshape(n, -1)
+            self.Jc = np.asarray(Jc, dtype=float).reshape(n, self.F.shape[1], k)
+            self.fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+        else:
+            self.F = np.asarray(fun(x), dtype=float).reshape(n, -1)
+        self.m = self.F.shape[1]
+        if self.m < k:
+            raise ValueError(f"fun returns {self.m} equations for {k} unknowns; need m >= k")
+        self.res = _row_norms(self.F)
+        self.iters = np.zeros(n, dtype=int)
+        self.status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
+        finite = np.isfinite(self.res)
+        self.status[~finite] = int(Status.DIVERGED)
+        self.status[self.res < opts.tol] = int(Status.CONVERGED)  # a start that already solves the system
+        self.done = (self.res < opts.tol) | ~finite
+        self.stalled = np.zeros(n, dtype=bool)
+        self.cond = np.full(n, np.nan)
+
+
+def _rows_all_finite(a):
+    """Per row (first axis) whether every entry of ``a`` is finite (one pass when all are)."""
+    fin = np.isfinite(a)
+    if fin.all():
+        return np.ones(len(a), dtype=bool)
+    return fin.reshape(len(a), -1).all(axis=1)
+
+
+def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
+    """Jacobian of the active rows (reusing the fresh ones of ``fun_jac``) and their Newton step;
+    records the condition and counts the iteration. Returns (d, singular)."""
+    xa, Fa = S.x[sel], S.F[sel]
+    if S.Jc is not None:
+        Ja = S.Jc[sel]  # a view where all rows are active (stale rows refreshed in place: harmless)
+        stale = np.flatnonzero(~S.fresh[sel])
+        if stale.size:
+            box["i"] = act[stale]
+            Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, S.m, S.k)
+            box["i"] = act
+    else:
+        Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
+    Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
+    good_j = _rows_all_finite(Ja)
+    bad_j = ~good_j
+    if bad_j.any():
+        Ja = np.where(bad_j[:, None, None], 0.0, Ja)
+    d, singular, sv = _lstsq_step(Ja, Fa, opts.rcond, opts.inverse_square)
+    singular |= bad_j
+    with np.errstate(divide="ignore", invalid="ignore"):
+        S.cond[sel] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
+    S.iters[sel] += 1
+    return d, singular
+
+
+def _line_search(S: _BatchState, act, sel, d, x_new, F_new, r_new, fun, box, opts: _BatchOptions):
+    """Armijo backtracking of the active rows whose full step did not decrease the residual enough
+    (step halved up to ``max_halvings`` times); rows without a decrease keep their old iterate and
+    are marked stalled. Updates x_new, F_new, r_new in place."""
+    xa, Fa = S.x[sel], S.F[sel]
+    lam = np.ones(act.size)
+    r_old = S.res[sel]
+    need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
+    for _h in range(opts.max_halvings):
+        if not need.any():
+            break
+        idx = need.nonzero()[0]
+        lam[idx] *= 0.5
+        xt = xa[idx] + lam[idx, None] * d[idx]
+        if opts.keep_inside:
+            xt = np.clip(xt, opts.lo, opts.hi)
+        box["i"] = act[idx]
+        Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
+        box["i"] = act
+        rt = _row_norms(Ft)
+        x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
+        if S.fresh is not None:
+            S.fresh[act[idx]] = False
+        need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
+    # no decrease found: keep the old iterate and stop this point
+    stall = need
+    if stall.any():
+        x_new[stall], F_new[stall], r_new[stall] = xa[stall], Fa[stall], r_old[stall]
+        S.stalled[act[stall]] = True
+
+
+def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult:
+    """:func:`newton` for a batch (rows bound by :func:`_bind_rows` read ``box["i"]``). Where every
+    row is still active the rows are addressed by a slice (views, no gathers)."""
+    S = _BatchState(fun, fun_jac, x, opts)
+    n = len(x)
+    if fun_jac is not None and jac is None:
+        jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
+    for _ in range(opts.maxiter):
+        act = (~S.done).nonzero()[0]
         if act.size == 0:
             break
-        xa, Fa = x[act], F[act]
-        _idx["i"] = act
-        if fun_jac is not None:
-            Ja = Jc[act]
-            stale = np.flatnonzero(~fresh[act])
-            if stale.size:
-                _idx["i"] = act[stale]
-                Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, Fa.shape[1], k)
-                _idx["i"] = act
-        else:
-            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
-        Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
-        bad_j = ~np.isfinite(Ja).all(axis=(1, 2))
-        if bad_j.any():
-            Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-        d, singular, sv = _lstsq_step(Ja, Fa, rcond, inverse_square)
-        singular |= bad_j
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cond[act] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
-        iters[act] += 1
-
-        lam = np.ones(act.size)
-        x_new = xa + d
-        if keep_inside:
-            x_new = np.clip(x_new, lo, hi)
+        sel = slice(None) if act.size == n else act
+        box["i"] = act
+        d, singular = _batch_step(S, act, sel, jac, fun, box, opts)
+        x_new = S.x[sel] + d
+        if opts.keep_inside:
+            x_new = np.clip(x_new, opts.lo, opts.hi)
         if fun_jac is not None:
             F_new, J_new = fun_jac(x_new)
             F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
-            Jc[act] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], k)
-            fresh[act] = True
+            S.Jc[sel] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], S.k)
+            S.fresh[sel] = True
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
         r_new = _row_norms(F_new)
-        if damped:
-            r_old = res[act]
-            need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
-            for _h in range(int(max_halvings)):
-                if not need.any():
-                    break
-                idx = need.nonzero()[0]
-                lam[idx] *= 0.5
-                xt = xa[idx] + lam[idx, None] * d[idx]
-                if keep_inside:
-                    xt = np.clip(xt, lo, hi)
-                _idx["i"] = act[idx]
-                Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
-                _idx["i"] = act
-                rt = _row_norms(Ft)
-                x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
-                if fun_jac is not None:
-                    fresh[act[idx]] = False
-                need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
-            # no decrease found: keep the old iterate and stop this point
-            stall = need
-            x_new[stall], F_new[stall], r_new[stall] = xa[stall], Fa[stall], r_old[stall]
-            stalled[act[stall]] = True
-
-        x[act], F[act], res[act] = x_new, F_new, r_new
-        nonfinite = ~np.isfinite(r_new) | ~np.isfinite(x_new).all(axis=1)
-        conv = (r_new < tol) & ~nonfinite
+        if opts.damped:
+            _line_search(S, act, sel, d, x_new, F_new, r_new, fun, box, opts)
+        S.x[sel], S.F[sel], S.res[sel] = x_new, F_new, r_new
+        nonfinite = ~(np.isfinite(r_new) & _rows_all_finite(x_new))
+        conv = (r_new < opts.tol) & ~nonfinite
         sing_stop = singular & ~conv
-        status[act[conv]] = int(Status.CONVERGED)
-        status[act[nonfinite]] = int(Status.DIVERGED)
-        status[act[sing_stop & ~nonfinite]] = int(Status.SINGULAR)
-        done[act[conv | nonfinite | sing_stop]] = True
-        done[stalled] = True
-
-    inside = np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi))), axis=1)
-    status[(status == Status.CONVERGED) & ~inside] = int(Status.OFF_FLANK)
-    return SolveResult(x=x, residual=res, iterations=iters, status=status, condition=cond)
+        S.status[act[conv]] = int(Status.CONVERGED)
+        S.status[act[nonfinite]] = int(Status.DIVERGED)
+        S.status[act[sing_stop & ~nonfinite]] = int(Status.SINGULAR)
+        S.done[act[conv | nonfinite | sing_stop]] = True
+        S.done[S.stalled] = True
+    lo, hi = opts.lo, opts.hi
+    inside = np.all((S.x >= lo - 1e-12 * (1 + np.abs(lo))) & (S.x <= hi + 1e-12 * (1 + np.abs(hi))), axis=1)
+    S.status[(S.status == Status.CONVERGED) & ~inside] = int(Status.OFF_FLANK)
+    return SolveResult(x=S.x, residual=S.res, iterations=S.iters, status=S.status, condition=S.cond)

@@ -443,18 +443,50 @@ def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndar
 
 
 class _Record:
-    """The contact geometry the last kernel evaluation of each row gave (u2, v2, phi2 of the reduced
-    form; point r and normals n1, n2 of both), kept with the unknowns it was evaluated at, so that
-    the contact record of a row whose final iterate was the last point evaluated is not computed
-    a second time (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are)."""
+    """The contact geometry the kernel evaluations gave (u2, v2, phi2 of the reduced form; point r
+    and normals n1, n2 of both), kept with the unknowns they were evaluated at, so that the contact
+    record of a row whose final iterate was the last point evaluated is not computed a second time
+    (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are). Evaluations are
+    only listed while solving (``rows`` None: all rows); :meth:`at` takes each row's last one."""
 
     def __init__(self, n: int, k: int):
-        self.x = np.full((n, k), np.nan)
-        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
-        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+        self.n, self.k = n, k
+        self.entries = []
 
     def store(self, rows, x, K):
-        rows = rows.astype(int)
+        self.entries.append((rows, x, K))
+
+    def at(self, x):
+        """(mask of the rows recorded at exactly ``x``, the record: ``x``, ``scalars`` and
+        ``vectors`` (n, 3) of each row's last evaluation)."""
+        n = self.n
+        self.x = np.full((n, self.k), np.nan)
+        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
+        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+        filled = np.zeros(n, dtype=bool)
+        for rows, xe, K in reversed(self.entries):
+            if rows is None and not filled.any():  # the last evaluation covered every row
+                self._put(slice(None), xe, K)
+                break
+            rows = np.arange(n) if rows is None else rows
+            new = ~filled[rows]
+            if not new.any():
+                continue
+            r = rows[new]
+            filled[r] = True
+            self.x[r] = xe[new]
+            for key, arr in self.scalars.items():
+                if key in K:
+                    arr[r] = np.broadcast_to(K[key], new.shape)[new]
+            for key, arr in self.vectors.items():
+                for i in range(3):
+                    arr[r, i] = np.broadcast_to(K[key][i], new.shape)[new]
+            if filled.all():
+                break
+        self.entries = []
+        return (self.x == x).all(axis=1), self
+
+    def _put(self, rows, x, K):
         self.x[rows] = x
         for key, arr in self.scalars.items():
             if key in K:
@@ -463,9 +495,133 @@ class _Record:
             v = K[key]
             arr[rows, 0], arr[rows, 1], arr[rows, 2] = v[0], v[1], v[2]
 
-    def at(self, x):
-        """(mask of the rows recorded at exactly ``x``, the record)."""
-        return (self.x == x).all(axis=1), self
+
+def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, drop):
+    """Validated (phi1 (n,), start (n, width) with a fixed v1 written into its column 1, fixed);
+    ValueError naming the argument otherwise (before any work)."""
+    if formulation not in ("reduced", "conventional"):
+        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
+    if jacobian not in ("analytic", "numeric"):
+        raise ValueError(f"jacobian must be 'analytic' or 'numeric', got {jacobian!r}")
+    if drop is not None and drop not in (0, 1, 2):
+        raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
+    if formulation == "reduced" and not (
+        getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False)
+    ):
+        raise ValueError(
+            "the reduced formulation needs flank2 in cylindrical or spherical form "
+            "(flank2.cylindrical = True or flank2.spherical = True)"
+        )
+    width = 2 if formulation == "reduced" else 5
+    phi1 = _angles(phi1)
+    if start is None:
+        start = default_start(pair, phi1, formulation)
+    phi1, start = _prep(phi1, start, width)
+    fixed = v1 is not None
+    if fixed:
+        v1a = _face_coordinates(v1, len(phi1))
+        if not np.all(np.isfinite(v1a)):
+            raise ValueError("v1 must be finite")
+        start[:, 1] = v1a
+    return phi1, start, fixed
+
+
+class _Rows:
+    """Per-row data of a contact solve (phi1, cos, sin, the dropped normal component as the masks
+    drop == 0 and drop == 2, a fixed v1) as contiguous arrays, gathered for the active rows
+    (``idx``; no gather while all rows are active), and for one row as Python floats."""
+
+    def __init__(self, phi1, c1, s1, drop, v1):
+        self.n = len(phi1)
+        self.cols = {"phi1": phi1, "c1": c1, "s1": s1, "first0": drop == 0, "last2": drop == 2, "v1": v1}
+        self.one = None
+        if self.n == 1:
+            self.one = {k: (bool(v[0]) if v.dtype == bool else float(v[0])) for k, v in self.cols.items()}
+
+    def take(self, idx):
+        if len(idx) == self.n:
+            return self.cols
+        return {k: v[idx] for k, v in self.cols.items()}
+
+
+def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
+    """FJ(x, idx, derivs) of the reduced system for ``newton(rows=True)`` (see :func:`solve_contact`)."""
+    v_column = not fixed
+
+    def FJ(x, idx, derivs=True):
+        out = None
+        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+            q = data.one
+            x0 = x[0].tolist()
+            try:
+                out = _reduced_FJ3(
+                    pair,
+                    x0[0],
+                    q["v1"] if fixed else x0[1],
+                    q["phi1"],
+                    q["c1"],
+                    q["s1"],
+                    q["first0"],
+                    q["last2"],
+                    derivs=derivs,
+                    v_column=v_column,
+                )
+            except _SCALAR_ERRORS:
+                pass
+        if out is None:
+            p = data.take(idx)
+            v1 = p["v1"] if fixed else x[:, 1]
+            out = _reduced_FJ3(
+                pair, x[:, 0], v1, p["phi1"], p["c1"], p["s1"], p["first0"], p["last2"], derivs, v_column
+            )
+        record.store(None if len(idx) == data.n else idx, x, out[2])
+        return out[:2]
+
+    return FJ
+
+
+#: the ``drop`` argument of :func:`_conventional_FJ3` for five equations (any value but None; the
+#: dropped component itself comes as the masks first0, last2)
+_FIVE = 5
+
+
+def _conventional_FJ_rows(pair, data: _Rows, free, record):
+    """FJ(x, idx, derivs) of the conventional system for ``newton(rows=True)`` (free columns
+    ``free`` of the five unknowns; a fixed v1 from the row data)."""
+    cols = tuple(free)
+
+    def FJ(x, idx, derivs=True):
+        p = data.take(idx)
+        full = _expand(x, free, p["v1"])
+        keep = {}
+        out = None
+        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+            q = data.one
+            try:
+                out = _conventional_FJ3(
+                    pair, tuple(full[0].tolist()), q["c1"], q["s1"], _FIVE, q["first0"], q["last2"], cols, derivs, keep
+                )
+            except _SCALAR_ERRORS:
+                pass
+        if out is None:
+            x5 = tuple(full[:, i] for i in range(5))
+            out = _conventional_FJ3(pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, derivs, keep)
+        record.store(None if len(idx) == data.n else idx, x, keep)
+        return out
+
+    return FJ
+
+
+def _expand(x, free, v1):
+    """The full unknowns (n, width) from the free columns ``x``; column 1 = the fixed ``v1``
+    where v1 is not among the free ones."""
+    width = 2 if len(free) <= 2 else 5
+    if len(free) == width:
+        return x
+    full = np.empty((x.shape[0], width))
+    full[:, free] = x
+    full[:, 1] = v1
+    return full
 
 
 def solve_contact(
@@ -503,143 +659,36 @@ def solve_contact(
     -------
     ContactPoints; status CONVERGED only for a verified root inside both flanks.
     """
-    if formulation not in ("reduced", "conventional"):
-        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
-    width = 2 if formulation == "reduced" else 5
-    phi1 = _angles(phi1)
-    if start is None:
-        start = default_start(pair, phi1, formulation)
-    phi1, start = _prep(phi1, start, width)
+    phi1, start, fixed = _check_solve_inputs(pair, phi1, start, formulation, v1, jacobian, drop)
     n = len(phi1)
-    fixed = v1 is not None
-    if fixed:
-        v1a = _face_coordinates(v1, n)
-        if not np.all(np.isfinite(v1a)):
-            raise ValueError("v1 must be finite")
-        start[:, 1] = v1a
-    if formulation == "reduced" and not (
-        getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False)
-    ):
-        raise ValueError(
-            "the reduced formulation needs flank2 in cylindrical or spherical form "
-            "(flank2.cylindrical = True or flank2.spherical = True)"
-        )
-
-    # dropped normal component: the largest of member 1's normal at the start
     c1, s1 = np.cos(phi1), np.sin(phi1)
+    # dropped normal component: the largest of member 1's normal at the start
     if drop is None:
         drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1)
     else:
-        if drop not in (0, 1, 2):
-            raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
         drop = np.full(n, float(drop))
-
-    free = (
-        [0]
-        if (fixed and formulation == "reduced")
-        else ([0, 1] if formulation == "reduced" else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4]))
-    )
-    lo_all = np.concatenate([pair.lower1, pair.lower2, [-np.inf]])
-    hi_all = np.concatenate([pair.upper1, pair.upper2, [np.inf]])
-
-    def expand(x, p):
-        full = np.empty((x.shape[0], width))
-        full[:, free] = x
-        if fixed:
-            full[:, 1] = p[:, 2]
-        return full
-
-    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1, row number
-    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1, np.arange(n)])
+    reduced = formulation == "reduced"
+    free = ([0] if fixed else [0, 1]) if reduced else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4])
+    lo_all, hi_all = pair._unknown_bounds
+    data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan))
     record = _Record(n, len(free))
-    if formulation == "reduced":
-
-        def FJ(x, p, derivs=True):
-            out = None
-            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-                q = p[0].tolist()
-                try:
-                    out = _reduced_FJ3(
-                        pair,
-                        float(x[0, 0]),
-                        q[2] if fixed else float(x[0, 1]),
-                        q[0],
-                        q[3],
-                        q[4],
-                        q[1] == 0,
-                        q[1] == 2,
-                        derivs=derivs,
-                        v_column=not fixed,
-                    )
-                except _SCALAR_ERRORS:
-                    pass
-            if out is None:
-                v1 = p[:, 2] if fixed else x[:, 1]
-                d = p[:, 1]
-                out = _reduced_FJ3(
-                    pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
-                )
-            record.store(p[:, 5], x, out[2])
-            return out[:2]
-    else:
-        cols = tuple(free)
-
-        def FJ(x, p, derivs=True):
-            full = expand(x, p)
-            keep = {}
-            out = None
-            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-                q = p[0].tolist()
-                try:
-                    out = _conventional_FJ3(
-                        pair,
-                        tuple(full[0].tolist()),
-                        q[3],
-                        q[4],
-                        q[1],
-                        q[1] == 0,
-                        q[1] == 2,
-                        cols,
-                        derivs=derivs,
-                        keep=keep,
-                    )
-                except _SCALAR_ERRORS:
-                    pass
-            if out is None:
-                d = p[:, 1]
-                out = _conventional_FJ3(
-                    pair,
-                    tuple(full[:, i] for i in range(5)),
-                    p[:, 3],
-                    p[:, 4],
-                    d,
-                    d == 0,
-                    d == 2,
-                    cols,
-                    derivs=derivs,
-                    keep=keep,
-                )
-            record.store(p[:, 5], x, keep)
-            return out
-
-    def Fonly(x, p):
-        return FJ(x, p, derivs=False)[0]
-
+    FJ = _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)
+    analytic = jacobian == "analytic"
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
-        res = newton_rows(
-            Fonly,
-            FJ,
+        res = newton(
+            lambda x, idx: FJ(x, idx, derivs=False)[0],
             start[:, free],
-            params,
-            lower=lo_all[free],
-            upper=hi_all[free],
-            jacobian=jacobian,
+            (lambda x, idx: FJ(x, idx)[1]) if analytic else None,
             tol=tol,
             maxiter=maxiter,
             damped=damped,
+            lower=lo_all[free],
+            upper=hi_all[free],
+            rows=True,
+            fun_jac=FJ if analytic else None,
             inverse_square=True,
         )
-    sol = expand(res.x, params)
+    sol = _expand(res.x, free, data.cols["v1"])
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
 
 

@@ -156,6 +156,13 @@ class GearPair:
             "O2": tuple(float(x) for x in self.O2),
         }
 
+    @cached_property
+    def _unknown_bounds(self) -> tuple:
+        """(lower, upper) (5,) bounds of the unknowns (u1, v1, u2, v2, phi2) of a contact solve."""
+        return np.concatenate([self.lower1, self.lower2, [-np.inf]]), np.concatenate(
+            [self.upper1, self.upper2, [np.inf]]
+        )
+
     def R1(self, phi1):
         """Rotation of member 1, Rz(phi1)."""
         return rot_z(phi1)
