@@ -131,6 +131,18 @@ def _row_norms(F):
     return np.sqrt(acc)
 
 
+def _row_norm_one(F) -> float:
+    """:func:`_row_norms` of a one-row F as a Python float (the same sum, left to right, and the
+    correctly rounded square root of both)."""
+    vals = F[0].tolist()
+    if len(vals) > 8:
+        return float(_row_norms(F)[0])
+    acc = vals[0] * vals[0]
+    for v in vals[1:]:
+        acc += v * v
+    return math.sqrt(acc)  # a sum of squares: never negative (NaN stays NaN)
+
+
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
     """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask (plus the
     extreme singular values, or bounds of them, for the condition number).
@@ -142,7 +154,7 @@ def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool
     if J.shape[1:] == (2, 2):
         return _step_2x2(J, F, rcond)
     if inverse_square and J.shape[1] == J.shape[2] > 2 and J.shape[0] > 0:
-        return _step_square(J, F, rcond)
+        return _step_square_one(J, F, rcond) if J.shape[0] == 1 else _step_square(J, F, rcond)
     return _svd_step(J, F, rcond)
 
 
@@ -169,6 +181,23 @@ def _step_square(J, F, rcond):
         step[idx], singular[idx], s = _svd_step(J[idx], F[idx], rcond)
         sv[idx] = s[:, [0, -1]]
     return step, singular, sv
+
+
+def _step_square_one(J, F, rcond):
+    """:func:`_step_square` of one system (the same numpy calls for the inverse, the step and the
+    norms; the scalar bookkeeping on Python floats); the batch function where it needs the SVD."""
+    fro = math.sqrt(float(np.einsum("nij,nij->n", J, J)[0]))
+    try:
+        inv = np.linalg.inv(J)
+    except np.linalg.LinAlgError:
+        return _step_square(J, F, rcond)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        q = float(np.einsum("nij,nij->n", inv, inv)[0])
+        s2 = 1.0 / math.sqrt(q) if q > 0.0 else (math.inf if q == 0.0 else math.nan)
+        if not (s2 > rcond * fro):
+            return _step_square(J, F, rcond)
+        step = -np.matmul(inv, F[:, :, None])[:, :, 0]
+    return step, np.array([False]), np.array([[fro, s2]])
 
 
 def _step_2x2(J, F, rcond):
@@ -232,7 +261,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
     m = F.shape[1]
     if m < k:
         raise ValueError(f"fun returns {m} equations for {k} unknowns; need m >= k")
-    res = float(_row_norms(F)[0])
+    res = _row_norm_one(F)
     iters, cond = 0, np.nan
     finite = math.isfinite(res)
     status = Status.CONVERGED if res < tol else (Status.NOT_CONVERGED if finite else Status.DIVERGED)
@@ -260,7 +289,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
             J_new = np.asarray(J_new, dtype=float).reshape(1, m, k)
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(1, -1)
-        r_new = float(_row_norms(F_new)[0])
+        r_new = _row_norm_one(F_new)
         stalled = False
         if damped:
             r_old = res
@@ -271,7 +300,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
                 lam *= 0.5
                 xt = x + lam * d
                 Ft = np.asarray(fun(xt), dtype=float).reshape(1, -1)
-                x_new, F_new, r_new, J_new = xt, Ft, float(_row_norms(Ft)[0]), None
+                x_new, F_new, r_new, J_new = xt, Ft, _row_norm_one(Ft), None
                 need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
             if need:  # no decrease found: keep the old iterate and stop
                 x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True

@@ -8,8 +8,8 @@ import math
 import numpy as np
 
 from ..frames import rotate_z
-from ..solve import SolveResult, Status, newton
-from ..surface import cross, cross3, dot3
+from ..solve import SolveResult, Status, _rows_all_finite, newton
+from ..surface import add3, cross, cross3, cross3_sparse, dot3
 from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 
 __all__ = [
@@ -62,21 +62,30 @@ _SCALAR_ERRORS = (ArithmeticError, ValueError)
 
 def _normal_derivatives3(P, sign):
     """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
-    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple."""
+    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple.
+    ``sign`` -1 swaps the operands of every cross product (which negates N and its derivatives
+    exactly), so the signed normal and its derivatives come without a negation pass. On arrays
+    the cross products skip the float components 0.0 and 1.0 (:func:`~gearrep.surface.cross3_sparse`)."""
     _, ru, rv, ruu, ruv, rvv = P
-    N0, N1, N2 = cross3(ru, rv)
+    if type(ru[0]) is float:  # one point on floats: every component is a float
+        cr, add = cross3, _add3_plain
+    else:
+        cr, add = cross3_sparse, add3
+    if sign == 1:
+        N, dNu, dNv = cr(ru, rv), add(cr(ruu, rv), cr(ru, ruv)), add(cr(ruv, rv), cr(ru, rvv))
+    else:
+        N, dNu, dNv = cr(rv, ru), add(cr(rv, ruu), cr(ruv, ru)), add(cr(rv, ruv), cr(rvv, ru))
+    N0, N1, N2 = N
     L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
     n = (N0 / L, N1 / L, N2 / L)
-    a, b = cross3(ruu, rv), cross3(ru, ruv)
-    dNu = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-    a, b = cross3(ruv, rv), cross3(ru, rvv)
-    dNv = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
     pu, pv = dot3(n, dNu), dot3(n, dNv)
-    dnu = tuple((d - m * pu) / L for d, m in zip(dNu, n))
-    dnv = tuple((d - m * pv) / L for d, m in zip(dNv, n))
-    if sign == 1:
-        return n, dnu, dnv
-    return tuple(tuple(-x for x in vec) for vec in (n, dnu, dnv))
+    dnu = ((dNu[0] - n[0] * pu) / L, (dNu[1] - n[1] * pu) / L, (dNu[2] - n[2] * pu) / L)
+    dnv = ((dNv[0] - n[0] * pv) / L, (dNv[1] - n[1] * pv) / L, (dNv[2] - n[2] * pv) / L)
+    return n, dnu, dnv
+
+
+def _add3_plain(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
 
 
 def _stack3(v, n):
@@ -195,22 +204,39 @@ def _keep3(v, first0, last2):
     return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
 
 
+def _pack(F_comps, J_cols, n, one):
+    """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
+    components; None: no J); ``one``: every entry a float (one point), packed by one np.array call."""
+    if one:
+        return np.array([F_comps], dtype=float), (
+            None if J_cols is None else np.array([list(zip(*J_cols))], dtype=float)
+        )
+    F = np.empty((n, len(F_comps)))
+    for i, c in enumerate(F_comps):
+        F[:, i] = c
+    if J_cols is None:
+        return F, None
+    J = np.empty((n, len(F_comps), len(J_cols)))
+    for k, col in enumerate(J_cols):
+        for i, c in enumerate(col):
+            J[:, i, k] = c
+    return F, J
+
+
 def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
     """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components."""
     K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
     n1, n2 = K["n1"], K["n2"]
-    c = cross3(n1, n2)
-    f0, f1 = _keep3(c, first0, last2)
-    F = np.empty((np.size(f0), 2))
-    F[:, 0], F[:, 1] = f0, f1
+    f = _keep3(cross3(n1, n2), first0, last2)
+    one = type(u1) is float
+    n = 1 if one else np.size(f[0])
     if not derivs:
-        return F, None, K
-    cols = ("_u", "_v") if v_column else ("_u",)
-    J = np.empty((np.size(f0), 2, len(cols)))
-    for k, j in enumerate(cols):
+        return (*_pack(f, None, n, one), K)
+    J_cols = []
+    for j in ("_u", "_v") if v_column else ("_u",):
         a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
-        J[:, 0, k], J[:, 1, k] = _keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2)
-    return F, J, K
+        J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
+    return (*_pack(f, J_cols, n, one), K)
 
 
 def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
@@ -243,20 +269,14 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
     if keep is not None:
         keep.update(r=r1, n1=n1, n2=n2)
     O2 = g["O2"]
-    m = 6 if drop is None else 5
-    n = np.size(u1)
-    F = np.empty((n, m))
-    for i in range(3):
-        F[:, i] = r1[i] - (O2[i] + rel2[i])
+    one = type(u1) is float
+    n = 1 if one else np.size(u1)
     ns = tuple(a + b for a, b in zip(n1, n2))
-    if drop is None:
-        F[:, 3], F[:, 4], F[:, 5] = ns
-    else:
-        F[:, 3], F[:, 4] = _keep3(ns, first0, last2)
+    F = [r1[i] - (O2[i] + rel2[i]) for i in range(3)] + list(ns if drop is None else _keep3(ns, first0, last2))
     if not derivs:
-        return F, None
-    J = np.empty((n, m, len(cols)))
-    for k, col in enumerate(cols):
+        return _pack(F, None, n, one)
+    J_cols = []
+    for col in cols:
         if col == 0:
             jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
         elif col == 1:
@@ -270,12 +290,8 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
         else:
             jr = tuple(-a for a in cross3(g["w2"], rel2))
             jn = cross3(g["w2"], n2)
-        J[:, 0, k], J[:, 1, k], J[:, 2, k] = jr
-        if drop is None:
-            J[:, 3, k], J[:, 4, k], J[:, 5, k] = jn
-        else:
-            J[:, 3, k], J[:, 4, k] = _keep3(jn, first0, last2)
-    return F, J
+        J_cols.append(tuple(jr) + tuple(jn if drop is None else _keep3(jn, first0, last2)))
+    return _pack(F, J_cols, n, one)
 
 
 def _conventional_FJ(pair, x, phi1, drop, derivs=True):
@@ -695,53 +711,12 @@ def solve_contact(
 def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> ContactPoints:
     """Contact record of the solved rows; ``recorded`` = (mask, :class:`_Record`): the rows whose
     geometry the solve's last kernel evaluation already gave at exactly these unknowns."""
-    status = res.status.copy()
-    u1, v1 = sol[:, 0], sol[:, 1]
-    n = len(sol)
-    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
-    miss = np.flatnonzero(~hit)
-    r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
-    if formulation == "reduced":
-        u2, v2, phi2 = (np.empty(n) for _ in range(3))
-    else:
-        u2, v2 = sol[:, 2], sol[:, 3]
-        ref = pair.ratio * phi1
-        phi2 = ref + _wrap(sol[:, 4] - ref)
-    if rec is not None and hit.any():
-        for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
-            arr[hit] = rec.vectors[key][hit]
-        if formulation == "reduced":
-            for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
-                arr[hit] = rec.scalars[key][hit]
-    if miss.size:
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            if formulation == "reduced":
-                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
-                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
-                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
-            else:
-                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
-                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
-    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
-        vec[~np.isfinite(vec).all(axis=1)] = np.nan
-    with np.errstate(invalid="ignore", over="ignore"):
-        opposite = np.sum(n1 * n2, axis=-1) < 0
-        if formulation == "conventional":
-            opposite &= np.linalg.norm(n1 + n2, axis=-1) < 1e-6
-    solved = (status == Status.CONVERGED) | (status == Status.OFF_FLANK)
-    status[solved & ~opposite] = int(Status.WRONG_ROOT)
-    tol2 = 1e-12 * (1 + np.abs(np.concatenate([pair.lower2, pair.upper2])))
-    inside2 = (
-        (u2 >= pair.lower2[0] - tol2[0])
-        & (u2 <= pair.upper2[0] + tol2[2])
-        & (v2 >= pair.lower2[1] - tol2[1])
-        & (v2 <= pair.upper2[1] + tol2[3])
-    )
-    status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
+    u2, v2, phi2, r, n1, n2 = _contact_geometry(pair, formulation, sol, phi1, recorded)
+    status = _final_status(pair, formulation, res.status.copy(), r, n1, n2, u2, v2)
     te = transmission_error(phi1, phi2, pair.n1, pair.n2, phi10, phi20)
     return ContactPoints(
-        u1=u1,
-        v1=v1,
+        u1=sol[:, 0],
+        v1=sol[:, 1],
         u2=u2,
         v2=v2,
         phi1=phi1,
@@ -755,6 +730,66 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> C
         formulation=formulation,
         condition=res.condition,
     )
+
+
+def _contact_geometry(pair, formulation, sol, phi1, recorded):
+    """(u2, v2, phi2, r, n1, n2) of the solved rows: from the record where it holds them (see
+    :func:`_finish`), else evaluated; a point or normal with a non-finite component is NaN."""
+    u1, v1 = sol[:, 0], sol[:, 1]
+    n = len(sol)
+    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
+    reduced = formulation == "reduced"
+    if reduced:
+        u2, v2, phi2 = (np.empty(n) for _ in range(3))
+    else:
+        u2, v2 = sol[:, 2], sol[:, 3]
+        ref = pair.ratio * phi1
+        phi2 = ref + _wrap(sol[:, 4] - ref)
+    if rec is not None and hit.all():  # every row recorded: the record's arrays as they are
+        r, n1, n2 = (rec.vectors[key] for key in ("r", "n1", "n2"))
+        if reduced:
+            u2, v2, phi2 = (rec.scalars[key] for key in ("u2", "v2", "phi2"))
+        miss = np.zeros(0, dtype=int)
+    else:
+        r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
+        if rec is not None and hit.any():
+            for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
+                arr[hit] = rec.vectors[key][hit]
+            if reduced:
+                for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
+                    arr[hit] = rec.scalars[key][hit]
+        miss = np.flatnonzero(~hit)
+    if miss.size:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if reduced:
+                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
+                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
+                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
+            else:
+                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
+                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
+    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
+        bad = ~_rows_all_finite(vec)
+        if bad.any():
+            vec[bad] = np.nan
+    return u2, v2, phi2, r, n1, n2
+
+
+def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
+    """The solver's statuses with WRONG_ROOT (normals not opposite; conventional: n1 + n2 not
+    ~0) and OFF_FLANK (member 2's parameters outside its flank) set."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        # the sums written out: numpy sums a row of three the same way, left to right
+        opposite = (n1[:, 0] * n2[:, 0] + n1[:, 1] * n2[:, 1] + n1[:, 2] * n2[:, 2]) < 0
+        if formulation == "conventional":
+            s = n1 + n2
+            opposite &= np.sqrt(s[:, 0] * s[:, 0] + s[:, 1] * s[:, 1] + s[:, 2] * s[:, 2]) < 1e-6
+    solved = (status == Status.CONVERGED) | (status == Status.OFF_FLANK)
+    status[solved & ~opposite] = int(Status.WRONG_ROOT)
+    ulo, uhi, vlo, vhi = pair._flank2_limits
+    inside2 = (u2 >= ulo) & (u2 <= uhi) & (v2 >= vlo) & (v2 <= vhi)
+    status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
+    return status
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):

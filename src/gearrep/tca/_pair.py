@@ -163,6 +163,14 @@ class GearPair:
             [self.upper1, self.upper2, [np.inf]]
         )
 
+    @cached_property
+    def _flank2_limits(self) -> tuple:
+        """(u_lo, u_hi, v_lo, v_hi) of member 2's flank with a relative slack of 1e-12 (a solved
+        point beyond them is OFF_FLANK)."""
+        tol2 = 1e-12 * (1 + np.abs(np.concatenate([self.lower2, self.upper2])))
+        lo, hi = self.lower2, self.upper2
+        return (lo[0] - tol2[0], hi[0] + tol2[2], lo[1] - tol2[1], hi[1] + tol2[3])
+
     def R1(self, phi1):
         """Rotation of member 1, Rz(phi1)."""
         return rot_z(phi1)
