@@ -45,6 +45,11 @@ class Status(IntEnum):
 
 STATUS_NAMES = {s.value: s.name.lower() for s in Status}
 
+#: the codes as ints for the one-row loop (an IntEnum member looked up on its class is slow there)
+_S_CONVERGED, _S_NOT_CONVERGED, _S_OFF_FLANK, _S_SINGULAR, _S_DIVERGED = (
+    int(s) for s in (Status.CONVERGED, Status.NOT_CONVERGED, Status.OFF_FLANK, Status.SINGULAR, Status.DIVERGED)
+)
+
 
 def status_names(status) -> np.ndarray:
     """Array of lower-case status names (``converged``, ``off_flank``, ...) for status codes."""
@@ -141,6 +146,18 @@ def _row_norm_one(F) -> float:
     for v in vals[1:]:
         acc += v * v
     return math.sqrt(acc)  # a sum of squares: never negative (NaN stays NaN)
+
+
+def _all_finite(a) -> bool:
+    """Whether every entry of a small array is finite (on Python floats: no numpy reduction)."""
+    return all(map(math.isfinite, a.ravel().tolist()))
+
+
+def _ratio(a: float, b: float) -> float:
+    """a / b with numpy's result for b = 0 (inf, -inf or NaN) instead of an exception."""
+    if b == 0.0:
+        return math.inf if a > 0 else (-math.inf if a < 0 else math.nan)
+    return a / b
 
 
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
@@ -264,7 +281,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
     res = _row_norm_one(F)
     iters, cond = 0, np.nan
     finite = math.isfinite(res)
-    status = Status.CONVERGED if res < tol else (Status.NOT_CONVERGED if finite else Status.DIVERGED)
+    status = _S_CONVERGED if res < tol else (_S_NOT_CONVERGED if finite else _S_DIVERGED)
     done = res < tol or not finite
     for _ in range(maxiter):
         if done:
@@ -272,13 +289,12 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
         if J is None:
             J = jac(x) if jac is not None else numeric_jacobian(fun, x, F)
             J = np.asarray(J, dtype=float).reshape(1, m, k)
-        bad_j = not np.isfinite(J).all()
+        bad_j = not _all_finite(J)
         if bad_j:
             J = np.zeros_like(J)
         d, singular, sv = _lstsq_step(J, F, rcond, inverse_square)
         singular = bool(singular[0]) or bad_j
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cond = np.nan if bad_j else float(sv[0, 0] / sv[0, -1])
+        cond = np.nan if bad_j else _ratio(float(sv[0, 0]), float(sv[0, -1]))
         iters += 1
         lam = 1.0
         x_new = x + d
@@ -305,18 +321,22 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
             if need:  # no decrease found: keep the old iterate and stop
                 x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True
         x, F, res, J = x_new, F_new, r_new, J_new
-        nonfinite = not math.isfinite(r_new) or not np.isfinite(x_new).all()
+        nonfinite = not math.isfinite(r_new) or not _all_finite(x_new)
         conv = r_new < tol and not nonfinite
         if conv:
-            status = Status.CONVERGED
+            status = _S_CONVERGED
         elif nonfinite:
-            status = Status.DIVERGED
+            status = _S_DIVERGED
         elif singular:
-            status = Status.SINGULAR
+            status = _S_SINGULAR
         done = conv or nonfinite or singular or stalled
-    inside = bool(np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi)))))
-    if status == Status.CONVERGED and not inside:
-        status = Status.OFF_FLANK
+    # the batch's test on floats (the same IEEE operations)
+    inside = all(
+        a >= b - 1e-12 * (1 + abs(b)) and a <= c + 1e-12 * (1 + abs(c))
+        for a, b, c in zip(x[0].tolist(), lo.tolist(), hi.tolist())
+    )
+    if status == _S_CONVERGED and not inside:
+        status = _S_OFF_FLANK
     return SolveResult(
         x=x,
         residual=np.array([res]),
@@ -328,8 +348,16 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
 
 def _check_bounds(lower, upper, k):
     """(lo, hi) (k,) arrays of the bounds (+-inf where None); ValueError if lo > hi somewhere."""
-    lo = np.full(k, -np.inf) if lower is None else np.broadcast_to(np.asarray(lower, float), (k,))
-    hi = np.full(k, np.inf) if upper is None else np.broadcast_to(np.asarray(upper, float), (k,))
+    lo, hi = (
+        np.full(k, sign * np.inf)
+        if b is None
+        else (
+            b
+            if type(b) is np.ndarray and b.shape == (k,) and b.dtype == float
+            else np.broadcast_to(np.asarray(b, float), (k,))
+        )
+        for b, sign in ((lower, -1), (upper, 1))
+    )
     if np.any(lo > hi):
         raise ValueError("lower bound exceeds upper bound")
     return lo, hi
@@ -447,6 +475,7 @@ class _BatchState:
             self.F = np.asarray(F, dtype=float).reshape(n, -1)
             self.Jc = np.asarray(Jc, dtype=float).reshape(n, self.F.shape[1], k)
             self.fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+            self.own_jc = False  # Jc may be the caller's array: copied before a partial write
         else:
             self.F = np.asarray(fun(x), dtype=float).reshape(n, -1)
         self.m = self.F.shape[1]
@@ -462,9 +491,22 @@ class _BatchState:
         self.stalled = np.zeros(n, dtype=bool)
         self.cond = np.full(n, np.nan)
 
+    def keep_jacobians(self, act, J):
+        """Keep the Jacobians ``J`` of the rows ``act`` (fresh at the new iterates); all rows:
+        ``J`` replaces the store without a copy."""
+        if act.size == len(self.Jc):
+            self.Jc, self.own_jc = J, False
+        else:
+            if not self.own_jc:
+                self.Jc, self.own_jc = self.Jc.copy(), True
+            self.Jc[act] = J
+        self.fresh[act] = True
+
 
 def _rows_all_finite(a):
     """Per row (first axis) whether every entry of ``a`` is finite (one pass when all are)."""
+    if len(a) == 1:
+        return np.array([_all_finite(a)])
     fin = np.isfinite(a)
     if fin.all():
         return np.ones(len(a), dtype=bool)
@@ -476,8 +518,8 @@ def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
     records the condition and counts the iteration. Returns (d, singular)."""
     xa, Fa = S.x[sel], S.F[sel]
     if S.Jc is not None:
-        Ja = S.Jc[sel]  # a view where all rows are active (stale rows refreshed in place: harmless)
         stale = np.flatnonzero(~S.fresh[sel])
+        Ja = S.Jc[act] if stale.size else S.Jc[sel]  # a view only where it is not written to
         if stale.size:
             box["i"] = act[stale]
             Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, S.m, S.k)
@@ -548,14 +590,17 @@ def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult
         if fun_jac is not None:
             F_new, J_new = fun_jac(x_new)
             F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
-            S.Jc[sel] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], S.k)
-            S.fresh[sel] = True
+            S.keep_jacobians(act, np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], S.k))
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
         r_new = _row_norms(F_new)
         if opts.damped:
             _line_search(S, act, sel, d, x_new, F_new, r_new, fun, box, opts)
-        S.x[sel], S.F[sel], S.res[sel] = x_new, F_new, r_new
+        if act.size == n:  # every row: the new arrays replace the old (no copy)
+            S.x, S.res = x_new, r_new
+            S.F[sel] = F_new
+        else:
+            S.x[sel], S.F[sel], S.res[sel] = x_new, F_new, r_new
         nonfinite = ~(np.isfinite(r_new) & _rows_all_finite(x_new))
         conv = (r_new < opts.tol) & ~nonfinite
         sing_stop = singular & ~conv

@@ -90,6 +90,8 @@ def _add3_plain(a, b):
 
 def _stack3(v, n):
     """(n, 3) array of a vector given by components (floats broadcast)."""
+    if type(v[0]) is float and type(v[1]) is float and type(v[2]) is float and n == 1:
+        return np.array([v])
     out = np.empty((n, 3))
     out[:, 0], out[:, 1], out[:, 2] = v
     return out
@@ -208,19 +210,24 @@ def _pack(F_comps, J_cols, n, one):
     """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
     components; None: no J); ``one``: every entry a float (one point), packed by one np.array call."""
     if one:
-        return np.array([F_comps], dtype=float), (
-            None if J_cols is None else np.array([list(zip(*J_cols))], dtype=float)
-        )
-    F = np.empty((n, len(F_comps)))
+        m = len(F_comps)
+        F = np.array(F_comps, dtype=float).reshape(1, m)
+        if J_cols is None:
+            return F, None
+        flat = [col[i] for i in range(m) for col in J_cols]  # row-major
+        return F, np.array(flat, dtype=float).reshape(1, m, len(J_cols))
+    # filled component by component into (m, n) and (m, k, n) arrays (contiguous writes, one pass
+    # each) and handed out as their transposed views (n, m) and (n, m, k): the same values
+    Ft = np.empty((len(F_comps), n))
     for i, c in enumerate(F_comps):
-        F[:, i] = c
+        Ft[i] = c
     if J_cols is None:
-        return F, None
-    J = np.empty((n, len(F_comps), len(J_cols)))
+        return Ft.T, None
+    Jt = np.empty((len(F_comps), len(J_cols), n))
     for k, col in enumerate(J_cols):
         for i, c in enumerate(col):
-            J[:, i, k] = c
-    return F, J
+            Jt[i, k] = c
+    return Ft.T, Jt.transpose(2, 0, 1)
 
 
 def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
@@ -423,6 +430,8 @@ def _prep(phi1, start, width):
         raise ValueError(f"phi1 ({len(phi1)}) and start ({len(start)}) must have equal length or length 1")
     if not np.all(np.isfinite(phi1)):
         raise ValueError("phi1 must be finite")
+    if len(phi1) == n and len(start) == n:
+        return phi1.copy(), start.copy()
     return np.broadcast_to(phi1, (n,)).copy(), np.broadcast_to(start, (n, width)).copy()
 
 
@@ -451,10 +460,9 @@ def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
     phi1 = _angles(phi1)
-    mid1 = np.where(np.isfinite(pair.lower1 + pair.upper1), 0.5 * (pair.lower1 + pair.upper1), 0.0)
+    mid1, mid2 = pair._mid_flanks
     if formulation == "reduced":
         return np.tile(mid1, (len(phi1), 1))
-    mid2 = np.where(np.isfinite(pair.lower2 + pair.upper2), 0.5 * (pair.lower2 + pair.upper2), 0.0)
     return np.column_stack([np.tile(mid1, (len(phi1), 1)), np.tile(mid2, (len(phi1), 1)), pair.ratio * phi1])
 
 
@@ -476,14 +484,18 @@ class _Record:
         """(mask of the rows recorded at exactly ``x``, the record: ``x``, ``scalars`` and
         ``vectors`` (n, 3) of each row's last evaluation)."""
         n = self.n
+        if self.entries and self.entries[-1][0] is None:  # the last evaluation covered every row
+            _, xe, K = self.entries[-1]
+            self.x = xe
+            self.scalars = {key: np.array(K[key], dtype=float).reshape(n) for key in ("u2", "v2", "phi2") if key in K}
+            self.vectors = {key: _stack3(K[key], n) for key in ("r", "n1", "n2")}
+            self.entries = []
+            return (self.x == x).all(axis=1), self
         self.x = np.full((n, self.k), np.nan)
         self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
         self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
         filled = np.zeros(n, dtype=bool)
         for rows, xe, K in reversed(self.entries):
-            if rows is None and not filled.any():  # the last evaluation covered every row
-                self._put(slice(None), xe, K)
-                break
             rows = np.arange(n) if rows is None else rows
             new = ~filled[rows]
             if not new.any():
@@ -501,15 +513,6 @@ class _Record:
                 break
         self.entries = []
         return (self.x == x).all(axis=1), self
-
-    def _put(self, rows, x, K):
-        self.x[rows] = x
-        for key, arr in self.scalars.items():
-            if key in K:
-                arr[rows] = K[key]
-        for key, arr in self.vectors.items():
-            v = K[key]
-            arr[rows, 0], arr[rows, 1], arr[rows, 2] = v[0], v[1], v[2]
 
 
 def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, drop):
@@ -775,6 +778,10 @@ def _contact_geometry(pair, formulation, sol, phi1, recorded):
     return u2, v2, phi2, r, n1, n2
 
 
+#: status codes as ints (an IntEnum member looked up on its class costs more than the test itself)
+_CONVERGED, _OFF_FLANK, _WRONG_ROOT = int(Status.CONVERGED), int(Status.OFF_FLANK), int(Status.WRONG_ROOT)
+
+
 def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
     """The solver's statuses with WRONG_ROOT (normals not opposite; conventional: n1 + n2 not
     ~0) and OFF_FLANK (member 2's parameters outside its flank) set."""
@@ -784,11 +791,13 @@ def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
         if formulation == "conventional":
             s = n1 + n2
             opposite &= np.sqrt(s[:, 0] * s[:, 0] + s[:, 1] * s[:, 1] + s[:, 2] * s[:, 2]) < 1e-6
-    solved = (status == Status.CONVERGED) | (status == Status.OFF_FLANK)
-    status[solved & ~opposite] = int(Status.WRONG_ROOT)
+    if not opposite.all():
+        solved = (status == _CONVERGED) | (status == _OFF_FLANK)
+        status[solved & ~opposite] = _WRONG_ROOT
     ulo, uhi, vlo, vhi = pair._flank2_limits
-    inside2 = (u2 >= ulo) & (u2 <= uhi) & (v2 >= vlo) & (v2 <= vhi)
-    status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
+    outside2 = ~((u2 >= ulo) & (u2 <= uhi) & (v2 >= vlo) & (v2 <= vhi))
+    if outside2.any():
+        status[(status == _CONVERGED) & outside2] = _OFF_FLANK
     return status
 
 
