@@ -785,6 +785,8 @@ _CONVERGED, _OFF_FLANK, _WRONG_ROOT = int(Status.CONVERGED), int(Status.OFF_FLAN
 def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
     """The solver's statuses with WRONG_ROOT (normals not opposite; conventional: n1 + n2 not
     ~0) and OFF_FLANK (member 2's parameters outside its flank) set."""
+    if len(status) == 1:
+        return _final_status_one(pair, formulation, status, n1, n2, u2, v2)
     with np.errstate(invalid="ignore", over="ignore"):
         # the sums written out: numpy sums a row of three the same way, left to right
         opposite = (n1[:, 0] * n2[:, 0] + n1[:, 1] * n2[:, 1] + n1[:, 2] * n2[:, 2]) < 0
@@ -798,6 +800,24 @@ def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
     outside2 = ~((u2 >= ulo) & (u2 <= uhi) & (v2 >= vlo) & (v2 <= vhi))
     if outside2.any():
         status[(status == _CONVERGED) & outside2] = _OFF_FLANK
+    return status
+
+
+def _final_status_one(pair, formulation, status, n1, n2, u2, v2):
+    """:func:`_final_status` of one point: the same tests on Python floats (NaN fails them alike)."""
+    a, b = n1[0].tolist(), n2[0].tolist()
+    opposite = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < 0
+    if formulation == "conventional":
+        s = [x + y for x, y in zip(a, b)]
+        opposite = opposite and math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) < 1e-6
+    st = int(status[0])
+    if st in (_CONVERGED, _OFF_FLANK) and not opposite:
+        st = _WRONG_ROOT
+    ulo, uhi, vlo, vhi = pair._flank2_limits
+    u, v = float(u2[0]), float(v2[0])
+    if st == _CONVERGED and not (u >= ulo and u <= uhi and v >= vlo and v <= vhi):
+        st = _OFF_FLANK
+    status[0] = st
     return status
 
 
