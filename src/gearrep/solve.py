@@ -126,7 +126,7 @@ def _row_norms(F):
     """Euclidean norms of the rows of F (what ``np.linalg.norm(F, axis=1)`` computes, without its
     Python overhead): the squares summed column by column, left to right (the order numpy's
     reduction of a short row takes), which avoids a reduction over a short axis."""
-    if F.shape[1] > 8:
+    if F.shape[1] >= 8:  # from 8 columns numpy sums a row pairwise: left to it
         return np.sqrt(np.add.reduce(F * F, axis=1))
     c = F[:, 0]
     acc = c * c
@@ -140,7 +140,7 @@ def _row_norm_one(F) -> float:
     """:func:`_row_norms` of a one-row F as a Python float (the same sum, left to right, and the
     correctly rounded square root of both)."""
     vals = F[0].tolist()
-    if len(vals) > 8:
+    if len(vals) >= 8:
         return float(_row_norms(F)[0])
     acc = vals[0] * vals[0]
     for v in vals[1:]:

@@ -688,7 +688,8 @@ def solve_contact(
         drop = np.full(n, float(drop))
     reduced = formulation == "reduced"
     free = ([0] if fixed else [0, 1]) if reduced else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4])
-    lo_all, hi_all = pair._unknown_bounds
+    lo, hi = pair._free_bounds(tuple(free))
+    x0 = start[:, : len(free)] if free == list(range(len(free))) else start[:, free]  # a view where contiguous
     data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan))
     record = _Record(n, len(free))
     FJ = _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)
@@ -696,13 +697,13 @@ def solve_contact(
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
         res = newton(
             lambda x, idx: FJ(x, idx, derivs=False)[0],
-            start[:, free],
+            x0,
             (lambda x, idx: FJ(x, idx)[1]) if analytic else None,
             tol=tol,
             maxiter=maxiter,
             damped=damped,
-            lower=lo_all[free],
-            upper=hi_all[free],
+            lower=lo,
+            upper=hi,
             rows=True,
             fun_jac=FJ if analytic else None,
             inverse_square=True,

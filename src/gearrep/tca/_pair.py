@@ -157,12 +157,15 @@ class GearPair:
             "O2": tuple(float(x) for x in self.O2),
         }
 
-    @cached_property
-    def _unknown_bounds(self) -> tuple:
-        """(lower, upper) (5,) bounds of the unknowns (u1, v1, u2, v2, phi2) of a contact solve."""
-        return np.concatenate([self.lower1, self.lower2, [-np.inf]]), np.concatenate(
-            [self.upper1, self.upper2, [np.inf]]
-        )
+    def _free_bounds(self, free: tuple) -> tuple:
+        """(lower, upper) bounds of the free unknowns ``free`` (indices into (u1, v1, u2, v2, phi2))
+        of a contact solve, prepared once per pair and choice of free unknowns."""
+        cache = self.__dict__.setdefault("_free_bounds_cache", {})
+        if free not in cache:
+            lo = np.concatenate([self.lower1, self.lower2, [-np.inf]])
+            hi = np.concatenate([self.upper1, self.upper2, [np.inf]])
+            cache[free] = (lo[list(free)], hi[list(free)])
+        return cache[free]
 
     @cached_property
     def _mid_flanks(self) -> tuple:
