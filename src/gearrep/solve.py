@@ -45,6 +45,11 @@ class Status(IntEnum):
 
 STATUS_NAMES = {s.value: s.name.lower() for s in Status}
 
+#: the codes as ints for the one-row loop (an IntEnum member looked up on its class is slow there)
+_S_CONVERGED, _S_NOT_CONVERGED, _S_OFF_FLANK, _S_SINGULAR, _S_DIVERGED = (
+    int(s) for s in (Status.CONVERGED, Status.NOT_CONVERGED, Status.OFF_FLANK, Status.SINGULAR, Status.DIVERGED)
+)
+
 
 def status_names(status) -> np.ndarray:
     """Array of lower-case status names (``converged``, ``off_flank``, ...) for status codes."""
@@ -119,8 +124,40 @@ def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None,
 
 def _row_norms(F):
     """Euclidean norms of the rows of F (what ``np.linalg.norm(F, axis=1)`` computes, without its
-    Python overhead)."""
-    return np.sqrt(np.add.reduce(F * F, axis=1))
+    Python overhead): the squares summed column by column, left to right (the order numpy's
+    reduction of a short row takes), which avoids a reduction over a short axis."""
+    if F.shape[1] >= 8:  # from 8 columns numpy sums a row pairwise: left to it
+        return np.sqrt(np.add.reduce(F * F, axis=1))
+    c = F[:, 0]
+    acc = c * c
+    for j in range(1, F.shape[1]):
+        c = F[:, j]
+        acc += c * c
+    return np.sqrt(acc)
+
+
+def _row_norm_one(F) -> float:
+    """:func:`_row_norms` of a one-row F as a Python float (the same sum, left to right, and the
+    correctly rounded square root of both)."""
+    vals = F[0].tolist()
+    if len(vals) >= 8:
+        return float(_row_norms(F)[0])
+    acc = vals[0] * vals[0]
+    for v in vals[1:]:
+        acc += v * v
+    return math.sqrt(acc)  # a sum of squares: never negative (NaN stays NaN)
+
+
+def _all_finite(a) -> bool:
+    """Whether every entry of a small array is finite (on Python floats: no numpy reduction)."""
+    return all(map(math.isfinite, a.ravel().tolist()))
+
+
+def _ratio(a: float, b: float) -> float:
+    """a / b with numpy's result for b = 0 (inf, -inf or NaN) instead of an exception."""
+    if b == 0.0:
+        return math.inf if a > 0 else (-math.inf if a < 0 else math.nan)
+    return a / b
 
 
 def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
@@ -134,7 +171,7 @@ def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool
     if J.shape[1:] == (2, 2):
         return _step_2x2(J, F, rcond)
     if inverse_square and J.shape[1] == J.shape[2] > 2 and J.shape[0] > 0:
-        return _step_square(J, F, rcond)
+        return _step_square_one(J, F, rcond) if J.shape[0] == 1 else _step_square(J, F, rcond)
     return _svd_step(J, F, rcond)
 
 
@@ -161,6 +198,23 @@ def _step_square(J, F, rcond):
         step[idx], singular[idx], s = _svd_step(J[idx], F[idx], rcond)
         sv[idx] = s[:, [0, -1]]
     return step, singular, sv
+
+
+def _step_square_one(J, F, rcond):
+    """:func:`_step_square` of one system (the same numpy calls for the inverse, the step and the
+    norms; the scalar bookkeeping on Python floats); the batch function where it needs the SVD."""
+    fro = math.sqrt(float(np.einsum("nij,nij->n", J, J)[0]))
+    try:
+        inv = np.linalg.inv(J)
+    except np.linalg.LinAlgError:
+        return _step_square(J, F, rcond)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        q = float(np.einsum("nij,nij->n", inv, inv)[0])
+        s2 = 1.0 / math.sqrt(q) if q > 0.0 else (math.inf if q == 0.0 else math.nan)
+        if not (s2 > rcond * fro):
+            return _step_square(J, F, rcond)
+        step = -np.matmul(inv, F[:, :, None])[:, :, 0]
+    return step, np.array([False]), np.array([[fro, s2]])
 
 
 def _step_2x2(J, F, rcond):
@@ -224,10 +278,10 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
     m = F.shape[1]
     if m < k:
         raise ValueError(f"fun returns {m} equations for {k} unknowns; need m >= k")
-    res = float(_row_norms(F)[0])
+    res = _row_norm_one(F)
     iters, cond = 0, np.nan
     finite = math.isfinite(res)
-    status = Status.CONVERGED if res < tol else (Status.NOT_CONVERGED if finite else Status.DIVERGED)
+    status = _S_CONVERGED if res < tol else (_S_NOT_CONVERGED if finite else _S_DIVERGED)
     done = res < tol or not finite
     for _ in range(maxiter):
         if done:
@@ -235,13 +289,12 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
         if J is None:
             J = jac(x) if jac is not None else numeric_jacobian(fun, x, F)
             J = np.asarray(J, dtype=float).reshape(1, m, k)
-        bad_j = not np.isfinite(J).all()
+        bad_j = not _all_finite(J)
         if bad_j:
             J = np.zeros_like(J)
         d, singular, sv = _lstsq_step(J, F, rcond, inverse_square)
         singular = bool(singular[0]) or bad_j
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cond = np.nan if bad_j else float(sv[0, 0] / sv[0, -1])
+        cond = np.nan if bad_j else _ratio(float(sv[0, 0]), float(sv[0, -1]))
         iters += 1
         lam = 1.0
         x_new = x + d
@@ -252,7 +305,7 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
             J_new = np.asarray(J_new, dtype=float).reshape(1, m, k)
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(1, -1)
-        r_new = float(_row_norms(F_new)[0])
+        r_new = _row_norm_one(F_new)
         stalled = False
         if damped:
             r_old = res
@@ -263,23 +316,27 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
                 lam *= 0.5
                 xt = x + lam * d
                 Ft = np.asarray(fun(xt), dtype=float).reshape(1, -1)
-                x_new, F_new, r_new, J_new = xt, Ft, float(_row_norms(Ft)[0]), None
+                x_new, F_new, r_new, J_new = xt, Ft, _row_norm_one(Ft), None
                 need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
             if need:  # no decrease found: keep the old iterate and stop
                 x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True
         x, F, res, J = x_new, F_new, r_new, J_new
-        nonfinite = not math.isfinite(r_new) or not np.isfinite(x_new).all()
+        nonfinite = not math.isfinite(r_new) or not _all_finite(x_new)
         conv = r_new < tol and not nonfinite
         if conv:
-            status = Status.CONVERGED
+            status = _S_CONVERGED
         elif nonfinite:
-            status = Status.DIVERGED
+            status = _S_DIVERGED
         elif singular:
-            status = Status.SINGULAR
+            status = _S_SINGULAR
         done = conv or nonfinite or singular or stalled
-    inside = bool(np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi)))))
-    if status == Status.CONVERGED and not inside:
-        status = Status.OFF_FLANK
+    # the batch's test on floats (the same IEEE operations)
+    inside = all(
+        a >= b - 1e-12 * (1 + abs(b)) and a <= c + 1e-12 * (1 + abs(c))
+        for a, b, c in zip(x[0].tolist(), lo.tolist(), hi.tolist())
+    )
+    if status == _S_CONVERGED and not inside:
+        status = _S_OFF_FLANK
     return SolveResult(
         x=x,
         residual=np.array([res]),
@@ -287,6 +344,41 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
         status=np.array([int(status)]),
         condition=np.array([cond]),
     )
+
+
+def _check_bounds(lower, upper, k):
+    """(lo, hi) (k,) arrays of the bounds (+-inf where None); ValueError if lo > hi somewhere."""
+    lo, hi = (
+        np.full(k, sign * np.inf)
+        if b is None
+        else (
+            b
+            if type(b) is np.ndarray and b.shape == (k,) and b.dtype == float
+            else np.broadcast_to(np.asarray(b, float), (k,))
+        )
+        for b, sign in ((lower, -1), (upper, 1))
+    )
+    if np.any(lo > hi):
+        raise ValueError("lower bound exceeds upper bound")
+    return lo, hi
+
+
+def _bind_rows(fun, jac, fun_jac, n):
+    """For ``rows=True``: the callables with the active row indices bound (read from the returned
+    box's ``"i"``, which the solver sets before each call)."""
+    box = {"i": np.arange(n)}
+    _fun, _jac, _fj = fun, jac, fun_jac
+
+    def fun(xx):
+        return _fun(xx, box["i"])
+
+    jac = None if _jac is None else (lambda xx: _jac(xx, box["i"]))
+    if _fj is not None:
+
+        def fun_jac(xx):
+            return _fj(xx, box["i"])
+
+    return fun, jac, fun_jac, box
 
 
 def newton(
@@ -322,8 +414,8 @@ def newton(
     keep_inside : project every iterate onto the bounds (the "domain-kept" variant)
     rcond : relative singular-value threshold below which the Jacobian counts as singular
     rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
-        (into the batch) of the rows of ``x``: the solver passes only the active rows, so
-        per-problem data (e.g. fixed parameters) can be looked up by ``idx``
+        (into the batch, increasing) of the rows of ``x``: the solver passes only the active rows,
+        so per-problem data (e.g. fixed parameters) can be looked up by ``idx``
     fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
         evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
@@ -344,123 +436,180 @@ def newton(
         raise ValueError(f"maxiter must be >= 1, got {maxiter!r}")
     x = np.atleast_2d(np.array(x0, dtype=float))
     n, k = x.shape
-    lo = np.full(k, -np.inf) if lower is None else np.broadcast_to(np.asarray(lower, float), (k,))
-    hi = np.full(k, np.inf) if upper is None else np.broadcast_to(np.asarray(upper, float), (k,))
-    if np.any(lo > hi):
-        raise ValueError("lower bound exceeds upper bound")
+    lo, hi = _check_bounds(lower, upper, k)
     if keep_inside:
         x = np.clip(x, lo, hi)
-
+    box = {"i": None}
     if rows:
-        _fun, _jac = fun, jac
-        _idx = {"i": np.arange(n)}
-
-        def fun(xx):
-            return _fun(xx, _idx["i"])
-
-        jac = None if _jac is None else (lambda xx: _jac(xx, _idx["i"]))
-        if fun_jac is not None:
-            _fj = fun_jac
-
-            def fun_jac(xx):
-                return _fj(xx, _idx["i"])
-    else:
-        _idx = {"i": None}
+        fun, jac, fun_jac, box = _bind_rows(fun, jac, fun_jac, n)
     if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
         return _newton_one(
             fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square
         )
-    if fun_jac is not None:
-        F, Jc = fun_jac(x)
-        F = np.asarray(F, dtype=float).reshape(n, -1)
-        Jc = np.asarray(Jc, dtype=float).reshape(n, F.shape[1], k)
-        fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
-        if jac is None:
-            jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
-    else:
-        F = np.asarray(fun(x), dtype=float).reshape(n, -1)
-    if F.shape[1] < k:
-        raise ValueError(f"fun returns {F.shape[1]} equations for {k} unknowns; need m >= k")
-    res = _row_norms(F)
-    iters = np.zeros(n, dtype=int)
-    status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
-    status[~np.isfinite(res)] = int(Status.DIVERGED)
-    status[res < tol] = int(Status.CONVERGED)  # a start that already solves the system
-    done = (res < tol) | ~np.isfinite(res)
-    stalled = np.zeros(n, dtype=bool)
-    cond = np.full(n, np.nan)
+    opts = _BatchOptions(tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square, keep_inside)
+    return _newton_batch(fun, jac, fun_jac, x, box, opts)
 
-    for _ in range(int(maxiter)):
-        act = (~done).nonzero()[0]
+
+@dataclass(frozen=True)
+class _BatchOptions:
+    tol: float
+    maxiter: int
+    damped: bool
+    max_halvings: int
+    lo: np.ndarray
+    hi: np.ndarray
+    rcond: float
+    inverse_square: bool
+    keep_inside: bool
+
+
+class _BatchState:
+    """Iterates, residuals and bookkeeping of a batch solve (:func:`_newton_batch`)."""
+
+    def __init__(self, fun, fun_jac, x, opts: _BatchOptions):
+        n, k = x.shape
+        self.x, self.k = x, k
+        self.Jc = self.fresh = None
+        if fun_jac is not None:
+            F, Jc = fun_jac(x)
+            self.F = np.asarray(F, dtype=float).reshape(n, -1)
+            self.Jc = np.asarray(Jc, dtype=float).reshape(n, self.F.shape[1], k)
+            self.fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+            self.own_jc = False  # Jc may be the caller's array: copied before a partial write
+        else:
+            self.F = np.asarray(fun(x), dtype=float).reshape(n, -1)
+        self.m = self.F.shape[1]
+        if self.m < k:
+            raise ValueError(f"fun returns {self.m} equations for {k} unknowns; need m >= k")
+        self.res = _row_norms(self.F)
+        self.iters = np.zeros(n, dtype=int)
+        self.status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
+        finite = np.isfinite(self.res)
+        self.status[~finite] = int(Status.DIVERGED)
+        self.status[self.res < opts.tol] = int(Status.CONVERGED)  # a start that already solves the system
+        self.done = (self.res < opts.tol) | ~finite
+        self.stalled = np.zeros(n, dtype=bool)
+        self.cond = np.full(n, np.nan)
+
+    def keep_jacobians(self, act, J):
+        """Keep the Jacobians ``J`` of the rows ``act`` (fresh at the new iterates); all rows:
+        ``J`` replaces the store without a copy."""
+        if act.size == len(self.Jc):
+            self.Jc, self.own_jc = J, False
+        else:
+            if not self.own_jc:
+                self.Jc, self.own_jc = self.Jc.copy(), True
+            self.Jc[act] = J
+        self.fresh[act] = True
+
+
+def _rows_all_finite(a):
+    """Per row (first axis) whether every entry of ``a`` is finite (one pass when all are)."""
+    if len(a) == 1:
+        return np.array([_all_finite(a)])
+    fin = np.isfinite(a)
+    if fin.all():
+        return np.ones(len(a), dtype=bool)
+    return fin.reshape(len(a), -1).all(axis=1)
+
+
+def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
+    """Jacobian of the active rows (reusing the fresh ones of ``fun_jac``) and their Newton step;
+    records the condition and counts the iteration. Returns (d, singular)."""
+    xa, Fa = S.x[sel], S.F[sel]
+    if S.Jc is not None:
+        stale = np.flatnonzero(~S.fresh[sel])
+        Ja = S.Jc[act] if stale.size else S.Jc[sel]  # a view only where it is not written to
+        if stale.size:
+            box["i"] = act[stale]
+            Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, S.m, S.k)
+            box["i"] = act
+    else:
+        Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
+    Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
+    good_j = _rows_all_finite(Ja)
+    bad_j = ~good_j
+    if bad_j.any():
+        Ja = np.where(bad_j[:, None, None], 0.0, Ja)
+    d, singular, sv = _lstsq_step(Ja, Fa, opts.rcond, opts.inverse_square)
+    singular |= bad_j
+    with np.errstate(divide="ignore", invalid="ignore"):
+        S.cond[sel] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
+    S.iters[sel] += 1
+    return d, singular
+
+
+def _line_search(S: _BatchState, act, sel, d, x_new, F_new, r_new, fun, box, opts: _BatchOptions):
+    """Armijo backtracking of the active rows whose full step did not decrease the residual enough
+    (step halved up to ``max_halvings`` times); rows without a decrease keep their old iterate and
+    are marked stalled. Updates x_new, F_new, r_new in place."""
+    xa, Fa = S.x[sel], S.F[sel]
+    lam = np.ones(act.size)
+    r_old = S.res[sel]
+    need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
+    for _h in range(opts.max_halvings):
+        if not need.any():
+            break
+        idx = need.nonzero()[0]
+        lam[idx] *= 0.5
+        xt = xa[idx] + lam[idx, None] * d[idx]
+        if opts.keep_inside:
+            xt = np.clip(xt, opts.lo, opts.hi)
+        box["i"] = act[idx]
+        Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
+        box["i"] = act
+        rt = _row_norms(Ft)
+        x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
+        if S.fresh is not None:
+            S.fresh[act[idx]] = False
+        need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
+    # no decrease found: keep the old iterate and stop this point
+    stall = need
+    if stall.any():
+        x_new[stall], F_new[stall], r_new[stall] = xa[stall], Fa[stall], r_old[stall]
+        S.stalled[act[stall]] = True
+
+
+def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult:
+    """:func:`newton` for a batch (rows bound by :func:`_bind_rows` read ``box["i"]``). Where every
+    row is still active the rows are addressed by a slice (views, no gathers)."""
+    S = _BatchState(fun, fun_jac, x, opts)
+    n = len(x)
+    if fun_jac is not None and jac is None:
+        jac = lambda xx: fun_jac(xx)[1]  # noqa: E731
+    for _ in range(opts.maxiter):
+        act = (~S.done).nonzero()[0]
         if act.size == 0:
             break
-        xa, Fa = x[act], F[act]
-        _idx["i"] = act
-        if fun_jac is not None:
-            Ja = Jc[act]
-            stale = np.flatnonzero(~fresh[act])
-            if stale.size:
-                _idx["i"] = act[stale]
-                Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, Fa.shape[1], k)
-                _idx["i"] = act
-        else:
-            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
-        Ja = np.asarray(Ja, dtype=float).reshape(act.size, Fa.shape[1], k)
-        bad_j = ~np.isfinite(Ja).all(axis=(1, 2))
-        if bad_j.any():
-            Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-        d, singular, sv = _lstsq_step(Ja, Fa, rcond, inverse_square)
-        singular |= bad_j
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cond[act] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
-        iters[act] += 1
-
-        lam = np.ones(act.size)
-        x_new = xa + d
-        if keep_inside:
-            x_new = np.clip(x_new, lo, hi)
+        sel = slice(None) if act.size == n else act
+        box["i"] = act
+        d, singular = _batch_step(S, act, sel, jac, fun, box, opts)
+        x_new = S.x[sel] + d
+        if opts.keep_inside:
+            x_new = np.clip(x_new, opts.lo, opts.hi)
         if fun_jac is not None:
             F_new, J_new = fun_jac(x_new)
             F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
-            Jc[act] = np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], k)
-            fresh[act] = True
+            S.keep_jacobians(act, np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], S.k))
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
         r_new = _row_norms(F_new)
-        if damped:
-            r_old = res[act]
-            need = ~(r_new <= (1.0 - 1e-4 * lam) * r_old)
-            for _h in range(int(max_halvings)):
-                if not need.any():
-                    break
-                idx = need.nonzero()[0]
-                lam[idx] *= 0.5
-                xt = xa[idx] + lam[idx, None] * d[idx]
-                if keep_inside:
-                    xt = np.clip(xt, lo, hi)
-                _idx["i"] = act[idx]
-                Ft = np.asarray(fun(xt), dtype=float).reshape(idx.size, -1)
-                _idx["i"] = act
-                rt = _row_norms(Ft)
-                x_new[idx], F_new[idx], r_new[idx] = xt, Ft, rt
-                if fun_jac is not None:
-                    fresh[act[idx]] = False
-                need[idx] = ~(rt <= (1.0 - 1e-4 * lam[idx]) * r_old[idx])
-            # no decrease found: keep the old iterate and stop this point
-            stall = need
-            x_new[stall], F_new[stall], r_new[stall] = xa[stall], Fa[stall], r_old[stall]
-            stalled[act[stall]] = True
-
-        x[act], F[act], res[act] = x_new, F_new, r_new
-        nonfinite = ~np.isfinite(r_new) | ~np.isfinite(x_new).all(axis=1)
-        conv = (r_new < tol) & ~nonfinite
+        if opts.damped:
+            _line_search(S, act, sel, d, x_new, F_new, r_new, fun, box, opts)
+        if act.size == n:  # every row: the new arrays replace the old (no copy)
+            S.x, S.res = x_new, r_new
+            S.F[sel] = F_new
+        else:
+            S.x[sel], S.F[sel], S.res[sel] = x_new, F_new, r_new
+        nonfinite = ~(np.isfinite(r_new) & _rows_all_finite(x_new))
+        conv = (r_new < opts.tol) & ~nonfinite
         sing_stop = singular & ~conv
-        status[act[conv]] = int(Status.CONVERGED)
-        status[act[nonfinite]] = int(Status.DIVERGED)
-        status[act[sing_stop & ~nonfinite]] = int(Status.SINGULAR)
-        done[act[conv | nonfinite | sing_stop]] = True
-        done[stalled] = True
-
-    inside = np.all((x >= lo - 1e-12 * (1 + np.abs(lo))) & (x <= hi + 1e-12 * (1 + np.abs(hi))), axis=1)
-    status[(status == Status.CONVERGED) & ~inside] = int(Status.OFF_FLANK)
-    return SolveResult(x=x, residual=res, iterations=iters, status=status, condition=cond)
+        S.status[act[conv]] = int(Status.CONVERGED)
+        S.status[act[nonfinite]] = int(Status.DIVERGED)
+        S.status[act[sing_stop & ~nonfinite]] = int(Status.SINGULAR)
+        S.done[act[conv | nonfinite | sing_stop]] = True
+        S.done[S.stalled] = True
+    lo, hi = opts.lo, opts.hi
+    inside = np.all((S.x >= lo - 1e-12 * (1 + np.abs(lo))) & (S.x <= hi + 1e-12 * (1 + np.abs(hi))), axis=1)
+    S.status[(S.status == Status.CONVERGED) & ~inside] = int(Status.OFF_FLANK)
+    return SolveResult(x=S.x, residual=S.res, iterations=S.iters, status=S.status, condition=S.cond)

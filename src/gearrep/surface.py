@@ -24,6 +24,8 @@ __all__ = [
     "AxialForm",
     "cross",
     "cross3",
+    "cross3_sparse",
+    "add3",
     "dot3",
     "fd_derivatives",
     "unit",
@@ -56,6 +58,52 @@ def cross3(a, b):
     a0, a1, a2 = a
     b0, b1, b2 = b
     return (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
+
+
+def _times(x, y):
+    """x * y, or None where a factor is the float 0.0 (an exact zero); a float 1.0 factor returns
+    the other unchanged."""
+    if type(x) is float:
+        if x == 0.0:
+            return None
+        if x == 1.0:
+            return y
+    if type(y) is float:
+        if y == 0.0:
+            return None
+        if y == 1.0:
+            return x
+    return x * y
+
+
+def _minus(p, q):
+    """p - q of :func:`_times` products (None = zero)."""
+    if q is None:
+        return 0.0 if p is None else p
+    return -q if p is None else p - q
+
+
+def cross3_sparse(a, b):
+    """:func:`cross3` for vectors whose constant components are Python floats (e.g. the axial
+    components 0.0 and 1.0 of a cylindrical flank's derivatives, see
+    :meth:`Surface.evaluate_components`): products with a float 0.0 are left out and a float 1.0
+    factor is not multiplied, so the same values (up to the sign of an exact zero) cost fewer array
+    operations; a component that is structurally zero comes back as the float 0.0."""
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (
+        _minus(_times(a1, b2), _times(a2, b1)),
+        _minus(_times(a2, b0), _times(a0, b2)),
+        _minus(_times(a0, b1), _times(a1, b0)),
+    )
+
+
+def add3(a, b):
+    """a + b of vectors by components, a float 0.0 component adding nothing (see :func:`cross3_sparse`)."""
+    return tuple(
+        y if (type(x) is float and x == 0.0) else (x if (type(y) is float and y == 0.0) else x + y)
+        for x, y in zip(a, b)
+    )
 
 
 def dot3(a, b):

@@ -167,6 +167,10 @@ class ParabolicCrowning:
             _check_finite(n, getattr(self, n))
 
     def __call__(self, v):
+        if type(v) is float:  # one point: the same operations on Python floats
+            w = v - float(self.v0)
+            c1, c2 = float(self.c1), float(self.c2)
+            return c1 * w * w + c2 * w + float(self.c3), 2.0 * c1 * w + c2, 2.0 * c1
         w = np.asarray(v, dtype=float) - self.v0
         return self.c1 * w * w + self.c2 * w + self.c3, 2.0 * self.c1 * w + self.c2, np.full_like(w, 2.0 * self.c1)
 
@@ -496,6 +500,8 @@ class InvoluteFlank(Surface):
     # -- polar angle and its derivatives (eq B) ---------------------------------------------
     def twist(self, v):
         """Helix twist of the transverse section at axial coordinate v, and its two derivatives."""
+        if type(v) is float and self.gear.helix_angle == 0.0:  # one point of a spur flank
+            return 0.0, 0.0, 0.0
         v = np.asarray(v, dtype=float)
         if self.gear.helix_angle == 0.0:
             z = np.zeros_like(v)

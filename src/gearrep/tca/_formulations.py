@@ -8,8 +8,8 @@ import math
 import numpy as np
 
 from ..frames import rotate_z
-from ..solve import SolveResult, Status, newton
-from ..surface import cross, cross3, dot3
+from ..solve import SolveResult, Status, _rows_all_finite, newton
+from ..surface import add3, cross, cross3, cross3_sparse, dot3
 from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 
 __all__ = [
@@ -62,25 +62,36 @@ _SCALAR_ERRORS = (ArithmeticError, ValueError)
 
 def _normal_derivatives3(P, sign):
     """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
-    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple."""
+    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple.
+    ``sign`` -1 swaps the operands of every cross product (which negates N and its derivatives
+    exactly), so the signed normal and its derivatives come without a negation pass. On arrays
+    the cross products skip the float components 0.0 and 1.0 (:func:`~gearrep.surface.cross3_sparse`)."""
     _, ru, rv, ruu, ruv, rvv = P
-    N0, N1, N2 = cross3(ru, rv)
+    if type(ru[0]) is float:  # one point on floats: every component is a float
+        cr, add = cross3, _add3_plain
+    else:
+        cr, add = cross3_sparse, add3
+    if sign == 1:
+        N, dNu, dNv = cr(ru, rv), add(cr(ruu, rv), cr(ru, ruv)), add(cr(ruv, rv), cr(ru, rvv))
+    else:
+        N, dNu, dNv = cr(rv, ru), add(cr(rv, ruu), cr(ruv, ru)), add(cr(rv, ruv), cr(rvv, ru))
+    N0, N1, N2 = N
     L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
     n = (N0 / L, N1 / L, N2 / L)
-    a, b = cross3(ruu, rv), cross3(ru, ruv)
-    dNu = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-    a, b = cross3(ruv, rv), cross3(ru, rvv)
-    dNv = (a[0] + b[0], a[1] + b[1], a[2] + b[2])
     pu, pv = dot3(n, dNu), dot3(n, dNv)
-    dnu = tuple((d - m * pu) / L for d, m in zip(dNu, n))
-    dnv = tuple((d - m * pv) / L for d, m in zip(dNv, n))
-    if sign == 1:
-        return n, dnu, dnv
-    return tuple(tuple(-x for x in vec) for vec in (n, dnu, dnv))
+    dnu = ((dNu[0] - n[0] * pu) / L, (dNu[1] - n[1] * pu) / L, (dNu[2] - n[2] * pu) / L)
+    dnv = ((dNv[0] - n[0] * pv) / L, (dNv[1] - n[1] * pv) / L, (dNv[2] - n[2] * pv) / L)
+    return n, dnu, dnv
+
+
+def _add3_plain(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
 
 
 def _stack3(v, n):
     """(n, 3) array of a vector given by components (floats broadcast)."""
+    if type(v[0]) is float and type(v[1]) is float and type(v[2]) is float and n == 1:
+        return np.array([v])
     out = np.empty((n, 3))
     out[:, 0], out[:, 1], out[:, 2] = v
     return out
@@ -195,22 +206,44 @@ def _keep3(v, first0, last2):
     return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
 
 
+def _pack(F_comps, J_cols, n, one):
+    """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
+    components; None: no J); ``one``: every entry a float (one point), packed by one np.array call."""
+    if one:
+        m = len(F_comps)
+        F = np.array(F_comps, dtype=float).reshape(1, m)
+        if J_cols is None:
+            return F, None
+        flat = [col[i] for i in range(m) for col in J_cols]  # row-major
+        return F, np.array(flat, dtype=float).reshape(1, m, len(J_cols))
+    # filled component by component into (m, n) and (m, k, n) arrays (contiguous writes, one pass
+    # each) and handed out as their transposed views (n, m) and (n, m, k): the same values
+    Ft = np.empty((len(F_comps), n))
+    for i, c in enumerate(F_comps):
+        Ft[i] = c
+    if J_cols is None:
+        return Ft.T, None
+    Jt = np.empty((len(F_comps), len(J_cols), n))
+    for k, col in enumerate(J_cols):
+        for i, c in enumerate(col):
+            Jt[i, k] = c
+    return Ft.T, Jt.transpose(2, 0, 1)
+
+
 def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
     """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components."""
     K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
     n1, n2 = K["n1"], K["n2"]
-    c = cross3(n1, n2)
-    f0, f1 = _keep3(c, first0, last2)
-    F = np.empty((np.size(f0), 2))
-    F[:, 0], F[:, 1] = f0, f1
+    f = _keep3(cross3(n1, n2), first0, last2)
+    one = type(u1) is float
+    n = 1 if one else np.size(f[0])
     if not derivs:
-        return F, None, K
-    cols = ("_u", "_v") if v_column else ("_u",)
-    J = np.empty((np.size(f0), 2, len(cols)))
-    for k, j in enumerate(cols):
+        return (*_pack(f, None, n, one), K)
+    J_cols = []
+    for j in ("_u", "_v") if v_column else ("_u",):
         a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
-        J[:, 0, k], J[:, 1, k] = _keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2)
-    return F, J, K
+        J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
+    return (*_pack(f, J_cols, n, one), K)
 
 
 def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
@@ -243,20 +276,14 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
     if keep is not None:
         keep.update(r=r1, n1=n1, n2=n2)
     O2 = g["O2"]
-    m = 6 if drop is None else 5
-    n = np.size(u1)
-    F = np.empty((n, m))
-    for i in range(3):
-        F[:, i] = r1[i] - (O2[i] + rel2[i])
+    one = type(u1) is float
+    n = 1 if one else np.size(u1)
     ns = tuple(a + b for a, b in zip(n1, n2))
-    if drop is None:
-        F[:, 3], F[:, 4], F[:, 5] = ns
-    else:
-        F[:, 3], F[:, 4] = _keep3(ns, first0, last2)
+    F = [r1[i] - (O2[i] + rel2[i]) for i in range(3)] + list(ns if drop is None else _keep3(ns, first0, last2))
     if not derivs:
-        return F, None
-    J = np.empty((n, m, len(cols)))
-    for k, col in enumerate(cols):
+        return _pack(F, None, n, one)
+    J_cols = []
+    for col in cols:
         if col == 0:
             jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
         elif col == 1:
@@ -270,12 +297,8 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
         else:
             jr = tuple(-a for a in cross3(g["w2"], rel2))
             jn = cross3(g["w2"], n2)
-        J[:, 0, k], J[:, 1, k], J[:, 2, k] = jr
-        if drop is None:
-            J[:, 3, k], J[:, 4, k], J[:, 5, k] = jn
-        else:
-            J[:, 3, k], J[:, 4, k] = _keep3(jn, first0, last2)
-    return F, J
+        J_cols.append(tuple(jr) + tuple(jn if drop is None else _keep3(jn, first0, last2)))
+    return _pack(F, J_cols, n, one)
 
 
 def _conventional_FJ(pair, x, phi1, drop, derivs=True):
@@ -407,6 +430,8 @@ def _prep(phi1, start, width):
         raise ValueError(f"phi1 ({len(phi1)}) and start ({len(start)}) must have equal length or length 1")
     if not np.all(np.isfinite(phi1)):
         raise ValueError("phi1 must be finite")
+    if len(phi1) == n and len(start) == n:
+        return phi1.copy(), start.copy()
     return np.broadcast_to(phi1, (n,)).copy(), np.broadcast_to(start, (n, width)).copy()
 
 
@@ -435,37 +460,187 @@ def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
     phi1 = _angles(phi1)
-    mid1 = np.where(np.isfinite(pair.lower1 + pair.upper1), 0.5 * (pair.lower1 + pair.upper1), 0.0)
+    mid1, mid2 = pair._mid_flanks
     if formulation == "reduced":
         return np.tile(mid1, (len(phi1), 1))
-    mid2 = np.where(np.isfinite(pair.lower2 + pair.upper2), 0.5 * (pair.lower2 + pair.upper2), 0.0)
     return np.column_stack([np.tile(mid1, (len(phi1), 1)), np.tile(mid2, (len(phi1), 1)), pair.ratio * phi1])
 
 
 class _Record:
-    """The contact geometry the last kernel evaluation of each row gave (u2, v2, phi2 of the reduced
-    form; point r and normals n1, n2 of both), kept with the unknowns it was evaluated at, so that
-    the contact record of a row whose final iterate was the last point evaluated is not computed
-    a second time (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are)."""
+    """The contact geometry the kernel evaluations gave (u2, v2, phi2 of the reduced form; point r
+    and normals n1, n2 of both), kept with the unknowns they were evaluated at, so that the contact
+    record of a row whose final iterate was the last point evaluated is not computed a second time
+    (:meth:`at`; rows whose final iterate differs, e.g. a stalled line search, are). Evaluations are
+    only listed while solving (``rows`` None: all rows); :meth:`at` takes each row's last one."""
 
     def __init__(self, n: int, k: int):
-        self.x = np.full((n, k), np.nan)
-        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
-        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+        self.n, self.k = n, k
+        self.entries = []
 
     def store(self, rows, x, K):
-        rows = rows.astype(int)
-        self.x[rows] = x
-        for key, arr in self.scalars.items():
-            if key in K:
-                arr[rows] = K[key]
-        for key, arr in self.vectors.items():
-            v = K[key]
-            arr[rows, 0], arr[rows, 1], arr[rows, 2] = v[0], v[1], v[2]
+        self.entries.append((rows, x, K))
 
     def at(self, x):
-        """(mask of the rows recorded at exactly ``x``, the record)."""
+        """(mask of the rows recorded at exactly ``x``, the record: ``x``, ``scalars`` and
+        ``vectors`` (n, 3) of each row's last evaluation)."""
+        n = self.n
+        if self.entries and self.entries[-1][0] is None:  # the last evaluation covered every row
+            _, xe, K = self.entries[-1]
+            self.x = xe
+            self.scalars = {key: np.array(K[key], dtype=float).reshape(n) for key in ("u2", "v2", "phi2") if key in K}
+            self.vectors = {key: _stack3(K[key], n) for key in ("r", "n1", "n2")}
+            self.entries = []
+            return (self.x == x).all(axis=1), self
+        self.x = np.full((n, self.k), np.nan)
+        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
+        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
+        filled = np.zeros(n, dtype=bool)
+        for rows, xe, K in reversed(self.entries):
+            rows = np.arange(n) if rows is None else rows
+            new = ~filled[rows]
+            if not new.any():
+                continue
+            r = rows[new]
+            filled[r] = True
+            self.x[r] = xe[new]
+            for key, arr in self.scalars.items():
+                if key in K:
+                    arr[r] = np.broadcast_to(K[key], new.shape)[new]
+            for key, arr in self.vectors.items():
+                for i in range(3):
+                    arr[r, i] = np.broadcast_to(K[key][i], new.shape)[new]
+            if filled.all():
+                break
+        self.entries = []
         return (self.x == x).all(axis=1), self
+
+
+def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, drop):
+    """Validated (phi1 (n,), start (n, width) with a fixed v1 written into its column 1, fixed);
+    ValueError naming the argument otherwise (before any work)."""
+    if formulation not in ("reduced", "conventional"):
+        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
+    if jacobian not in ("analytic", "numeric"):
+        raise ValueError(f"jacobian must be 'analytic' or 'numeric', got {jacobian!r}")
+    if drop is not None and drop not in (0, 1, 2):
+        raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
+    if formulation == "reduced" and not (
+        getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False)
+    ):
+        raise ValueError(
+            "the reduced formulation needs flank2 in cylindrical or spherical form "
+            "(flank2.cylindrical = True or flank2.spherical = True)"
+        )
+    width = 2 if formulation == "reduced" else 5
+    phi1 = _angles(phi1)
+    if start is None:
+        start = default_start(pair, phi1, formulation)
+    phi1, start = _prep(phi1, start, width)
+    fixed = v1 is not None
+    if fixed:
+        v1a = _face_coordinates(v1, len(phi1))
+        if not np.all(np.isfinite(v1a)):
+            raise ValueError("v1 must be finite")
+        start[:, 1] = v1a
+    return phi1, start, fixed
+
+
+class _Rows:
+    """Per-row data of a contact solve (phi1, cos, sin, the dropped normal component as the masks
+    drop == 0 and drop == 2, a fixed v1) as contiguous arrays, gathered for the active rows
+    (``idx``; no gather while all rows are active), and for one row as Python floats."""
+
+    def __init__(self, phi1, c1, s1, drop, v1):
+        self.n = len(phi1)
+        self.cols = {"phi1": phi1, "c1": c1, "s1": s1, "first0": drop == 0, "last2": drop == 2, "v1": v1}
+        self.one = None
+        if self.n == 1:
+            self.one = {k: (bool(v[0]) if v.dtype == bool else float(v[0])) for k, v in self.cols.items()}
+
+    def take(self, idx):
+        if len(idx) == self.n:
+            return self.cols
+        return {k: v[idx] for k, v in self.cols.items()}
+
+
+def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
+    """FJ(x, idx, derivs) of the reduced system for ``newton(rows=True)`` (see :func:`solve_contact`)."""
+    v_column = not fixed
+
+    def FJ(x, idx, derivs=True):
+        out = None
+        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+            q = data.one
+            x0 = x[0].tolist()
+            try:
+                out = _reduced_FJ3(
+                    pair,
+                    x0[0],
+                    q["v1"] if fixed else x0[1],
+                    q["phi1"],
+                    q["c1"],
+                    q["s1"],
+                    q["first0"],
+                    q["last2"],
+                    derivs=derivs,
+                    v_column=v_column,
+                )
+            except _SCALAR_ERRORS:
+                pass
+        if out is None:
+            p = data.take(idx)
+            v1 = p["v1"] if fixed else x[:, 1]
+            out = _reduced_FJ3(
+                pair, x[:, 0], v1, p["phi1"], p["c1"], p["s1"], p["first0"], p["last2"], derivs, v_column
+            )
+        record.store(None if len(idx) == data.n else idx, x, out[2])
+        return out[:2]
+
+    return FJ
+
+
+#: the ``drop`` argument of :func:`_conventional_FJ3` for five equations (any value but None; the
+#: dropped component itself comes as the masks first0, last2)
+_FIVE = 5
+
+
+def _conventional_FJ_rows(pair, data: _Rows, free, record):
+    """FJ(x, idx, derivs) of the conventional system for ``newton(rows=True)`` (free columns
+    ``free`` of the five unknowns; a fixed v1 from the row data)."""
+    cols = tuple(free)
+
+    def FJ(x, idx, derivs=True):
+        p = data.take(idx)
+        full = _expand(x, free, p["v1"])
+        keep = {}
+        out = None
+        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
+            q = data.one
+            try:
+                out = _conventional_FJ3(
+                    pair, tuple(full[0].tolist()), q["c1"], q["s1"], _FIVE, q["first0"], q["last2"], cols, derivs, keep
+                )
+            except _SCALAR_ERRORS:
+                pass
+        if out is None:
+            x5 = tuple(full[:, i] for i in range(5))
+            out = _conventional_FJ3(pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, derivs, keep)
+        record.store(None if len(idx) == data.n else idx, x, keep)
+        return out
+
+    return FJ
+
+
+def _expand(x, free, v1):
+    """The full unknowns (n, width) from the free columns ``x``; column 1 = the fixed ``v1``
+    where v1 is not among the free ones."""
+    width = 2 if len(free) <= 2 else 5
+    if len(free) == width:
+        return x
+    full = np.empty((x.shape[0], width))
+    full[:, free] = x
+    full[:, 1] = v1
+    return full
 
 
 def solve_contact(
@@ -503,196 +678,49 @@ def solve_contact(
     -------
     ContactPoints; status CONVERGED only for a verified root inside both flanks.
     """
-    if formulation not in ("reduced", "conventional"):
-        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
-    width = 2 if formulation == "reduced" else 5
-    phi1 = _angles(phi1)
-    if start is None:
-        start = default_start(pair, phi1, formulation)
-    phi1, start = _prep(phi1, start, width)
+    phi1, start, fixed = _check_solve_inputs(pair, phi1, start, formulation, v1, jacobian, drop)
     n = len(phi1)
-    fixed = v1 is not None
-    if fixed:
-        v1a = _face_coordinates(v1, n)
-        if not np.all(np.isfinite(v1a)):
-            raise ValueError("v1 must be finite")
-        start[:, 1] = v1a
-    if formulation == "reduced" and not (
-        getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False)
-    ):
-        raise ValueError(
-            "the reduced formulation needs flank2 in cylindrical or spherical form "
-            "(flank2.cylindrical = True or flank2.spherical = True)"
-        )
-
-    # dropped normal component: the largest of member 1's normal at the start
     c1, s1 = np.cos(phi1), np.sin(phi1)
+    # dropped normal component: the largest of member 1's normal at the start
     if drop is None:
         drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1)
     else:
-        if drop not in (0, 1, 2):
-            raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
         drop = np.full(n, float(drop))
-
-    free = (
-        [0]
-        if (fixed and formulation == "reduced")
-        else ([0, 1] if formulation == "reduced" else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4]))
-    )
-    lo_all = np.concatenate([pair.lower1, pair.lower2, [-np.inf]])
-    hi_all = np.concatenate([pair.upper1, pair.upper2, [np.inf]])
-
-    def expand(x, p):
-        full = np.empty((x.shape[0], width))
-        full[:, free] = x
-        if fixed:
-            full[:, 1] = p[:, 2]
-        return full
-
-    # per-row data: phi1, dropped component, fixed v1 (or NaN), cos phi1, sin phi1, row number
-    params = np.column_stack([phi1, drop, start[:, 1] if fixed else np.full(n, np.nan), c1, s1, np.arange(n)])
+    reduced = formulation == "reduced"
+    free = ([0] if fixed else [0, 1]) if reduced else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4])
+    lo, hi = pair._free_bounds(tuple(free))
+    x0 = start[:, : len(free)] if free == list(range(len(free))) else start[:, free]  # a view where contiguous
+    data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan))
     record = _Record(n, len(free))
-    if formulation == "reduced":
-
-        def FJ(x, p, derivs=True):
-            out = None
-            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-                q = p[0].tolist()
-                try:
-                    out = _reduced_FJ3(
-                        pair,
-                        float(x[0, 0]),
-                        q[2] if fixed else float(x[0, 1]),
-                        q[0],
-                        q[3],
-                        q[4],
-                        q[1] == 0,
-                        q[1] == 2,
-                        derivs=derivs,
-                        v_column=not fixed,
-                    )
-                except _SCALAR_ERRORS:
-                    pass
-            if out is None:
-                v1 = p[:, 2] if fixed else x[:, 1]
-                d = p[:, 1]
-                out = _reduced_FJ3(
-                    pair, x[:, 0], v1, p[:, 0], p[:, 3], p[:, 4], d == 0, d == 2, derivs=derivs, v_column=not fixed
-                )
-            record.store(p[:, 5], x, out[2])
-            return out[:2]
-    else:
-        cols = tuple(free)
-
-        def FJ(x, p, derivs=True):
-            full = expand(x, p)
-            keep = {}
-            out = None
-            if len(x) == 1:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-                q = p[0].tolist()
-                try:
-                    out = _conventional_FJ3(
-                        pair,
-                        tuple(full[0].tolist()),
-                        q[3],
-                        q[4],
-                        q[1],
-                        q[1] == 0,
-                        q[1] == 2,
-                        cols,
-                        derivs=derivs,
-                        keep=keep,
-                    )
-                except _SCALAR_ERRORS:
-                    pass
-            if out is None:
-                d = p[:, 1]
-                out = _conventional_FJ3(
-                    pair,
-                    tuple(full[:, i] for i in range(5)),
-                    p[:, 3],
-                    p[:, 4],
-                    d,
-                    d == 0,
-                    d == 2,
-                    cols,
-                    derivs=derivs,
-                    keep=keep,
-                )
-            record.store(p[:, 5], x, keep)
-            return out
-
-    def Fonly(x, p):
-        return FJ(x, p, derivs=False)[0]
-
+    FJ = _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)
+    analytic = jacobian == "analytic"
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
-        res = newton_rows(
-            Fonly,
-            FJ,
-            start[:, free],
-            params,
-            lower=lo_all[free],
-            upper=hi_all[free],
-            jacobian=jacobian,
+        res = newton(
+            lambda x, idx: FJ(x, idx, derivs=False)[0],
+            x0,
+            (lambda x, idx: FJ(x, idx)[1]) if analytic else None,
             tol=tol,
             maxiter=maxiter,
             damped=damped,
+            lower=lo,
+            upper=hi,
+            rows=True,
+            fun_jac=FJ if analytic else None,
             inverse_square=True,
         )
-    sol = expand(res.x, params)
+    sol = _expand(res.x, free, data.cols["v1"])
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
 
 
 def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> ContactPoints:
     """Contact record of the solved rows; ``recorded`` = (mask, :class:`_Record`): the rows whose
     geometry the solve's last kernel evaluation already gave at exactly these unknowns."""
-    status = res.status.copy()
-    u1, v1 = sol[:, 0], sol[:, 1]
-    n = len(sol)
-    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
-    miss = np.flatnonzero(~hit)
-    r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
-    if formulation == "reduced":
-        u2, v2, phi2 = (np.empty(n) for _ in range(3))
-    else:
-        u2, v2 = sol[:, 2], sol[:, 3]
-        ref = pair.ratio * phi1
-        phi2 = ref + _wrap(sol[:, 4] - ref)
-    if rec is not None and hit.any():
-        for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
-            arr[hit] = rec.vectors[key][hit]
-        if formulation == "reduced":
-            for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
-                arr[hit] = rec.scalars[key][hit]
-    if miss.size:
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            if formulation == "reduced":
-                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
-                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
-                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
-            else:
-                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
-                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
-    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
-        vec[~np.isfinite(vec).all(axis=1)] = np.nan
-    with np.errstate(invalid="ignore", over="ignore"):
-        opposite = np.sum(n1 * n2, axis=-1) < 0
-        if formulation == "conventional":
-            opposite &= np.linalg.norm(n1 + n2, axis=-1) < 1e-6
-    solved = (status == Status.CONVERGED) | (status == Status.OFF_FLANK)
-    status[solved & ~opposite] = int(Status.WRONG_ROOT)
-    tol2 = 1e-12 * (1 + np.abs(np.concatenate([pair.lower2, pair.upper2])))
-    inside2 = (
-        (u2 >= pair.lower2[0] - tol2[0])
-        & (u2 <= pair.upper2[0] + tol2[2])
-        & (v2 >= pair.lower2[1] - tol2[1])
-        & (v2 <= pair.upper2[1] + tol2[3])
-    )
-    status[(status == Status.CONVERGED) & ~inside2] = int(Status.OFF_FLANK)
+    u2, v2, phi2, r, n1, n2 = _contact_geometry(pair, formulation, sol, phi1, recorded)
+    status = _final_status(pair, formulation, res.status.copy(), r, n1, n2, u2, v2)
     te = transmission_error(phi1, phi2, pair.n1, pair.n2, phi10, phi20)
     return ContactPoints(
-        u1=u1,
-        v1=v1,
+        u1=sol[:, 0],
+        v1=sol[:, 1],
         u2=u2,
         v2=v2,
         phi1=phi1,
@@ -706,6 +734,92 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> C
         formulation=formulation,
         condition=res.condition,
     )
+
+
+def _contact_geometry(pair, formulation, sol, phi1, recorded):
+    """(u2, v2, phi2, r, n1, n2) of the solved rows: from the record where it holds them (see
+    :func:`_finish`), else evaluated; a point or normal with a non-finite component is NaN."""
+    u1, v1 = sol[:, 0], sol[:, 1]
+    n = len(sol)
+    hit, rec = recorded if recorded is not None else (np.zeros(n, dtype=bool), None)
+    reduced = formulation == "reduced"
+    if reduced:
+        u2, v2, phi2 = (np.empty(n) for _ in range(3))
+    else:
+        u2, v2 = sol[:, 2], sol[:, 3]
+        ref = pair.ratio * phi1
+        phi2 = ref + _wrap(sol[:, 4] - ref)
+    if rec is not None and hit.all():  # every row recorded: the record's arrays as they are
+        r, n1, n2 = (rec.vectors[key] for key in ("r", "n1", "n2"))
+        if reduced:
+            u2, v2, phi2 = (rec.scalars[key] for key in ("u2", "v2", "phi2"))
+        miss = np.zeros(0, dtype=int)
+    else:
+        r, n1, n2 = (np.empty((n, 3)) for _ in range(3))
+        if rec is not None and hit.any():
+            for key, arr in zip(("r", "n1", "n2"), (r, n1, n2)):
+                arr[hit] = rec.vectors[key][hit]
+            if reduced:
+                for key, arr in zip(("u2", "v2", "phi2"), (u2, v2, phi2)):
+                    arr[hit] = rec.scalars[key][hit]
+        miss = np.flatnonzero(~hit)
+    if miss.size:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if reduced:
+                K = _reduced_kernel(pair, u1[miss], v1[miss], phi1[miss], derivs=False)
+                u2[miss], v2[miss], phi2[miss] = K["u2"], K["v2"], K["phi2"]
+                r[miss], n1[miss], n2[miss] = K["r"], K["n1"], K["n2"]
+            else:
+                r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
+                n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
+    for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
+        bad = ~_rows_all_finite(vec)
+        if bad.any():
+            vec[bad] = np.nan
+    return u2, v2, phi2, r, n1, n2
+
+
+#: status codes as ints (an IntEnum member looked up on its class costs more than the test itself)
+_CONVERGED, _OFF_FLANK, _WRONG_ROOT = int(Status.CONVERGED), int(Status.OFF_FLANK), int(Status.WRONG_ROOT)
+
+
+def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
+    """The solver's statuses with WRONG_ROOT (normals not opposite; conventional: n1 + n2 not
+    ~0) and OFF_FLANK (member 2's parameters outside its flank) set."""
+    if len(status) == 1:
+        return _final_status_one(pair, formulation, status, n1, n2, u2, v2)
+    with np.errstate(invalid="ignore", over="ignore"):
+        # the sums written out: numpy sums a row of three the same way, left to right
+        opposite = (n1[:, 0] * n2[:, 0] + n1[:, 1] * n2[:, 1] + n1[:, 2] * n2[:, 2]) < 0
+        if formulation == "conventional":
+            s = n1 + n2
+            opposite &= np.sqrt(s[:, 0] * s[:, 0] + s[:, 1] * s[:, 1] + s[:, 2] * s[:, 2]) < 1e-6
+    if not opposite.all():
+        solved = (status == _CONVERGED) | (status == _OFF_FLANK)
+        status[solved & ~opposite] = _WRONG_ROOT
+    ulo, uhi, vlo, vhi = pair._flank2_limits
+    outside2 = ~((u2 >= ulo) & (u2 <= uhi) & (v2 >= vlo) & (v2 <= vhi))
+    if outside2.any():
+        status[(status == _CONVERGED) & outside2] = _OFF_FLANK
+    return status
+
+
+def _final_status_one(pair, formulation, status, n1, n2, u2, v2):
+    """:func:`_final_status` of one point: the same tests on Python floats (NaN fails them alike)."""
+    a, b = n1[0].tolist(), n2[0].tolist()
+    opposite = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < 0
+    if formulation == "conventional":
+        s = [x + y for x, y in zip(a, b)]
+        opposite = opposite and math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) < 1e-6
+    st = int(status[0])
+    if st in (_CONVERGED, _OFF_FLANK) and not opposite:
+        st = _WRONG_ROOT
+    ulo, uhi, vlo, vhi = pair._flank2_limits
+    u, v = float(u2[0]), float(v2[0])
+    if st == _CONVERGED and not (u >= ulo and u <= uhi and v >= vlo and v <= vhi):
+        st = _OFF_FLANK
+    status[0] = st
+    return status
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):

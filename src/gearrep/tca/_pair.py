@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cached_property
 from typing import ClassVar
@@ -156,6 +157,33 @@ class GearPair:
             "O2": tuple(float(x) for x in self.O2),
         }
 
+    def _free_bounds(self, free: tuple) -> tuple:
+        """(lower, upper) bounds of the free unknowns ``free`` (indices into (u1, v1, u2, v2, phi2))
+        of a contact solve, prepared once per pair and choice of free unknowns."""
+        cache = self.__dict__.setdefault("_free_bounds_cache", {})
+        if free not in cache:
+            lo = np.concatenate([self.lower1, self.lower2, [-np.inf]])
+            hi = np.concatenate([self.upper1, self.upper2, [np.inf]])
+            cache[free] = (lo[list(free)], hi[list(free)])
+        return cache[free]
+
+    @cached_property
+    def _mid_flanks(self) -> tuple:
+        """(u, v) at the middle of each flank's domain (0 where a bound is infinite), the
+        default start of :func:`gearrep.tca.default_start`."""
+        return tuple(
+            np.where(np.isfinite(lo + hi), 0.5 * (lo + hi), 0.0)
+            for lo, hi in ((self.lower1, self.upper1), (self.lower2, self.upper2))
+        )
+
+    @cached_property
+    def _flank2_limits(self) -> tuple:
+        """(u_lo, u_hi, v_lo, v_hi) of member 2's flank with a relative slack of 1e-12 (a solved
+        point beyond them is OFF_FLANK)."""
+        tol2 = 1e-12 * (1 + np.abs(np.concatenate([self.lower2, self.upper2])))
+        lo, hi = self.lower2, self.upper2
+        return (lo[0] - tol2[0], hi[0] + tol2[2], lo[1] - tol2[1], hi[1] + tol2[3])
+
     def R1(self, phi1):
         """Rotation of member 1, Rz(phi1)."""
         return rot_z(phi1)
@@ -183,7 +211,8 @@ def transmission_error(phi1, phi2, n1, n2, phi10=0.0, phi20=0.0):
     phi2 must be measured in the driven sense (see module docstring); TE > 0: member 2 leads.
     """
     for name, n in (("n1", n1), ("n2", n2)):
-        if not (np.isfinite(n) and n > 0):
+        ok = (math.isfinite(n) and n > 0) if type(n) in (int, float) else (np.isfinite(n) and n > 0)
+        if not ok:
             raise ValueError(f"{name} must be > 0, got {n!r}")
     phi1 = np.asarray(phi1, float)
     phi2 = np.asarray(phi2, float)
