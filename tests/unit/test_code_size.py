@@ -20,13 +20,6 @@ MAX_FUNCTION_LOC = 80
 MAX_FILE_LINES = 900
 SOURCES = sorted((ROOT / "src" / "gearrep").rglob("*.py")) + sorted((ROOT / "workflow" / "scripts").glob("*.py"))
 
-#: functions still above the limit, each split on another branch of the same session; the lead
-#: removes this list (and this comment) after merging that branch. An entry that is no longer
-#: above the limit, or no longer exists, fails the test.
-ALLOWED_LONG = {
-    "src/gearrep/tca/_formulations.py:solve_contact",
-    "src/gearrep/solve.py:newton",
-}
 
 _SCOPES = (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
 
@@ -110,11 +103,8 @@ def f(x):
 
 
 def test_no_function_above_80_lines_of_code():
-    long = _long_functions()
-    over = {k: n for k, n in long.items() if k not in ALLOWED_LONG}
+    over = _long_functions()
     assert not over, f"functions above {MAX_FUNCTION_LOC} lines of code (split them): {over}"
-    stale = sorted(ALLOWED_LONG - set(long))
-    assert not stale, f"no longer above {MAX_FUNCTION_LOC} lines of code (or gone): remove from ALLOWED_LONG {stale}"
 
 
 @pytest.mark.parametrize("path", SOURCES, ids=lambda p: p.relative_to(ROOT).as_posix())
