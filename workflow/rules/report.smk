@@ -47,16 +47,12 @@ SEED_CHECKS = {
 }
 
 
-def _parity_published(seed):
-    return published_files(f"values_{seed}_*.csv", f"claims_{seed}.csv")
-
-
 rule report_parity:
     input:
         runner=STEP_RUNNER,
         script="workflow/scripts/report_parity.py",
         checks=lambda wildcards: SEED_CHECKS[wildcards.seed],
-        published=lambda wildcards: _parity_published(wildcards.seed),
+        published=lambda wildcards: published_files(f"values_{wildcards.seed}_*.csv", f"claims_{wildcards.seed}.csv"),
         code=script_lib("workflow/scripts/report_parity.py"),
     output:
         directory("results/parity/{seed}"),
@@ -72,7 +68,10 @@ rule report_parity:
         # run by the step runner's warm process, matplotlib preloaded
         request=lambda wc: script_request(
             "workflow/scripts/report_parity.py",
-            input={"checks": SEED_CHECKS[wc.seed], "published": _parity_published(wc.seed)},
+            input={
+                "checks": SEED_CHECKS[wc.seed],
+                "published": published_files(f"values_{wc.seed}_*.csv", f"claims_{wc.seed}.csv"),
+            },
             output={"parity": f"results/parity/{wc.seed}"},
             log=f"results/logs/parity_{wc.seed}.log",
             timing=f"results/benchmarks/parity/{wc.seed}.tsv",
