@@ -28,6 +28,7 @@ from gearrep.replications import tseng_curvature as tc
 from gearrep.replications import tseng_tca as tca_rep
 from gearrep.replications.tseng_tca import studies as ts
 from gearrep.solve import Status
+from gearrep.surfaces import catt as catt_surf
 from gearrep.surfaces.catt import (
     CATTFlank,
     CATTGearData,
@@ -263,7 +264,7 @@ def test_catt_cutter_radius_sweep_flank_points(side, record_conditions):
 
 def _catt_mesh(RT, pair_id):
     design = {"name": "stress", "group": "stress", "z1": 19, "z2": 31, "module": 4.0, "R_T": RT, "face_width": 40.0}
-    return catt_rep.assemble(design, pair_id, CATT_PRM)
+    return catt_surf.assemble(design, pair_id, CATT_PRM)
 
 
 def _check_catt_tca(mesh, phi1, cp):
@@ -296,9 +297,9 @@ def test_catt_tca_cutter_radius_sweep_and_straight_limit(pair_id, record_conditi
     per_rt = {}
     for RT in RC_SWEEP_MM + [1e5, 1e6, 1e7]:
         mesh = _catt_mesh(RT, pair_id)
-        lim = catt_rep.path_limits(mesh)
+        lim = catt_surf.path_limits(mesh)
         phi1 = np.linspace(lim["phi1_lo"], lim["phi1_hi"], 7)
-        cp = catt_rep.solve_cycle(mesh, phi1, {"start_offset_mm": 5.0, "tol": CATT_TCA_TOL, "maxiter": 50})
+        cp = catt_surf.solve_cycle(mesh, phi1, {"start_offset_mm": 5.0, "tol": CATT_TCA_TOL, "maxiter": 50})
         ok = _check_catt_tca(mesh, phi1, cp)
         if RT <= 5e4:
             assert np.all(ok), (RT, cp.status)
@@ -327,10 +328,10 @@ def test_catt_tca_random_starts(pair_id, record_conditions):
     n = 200
     for RT in (50.0, 500.0, 5000.0, 50000.0):
         mesh = _catt_mesh(RT, pair_id)
-        lim = catt_rep.path_limits(mesh)
+        lim = catt_surf.path_limits(mesh)
         for phi in np.linspace(lim["phi1_lo"], lim["phi1_hi"], 5)[1:-1]:
             phi1 = np.full(n, phi)
-            start = catt_rep.starts(mesh, phi1, 0.0)
+            start = catt_surf.starts(mesh, phi1, 0.0)
             start[:, 0] += rng.uniform(-15, 15, n) / mesh.f1.rho0
             start[:, 2] += rng.uniform(-15, 15, n) / mesh.f2.rho0
             start[:, [1, 3]] += rng.uniform(-0.02, 0.02, (n, 2))

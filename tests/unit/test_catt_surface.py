@@ -280,3 +280,25 @@ def test_printed_eq19_needs_R_I_in_its_first_term():
     printed = HI - HII + RII * np.cos(2 * s0) - RII * np.cos(2 * (s0 - sigma))
     np.testing.assert_allclose(corrected, direct, rtol=1e-12, atol=1e-15)
     assert np.max(np.abs(printed - direct)) > 0.1 * np.max(np.abs(direct))
+
+
+def test_assembled_pair_refuses_bad_input_naming_the_argument():
+    from gearrep.surfaces.catt import assemble, path_limits, solve_cycle
+
+    design = {"z1": 21, "z2": 37, "module": 4.0, "R_T": 100.0, "face_width": 30.0}
+    prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
+    with pytest.raises(ValueError, match="pair_id"):
+        assemble(design, "C", prm)
+    with pytest.raises(ValueError, match="design is missing the keys \\['R_T'\\]"):
+        assemble({k: v for k, v in design.items() if k != "R_T"}, "A", prm)
+    with pytest.raises(ValueError, match="prm is missing"):
+        assemble(design, "A", {"pressure_angle_deg": 20.0})
+    with pytest.raises(ValueError, match="mesh must be"):
+        path_limits(design)
+    mesh = assemble(design, "B", prm)
+    lim = path_limits(mesh)
+    assert lim["phi1_lo"] < 0 < lim["phi1_hi"] and 1 < lim["contact_ratio"] < 2
+    with pytest.raises(ValueError, match="prm is missing"):
+        solve_cycle(mesh, np.array([0.0]), {"tol": 1e-12, "maxiter": 50})
+    cp = solve_cycle(mesh, np.array([0.0]), {"start_offset_mm": 2.0, "tol": 1e-12, "maxiter": 50})
+    assert cp.converged.all() and abs(cp.position[0, 2]) < 1e-6  # the middle section at the pitch point

@@ -96,13 +96,9 @@ def test_import_reader_sees_relative_and_nested_imports():
 
 
 CLI = sorted((PKG / "cli").glob("*.py"))
-#: what the command still takes from the replication packages (the Novikov-Wildhaber and CATT
-#: families), by module: general machinery to move into the library as the hobbed family's was;
-#: this list may only shrink
-CLI_REPLICATION_DEBT = {
-    "gearrep.cli.analysis": {"gearrep.replications.catt.assembly", "gearrep.replications.nasa.geometry"},
-    "gearrep.cli.design": {"gearrep.replications.catt.assembly", "gearrep.replications.nasa.geometry"},
-}
+#: what the command still takes from the replication packages, by module: none (the Novikov-
+#: Wildhaber, CATT and hobbed families are library code); this list may only stay empty
+CLI_REPLICATION_DEBT: dict[str, set[str]] = {}
 
 
 @pytest.mark.parametrize("path", CLI, ids=_name)

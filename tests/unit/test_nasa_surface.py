@@ -280,3 +280,27 @@ def test_pointing_limit_with_q_below_the_pitch_line():
         for l in (np.cos(an) / Pn, -np.cos(an) / Pn)
     ]
     assert res[1][1] == pytest.approx(res[0][1], abs=1e-10) and res[1][2] == pytest.approx(res[0][2], abs=1e-10)
+
+
+def test_member_flank_and_aligned_start_refuse_bad_input_naming_the_argument():
+    from gearrep.surfaces.novikov import aligned_start, member_flank
+    from gearrep.tca import GearPair, solve_contact
+
+    an, Pn, beta = 25 * DEG, 5.0, 15 * DEG
+    l = np.cos(an) / Pn
+    with pytest.raises(ValueError, match="member"):
+        member_flank(20, Pn, 0.4, an, l, beta, "wheel")
+    with pytest.raises(ValueError, match="N \\(tooth number\\)"):
+        member_flank(0, Pn, 0.4, an, l, beta, "pinion")
+    with pytest.raises(ValueError, match="beta_rack"):
+        member_flank(20, Pn, 0.4, an, l, beta, "pinion", beta_rack=2.0)
+    f1 = member_flank(20, Pn, 0.42, an, l, -beta, "pinion")
+    f2 = member_flank(40, Pn, 0.39, an, l, -beta, "gear")
+    pair = GearPair(f1, f2, 20, 40, f1.r_p + f2.r_p, phase2=0.0)
+    with pytest.raises(ValueError, match="pair must"):
+        aligned_start(object(), 0.0)
+    with pytest.raises(ValueError, match="phi1"):
+        aligned_start(pair, np.nan)
+    phi = np.array([-0.05, 0.0, 0.05])
+    c = solve_contact(pair, phi, aligned_start(pair, phi), formulation="conventional", tol=1e-12, maxiter=30)
+    assert c.converged.all()

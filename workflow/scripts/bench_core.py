@@ -72,6 +72,7 @@ def novikov_case(rng, n, worm=False):
     worm-ground (hob-generated) pinion, under the study's 3 arcmin dgamma, from the study's
     starts (aligned contact) and with its solver settings."""
     from gearrep.replications.nasa import geometry as ng
+    from gearrep.surfaces.novikov import aligned_start
 
     s, d = study("nasa")
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
@@ -92,19 +93,20 @@ def novikov_case(rng, n, worm=False):
         )
     per = 2 * np.pi / pair.n1
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
-    start = ng.worm_start(pair, phi) if worm else ng.aligned_start(pair, phi)
+    start = ng.worm_start(pair, phi) if worm else aligned_start(pair, phi)
     return pair, phi, start, {"tol": s["tol"], "maxiter": s["maxiter"]}
 
 
 def catt_case(rng, n):
     """Seed 004: the sec. 4 CATT pair, primary flanks, over its real path, the study's starts."""
-    from gearrep.replications.catt import assembly as ca
+    from gearrep.replications.catt.assembly import PRIMARY
     from gearrep.replications.catt.bench import BENCH_DESIGN
     from gearrep.replications.catt.design import prm
+    from gearrep.surfaces import catt as ca
 
     s, d = study("catt")
     q = prm(s, d)
-    mesh = ca.assemble(d.by_name(BENCH_DESIGN), ca.PRIMARY[0], q)
+    mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
     phi = rng.uniform(lim["phi1_lo"], lim["phi1_hi"], n)
     return mesh.gear_pair, phi, ca.starts(mesh, phi, q["start_offset_mm"]), {"tol": q["tol"], "maxiter": q["maxiter"]}

@@ -101,10 +101,12 @@ def thesis_cases(res):
 
 def novikov_catt_cases(res):
     """Seed 002's profile-crowned Novikov-Wildhaber pair and seed 004's CATT pair (as the bench)."""
-    from gearrep.replications.catt import assembly as ca
+    from gearrep.replications.catt.assembly import PRIMARY
     from gearrep.replications.catt.bench import BENCH_DESIGN
     from gearrep.replications.catt.design import prm
     from gearrep.replications.nasa import geometry as ng
+    from gearrep.surfaces import catt as ca
+    from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import Misalignment
     from gearrep.units import ARCMIN
 
@@ -117,10 +119,10 @@ def novikov_catt_cases(res):
     rng = np.random.default_rng(3)
     phi = rng.uniform(-0.5 * per, 0.5 * per, 200)
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
-    cases(res, "novikov", pair, phi, ng.aligned_start(pair, phi), "conventional", kw, 20)
+    cases(res, "novikov", pair, phi, aligned_start(pair, phi), "conventional", kw, 20)
     s, d = study("catt")
     q = prm(s, d)
-    mesh = ca.assemble(d.by_name(BENCH_DESIGN), ca.PRIMARY[0], q)
+    mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
     phi = rng.uniform(lim["phi1_lo"], lim["phi1_hi"], 1000)
     st = ca.starts(mesh, phi, q["start_offset_mm"])

@@ -6,7 +6,7 @@ solved exactly, contact ratio, TE envelope; line contact of an aligned unmodifie
 the mid-face section v1 = 0). Novikov-Wildhaber and CATT pairs are solved with the conventional
 formulation on a grid of pinion angles (the starts of their replications); their engagement
 interval is where the contact lies on the face width (Novikov) or inside the tip circles on the
-middle section (CATT, closed form of :func:`gearrep.replications.catt.assembly.path_limits`), and
+middle section (CATT, closed form of :func:`gearrep.surfaces.catt.path_limits`), and
 the TE over the meshing cycle is the upper envelope of the neighbouring tooth pairs
 (:func:`gearrep.meshing.pair_te_curves`, :func:`gearrep.meshing.upper_envelope`) in the drive sense.
 """
@@ -83,11 +83,11 @@ def contact_at(d, phi1, quick: bool = False, face: bool = True):
                 return solve_contact(d.pair, phi1, v1=0.0, tol=s["tol"], maxiter=s["maxiter"]), True
             return c, False
         if d.family == "catt":
-            from ..replications.catt.assembly import solve_cycle
+            from ..surfaces.catt import solve_cycle
 
             prm = {"start_offset_mm": 0.5 * d.values["module_mm"], "tol": s["tol"], "maxiter": s["maxiter"]}
             return _catt_mask(d, solve_cycle(d.mesh, phi1, prm)), False
-        from ..replications.nasa.geometry import aligned_start
+        from ..surfaces.novikov import aligned_start
 
         # plain Newton from the aligned contact first (7 iterations where the damped one takes ~20
         # under a shaft-angle error, same root); the rows it misses get the damped solve
@@ -117,7 +117,7 @@ def _window(d):
     """Pinion-angle window holding one tooth pair's engagement, and the engagement limits if known."""
     p1 = 2.0 * np.pi / d.pair.n1
     if d.family == "catt":
-        from ..replications.catt.assembly import path_limits
+        from ..surfaces.catt import path_limits
 
         lim = path_limits(d.mesh)
         return (lim["phi1_lo"], lim["phi1_hi"]), (lim["phi1_lo"], lim["phi1_hi"])

@@ -466,7 +466,7 @@ def _involute(v) -> Design:
 
 
 def _novikov(v) -> Design:
-    from ..replications.nasa.geometry import make_flank
+    from ..surfaces.novikov import member_flank
     from ..tca import GearPair
 
     if not v["gear"]["rack_radius_modules"] > v["pinion"]["rack_radius_modules"]:
@@ -478,17 +478,17 @@ def _novikov(v) -> Design:
     m = v["module_mm"]
     an = math.radians(v["pressure_angle_deg"])
     beta = math.radians(v["helix_angle_deg"]) * (-1.0 if v["hand"] == "left" else 1.0)
-    d = {"N1": v["pinion"]["teeth"], "N2": v["gear"]["teeth"], "P_n_per_in": 1.0 / m}  # lengths in mm here
+    n1, n2 = v["pinion"]["teeth"], v["gear"]["teeth"]
     flanks = []
-    for member in ("pinion", "gear"):
+    for member, N in (("pinion", n1), ("gear", n2)):
         rho = v[member]["rack_radius_modules"] * m
-        f = make_flank(d, 1.0 / (2.0 * rho), an, math.cos(an) * m, beta, member, tol=1e-13)
+        f = member_flank(N, 1.0 / m, 1.0 / (2.0 * rho), an, math.cos(an) * m, beta, member, tol=1e-13)  # lengths in mm
         half = 0.5 * v["face_width_mm"] / math.cos(beta)
         f.lower = np.array([-1.2 * m, -1.5 * half])
         f.upper = np.array([1.2 * m, 1.5 * half])
         flanks.append(f)
     a = flanks[0].r_p + flanks[1].r_p
-    pair = GearPair(flanks[0], flanks[1], d["N1"], d["N2"], a, misalignment=_misalignment(v), phase2=0.0)
+    pair = GearPair(flanks[0], flanks[1], n1, n2, a, misalignment=_misalignment(v), phase2=0.0)
     return Design(v, "novikov", pair)
 
 
@@ -506,7 +506,7 @@ def _middle_section_undercut(member, z, module, alpha_deg, face_width, addendum,
 
 
 def _catt(v) -> Design:
-    from ..replications.catt.assembly import assemble
+    from ..surfaces.catt import assemble
 
     m, B, R_T = v["module_mm"], v["face_width_mm"], v["cutter_radius_mm"]
     least = 0.5 * B + math.pi * m

@@ -84,13 +84,14 @@ Corrections to seed 004 (evidence in tests/unit/test_catt_surface.py)
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import frames
 from ..solve import SolveResult, Status, newton
-from ..surface import Surface, SurfacePoint
+from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
     "CATTGearData",
@@ -101,6 +102,13 @@ __all__ = [
     "middle_section_curvatures",
     "eq28_profile",
     "eq29_profile",
+    "PAIRS",
+    "Mesh",
+    "gear_data",
+    "assemble",
+    "path_limits",
+    "starts",
+    "solve_cycle",
 ]
 
 
@@ -502,3 +510,150 @@ def eq29_profile(gear: CATTGearData, upper: bool, phi1):
     x1 = A * np.cos(psi) - R * np.sin(psi) * c
     y1 = A * np.sin(psi) + R * np.cos(psi) * c
     return x1, y1
+
+
+# ---------------------------------------------------------------------------------------------
+# The assembled pair: pinion and turned-over gear cut by the same cutter, in gearrep.tca frames
+#
+# Member 1 = pinion (z1), member 2 = gear (z2), both cut by one cutter (same R_T, module,
+# pressure angle). Flank pair "A" = pinion convex (side +1) on gear concave (side -1), pair "B" =
+# pinion concave on gear convex. The gear is turned over ((x, y, z) -> (x, -y, -z),
+# :func:`turn_over`) so that its circular tooth traces bend the same way as the pinion's in the
+# common pitch plane. Frames are those of :class:`gearrep.tca.GearPair` (pinion axis z through the
+# origin, gear axis through (R1 + R2, 0, 0)); each flank is pre-rotated so that its middle-section
+# pitch point lies at the pitch point at phi1 = phi2 = 0. Lengths in mm, angles in rad.
+
+PAIRS = {"A": (1, -1), "B": (-1, 1)}  #: flank pair -> (pinion side, gear side); +1 convex, -1 concave
+_DESIGN_KEYS = ("z1", "z2", "module", "R_T", "face_width")
+_PRM_KEYS = ("pressure_angle_deg", "addendum", "clearance")
+
+
+@dataclass
+class Mesh:
+    """One assembled CATT pair with flank pair ``pair_id`` ("A" or "B"): the design dict it was
+    built from, the gear data and flanks of both members, the flanks mounted in the pair's frames
+    (``p1``, ``p2``) and the :class:`gearrep.tca.GearPair` (``gear_pair``)."""
+
+    design: dict
+    pair_id: str
+    g1: CATTGearData
+    g2: CATTGearData
+    f1: CATTFlank
+    f2: CATTFlank
+    p1: RotatedSurface
+    p2: RotatedSurface
+    gear_pair: object
+
+    @property
+    def s1(self):
+        """Side of the pinion flank (+1 convex, -1 concave)."""
+        return self.f1.side
+
+    @property
+    def ratio(self):
+        """Gear ratio z1 / z2 (phi2 = ratio phi1)."""
+        return self.g1.n_teeth / self.g2.n_teeth
+
+
+def _require_keys(name: str, d: dict, keys) -> None:
+    if not isinstance(d, dict):
+        raise ValueError(f"{name} must be a dict with keys {list(keys)}, got {type(d).__name__}")
+    missing = [k for k in keys if k not in d]
+    if missing:
+        raise ValueError(f"{name} is missing the keys {missing} (needs {list(keys)})")
+
+
+def gear_data(design: dict, prm: dict, member: int) -> CATTGearData:
+    """Gear data of member 1 (pinion, ``design["z1"]`` teeth) or 2 (gear, ``z2``) of ``design``
+    (``module``, cutter radius ``R_T`` and ``face_width`` in mm); ``prm`` brings the pressure angle
+    ``pressure_angle_deg`` (deg) and the ``addendum`` and ``clearance`` coefficients (in modules)."""
+    _require_keys("design", design, _DESIGN_KEYS)
+    _require_keys("prm", prm, _PRM_KEYS)
+    if member not in (1, 2):
+        raise ValueError(f"member must be 1 (pinion) or 2 (gear), got {member!r}")
+    return CATTGearData(
+        design["z1"] if member == 1 else design["z2"],
+        design["module"],
+        design["R_T"],
+        design["face_width"],
+        np.deg2rad(prm["pressure_angle_deg"]),
+        prm["addendum"],
+        prm["clearance"],
+    )
+
+
+def assemble(design: dict, pair_id: str, prm: dict) -> Mesh:
+    """Mount the pinion and the turned-over gear of ``design`` (keys ``z1``, ``z2``, ``module``,
+    ``R_T``, ``face_width``; mm) with flank pair ``pair_id`` (a key of :data:`PAIRS`) in the frames
+    of :mod:`gearrep.tca`; ``prm`` as in :func:`gear_data`."""
+    from ..tca import GearPair
+
+    if pair_id not in PAIRS:
+        raise ValueError(f"pair_id must be one of {sorted(PAIRS)}, got {pair_id!r}")
+    s1, s2 = PAIRS[pair_id]
+    g1, g2 = gear_data(design, prm, 1), gear_data(design, prm, 2)
+    f1, f2 = CATTFlank(g1, s1), CATTFlank(g2, s2)
+    Q1 = frames.rot_z(0.5 * np.pi - s1 * g1.q / g1.r_p)
+    Q2 = frames.rot_z(0.5 * np.pi + s2 * g2.q / g2.r_p) @ turn_over()
+    p1, p2 = RotatedSurface(f1, Q1), RotatedSurface(f2, Q2)
+    gp = GearPair(p1, p2, g1.n_teeth, g2.n_teeth, g1.r_p + g2.r_p, phase2=0.0)
+    return Mesh(design, pair_id, g1, g2, f1, f2, p1, p2, gp)
+
+
+def path_limits(mesh: Mesh) -> dict:
+    """Real meshing cycle on the middle section in mesh pinion angle phi1 (closed form).
+
+    The middle-section contact at pinion angle phi1 lies at line-of-action coordinate D = R1 phi1
+    (mm) from the pitch point; radii r_i^2 = c^2 D^2 - 2 s_i a_s c R_i D + R_i^2. The cycle is
+    where both radii are below the tips. Returns ``phi1_lo``, ``phi1_hi`` (rad), ``D_lo``,
+    ``D_hi`` (mm) and the transverse ``contact_ratio``."""
+    if not isinstance(mesh, Mesh):
+        raise ValueError(f"mesh must be a gearrep.surfaces.catt.Mesh (from assemble), got {type(mesh).__name__}")
+    g1, g2 = mesh.g1, mesh.g2
+    c, a = np.cos(g1.pressure_angle), np.sin(g1.pressure_angle)
+    lims = []
+    for g, s in ((g1, mesh.f1.side), (g2, mesh.f2.side)):
+        A, B, C = c * c, -2 * s * a * c * g.r_p, g.r_p**2 - g.r_a**2  # c^2 D^2 - 2 s a c R D + R^2 - r_a^2 = 0
+        disc = math.sqrt(B * B - 4 * A * C)
+        lims.append(sorted([(-B - disc) / (2 * A), (-B + disc) / (2 * A)]))
+    Dlo = max(lims[0][0], lims[1][0])
+    Dhi = min(lims[0][1], lims[1][1])
+    pb = 2 * np.pi * g1.r_b / g1.n_teeth
+    return {
+        "phi1_lo": Dlo / g1.r_p,
+        "phi1_hi": Dhi / g1.r_p,
+        "D_lo": Dlo,
+        "D_hi": Dhi,
+        "contact_ratio": c * (Dhi - Dlo) / pb,
+    }
+
+
+def starts(mesh: Mesh, phi1, offset_mm):
+    """TCA starting points (theta1, phi_g1, theta2, phi_g2, phi2) at mesh pinion angles ``phi1``
+    (rad): the middle-section estimate moved ``offset_mm`` (mm) off the middle section on both
+    members and slightly off in roll and phi2 (so that the solve must find the contact)."""
+    if not np.isfinite(float(offset_mm)):
+        raise ValueError(f"offset_mm must be finite, got {offset_mm!r}")
+    g1, g2 = mesh.g1, mesh.g2
+    phi1 = np.asarray(phi1, float)
+    th1 = offset_mm / mesh.f1.rho0
+    th2 = -0.7 * offset_mm / mesh.f2.rho0
+    pg1 = phi1 - mesh.f1.side * g1.q / g1.r_p + 2e-3
+    phi2 = mesh.ratio * phi1
+    pg2 = phi2 - mesh.f2.side * g2.q / g2.r_p - 1.5e-3
+    n = len(phi1)
+    return np.column_stack([np.full(n, th1), pg1, np.full(n, th2), pg2, phi2 + 1e-3])
+
+
+def solve_cycle(mesh: Mesh, phi1, prm: dict):
+    """TCA at mesh pinion angles ``phi1`` (rad) by :func:`gearrep.tca.solve_contact`
+    (conventional) from :func:`starts`; ``prm`` brings ``start_offset_mm`` (mm), ``tol`` and
+    ``maxiter``. Returns the :class:`gearrep.tca.ContactPoints` (status per point)."""
+    from ..tca import solve_contact
+
+    _require_keys("prm", prm, ("start_offset_mm", "tol", "maxiter"))
+    start = starts(mesh, phi1, prm["start_offset_mm"])
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        return solve_contact(
+            mesh.gear_pair, phi1, start, formulation="conventional", tol=prm["tol"], maxiter=prm["maxiter"]
+        )

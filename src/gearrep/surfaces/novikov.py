@@ -40,6 +40,8 @@ __all__ = [
     "transverse_point",
     "pointing_limit",
     "DiskGroundPinion",
+    "member_flank",
+    "aligned_start",
 ]
 
 
@@ -52,6 +54,57 @@ def pitch_radius(N: int, P_n: float, beta: float) -> float:
     if not (np.isfinite(beta) and abs(beta) < np.pi / 2):
         raise ValueError(f"beta (helix angle) must be in (-pi/2, pi/2) rad, got {beta!r}")
     return float(N / (2.0 * P_n * np.cos(beta)))
+
+
+def member_flank(
+    N: int,
+    P_n: float,
+    a: float,
+    alpha_n: float,
+    l: float,
+    beta: float,
+    member: str,
+    tol: float = 1e-13,
+    beta_rack: float | None = None,
+) -> RackGeneratedFlank:
+    """Flank of the pinion (``member="pinion"``, member_side -1) or the gear (``"gear"``, +1) of a
+    Novikov-Wildhaber pair: the :class:`RackGeneratedFlank` of rack coefficient ``a`` (1/length),
+    normal pressure angle ``alpha_n`` (rad) and |QP| = ``l`` (length) generated on the pitch
+    cylinder of ``N`` teeth, normal diametral pitch ``P_n`` (1/length) and helix angle ``beta``
+    (rad); the rack's helix angle is ``beta_rack`` (default ``beta``; the pinion's lead-angle error
+    is beta - d_lambda with the pitch cylinder kept). The outward sign is chosen so that the
+    pinion's normal is the rack normal (its curvatures are then negative in gearrep's convention:
+    a convex surface) and the gear's the opposite. Lengths in one unit (inches for P_n in 1/in)."""
+    if member not in ("pinion", "gear"):
+        raise ValueError(f"member must be 'pinion' or 'gear', got {member!r}")
+    if beta_rack is not None and not (np.isfinite(beta_rack) and abs(beta_rack) < np.pi / 2):
+        raise ValueError(f"beta_rack (rack helix angle) must be in (-pi/2, pi/2) rad, got {beta_rack!r}")
+    side = -1 if member == "pinion" else 1
+    r_p = pitch_radius(N, P_n, beta)
+    f = RackGeneratedFlank(a, alpha_n, l, beta if beta_rack is None else beta_rack, r_p, side, tol=tol)
+    rec = f.solve(0.0, 0.0)
+    s = int(np.sign(np.dot(f.evaluate(np.array([0.0]), np.array([0.0])).normal[0], rec.normal[0])))
+    f.outward_sign = s if member == "pinion" else -s
+    return f
+
+
+def aligned_start(pair, phi1) -> np.ndarray:
+    """Start (u1, theta1, u2, theta2, phi2) of the conventional TCA of a pair of
+    :class:`RackGeneratedFlank` in :class:`gearrep.tca.GearPair` frames at pinion angles ``phi1``
+    (rad): the aligned contact on the helices u = 0 (both rolling angles are -phi1 and
+    -(N1/N2) phi1: module doc), theta solved from the closed-form rolling angle
+    (:meth:`RackGeneratedFlank.rolling_angle`)."""
+    if not all(hasattr(getattr(pair, k, None), "rolling_angle") for k in ("flank1", "flank2")):
+        raise ValueError(f"pair must have two rack-generated flanks (flank1, flank2 with rolling_angle), got {pair!r}")
+    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    if not np.all(np.isfinite(phi1)):
+        raise ValueError(f"phi1 (pinion angles, rad) must be finite, got {phi1!r}")
+    out = []
+    for f, ang in ((pair.flank1, -phi1), (pair.flank2, -pair.ratio * phi1)):
+        ph0, _, _, ph_t = f.rolling_angle(np.zeros_like(phi1), np.zeros_like(phi1))
+        out.append((ang - ph0) / ph_t)
+    z = np.zeros_like(phi1)
+    return np.column_stack([z, out[0], z, out[1], pair.ratio * phi1])
 
 
 class RackGeneratedFlank(Surface):

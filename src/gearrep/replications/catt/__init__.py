@@ -7,8 +7,9 @@ tooth-line radius and gear-tooth-number sweeps; tooth thickness vs R_T, eq 28-29
 curvature and the elastic-approach ellipse after Litvin & Fuentes, "Gear Geometry and Applied
 Theory", 2nd ed., sec. 9.2-9.3 (= seed 004 eq 21-26); TCA by :func:`gearrep.tca.solve_contact`.
 
-Modules: :mod:`.design` (the paper's data, cross-field checks), :mod:`.assembly` (the mounted
-pair, flank pairs A/B, readings R1/R2 of the abscissa, closed forms), :mod:`.contact` (curvatures
+Modules: :mod:`.design` (the paper's data, cross-field checks), :mod:`.assembly` (readings
+R1/R2 of the abscissa and middle-section closed forms on the pair mounted by
+:func:`gearrep.surfaces.catt.assemble`), :mod:`.contact` (curvatures
 and ellipse at TCA points), :mod:`.profiles` and :mod:`.gap` (sections, eq 28-29, thickness, exact
 separation), :mod:`.studies` (one function per job), :mod:`.sweeps` and :mod:`.claims` (claim
 verdicts and check records), :mod:`.model` (the paper's printed eq 20 and 23-26 as evidence),
@@ -22,16 +23,10 @@ from .._face import FACE, Job, run_jobs
 from . import studies as _studies
 from .assembly import (  # noqa: F401  (the names tests and the stress suite use)
     PAIR_NAMES,
-    PAIRS,
     PRIMARY,
     READINGS,
-    Mesh,
-    assemble,
     contact_radii,
-    path_limits,
     reading_to_mesh,
-    solve_cycle,
-    starts,
 )
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
 from .claims import checks, claim_verdicts  # noqa: F401
@@ -43,17 +38,11 @@ __all__ = [
     "Design",
     "claim_verdicts",
     "contact_geometry",
-    "PAIRS",
     "PAIR_NAMES",
     "READINGS",
     "PRIMARY",
-    "Mesh",
-    "assemble",
-    "path_limits",
     "contact_radii",
     "reading_to_mesh",
-    "solve_cycle",
-    "starts",
 ]
 
 SEED = "004"

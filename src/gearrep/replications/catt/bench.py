@@ -6,7 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .assembly import PRIMARY, assemble, path_limits, solve_cycle
+from ...surfaces.catt import assemble, path_limits, solve_cycle
+from .assembly import PRIMARY
 from .contact import contact_geometry
 from .design import Design
 from .design import prm as _prm

@@ -12,7 +12,8 @@ import numpy as np
 import pandas as pd
 
 from ... import checks as _checks
-from .assembly import PAIRS, PRIMARY, READINGS
+from ...surfaces.catt import PAIRS
+from .assembly import PRIMARY, READINGS
 from .sweeps import CycleIndex, curve, verdict_cliff, verdict_sweep
 
 __all__ = ["claim_verdicts", "checks"]

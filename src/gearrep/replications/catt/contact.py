@@ -35,8 +35,9 @@ from ... import ellipse as _ellipse
 from ...frames import rot_z
 from ...solve import Status, status_names
 from ...surface import SurfacePoint
+from ...surfaces.catt import Mesh
 from ...units import ARCSEC
-from .assembly import Mesh, closed_form_ellipse
+from .assembly import closed_form_ellipse
 from .model import eq20_like_indexed
 
 __all__ = ["tip_edges", "gauss_nodes", "clip_area", "contact_geometry", "COLUMNS"]

@@ -10,7 +10,7 @@ import pandas as pd
 
 from ...frames import rot_z
 from ...solve import newton
-from .assembly import Mesh
+from ...surfaces.catt import Mesh
 
 __all__ = ["exact_contact_region"]
 

@@ -11,10 +11,10 @@ from ...surfaces.catt import (
     CATTGearData,
     eq28_profile,
     eq29_profile,
+    gear_data,
     pitch_thickness_closed_form,
     tooth_thickness,
 )
-from .assembly import gear_data
 
 __all__ = ["involute_deviation", "section_shapes", "equation_checks", "thickness_table"]
 

@@ -13,17 +13,13 @@ import numpy as np
 import pandas as pd
 
 from ...surface import fd_derivatives
-from ...surfaces.catt import middle_section_curvatures
+from ...surfaces.catt import PAIRS, assemble, middle_section_curvatures, path_limits, solve_cycle
 from .assembly import (
-    PAIRS,
     PRIMARY,
     READINGS,
-    assemble,
     mesh_to_reading,
-    path_limits,
     pitch_point_closed_form,
     reading_to_mesh,
-    solve_cycle,
 )
 from .contact import contact_geometry, tip_edges
 from .design import Design

@@ -16,7 +16,14 @@ from ... import frames
 from ...curvature import PrincipalCurvatures, principal_curvatures
 from ...curvature_relations import generated_curvatures
 from ...ellipse import elastic_ellipse_at
-from ...surfaces.novikov import DiskGroundPinion, RackGeneratedFlank, WormGeneratedPinion, pitch_radius
+from ...surfaces.novikov import (
+    DiskGroundPinion,
+    RackGeneratedFlank,
+    WormGeneratedPinion,
+    aligned_start,
+    member_flank,
+    pitch_radius,
+)
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import GearPair, solve_contact
 from ...units import DEG
@@ -30,7 +37,6 @@ __all__ = [
     "line_angle",
     "pair_at_Q",
     "make_pair",
-    "aligned_start",
     "contact",
     "make_worm_pair",
     "worm_rack_coefficients",
@@ -48,17 +54,10 @@ def basics(d: dict):
 
 
 def make_flank(d, a, alpha_n, l, beta, member, tol=1e-13, beta_rack=None) -> RackGeneratedFlank:
-    """Pinion (``member='pinion'``, member_side -1) or gear (+1) flank; outward normal chosen so
-    that the pinion's is the rack normal (its curvatures are then negative in gearrep's
-    convention: a convex surface) and the gear's the opposite."""
+    """:func:`gearrep.surfaces.novikov.member_flank` of the report's design ``d`` (tooth number
+    ``N1`` for the pinion, ``N2`` for the gear, ``P_n_per_in``); lengths in inches."""
     N = d["N1"] if member == "pinion" else d["N2"]
-    side = -1 if member == "pinion" else 1
-    r_p = pitch_radius(N, d["P_n_per_in"], beta)
-    f = RackGeneratedFlank(a, alpha_n, l, beta if beta_rack is None else beta_rack, r_p, side, tol=tol)
-    rec = f.solve(0.0, 0.0)
-    s = int(np.sign(np.dot(f.evaluate(np.array([0.0]), np.array([0.0])).normal[0], rec.normal[0])))
-    f.outward_sign = s if member == "pinion" else -s
-    return f
+    return member_flank(N, d["P_n_per_in"], a, alpha_n, l, beta, member, tol=tol, beta_rack=beta_rack)
 
 
 def _report_curvatures(k1, k2, e1, e2, generatrix):
@@ -173,19 +172,6 @@ def make_pair(d, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=
     gear = make_flank(d, 1 / (2 * rho_t), alpha_n, l, h * beta, "gear", tol)
     E = pin.r_p + gear.r_p
     return GearPair(pin, gear, d["N1"], d["N2"], E, misalignment=misalignment, phase2=0.0)
-
-
-def aligned_start(pair, phi1):
-    """Start (u1, theta1, u2, theta2, phi2) of the conventional TCA: the aligned contact on the
-    helices u = 0 (both rolling angles are -phi1 and -(N1/N2) phi1: module doc of
-    :mod:`gearrep.surfaces.novikov`), solved for theta from the closed-form rolling angle."""
-    phi1 = np.atleast_1d(np.asarray(phi1, float))
-    out = []
-    for f, ang in ((pair.flank1, -phi1), (pair.flank2, -pair.ratio * phi1)):
-        ph0, _, _, ph_t = f.rolling_angle(np.zeros_like(phi1), np.zeros_like(phi1))
-        out.append((ang - ph0) / ph_t)
-    z = np.zeros_like(phi1)
-    return np.column_stack([z, out[0], z, out[1], pair.ratio * phi1])
 
 
 def contact(pair, phi1, s: dict, start=None):
