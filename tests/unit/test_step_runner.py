@@ -38,10 +38,15 @@ def request(out, study="tseng_tca", job="ke_table_5_4"):
     }
 
 
-def run(cwd, req, warm):
+def run(cwd, req, warm, timeout=300):
     env = dict(os.environ, GEARREP_WARM_PROCESS="1" if warm else "0")
     return subprocess.run(
-        [sys.executable, str(RUNNER), json.dumps(req)], cwd=cwd, env=env, capture_output=True, text=True, timeout=300
+        [sys.executable, str(RUNNER), json.dumps(req)],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
     )
 
 
@@ -148,5 +153,8 @@ def test_a_failing_script_step_keeps_its_status_and_traceback(tmp_path):
         assert r.returncode == 1
         assert "figure data missing" in r.stderr and "figure data missing" in (tmp_path / "bad.log").read_text()
     # a module that cannot be preloaded: the warm process declines, the client runs the script itself
-    r = run(tmp_path, dict(req, preload=["no_such_module_xyz"]), True)
+    # (and the warm process lets go of the client's stdout/stderr at once: the reader of the
+    # client's output would otherwise wait for the warm process's idle exit, IDLE_SECONDS later)
+    assert run_study_step.IDLE_SECONDS > 20
+    r = run(tmp_path, dict(req, preload=["no_such_module_xyz"]), True, timeout=20)
     assert r.returncode == 1 and "figure data missing" in r.stderr

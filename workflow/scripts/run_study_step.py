@@ -187,6 +187,7 @@ def serve(path: Path) -> None:
             if not _unchanged(sources):
                 conn.close()  # not accepted: the client runs the step itself and replaces us
                 break
+            fds = []
             try:
                 conn.settimeout(5.0)
                 msg, fds, _, _ = socket.recv_fds(conn, 1 << 20, 3)
@@ -195,6 +196,8 @@ def serve(path: Path) -> None:
                 if _preload(req.get("preload", ())):
                     sources = _imported_sources() | {str(Path(__file__).resolve()): sources_self}
             except (OSError, ValueError, ImportError):
+                for fd in fds:  # the client's stdio: held open here, its reader would wait for us
+                    os.close(fd)
                 conn.close()  # not accepted: the client runs the step itself
                 continue
             if os.fork() == 0:
