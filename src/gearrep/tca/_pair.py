@@ -292,23 +292,7 @@ class ContactPoints:
     @staticmethod
     def concatenate(items) -> ContactPoints:
         items = list(items)
-        kw = {
-            f: np.concatenate([getattr(c, f) for c in items])
-            for f in (
-                "u1",
-                "v1",
-                "u2",
-                "v2",
-                "phi1",
-                "phi2",
-                "position",
-                "normal",
-                "te",
-                "residual",
-                "iterations",
-                "status",
-            )
-        }
+        kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in ContactPoints.ARRAYS}
         conds = [c.condition for c in items]
         cond = None if any(c is None for c in conds) else np.concatenate(conds)
         return ContactPoints(formulation=items[0].formulation, condition=cond, **kw)
