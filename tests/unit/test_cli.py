@@ -86,7 +86,10 @@ def test_tca_equals_the_library_route_of_the_readme(spur_run):
     pair = GearPair(
         f1, f2, 52, 72, standard_centre_distance(g1, g2), misalignment=Misalignment(d_gamma_out=np.radians(0.05))
     )
-    cyc = meshing_cycle(pair, n_points=d["analysis"]["n_points"], tol=1e-12)
+    from gearrep.cli.design import check
+
+    # the same solve tolerance: the design's analysis.tol (declared default unless the file sets it)
+    cyc = meshing_cycle(pair, n_points=d["analysis"]["n_points"], tol=check(d).analysis["tol"])
     s = pd.read_csv(spur_run / "summary.csv").iloc[0]
     assert s["contact_ratio"] == cyc.contact_ratio
     assert s["te_peak_to_peak_arcsec"] == pytest.approx(rad2arcsec(cyc.te_peak_to_peak), rel=1e-12, abs=0)

@@ -262,7 +262,7 @@ def tca_tables(d, progress=None) -> dict:
         from ..meshing import meshing_cycle
 
         with np.errstate(all="ignore"):
-            cyc = meshing_cycle(d.pair, v1=0.0 if d.line_contact else None, n_points=n, tol=min(s["tol"], 1e-12))
+            cyc = meshing_cycle(d.pair, v1=0.0 if d.line_contact else None, n_points=n, tol=s["tol"])
         c = cyc.path
         te = pd.DataFrame({"phi1_rad": cyc.phi1, "te_arcsec": cyc.te / ARCSEC, "tooth_pair": cyc.pair_index})
         summary = {
