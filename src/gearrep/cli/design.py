@@ -489,7 +489,7 @@ def _novikov(v) -> Design:
     flanks = []
     for member, N in (("pinion", n1), ("gear", n2)):
         rho = v[member]["rack_radius_modules"] * m
-        f = member_flank(N, 1.0 / m, 1.0 / (2.0 * rho), an, math.cos(an) * m, beta, member, tol=1e-13)  # lengths in mm
+        f = member_flank(N, 1.0 / m, 1.0 / (2.0 * rho), an, math.cos(an) * m, beta, member)  # lengths in mm
         half = 0.5 * v["face_width_mm"] / math.cos(beta)
         f.lower = np.array([-1.2 * m, -1.5 * half])
         f.upper = np.array([1.2 * m, 1.5 * half])
