@@ -182,6 +182,43 @@ def test_square_step_matches_the_svd_step_and_flags_the_same_rows():
     assert np.all(c1 >= c2 * (1 - 1e-9)) and np.all(c1 <= 5 * c2 * (1 + 1e-9))
 
 
+@pytest.mark.parametrize("k", [3, 4, 5, 6])
+def test_gauss_jordan_matches_the_inverse_and_one_system_alone_gets_its_batch_values(k):
+    """The batch elimination (rows of 1-D arrays, per-system pivots) gives J^-1 F and the squared
+    Frobenius norms of J and J^-1 to rounding, and the written-out float version of one system
+    gives bit for bit what that system gets in the batch: random, scaled, pivot-heavy (every
+    pivot choice differs between systems), exactly singular and non-finite systems."""
+    from gearrep.solve import _gauss_jordan, _gauss_jordan_one, _step_square, _step_square_one
+
+    rng = np.random.default_rng(k)
+    n = 400
+    J = rng.normal(size=(n, k, k)) * 10.0 ** rng.uniform(-3, 3, size=(n, 1, 1))
+    J[:50] *= 1.0 + np.tril(np.full((k, k), 1e3), -1)  # large lower triangle: pivots move off the diagonal
+    J[50:60, -1] = 2.0 * J[50:60, 0]  # exactly singular
+    J[60:62, 1, 1] = np.nan
+    F = rng.normal(size=(n, k))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        x, q_inv, q_J = _gauss_jordan(J, F)
+    ok = np.arange(n) >= 62
+    inv = np.linalg.inv(J[ok])
+    np.testing.assert_allclose(x[ok], np.einsum("nij,nj->ni", inv, F[ok]), rtol=1e-7, atol=1e-9 * np.abs(x[ok]).max())
+    np.testing.assert_allclose(q_inv[ok], np.einsum("nij,nij->n", inv, inv), rtol=1e-7)
+    np.testing.assert_allclose(q_J, np.einsum("nij,nij->n", J, J), rtol=1e-13)
+    one = _gauss_jordan_one(k)
+    for r in range(n):
+        try:
+            xr, qi, qj = one(J[r].tolist(), F[r].tolist())
+        except ZeroDivisionError:
+            assert not np.isfinite(q_inv[r]) or r < 62
+            continue
+        np.testing.assert_array_equal(np.array(xr), x[r], err_msg=f"system {r}")
+        np.testing.assert_array_equal([qi, qj], [q_inv[r], q_J[r]], err_msg=f"system {r}")
+    for r in [*range(50, 60), *range(62, n)]:  # steps (the solver zeroes a non-finite Jacobian first)
+        Jr, Fr = J[r : r + 1], F[r : r + 1]
+        for a, b in zip(_step_square_one(Jr, Fr, 1e-13), _step_square(Jr, Fr, 1e-13)):
+            np.testing.assert_array_equal(a, b, err_msg=f"step of system {r}")
+
+
 @pytest.mark.parametrize("damped", [True, False])
 @pytest.mark.parametrize("mode", ["analytic", "numeric", "fun_jac", "least_squares"])
 def test_one_problem_alone_gives_its_batch_record(damped, mode):
