@@ -205,6 +205,11 @@ def test_disk_ground_pinion():
     np.testing.assert_allclose(pin.evaluate(uu, theta).r, x, atol=1e-10)
     plunged = disk.position(uu, psi)
     assert np.all(np.linalg.norm(plunged - x, axis=1) > 1e-6)  # the plunge moves the swept points
+    # pointwise position: the finite differences in one call give the per-offset values
+    assert disk.pointwise
+    e, f = disk.evaluate(uu, psi), fd_derivatives(disk.position, uu, psi, *disk.fd_step)
+    for name in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
+        np.testing.assert_array_equal(getattr(e, name), getattr(f, name), err_msg=name)
     with pytest.raises(ValueError, match="E_d"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 1.0, 0.0)
     with pytest.raises(ValueError, match="a_pd"):

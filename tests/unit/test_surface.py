@@ -28,6 +28,27 @@ def test_fd_derivatives_sphere():
     np.testing.assert_allclose(p.r_vv, r_vv, atol=1e-9 * R)
 
 
+@pytest.mark.parametrize("shape", [(), (7,), (3, 4)])
+def test_fd_derivatives_in_one_call_equal_the_calls_per_offset(shape):
+    """``one_call`` evaluates every stencil point in one call of a pointwise position: the same
+    values bit for bit (scalar, 1-D and 2-D parameters), with one call instead of 33."""
+    rng = np.random.default_rng(3)
+    u, v = rng.uniform(-1.0, 1.0, shape), rng.uniform(0.0, 5.0, shape)
+    calls = []
+
+    def counted(a, b):
+        calls.append(np.shape(a))
+        return sphere(a, b)
+
+    p = fd_derivatives(counted, u, v, 1e-3, 2e-3)
+    n_each = len(calls)
+    q = fd_derivatives(counted, u, v, 1e-3, 2e-3, one_call=True)
+    assert n_each == 33 and len(calls) == 34
+    for f in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
+        np.testing.assert_array_equal(getattr(q, f), getattr(p, f), err_msg=f)
+        assert getattr(q, f).shape == (*shape, 3)
+
+
 def test_normal_orientation_and_flip():
     class S(Surface):
         def position(self, u, v):

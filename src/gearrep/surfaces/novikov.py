@@ -401,6 +401,7 @@ class DiskGroundPinion(Surface):
     """
 
     fd_step = (1e-4, 1e-4)
+    pointwise = True  # a spline of the grinding line carried by a closed-form screw motion
 
     def __init__(self, flank, N, pitch_n, rack_tooth_n, E_d, a_pd, u_range=(-0.45, 0.45)):
         from scipy.interpolate import CubicSpline
