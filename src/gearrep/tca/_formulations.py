@@ -322,6 +322,12 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
     leaves that normal component out (five equations), None keeps all three (six equations, least
     squares). The one implementation behind :func:`solve_contact` (``formulation="conventional"``).
     """
+    return _conventional_callables(pair, phi1, drop)[:2]
+
+
+def _conventional_callables(pair: GearPair, phi1: float, drop: int | None):
+    """(F, J, FJ) of :func:`conventional_system`; FJ(x) = (F(x), J(x)) from one evaluation (the
+    residual by the same expressions as F alone), for ``newton(fun_jac=...)``."""
     if drop is not None and drop not in (0, 1, 2):
         raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
 
@@ -329,17 +335,12 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
         x = np.atleast_2d(x)
         return x, None if drop is None else np.full(len(x), drop)
 
-    def F(x):
+    def FJ(x, derivs=True):
         x, d = rows(x)
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            return _conventional_FJ(pair, x, phi1, d, derivs=False)[0]
+            return _conventional_FJ(pair, x, phi1, d, derivs=derivs)
 
-    def J(x):
-        x, d = rows(x)
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            return _conventional_FJ(pair, x, phi1, d)[1]
-
-    return F, J
+    return (lambda x: FJ(x, derivs=False)[0]), (lambda x: FJ(x)[1]), FJ
 
 
 # ----------------------------------------------------------------------------------------------

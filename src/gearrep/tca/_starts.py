@@ -18,7 +18,13 @@ import numpy as np
 
 from ..solve import SolveResult, Status, newton
 from ..surface import cross
-from ._formulations import _angles, conventional_system, newton_rows, reduced_unknowns, solve_contact
+from ._formulations import (
+    _angles,
+    _conventional_callables,
+    newton_rows,
+    reduced_unknowns,
+    solve_contact,
+)
 from ._pair import GearPair
 
 __all__ = [
@@ -128,7 +134,7 @@ def solve_conventional(
         raise ValueError(f"equations must be 'five', 'six' or 'drop_nz', got {equations!r}")
     if equations == "five" and drop not in (0, 1, 2):
         raise ValueError(f"equations='five' needs drop in (0, 1, 2), got {drop!r}")
-    F, J = conventional_system(pair, phi1, {"five": drop, "six": None, "drop_nz": 2}[equations])
+    F, J, FJ = _conventional_callables(pair, phi1, {"five": drop, "six": None, "drop_nz": 2}[equations])
     lo, hi = flank_boxes(pair, 0.0)
     kw = dict(tol=tol, maxiter=maxiter, lower=lo, upper=hi)
     if variant == "domain":
@@ -137,7 +143,7 @@ def solve_conventional(
     else:
         kw.update(damped=(variant == "damped"))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return newton(F, np.asarray(x0, float), J, inverse_square=True, **kw)
+        return newton(F, np.asarray(x0, float), J, inverse_square=True, fun_jac=FJ, **kw)
 
 
 def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
