@@ -632,10 +632,24 @@ class Envelope:
         def fun(x, idx):
             return _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x)).f
 
-        def jac(x, idx):
-            return _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x)).J[:, :, S]
+        def fun_jac(x, idx):  # the local geometry gives both: one evaluation per full step
+            loc = _local(self.tool, self.motion, self._assemble(a[idx], b[idx], x))
+            return loc.f, loc.J[:, :, S]
 
-        res = newton(fun, x0, jac, tol=self.tol, maxiter=self.maxiter, lower=self.lower, upper=self.upper, rows=True)
+        def jac(x, idx):
+            return fun_jac(x, idx)[1]
+
+        res = newton(
+            fun,
+            x0,
+            jac,
+            tol=self.tol,
+            maxiter=self.maxiter,
+            lower=self.lower,
+            upper=self.upper,
+            rows=True,
+            fun_jac=fun_jac,
+        )
         return res, self._assemble(a, b, res.x)
 
     def _free_values(self, a, b):

@@ -261,10 +261,13 @@ def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_h
     def fun(x, idx):
         return tangency_system(pair, x, phi1[idx], drop[idx], derivs=False)[0]
 
-    def jac(x, idx):
-        return tangency_system(pair, x, phi1[idx], drop[idx])[1]
+    def fun_jac(x, idx):  # F as fun gives it, with its Jacobian from the same evaluation
+        return tangency_system(pair, x, phi1[idx], drop[idx])[:2]
 
-    res = newton(fun, x0, jac, tol=tol, maxiter=maxiter, max_halvings=max_halvings, rows=True)
+    def jac(x, idx):
+        return fun_jac(x, idx)[1]
+
+    res = newton(fun, x0, jac, tol=tol, maxiter=maxiter, max_halvings=max_halvings, rows=True, fun_jac=fun_jac)
     return _finish(pair, res.x, phi1, res, drop)
 
 

@@ -84,19 +84,25 @@ def _height(flank: Flank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30)
     env = g.envelope()
     guess = np.broadcast_to(q0[[1, 2]], (len(X), 2)).copy()
 
-    def fun(y, idx):
+    def fun_jac(y, idx, derivs=True):  # one envelope solve gives the residual and the Jacobian
         rec = env.solve(y[:, 0], y[:, 1], guess=guess[idx])
         P = np.einsum("ab,nb->na", R, rec.point) + origin - X[idx]
         out = np.stack([P @ t1, P @ t2], -1)
         out[~rec.converged] = np.nan
-        return out
-
-    def jac(y, idx):
-        rec = env.solve(y[:, 0], y[:, 1], guess=guess[idx])
+        if not derivs:
+            return out, None
         Tf = np.einsum("ab,nfb->nfa", R, rec.tangents)  # (m, 2 free, 3)
-        return np.stack([Tf @ t1, Tf @ t2], 1)
+        return out, np.stack([Tf @ t1, Tf @ t2], 1)
 
-    res = newton(fun, np.broadcast_to(q0[[0, 3]], (len(X), 2)).copy(), jac, tol=tol, maxiter=maxiter, rows=True)
+    res = newton(
+        lambda y, idx: fun_jac(y, idx, derivs=False)[0],
+        np.broadcast_to(q0[[0, 3]], (len(X), 2)).copy(),
+        lambda y, idx: fun_jac(y, idx)[1],
+        tol=tol,
+        maxiter=maxiter,
+        rows=True,
+        fun_jac=fun_jac,
+    )
     rec = env.solve(res.x[:, 0], res.x[:, 1], guess=guess)
     P = np.einsum("ab,nb->na", R, rec.point) + origin
     ok = res.converged & rec.converged
