@@ -158,3 +158,28 @@ def test_a_failing_script_step_keeps_its_status_and_traceback(tmp_path):
     assert run_study_step.IDLE_SECONDS > 20
     r = run(tmp_path, dict(req, preload=["no_such_module_xyz"]), True, timeout=20)
     assert r.returncode == 1 and "figure data missing" in r.stderr
+
+
+def test_a_script_step_waits_for_its_own_subprocesses_as_a_fresh_process(tmp_path):
+    """The warm process ignores SIGCHLD; its forked step must not inherit that: a subprocess's exit
+    status reaches the step, and its CPU time counts in the step's timing (a notebook's kernel)."""
+    script = tmp_path / "sub.py"
+    script.write_text(
+        "import subprocess, sys\n"
+        "smk = snakemake  # noqa: F821\n"
+        "busy = 'import time\\nt = time.process_time()\\nwhile time.process_time() - t < 0.3: pass\\nraise SystemExit(3)'\n"
+        "rc = subprocess.run([sys.executable, '-c', busy]).returncode\n"
+        "open(smk.output.rc, 'w').write(str(rc))\n"
+    )
+    for warm in (False, True, True):
+        req = {
+            "script": str(script),
+            "output": {"rc": str(tmp_path / "rc.txt")},
+            "log": {"log": str(tmp_path / "sub.log")},
+            "timing": str(tmp_path / "t.tsv"),
+        }
+        r = run(tmp_path, req, warm)
+        assert r.returncode == 0, r.stderr
+        assert (tmp_path / "rc.txt").read_text() == "3"
+        head, values = (line.split("\t") for line in (tmp_path / "t.tsv").read_text().splitlines())
+        assert float(dict(zip(head, values))["cpu_time"]) >= 0.3

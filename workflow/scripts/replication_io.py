@@ -43,15 +43,17 @@ def _process_wall_seconds() -> float:
 
 def write_timing(path: str, compute_s: float) -> None:
     """The job's own timing, in the columns of a Snakemake benchmark file plus ``compute_s``: ``s``
-    (wall seconds of the whole process), ``cpu_time`` (user + system seconds of the process),
+    (wall seconds of the whole process), ``cpu_time`` (user + system seconds of the process and of
+    its ended child processes),
     ``max_rss`` (peak resident memory, MB) and ``compute_s`` (the computation alone; the rest is what
     the job pays to exist: interpreter, imports, reading and writing). Written by the job itself:
     Snakemake's ``benchmark:`` polls every job's process tree twice a second from the scheduling
     process, which cost about a quarter of a second of that process's CPU per job."""
     ru = resource.getrusage(resource.RUSAGE_SELF)
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)  # e.g. a notebook's kernel, once it has ended
     row = {
         "s": _process_wall_seconds(),
-        "cpu_time": ru.ru_utime + ru.ru_stime,
+        "cpu_time": ru.ru_utime + ru.ru_stime + kids.ru_utime + kids.ru_stime,
         "max_rss": ru.ru_maxrss / 1024.0,  # kB on Linux
         "compute_s": compute_s,
     }

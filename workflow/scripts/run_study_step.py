@@ -237,7 +237,13 @@ def _is_ours(path: Path) -> bool:
 
 
 def _child(conn, req: dict, fds) -> int:
-    """A forked child: take the client's stdio, run the step, report the status."""
+    """A forked child: take the client's stdio, run the step, report the status. The child waits
+    for its own children as a fresh process does (the warm process ignores SIGCHLD so that the
+    kernel reaps its forks; inherited, that would hide a step's subprocesses' exit status and CPU
+    time, e.g. a notebook's kernel)."""
+    import signal
+
+    signal.signal(signal.SIGCHLD, signal.SIG_DFL)
     try:
         for fd, target in zip(fds, (0, 1, 2)):
             os.dup2(fd, target)
