@@ -206,13 +206,13 @@ def test_no_rendered_file_shows_an_absolute_path(run):
 
 
 def test_rendered_notebooks_hide_the_preamble_and_fold_the_code(run):
-    """Issue 21: no Snakemake preamble, code folded, the design data at the top and at least as
+    """Issue 21: no preamble cell, code folded, the design data at the top and at least as
     many embedded images as the study has figure files."""
     from gearrep.replications import load
 
     for name in notebooks(run):
         text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
-        assert "snakemake-job-properties" not in text and "os.chdir" not in text, name
+        assert "gearrep-step-properties" not in text and "os.chdir" not in text, name
         assert text.count('<details class="gearrep-code">') >= 3, name
         assert "design data" in text, name
         assert text.count("<img") >= len(load(name).FIGURES), f"{name}: fewer images than figure files"

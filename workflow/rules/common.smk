@@ -5,7 +5,7 @@ import os
 import sys
 from pathlib import Path
 
-# Tools the rules run (papermill for the notebook directive, nbconvert) come from the interpreter
+# Tools the rules run (papermill, nbconvert: imported by the step runner) come from the interpreter
 # that runs Snakemake, not from whatever PATH the user has: .venv/bin/snakemake works unactivated.
 PYTHON = sys.executable
 os.environ["PATH"] = os.pathsep.join([str(Path(PYTHON).parent), os.environ.get("PATH", "")])
@@ -61,6 +61,9 @@ def step_request(study, step, **fields):
 FIGURE_MODULES = ["matplotlib", "matplotlib.pyplot", "gearrep.plotting"]
 #: and for every notebook rendering (nbconvert's HTML exporter)
 RENDER_MODULES = ["nbformat", "nbconvert"]
+#: the script that executes a study's notebook, and what the warm process imports once for it
+NOTEBOOK_EXECUTOR = "workflow/scripts/execute_notebook.py"
+NOTEBOOK_MODULES = ["nbformat", "papermill"]
 
 
 def script_request(script, *, input, output, log, timing, params=None, wildcards=None, preload=()):
@@ -78,6 +81,25 @@ def script_request(script, *, input, output, log, timing, params=None, wildcards
             "preload": list(preload),
         },
         sort_keys=True,
+    )
+
+
+def notebook_request(study, *, input, settings):
+    """The step-runner request that executes notebooks/<study>.ipynb (NOTEBOOK_EXECUTOR) with the
+    rule's named ``input`` and the study's settings as ``snakemake.params.settings``."""
+    return script_request(
+        NOTEBOOK_EXECUTOR,
+        input=input,
+        output={"executed": f"results/notebooks/{study}.executed"},
+        log=f"results/logs/{study}/notebook.log",
+        timing=f"results/benchmarks/{study}/notebook.tsv",
+        params={
+            "study": study,
+            "settings": settings,
+            "source": f"notebooks/{study}.ipynb",
+            "executed": f"results/notebooks/{study}.ipynb",
+        },
+        preload=NOTEBOOK_MODULES,
     )
 
 

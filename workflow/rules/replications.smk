@@ -124,20 +124,36 @@ for _key in REGISTRY:
             figures=list(_figures.values()),
             published=_check_data,
             benchmarks=_benchmarks,
+            runner=STEP_RUNNER,
+            script=NOTEBOOK_EXECUTOR,
+            notebook=f"notebooks/{_key}.ipynb",
             code=script_lib(f"notebooks/{_key}.ipynb"),
         output:
             touch(f"results/notebooks/{_key}.executed"),
+            job_timing=f"results/benchmarks/{_key}/notebook.tsv",
         log:
+            f"results/logs/{_key}/notebook.log",
             notebook=f"results/notebooks/{_key}.ipynb",
-        benchmark:
-            f"results/benchmarks/{_key}/notebook.tsv"
         conda:
             "../envs/gearrep.yaml"
         params:
-            study=_key,
-            settings=SETTINGS[_key],
-        notebook:
-            "../../notebooks/{params.study}.ipynb"
+            python=PYTHON,
+            # notebooks/<study>.ipynb executed by papermill in the step runner's warm process; the
+            # notebook reads snakemake.input.<name> and snakemake.params.settings
+            request=notebook_request(
+                _key,
+                input={
+                    "checks": f"results/{_study.CHECK_OUTPUTS['checks']}",
+                    "check_outputs": [f"results/{p}" for p in _study.CHECK_OUTPUTS.values()],
+                    "tables": _tables,
+                    "figures": list(_figures.values()),
+                    "published": _check_data,
+                    "benchmarks": _benchmarks,
+                },
+                settings=SETTINGS[_key],
+            ),
+        shell:
+            "{params.python:q} {input.runner:q} {params.request:q}"
 
     CHECK_FILES.append(f"results/{_study.CHECK_OUTPUTS['checks']}")
     FINAL_OUTPUTS.extend(

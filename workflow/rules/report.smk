@@ -1,4 +1,4 @@
-# Notebooks (executed by Snakemake's notebook directive, via papermill) rendered to HTML for
+# Notebooks (executed by papermill in the step runner: workflow/scripts/execute_notebook.py) rendered to HTML for
 # readers, and the one-page report. Each replication's rules add to NOTEBOOKS (names of notebooks/<name>.py.ipynb
 # whose executing rule writes results/notebooks/<name>.executed) and to REPORT_FIGURES. The report job
 # only assembles the page: every figure it embeds, the parity plots included, is drawn by a job of its own.
@@ -21,7 +21,7 @@ rule render_notebook:
     params:
         python=PYTHON,
         # nbconvert of the interpreter running Snakemake, imported once by the step runner's warm
-        # process; the Snakemake preamble removed, code folded, machine paths replaced
+        # process; the preamble cell removed, code folded, machine paths replaced
         request=lambda wc: script_request(
             "workflow/scripts/render_notebook.py",
             input={"template": "workflow/report/notebook/collapsed.html.j2"},

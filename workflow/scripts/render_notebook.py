@@ -1,7 +1,7 @@
 """Render an executed notebook to HTML for readers (Snakemake script of rule render_notebook).
 
-* Snakemake's preamble cell (tag ``snakemake-job-properties``: the pickled job with the machine's
-  paths) is removed;
+* the preamble cell (tag ``gearrep-step-properties``, written by ``execute_notebook.py``: the rule's
+  files and the machine's working directory) is removed;
 * every code cell is folded under a "code" toggle (template ``workflow/report/notebook``), so
   prose, tables and figures come first;
 * paths of the machine that ran the notebook (working directory, interpreter prefix, home) are
@@ -20,7 +20,7 @@ from nbconvert.preprocessors import TagRemovePreprocessor
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
-PREAMBLE_TAG = "snakemake-job-properties"
+PREAMBLE_TAG = "gearrep-step-properties"
 TEMPLATE_DIR = Path(smk.input.template).parent
 
 
