@@ -190,7 +190,7 @@ def _step_square(J, F, rcond):
         sv = np.stack([np.sqrt(q_J), 1.0 / np.sqrt(q_inv)], axis=-1)
         flagged = ~(sv[:, 1] > rcond * sv[:, 0])
     singular = np.zeros(len(J), dtype=bool)
-    if np.any(flagged):
+    if flagged.any():
         idx = np.flatnonzero(flagged)
         step[idx], singular[idx], s = _svd_step(J[idx], F[idx], rcond)
         sv[idx] = s[:, [0, -1]]
@@ -467,7 +467,7 @@ def _check_bounds(lower, upper, k):
         )
         for b, sign in ((lower, -1), (upper, 1))
     )
-    if np.any(lo > hi):
+    if (lo > hi).any():
         raise ValueError("lower bound exceeds upper bound")
     return lo, hi
 

@@ -429,7 +429,7 @@ def _prep(phi1, start, width):
     n = max(len(phi1), len(start))
     if len(phi1) not in (1, n) or len(start) not in (1, n):
         raise ValueError(f"phi1 ({len(phi1)}) and start ({len(start)}) must have equal length or length 1")
-    if not np.all(np.isfinite(phi1)):
+    if not np.isfinite(phi1).all():
         raise ValueError("phi1 must be finite")
     if len(phi1) == n and len(start) == n:
         return phi1.copy(), start.copy()
@@ -540,7 +540,7 @@ def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, 
     fixed = v1 is not None
     if fixed:
         v1a = _face_coordinates(v1, len(phi1))
-        if not np.all(np.isfinite(v1a)):
+        if not np.isfinite(v1a).all():
             raise ValueError("v1 must be finite")
         start[:, 1] = v1a
     return phi1, start, fixed
