@@ -37,7 +37,7 @@ import numpy as np
 
 from .solve import SolveResult, Status, newton
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
-from .tca._formulations import _reduced_FJ
+from .tca._kernels import _reduced_FJ
 from .units import ARCSEC
 
 __all__ = [

@@ -137,14 +137,13 @@ def _row_norms(F):
     return np.sqrt(acc)
 
 
-def _row_norm_one(F) -> float:
-    """:func:`_row_norms` of a one-row F as a Python float (the same sum, left to right, and the
-    correctly rounded square root of both)."""
-    vals = F[0].tolist()
-    if len(vals) >= 8:
-        return float(_row_norms(F)[0])
-    acc = vals[0] * vals[0]
-    for v in vals[1:]:
+def _norm_floats(F) -> float:
+    """:func:`_row_norms` of one row given as a list of floats, as a Python float (the same sum,
+    left to right, and the correctly rounded square root of both)."""
+    if len(F) >= 8:
+        return float(_row_norms(np.array([F], dtype=float))[0])
+    acc = F[0] * F[0]
+    for v in F[1:]:
         acc += v * v
     return math.sqrt(acc)  # a sum of squares: never negative (NaN stays NaN)
 
@@ -152,6 +151,12 @@ def _row_norm_one(F) -> float:
 def _all_finite(a) -> bool:
     """Whether every entry of a small array is finite (on Python floats: no numpy reduction)."""
     return all(map(math.isfinite, a.ravel().tolist()))
+
+
+def _matrix_finite(J) -> bool:
+    """Whether every entry of a matrix given as a list of rows of floats is finite: a finite sum
+    proves it (an inf or NaN entry makes the sum inf or NaN); otherwise each entry is tested."""
+    return math.isfinite(sum(map(sum, J))) or all(math.isfinite(v) for row in J for v in row)
 
 
 def _ratio(a: float, b: float) -> float:
@@ -312,18 +317,27 @@ def _sum_squares_lines(name, k):
     return lines
 
 
-def _step_square_one(J, F, rcond):
-    """:func:`_step_square` of one system (the same operations on Python floats); the batch
-    function where it needs the SVD or meets a zero or non-finite pivot."""
+def _step_square_floats(J, F, rcond):
+    """:func:`_step_square` of one system given as lists (J rows, F), by the same operations on
+    Python floats: (step, fro, s2), or None where it needs the SVD or meets a zero or non-finite
+    pivot (the batch function then decides)."""
     try:
-        x, q_inv, q_J = _gauss_jordan_one(F.shape[1])(J[0].tolist(), F[0].tolist())
+        x, q_inv, q_J = _gauss_jordan_one(len(F))(J, F)
     except ArithmeticError:
-        return _step_square(J, F, rcond)
+        return None
     fro = math.sqrt(q_J)
     s2 = 1.0 / math.sqrt(q_inv) if q_inv > 0.0 else (math.inf if q_inv == 0.0 else math.nan)
     if not (s2 > rcond * fro):
+        return None
+    return [-v for v in x], fro, s2
+
+
+def _step_square_one(J, F, rcond):
+    """:func:`_step_square` of one system (arrays of one row) by :func:`_step_square_floats`."""
+    out = _step_square_floats(J[0].tolist(), F[0].tolist(), rcond)
+    if out is None:
         return _step_square(J, F, rcond)
-    return np.array([[-v for v in x]]), np.array([False]), np.array([[fro, s2]])
+    return np.array([out[0]]), np.array([False]), np.array([out[1:]])
 
 
 def _step_2x2(J, F, rcond):
@@ -347,18 +361,43 @@ def _step_2x2(J, F, rcond):
     return step, singular, sv
 
 
-def _step_2x2_one(J, F, rcond):
-    """:func:`_step_2x2` of one system on Python floats (the same operations; np.hypot kept)."""
-    a, b, c, d = J[0].ravel().tolist()
-    f0, f1 = F[0].tolist()
+def _step_2x2_floats(J, F, rcond):
+    """:func:`_step_2x2` of one system given as lists (J two rows, F), by the same operations on
+    Python floats (np.hypot kept): (step, s1, s2), or None where the closed form finds the system
+    singular (the SVD then decides and steps, as for a batch)."""
+    (a, b), (c, d) = J
+    f0, f1 = F
     s1 = float(np.hypot(0.5 * (a + d), 0.5 * (c - b))) + float(np.hypot(0.5 * (a - d), 0.5 * (c + b)))
     det = a * d - b * c
     s2 = abs(det) / s1 if s1 > 0 else 0.0
-    singular = not (s2 > rcond * s1)
-    if singular:  # the SVD decides and steps, as for a batch
+    if not (s2 > rcond * s1):
+        return None
+    return [-(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det], s1, s2
+
+
+def _step_2x2_one(J, F, rcond):
+    """:func:`_step_2x2` of one system (arrays of one row) by :func:`_step_2x2_floats`."""
+    out = _step_2x2_floats(J[0].tolist(), F[0].tolist(), rcond)
+    if out is None:
         step, _, sv = _svd_step(J, F, rcond)
         return step, np.array([True]), sv
-    return np.array([[-(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det]]), np.array([False]), np.array([[s1, s2]])
+    return np.array([out[0]]), np.array([False]), np.array([out[1:]])
+
+
+def _step_floats(J, F, rcond, inverse_square):
+    """:func:`_lstsq_step` of one system given as lists: (step list, singular, condition number),
+    on Python floats where a closed form applies (2 x 2; square with ``inverse_square``), else by
+    the batch function on a batch of one."""
+    m, k = len(J), len(J[0])
+    out = None
+    if m == k == 2:
+        out = _step_2x2_floats(J, F, rcond)
+    elif m == k and inverse_square:
+        out = _step_square_floats(J, F, rcond)
+    if out is not None:
+        return out[0], False, _ratio(out[1], out[2])
+    d, singular, sv = _lstsq_step(np.array([J], dtype=float), np.array([F], dtype=float), rcond, inverse_square)
+    return d[0].tolist(), bool(singular[0]), _ratio(float(sv[0, 0]), float(sv[0, -1]))
 
 
 def _svd_step(J, F, rcond):
@@ -372,65 +411,81 @@ def _svd_step(J, F, rcond):
     return d, singular, s
 
 
-def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi, rcond, inverse_square) -> SolveResult:
+def _one_point_evaluator(fun, fun_jac, floats, k):
+    """evaluate(x, derivs) -> (F, J or None) of one problem at the point ``x`` (a list of k
+    floats) as lists (J as rows, with ``derivs``): by ``floats`` where given and it evaluates,
+    else by the array callables on a batch of one."""
+
+    def evaluate(xl, derivs):
+        if floats is not None:
+            out = floats(xl, derivs)
+            if out is not None:
+                return out
+        xa = np.array([xl], dtype=float)
+        if derivs:
+            Fa, Ja = fun_jac(xa)
+            Fa = np.asarray(Fa, dtype=float).reshape(-1)
+            return Fa.tolist(), np.asarray(Ja, dtype=float).reshape(len(Fa), k).tolist()
+        return np.asarray(fun(xa), dtype=float).reshape(-1).tolist(), None
+
+    return evaluate
+
+
+def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResult:
     """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
-    arithmetic (steps by :func:`_lstsq_step`, residual norms by :func:`_row_norms`, the same
-    Armijo test and statuses), with the per-row bookkeeping on Python scalars instead of index
-    arrays, which on one row cost more than the residual itself (tests/unit/test_solve.py)."""
+    arithmetic (steps as :func:`_lstsq_step`, residual norms as :func:`_row_norms`, the same Armijo
+    test and statuses) on Python floats, the iterate, residual and Jacobian as lists (on one row
+    numpy's per-call cost exceeds the arithmetic; tests/unit/test_solve.py). ``floats`` (optional)
+    evaluates on lists; where it returns None the array callables evaluate."""
     k = x.shape[1]
-    if fun_jac is not None:
-        F, J = fun_jac(x)
-        F = np.asarray(F, dtype=float).reshape(1, -1)
-        J = np.asarray(J, dtype=float).reshape(1, F.shape[1], k)
-    else:
-        F, J = np.asarray(fun(x), dtype=float).reshape(1, -1), None
-    m = F.shape[1]
+    use_fj = fun_jac is not None
+    evaluate = _one_point_evaluator(fun, fun_jac, floats, k)
+    xl = x[0].tolist()
+    F, J = evaluate(xl, use_fj)
+    m = len(F)
     if m < k:
         raise ValueError(f"fun returns {m} equations for {k} unknowns; need m >= k")
-    res = _row_norm_one(F)
-    iters, cond = 0, np.nan
+    tol, rcond = opts.tol, opts.rcond
+    res = _norm_floats(F)
+    iters, cond = 0, math.nan
     finite = math.isfinite(res)
     status = _S_CONVERGED if res < tol else (_S_NOT_CONVERGED if finite else _S_DIVERGED)
     done = res < tol or not finite
-    for _ in range(maxiter):
+    for _ in range(opts.maxiter):
         if done:
             break
         if J is None:
-            J = jac(x) if jac is not None else numeric_jacobian(fun, x, F)
-            J = np.asarray(J, dtype=float).reshape(1, m, k)
-        bad_j = not _all_finite(J)
+            xa = np.array([xl], dtype=float)
+            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, np.array([F], dtype=float))
+            J = np.asarray(Ja, dtype=float).reshape(m, k).tolist()
+        bad_j = not _matrix_finite(J)
         if bad_j:
-            J = np.zeros_like(J)
-        d, singular, sv = _lstsq_step(J, F, rcond, inverse_square)
-        singular = bool(singular[0]) or bad_j
-        cond = np.nan if bad_j else _ratio(float(sv[0, 0]), float(sv[0, -1]))
+            J = [[0.0] * k for _ in range(m)]
+        d, singular, cond = _step_floats(J, F, rcond, opts.inverse_square)
+        singular = singular or bad_j
+        if bad_j:
+            cond = math.nan
         iters += 1
         lam = 1.0
-        x_new = x + d
-        J_new = None
-        if fun_jac is not None:
-            F_new, J_new = fun_jac(x_new)
-            F_new = np.asarray(F_new, dtype=float).reshape(1, -1)
-            J_new = np.asarray(J_new, dtype=float).reshape(1, m, k)
-        else:
-            F_new = np.asarray(fun(x_new), dtype=float).reshape(1, -1)
-        r_new = _row_norm_one(F_new)
+        x_new = [a + b for a, b in zip(xl, d)]
+        F_new, J_new = evaluate(x_new, use_fj)
+        r_new = _norm_floats(F_new)
         stalled = False
-        if damped:
+        if opts.damped:
             r_old = res
             need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
-            for _h in range(max_halvings):
+            for _h in range(opts.max_halvings):
                 if not need:
                     break
                 lam *= 0.5
-                xt = x + lam * d
-                Ft = np.asarray(fun(xt), dtype=float).reshape(1, -1)
-                x_new, F_new, r_new, J_new = xt, Ft, _row_norm_one(Ft), None
+                xt = [a + lam * b for a, b in zip(xl, d)]
+                Ft, _ = evaluate(xt, False)
+                x_new, F_new, r_new, J_new = xt, Ft, _norm_floats(Ft), None
                 need = not (r_new <= (1.0 - 1e-4 * lam) * r_old)
             if need:  # no decrease found: keep the old iterate and stop
-                x_new, F_new, r_new, J_new, stalled = x, F, r_old, None, True
-        x, F, res, J = x_new, F_new, r_new, J_new
-        nonfinite = not math.isfinite(r_new) or not _all_finite(x_new)
+                x_new, F_new, r_new, J_new, stalled = xl, F, r_old, None, True
+        xl, F, res, J = x_new, F_new, r_new, J_new
+        nonfinite = not math.isfinite(r_new) or not all(map(math.isfinite, x_new))
         conv = r_new < tol and not nonfinite
         if conv:
             status = _S_CONVERGED
@@ -442,12 +497,12 @@ def _newton_one(fun, x, jac, fun_jac, tol, maxiter, damped, max_halvings, lo, hi
     # the batch's test on floats (the same IEEE operations)
     inside = all(
         a >= b - 1e-12 * (1 + abs(b)) and a <= c + 1e-12 * (1 + abs(c))
-        for a, b, c in zip(x[0].tolist(), lo.tolist(), hi.tolist())
+        for a, b, c in zip(xl, opts.lo.tolist(), opts.hi.tolist())
     )
     if status == _S_CONVERGED and not inside:
         status = _S_OFF_FLANK
     return SolveResult(
-        x=x,
+        x=np.array([xl], dtype=float),
         residual=np.array([res]),
         iterations=np.array([iters]),
         status=np.array([int(status)]),
@@ -467,7 +522,7 @@ def _check_bounds(lower, upper, k):
         )
         for b, sign in ((lower, -1), (upper, 1))
     )
-    if (lo > hi).any():
+    if any(a > b for a, b in zip(lo.tolist(), hi.tolist())):  # k is small: on floats
         raise ValueError("lower bound exceeds upper bound")
     return lo, hi
 
@@ -506,6 +561,7 @@ def newton(
     rows: bool = False,
     fun_jac: Callable | None = None,
     inverse_square: bool = False,
+    floats: Callable | None = None,
 ) -> SolveResult:
     """Solve ``fun(x) = 0`` for a batch of independent problems.
 
@@ -533,6 +589,11 @@ def newton(
         elimination over the batch (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
         the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
+    floats : callable (x, derivs) -> (F, J) or None, optional, with ``fun_jac``: the same
+        evaluation for ONE problem on Python floats (x a list of k floats; F a list of m floats,
+        J a list of m rows of k floats with ``derivs``, else None), used when the batch has one
+        row (a numpy call on one row costs more than its arithmetic). Its values must equal those
+        of ``fun_jac``/``fun``; where it returns None these evaluate instead.
 
     Returns
     -------
@@ -551,15 +612,13 @@ def newton(
     box = {"i": None}
     if rows:
         fun, jac, fun_jac, box = _bind_rows(fun, jac, fun_jac, n)
-    if n == 1 and not keep_inside:  # one problem: the same steps on one row with scalar bookkeeping
-        return _newton_one(
-            fun, x, jac, fun_jac, tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square
-        )
     opts = _BatchOptions(tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square, keep_inside)
+    if n == 1 and not keep_inside:  # one problem: the same steps on floats with scalar bookkeeping
+        return _newton_one(fun, x, jac, fun_jac, floats if fun_jac is not None else None, opts)
     return _newton_batch(fun, jac, fun_jac, x, box, opts)
 
 
-@dataclass(frozen=True)
+@dataclass(slots=True)  # not frozen: a frozen dataclass's __init__ costs about 1 us more per call
 class _BatchOptions:
     tol: float
     maxiter: int

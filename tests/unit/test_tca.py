@@ -14,6 +14,7 @@ from gearrep.surfaces.involute import (
     standard_centre_distance,
 )
 from gearrep.tca import (
+    ContactPoints,
     GearPair,
     Misalignment,
     default_start,
@@ -311,7 +312,7 @@ def test_choice_of_normal_components_decides_conditioning():
     components of n1 + n2 (dropping the ~0 z component) leaves n_z fixed only through n_z^2, so the
     5x5 Jacobian is nearly singular and the sign-flipped false roots n1z = +n2z appear (flagged
     WRONG_ROOT). Dropping the largest component (default) is well conditioned."""
-    from gearrep.tca._formulations import _conventional_FJ
+    from gearrep.tca._kernels import _conventional_FJ
 
     pair, _, _ = spur_pair(crown1=ParabolicCrowning(C1), mis=Misalignment(d_gamma_in=D(0.05)))
     ref = solve_contact(pair, 0.0)
@@ -450,6 +451,36 @@ def test_throughput_in_reference_kernel_elements(formulation):
 # ---------------------------------------------------------------------------------------------
 # validation
 # ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("fixed", [False, True])
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_one_point_solve_gives_its_batch_row(formulation, fixed):
+    """A solve of one point (its kernel, Newton steps and contact record on Python floats) returns
+    bit for bit what the same point gets in a batch (numpy arrays): every field, for converging,
+    wrong-root, non-converging and singular starts on a crowned misaligned spur pair and a helical
+    pair."""
+    rng = np.random.default_rng(3)
+    pairs = [
+        spur_pair(crown1=ParabolicCrowning(0.002857), mis=Misalignment(d_gamma_out=D(0.05)))[0],
+        helical_pair()[0],
+    ]
+    fields = [*ContactPoints.ARRAYS, "condition"]
+    statuses = set()
+    for pair in pairs:
+        phi = -np.pi / 104 + rng.uniform(-0.6, 0.6, 60) * 2 * np.pi / 52
+        start = default_start(pair, phi, formulation) + rng.normal(0.0, 0.3, (60, 2 if formulation == "reduced" else 5))
+        v1 = rng.uniform(-3.0, 3.0, 60) if fixed else None
+        kw = dict(formulation=formulation, phi10=0.01, phi20=-0.002)
+        batch = solve_contact(pair, phi, start, v1=v1, **kw)
+        statuses |= set(batch.status.tolist())
+        for i in range(len(phi)):
+            one = solve_contact(pair, phi[i : i + 1], start[i : i + 1], v1=None if v1 is None else v1[i : i + 1], **kw)
+            for f in fields:
+                a, b = getattr(one, f)[0], getattr(batch, f)[i]
+                assert np.asarray(a).dtype == np.asarray(b).dtype, (i, f)
+                np.testing.assert_array_equal(a, b, err_msg=f"point {i} {f}")
+    assert len(statuses) >= 2  # more than one outcome is exercised
+
+
 def test_input_validation():
     pair, g1, g2 = spur_pair()
     with pytest.raises(ValueError, match="formulation"):

@@ -613,16 +613,18 @@ class InvoluteFlank(Surface):
         t = sq / rb
         inv, i1, i2 = t - math.atan(t), sq / (rb * u), rb / (sq * u * u)
         if self.crowning is not None:
-            dl, dl1, dl2 = (float(x) for x in self.crowning(v))
+            dl, dl1, dl2 = self.crowning(v)
+            dl, dl1, dl2 = float(dl), float(dl1), float(dl2)
         else:
             dl = dl1 = dl2 = 0.0
-        tw, tw1, tw2 = (float(x) for x in self.twist(v))
+        tw, tw1, tw2 = self.twist(v)
+        tw, tw1, tw2 = float(tw), float(tw1), float(tw2)
         s = self.side
         if self.relief:
             dp = dp1 = dp2 = 0.0
             for r in self.relief:
-                a, b, c = (float(x) for x in r(u))
-                dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
+                a, b, c = r(u)
+                dp, dp1, dp2 = dp + float(a), dp1 + float(b), dp2 + float(c)
             psi = s * (float(self.c) - inv - (dp + dl) / rb) + tw
             pu = s * (-i1 - dp1 / rb)
             puu = s * (-i2 - dp2 / rb)

@@ -103,11 +103,11 @@ from ._formulations import (
     conventional_system,
     default_start,
     newton_rows,
-    normal_derivatives,
     reduced_unknowns,
     solve_contact,
     trace_path,
 )
+from ._kernels import normal_derivatives
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
 from ._starts import (
     CONVENTIONAL_VARIANTS,

@@ -135,7 +135,7 @@ def spherical_unknowns(K: dict, derivs: bool = True, v_column: bool = True) -> d
     """Member 2's spherical unknowns from the cylindrical back-substitution on the axial view (module
     docstring): (rho2, z2) = (u2, v2) of ``K`` -> (u2, v2) = (atan2(rho2, z2), |s|), with the
     derivatives (suffix ``_u``, and ``_v`` with ``v_column``) by the chain rule. ``K`` is the
-    structure-of-arrays dict of :func:`gearrep.tca._formulations._reduced3`; it is updated in place."""
+    structure-of-arrays dict of :func:`gearrep.tca._kernels._reduced3`; it is updated in place."""
     rho, z = K["u2"], K["v2"]
     v = np.hypot(rho, z)
     K["u2"], K["v2"] = np.arctan2(rho, z), v

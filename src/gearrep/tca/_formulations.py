@@ -1,5 +1,6 @@
-"""The two TCA formulations (conventional eq 26-32, reduced eq 33-44) with analytic Jacobians,
-Newton with per-row data, and the public solves (see :mod:`gearrep.tca`)."""
+"""The public contact solves of the two TCA formulations (conventional eq 26-32, reduced eq 33-44;
+their equations and Jacobians in :mod:`gearrep.tca._kernels`), Newton with per-row data and the
+contact record (see :mod:`gearrep.tca`)."""
 
 from __future__ import annotations
 
@@ -9,11 +10,19 @@ import numpy as np
 
 from ..frames import rotate_z
 from ..solve import SolveResult, Status, _rows_all_finite, newton
-from ..surface import add3, cross, cross3, cross3_sparse, dot3
+from ..surface import cross3, dot3
+from ._kernels import (
+    _SCALAR_ERRORS,
+    _conventional_FJ,
+    _conventional_FJ3,
+    _reduced_FJ3,
+    _reduced_kernel,
+    _stack3,
+    _wrap_any,
+)
 from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 
 __all__ = [
-    "normal_derivatives",
     "conventional_system",
     "newton_rows",
     "default_start",
@@ -21,297 +30,6 @@ __all__ = [
     "reduced_unknowns",
     "trace_path",
 ]
-
-
-def normal_derivatives(P, sign):
-    """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surface.SurfacePoint` and its u- and
-    v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v)."""
-    N = cross(P.r_u, P.r_v)
-    L = np.linalg.norm(N, axis=-1, keepdims=True)
-    n = N / L
-    dNu = cross(P.r_uu, P.r_v) + cross(P.r_u, P.r_uv)
-    dNv = cross(P.r_uv, P.r_v) + cross(P.r_u, P.r_vv)
-    dnu = (dNu - n * np.sum(n * dNu, axis=-1, keepdims=True)) / L
-    dnv = (dNv - n * np.sum(n * dNv, axis=-1, keepdims=True)) / L
-    return sign * n, sign * dnu, sign * dnv
-
-
-# one-point solves run the same kernels on Python floats (a numpy call on a 1-element array costs
-# as much as on thousands of elements); these pick the math or the numpy function by the argument
-def _sqrt(x):
-    return math.sqrt(x) if type(x) is float else np.sqrt(x)
-
-
-def _atan2(y, x):
-    return math.atan2(y, x) if type(x) is float and type(y) is float else np.arctan2(y, x)
-
-
-def _cos_sin(x):
-    return (math.cos(x), math.sin(x)) if type(x) is float else (np.cos(x), np.sin(x))
-
-
-def _wrap_any(x):
-    """:func:`_wrap` for arrays or floats (round half to even in both)."""
-    return x - 2.0 * math.pi * round(x / (2.0 * math.pi)) if type(x) is float else _wrap(x)
-
-
-#: a one-point kernel on floats raises these where the array kernel gives inf/NaN; the caller then
-#: repeats it on arrays, so that both give the same statuses
-_SCALAR_ERRORS = (ArithmeticError, ValueError)
-
-
-def _normal_derivatives3(P, sign):
-    """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
-    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple.
-    ``sign`` -1 swaps the operands of every cross product (which negates N and its derivatives
-    exactly), so the signed normal and its derivatives come without a negation pass. On arrays
-    the cross products skip the float components 0.0 and 1.0 (:func:`~gearrep.surface.cross3_sparse`)."""
-    _, ru, rv, ruu, ruv, rvv = P
-    if type(ru[0]) is float:  # one point on floats: every component is a float
-        cr, add = cross3, _add3_plain
-    else:
-        cr, add = cross3_sparse, add3
-    if sign == 1:
-        N, dNu, dNv = cr(ru, rv), add(cr(ruu, rv), cr(ru, ruv)), add(cr(ruv, rv), cr(ru, rvv))
-    else:
-        N, dNu, dNv = cr(rv, ru), add(cr(rv, ruu), cr(ruv, ru)), add(cr(rv, ruv), cr(rvv, ru))
-    N0, N1, N2 = N
-    L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
-    n = (N0 / L, N1 / L, N2 / L)
-    pu, pv = dot3(n, dNu), dot3(n, dNv)
-    dnu = ((dNu[0] - n[0] * pu) / L, (dNu[1] - n[1] * pu) / L, (dNu[2] - n[2] * pu) / L)
-    dnv = ((dNv[0] - n[0] * pv) / L, (dNv[1] - n[1] * pv) / L, (dNv[2] - n[2] * pv) / L)
-    return n, dnu, dnv
-
-
-def _add3_plain(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def _stack3(v, n):
-    """(n, 3) array of a vector given by components (floats broadcast)."""
-    if type(v[0]) is float and type(v[1]) is float and type(v[2]) is float and n == 1:
-        return np.array([v])
-    out = np.empty((n, 3))
-    out[:, 0], out[:, 1], out[:, 2] = v
-    return out
-
-
-def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
-    """The reduced formulation's explicit back-substitution (eq 37-44) in structure-of-arrays form.
-
-    ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
-    of components: u2, v2, phi2 (arrays), r, n1, n2 (3-tuples) and, with ``derivs``, the
-    derivatives with respect to u1 (suffix _u) and, with ``v_column``, v1 (suffix _v):
-    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples). Callers set ``np.errstate`` (off the flanks
-    the arrays hold NaN/inf). A spherical member 2 (bevel pairs, ``flank2.spherical``): the
-    cylindrical back-substitution on the pair's axial view, then (rho2, z2) -> (u2, v2) by
-    :func:`gearrep.tca._bevel.spherical_unknowns`."""
-    if getattr(pair.flank2, "spherical", False):
-        from ._bevel import spherical_unknowns
-
-        K = _reduced3(pair.axial_view, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
-        return spherical_unknowns(K, derivs, v_column)
-    g = pair._soa
-    P1 = pair.flank1.evaluate_components(u1, v1)
-    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
-    r = rotate_z(c1, s1, P1[0])
-    n1 = rotate_z(c1, s1, n1l)
-    s = g["Q"](g["minus_O2"](r))  # member-2 axis frame, before Rz(-phi2)
-    sx, sy, v2 = s
-    rho2 = sx * sx + sy * sy
-    u2 = _sqrt(rho2)
-    th = _atan2(sy, sx)
-    P2 = pair.flank2.evaluate_components(u2, v2)
-    r2 = P2[0]
-    ang2 = _atan2(r2[1], r2[0])
-    ref = pair.ratio * phi1
-    phi2 = ref + _wrap_any(ang2 - th - ref)
-    c2, s2 = _cos_sin(pair.phase2 - phi2)
-    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
-    n2 = g["A2"](rotate_z(c2, s2, n2l))
-    out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2)
-    if not derivs:
-        return out
-    q2 = r2[0] * r2[0] + r2[1] * r2[1]
-    ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
-    ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
-    w2xn2 = cross3(g["w2"], n2)
-    for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
-        if j == "_v" and not v_column:
-            break
-        dr = rotate_z(c1, s1, rj)
-        ds = g["Q"](dr)
-        du2 = (sx * ds[0] + sy * ds[1]) / u2
-        dth = (sx * ds[1] - sy * ds[0]) / rho2
-        dv2 = ds[2]
-        dphi2 = ang_u * du2 + ang_v * dv2 - dth
-        dn2l = tuple(a * du2 + b * dv2 for a, b in zip(dn2u, dn2v))
-        dn2 = g["A2"](rotate_z(c2, s2, dn2l))
-        out["dr" + j] = dr
-        out["dn1" + j] = rotate_z(c1, s1, dnj)
-        out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
-        out["dn2" + j] = tuple(a + b * dphi2 for a, b in zip(dn2, w2xn2))
-    return out
-
-
-def _reduced_kernel(pair: GearPair, u1, v1, phi1, *, derivs=True):
-    """Explicit back-substitution of the reduced formulation (eq 37-44) and derivatives w.r.t. (u1, v1).
-
-    Returns a dict with u2, v2, phi2, r (contact point), n1, n2 (outward normals in S_f, (n, 3))
-    and, with ``derivs``, their derivatives d_* of shape (n, 2[, 3]) w.r.t. (u1, v1) (a spherical
-    member 2 as in :func:`_reduced3`).
-    """
-    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
-    n = np.broadcast_shapes(u1.shape, v1.shape, phi1.shape)[0]
-    K = None
-    if n == 1 and not derivs:  # one point: on floats (see _SCALAR_ERRORS)
-        f = tuple(float(a.reshape(-1)[0]) for a in (u1, v1, phi1))
-        try:
-            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-                K1 = _reduced3(pair, f[0], f[1], f[2], *_cos_sin(f[2]), derivs=False)
-            K = {
-                k: (np.array([v]) if k in ("u2", "v2", "phi2") else tuple(np.array([x]) for x in v))
-                for k, v in K1.items()
-            }
-        except _SCALAR_ERRORS:
-            K = None
-    if K is None:
-        with np.errstate(invalid="ignore", divide="ignore"):
-            K = _reduced3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), derivs=derivs)
-    out = {k: K[k] for k in ("u2", "v2", "phi2")}
-    out.update({k: _stack3(K[k], n) for k in ("r", "n1", "n2")})
-    if derivs:
-        for k in ("dr", "dn1", "dn2"):
-            out[k] = np.stack([_stack3(K[k + "_u"], n), _stack3(K[k + "_v"], n)], axis=-2)
-        for k in ("du2", "dv2", "dphi2"):
-            out[k] = np.stack(np.broadcast_arrays(K[k + "_u"], K[k + "_v"]), axis=-1)
-    return out
-
-
-def _keep(vec, drop):
-    """Two components of (..., 3) ``vec`` (or (..., k, 3)) other than ``drop`` (per row)."""
-    drop = np.asarray(drop).astype(int)
-    idx = np.array([[1, 2], [0, 2], [0, 1]])[drop]  # (n, 2)
-    if vec.ndim == 2:
-        return np.take_along_axis(vec, idx, axis=-1)
-    return np.take_along_axis(vec, idx[:, None, :], axis=-1)
-
-
-def _keep3(v, first0, last2):
-    """The two components of a vector by components other than the dropped one (per row):
-    (v1 if drop = 0 else v0, v1 if drop = 2 else v2); ``first0`` = (drop == 0), ``last2`` = (drop == 2)."""
-    if type(first0) is bool:
-        return (v[1] if first0 else v[0]), (v[1] if last2 else v[2])
-    return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
-
-
-def _pack(F_comps, J_cols, n, one):
-    """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
-    components; None: no J); ``one``: every entry a float (one point), packed by one np.array call."""
-    if one:
-        m = len(F_comps)
-        F = np.array(F_comps, dtype=float).reshape(1, m)
-        if J_cols is None:
-            return F, None
-        flat = [col[i] for i in range(m) for col in J_cols]  # row-major
-        return F, np.array(flat, dtype=float).reshape(1, m, len(J_cols))
-    # filled component by component into (m, n) and (m, k, n) arrays (contiguous writes, one pass
-    # each) and handed out as their transposed views (n, m) and (n, m, k): the same values
-    Ft = np.empty((len(F_comps), n))
-    for i, c in enumerate(F_comps):
-        Ft[i] = c
-    if J_cols is None:
-        return Ft.T, None
-    Jt = np.empty((len(F_comps), len(J_cols), n))
-    for k, col in enumerate(J_cols):
-        for i, c in enumerate(col):
-            Jt[i, k] = c
-    return Ft.T, Jt.transpose(2, 0, 1)
-
-
-def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True):
-    """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components."""
-    K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
-    n1, n2 = K["n1"], K["n2"]
-    f = _keep3(cross3(n1, n2), first0, last2)
-    one = type(u1) is float
-    n = 1 if one else np.size(f[0])
-    if not derivs:
-        return (*_pack(f, None, n, one), K)
-    J_cols = []
-    for j in ("_u", "_v") if v_column else ("_u",):
-        a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
-        J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
-    return (*_pack(f, J_cols, n, one), K)
-
-
-def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
-    u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
-    drop = np.asarray(drop)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
-
-
-def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, keep=None):
-    """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``x``: the
-    five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
-    the free ones; ``drop`` None keeps all three normal components (six equations); ``keep``: a dict
-    that receives r (member 1's point), n1 and n2 (outward normals) by components."""
-    g = pair._soa
-    u1, v1, u2, v2, phi2 = x
-    P1 = pair.flank1.evaluate_components(u1, v1)
-    P2 = pair.flank2.evaluate_components(u2, v2)
-    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
-    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
-    c2, s2 = _cos_sin(pair.phase2 - phi2)
-
-    def R2(v):
-        return g["A2"](rotate_z(c2, s2, v))
-
-    r1 = rotate_z(c1, s1, P1[0])
-    rel2 = R2(P2[0])
-    n1 = rotate_z(c1, s1, n1l)
-    n2 = R2(n2l)
-    if keep is not None:
-        keep.update(r=r1, n1=n1, n2=n2)
-    O2 = g["O2"]
-    one = type(u1) is float
-    n = 1 if one else np.size(u1)
-    ns = tuple(a + b for a, b in zip(n1, n2))
-    F = [r1[i] - (O2[i] + rel2[i]) for i in range(3)] + list(ns if drop is None else _keep3(ns, first0, last2))
-    if not derivs:
-        return _pack(F, None, n, one)
-    J_cols = []
-    for col in cols:
-        if col == 0:
-            jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
-        elif col == 1:
-            jr, jn = rotate_z(c1, s1, P1[2]), rotate_z(c1, s1, dn1v)
-        elif col == 2:
-            jr, jn = R2(P2[1]), R2(dn2u)
-            jr = tuple(-a for a in jr)
-        elif col == 3:
-            jr, jn = R2(P2[2]), R2(dn2v)
-            jr = tuple(-a for a in jr)
-        else:
-            jr = tuple(-a for a in cross3(g["w2"], rel2))
-            jn = cross3(g["w2"], n2)
-        J_cols.append(tuple(jr) + tuple(jn if drop is None else _keep3(jn, first0, last2)))
-    return _pack(F, J_cols, n, one)
-
-
-def _conventional_FJ(pair, x, phi1, drop, derivs=True):
-    x = np.asarray(x, float)
-    phi1 = np.broadcast_to(np.asarray(phi1, float), (len(x),))
-    c1, s1 = np.cos(phi1), np.sin(phi1)
-    d = None if drop is None else np.asarray(drop)
-    f0 = None if d is None else d == 0
-    l2 = None if d is None else d == 2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return _conventional_FJ3(
-            pair, tuple(x[:, i] for i in range(5)), c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs
-        )
 
 
 def conventional_system(pair: GearPair, phi1: float, drop: int | None):
@@ -487,7 +205,7 @@ class _Record:
         n = self.n
         if self.entries and self.entries[-1][0] is None:  # the last evaluation covered every row
             _, xe, K = self.entries[-1]
-            self.x = xe
+            self.x = np.array([xe], dtype=float) if type(xe) is list else xe  # a list: one point on floats
             self.scalars = {key: np.array(K[key], dtype=float).reshape(n) for key in ("u2", "v2", "phi2") if key in K}
             self.vectors = {key: _stack3(K[key], n) for key in ("r", "n1", "n2")}
             self.entries = []
@@ -556,7 +274,15 @@ class _Rows:
         self.cols = {"phi1": phi1, "c1": c1, "s1": s1, "first0": drop == 0, "last2": drop == 2, "v1": v1}
         self.one = None
         if self.n == 1:
-            self.one = {k: (bool(v[0]) if v.dtype == bool else float(v[0])) for k, v in self.cols.items()}
+            d = float(drop[0])
+            self.one = {
+                "phi1": float(phi1[0]),
+                "c1": float(c1[0]),
+                "s1": float(s1[0]),
+                "first0": d == 0,
+                "last2": d == 2,
+                "v1": float(v1[0]),
+            }
 
     def take(self, idx):
         if len(idx) == self.n:
@@ -564,40 +290,57 @@ class _Rows:
         return {k: v[idx] for k, v in self.cols.items()}
 
 
-def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
-    """FJ(x, idx, derivs) of the reduced system for ``newton(rows=True)`` (see :func:`solve_contact`)."""
-    v_column = not fixed
+def _with_one_point(floats, arrays):
+    """FJ(x, idx, derivs) for ``newton(rows=True)``: ``floats`` (see :func:`_reduced_FJ_rows`) at a
+    single row where given and it evaluates (packed as the arrays F (1, m), J (1, m, k)), else
+    ``arrays(x, idx, derivs)``; returns (FJ, floats)."""
 
     def FJ(x, idx, derivs=True):
-        out = None
-        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-            q = data.one
-            x0 = x[0].tolist()
-            try:
-                out = _reduced_FJ3(
-                    pair,
-                    x0[0],
-                    q["v1"] if fixed else x0[1],
-                    q["phi1"],
-                    q["c1"],
-                    q["s1"],
-                    q["first0"],
-                    q["last2"],
-                    derivs=derivs,
-                    v_column=v_column,
-                )
-            except _SCALAR_ERRORS:
-                pass
-        if out is None:
-            p = data.take(idx)
-            v1 = p["v1"] if fixed else x[:, 1]
-            out = _reduced_FJ3(
-                pair, x[:, 0], v1, p["phi1"], p["c1"], p["s1"], p["first0"], p["last2"], derivs, v_column
+        if floats is not None and len(x) == 1:  # one point: the kernel on floats
+            out = floats(x[0].tolist(), derivs)
+            if out is not None:
+                return np.array([out[0]], dtype=float), (None if out[1] is None else np.array([out[1]], dtype=float))
+        return arrays(x, idx, derivs)
+
+    return FJ, floats
+
+
+def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
+    """(FJ(x, idx, derivs), floats(x, derivs) or None) of the reduced system for
+    ``newton(rows=True, fun_jac=FJ, floats=floats)`` (see :func:`solve_contact`); ``floats``, for
+    a solve of one row, evaluates on Python floats (None where the kernel on floats raises, see
+    _SCALAR_ERRORS, and the arrays then evaluate)."""
+    v_column = not fixed
+    q = data.one
+
+    def floats(x, derivs=True):
+        try:
+            F, J, K = _reduced_FJ3(
+                pair,
+                x[0],
+                q["v1"] if fixed else x[1],
+                q["phi1"],
+                q["c1"],
+                q["s1"],
+                q["first0"],
+                q["last2"],
+                derivs=derivs,
+                v_column=v_column,
+                lists=True,
             )
+        except _SCALAR_ERRORS:
+            return None
+        record.store(None, x, K)
+        return F, J
+
+    def arrays(x, idx, derivs):
+        p = data.take(idx)
+        v1 = p["v1"] if fixed else x[:, 1]
+        out = _reduced_FJ3(pair, x[:, 0], v1, p["phi1"], p["c1"], p["s1"], p["first0"], p["last2"], derivs, v_column)
         record.store(None if len(idx) == data.n else idx, x, out[2])
         return out[:2]
 
-    return FJ
+    return _with_one_point(floats if q is not None else None, arrays)
 
 
 #: the ``drop`` argument of :func:`_conventional_FJ3` for five equations (any value but None; the
@@ -606,30 +349,34 @@ _FIVE = 5
 
 
 def _conventional_FJ_rows(pair, data: _Rows, free, record):
-    """FJ(x, idx, derivs) of the conventional system for ``newton(rows=True)`` (free columns
-    ``free`` of the five unknowns; a fixed v1 from the row data)."""
+    """(FJ(x, idx, derivs), floats(x, derivs) or None) of the conventional system for
+    ``newton(rows=True, fun_jac=FJ, floats=floats)`` (free columns ``free`` of the five unknowns;
+    a fixed v1 from the row data; ``floats`` as for :func:`_reduced_FJ_rows`)."""
     cols = tuple(free)
+    q = data.one
 
-    def FJ(x, idx, derivs=True):
+    def floats(x, derivs=True):
+        keep = {}
+        x5 = x if len(x) == 5 else [x[0], q["v1"], *x[1:]]  # free = all five or (0, 2, 3, 4)
+        try:
+            out = _conventional_FJ3(
+                pair, x5, q["c1"], q["s1"], _FIVE, q["first0"], q["last2"], cols, derivs, keep, lists=True
+            )
+        except _SCALAR_ERRORS:
+            return None
+        record.store(None, x, keep)
+        return out
+
+    def arrays(x, idx, derivs):
         p = data.take(idx)
         full = _expand(x, free, p["v1"])
         keep = {}
-        out = None
-        if len(x) == 1 and data.one is not None:  # one point: the kernel on floats (see _SCALAR_ERRORS)
-            q = data.one
-            try:
-                out = _conventional_FJ3(
-                    pair, tuple(full[0].tolist()), q["c1"], q["s1"], _FIVE, q["first0"], q["last2"], cols, derivs, keep
-                )
-            except _SCALAR_ERRORS:
-                pass
-        if out is None:
-            x5 = tuple(full[:, i] for i in range(5))
-            out = _conventional_FJ3(pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, derivs, keep)
+        x5 = tuple(full[:, i] for i in range(5))
+        out = _conventional_FJ3(pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, derivs, keep)
         record.store(None if len(idx) == data.n else idx, x, keep)
         return out
 
-    return FJ
+    return _with_one_point(floats if q is not None else None, arrays)
 
 
 def _expand(x, free, v1):
@@ -693,7 +440,9 @@ def solve_contact(
     x0 = start[:, : len(free)] if free == list(range(len(free))) else start[:, free]  # a view where contiguous
     data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan))
     record = _Record(n, len(free))
-    FJ = _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)
+    FJ, floats = (
+        _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)
+    )
     analytic = jacobian == "analytic"
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # non-finite iterates end as DIVERGED
         res = newton(
@@ -708,8 +457,13 @@ def solve_contact(
             rows=True,
             fun_jac=FJ if analytic else None,
             inverse_square=True,
+            floats=floats,
         )
     sol = _expand(res.x, free, data.cols["v1"])
+    if n == 1:  # one point: on floats where the last evaluation was at the solution
+        out = _finish_one(pair, formulation, sol, phi1, res, phi10, phi20, record)
+        if out is not None:
+            return out
     return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
 
 
@@ -732,6 +486,50 @@ def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> C
         residual=res.residual,
         iterations=res.iterations,
         status=status,
+        formulation=formulation,
+        condition=res.condition,
+    )
+
+
+def _finish_one(pair, formulation, sol, phi1, res, phi10, phi20, record: _Record):
+    """:func:`_finish` of a one-point solve on Python floats (the same operations) when the
+    solve's last evaluation, on floats (see :func:`_reduced_FJ_rows`), was at exactly the
+    solution; None otherwise (or where floats raise), and the arrays finish it."""
+    if not record.entries:
+        return None
+    _, xe, K = record.entries[-1]
+    if type(xe) is not list or xe != res.x[0].tolist():
+        return None
+    p1 = float(phi1[0])
+    if formulation == "reduced":
+        u2, v2, phi2 = K["u2"], K["v2"], K["phi2"]
+    else:
+        x5 = sol[0].tolist()
+        u2, v2 = x5[2], x5[3]
+        ref = pair.ratio * p1
+        try:
+            phi2 = ref + _wrap_any(x5[4] - ref)
+        except _SCALAR_ERRORS:
+            return None
+    record.entries = []
+    r, n1, n2 = K["r"], K["n1"], K["n2"]
+    nan3 = (math.nan, math.nan, math.nan)
+    r = r if all(map(math.isfinite, r)) else nan3  # a point or normal with a non-finite component is not a vector
+    n1 = n1 if all(map(math.isfinite, n1)) else nan3
+    status = _final_status_floats(pair, formulation, int(res.status[0]), n1, n2, u2, v2)
+    return ContactPoints(
+        u1=sol[:, 0],
+        v1=sol[:, 1],
+        u2=np.array([u2], dtype=float),
+        v2=np.array([v2], dtype=float),
+        phi1=phi1,
+        phi2=np.array([phi2], dtype=float),
+        position=np.array([r], dtype=float),
+        normal=np.array([n1], dtype=float),
+        te=np.array([transmission_error(p1, phi2, pair.n1, pair.n2, phi10, phi20)], dtype=float),
+        residual=res.residual,
+        iterations=res.iterations,
+        status=np.array([status]),
         formulation=formulation,
         condition=res.condition,
     )
@@ -806,21 +604,26 @@ def _final_status(pair, formulation, status, r, n1, n2, u2, v2):
 
 
 def _final_status_one(pair, formulation, status, n1, n2, u2, v2):
-    """:func:`_final_status` of one point: the same tests on Python floats (NaN fails them alike)."""
-    a, b = n1[0].tolist(), n2[0].tolist()
+    """:func:`_final_status` of one point by :func:`_final_status_floats`."""
+    status[0] = _final_status_floats(
+        pair, formulation, int(status[0]), n1[0].tolist(), n2[0].tolist(), float(u2[0]), float(v2[0])
+    )
+    return status
+
+
+def _final_status_floats(pair, formulation, st: int, a, b, u: float, v: float) -> int:
+    """:func:`_final_status` of one point on Python floats (status ``st``, normals ``a``, ``b``,
+    member 2's parameters ``u``, ``v``): the same tests (NaN fails them alike)."""
     opposite = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < 0
     if formulation == "conventional":
         s = [x + y for x, y in zip(a, b)]
         opposite = opposite and math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) < 1e-6
-    st = int(status[0])
     if st in (_CONVERGED, _OFF_FLANK) and not opposite:
         st = _WRONG_ROOT
     ulo, uhi, vlo, vhi = pair._flank2_limits
-    u, v = float(u2[0]), float(v2[0])
     if st == _CONVERGED and not (u >= ulo and u <= uhi and v >= vlo and v <= vhi):
         st = _OFF_FLANK
-    status[0] = st
-    return status
+    return st
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):

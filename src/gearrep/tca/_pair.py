@@ -147,7 +147,7 @@ class GearPair:
     @cached_property
     def _soa(self) -> dict:
         """The fixed part of the pair's frames prepared once for the structure-of-arrays kernels of
-        :mod:`gearrep.tca._formulations`: ``A2``, ``Q`` (v -> A2 v, Q v on component tuples),
+        :mod:`gearrep.tca._kernels`: ``A2``, ``Q`` (v -> A2 v, Q v on component tuples),
         ``minus_O2`` (v -> v - O2), ``w2`` and ``O2`` (tuples of floats)."""
         return {
             "A2": matrix_applier(self.A2),
@@ -214,6 +214,8 @@ def transmission_error(phi1, phi2, n1, n2, phi10=0.0, phi20=0.0):
         ok = (math.isfinite(n) and n > 0) if type(n) in (int, float) else (np.isfinite(n) and n > 0)
         if not ok:
             raise ValueError(f"{name} must be > 0, got {n!r}")
+    if type(phi1) is float and type(phi2) is float:  # one point: the same operations on floats
+        return (phi2 - phi20) - (n1 / n2) * (phi1 - phi10)
     phi1 = np.asarray(phi1, float)
     phi2 = np.asarray(phi2, float)
     return (phi2 - phi20) - (n1 / n2) * (phi1 - phi10)
