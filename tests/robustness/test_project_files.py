@@ -77,12 +77,18 @@ def test_makefile_installs_from_the_lock_and_rebuilds_when_it_changes():
 def test_default_workflow_profile_sets_valid_snakemake_options():
     snakemake_cli = pytest.importorskip("snakemake.cli")
     profile = yaml.safe_load((ROOT / "profiles" / "default" / "config.yaml").read_text())
-    assert profile == {"cores": 2, "rerun-incomplete": True, "printshellcmds": True}
+    assert profile == {
+        "cores": 2,
+        "rerun-incomplete": True,
+        "printshellcmds": True,
+        "scheduler": "greedy",
+    }
     args = []
     for key, value in profile.items():
         args += [f"--{key}"] if value is True else [f"--{key}", str(value)]
     parsed = snakemake_cli.get_argument_parser().parse_args(args)
     assert (parsed.cores, parsed.rerun_incomplete, parsed.printshellcmds) == (2, True, True)
+    assert parsed.scheduler == "greedy"
 
 
 def test_readme_documents_the_seed_texts_and_keeps_snakemakes_report_under_results():
