@@ -67,7 +67,8 @@ def computed(ax, x, y, label: str, **kw):
     """Computed values: a line (with small dots at the computed points)."""
     kw.setdefault("marker", ".")
     kw.setdefault("markersize", 3)
-    ax.plot(x, y, "-", label=label, **kw)
+    kw.setdefault("linestyle", "-")
+    ax.plot(x, y, label=label, **kw)
     return ax
 
 
