@@ -63,7 +63,22 @@ FIGURE_MODULES = ["matplotlib", "matplotlib.pyplot", "gearrep.plotting"]
 RENDER_MODULES = ["nbformat", "nbconvert"]
 #: the script that executes a study's notebook, and what the warm process imports once for it
 NOTEBOOK_EXECUTOR = "workflow/scripts/execute_notebook.py"
-NOTEBOOK_MODULES = ["nbformat", "papermill"]
+NOTEBOOK_MODULES = [
+    "nbformat",
+    "papermill",
+    # what the notebooks' forked kernels import (execute_notebook.py): the kernel itself, then the
+    # notebooks' own imports
+    "ipykernel.kernelapp",
+    "matplotlib_inline.backend_inline",
+    "IPython.display",
+    "numpy",
+    "pandas",
+    "matplotlib.pyplot",
+    "gearrep.plotting",
+    "gearrep.published",
+    "gearrep.settings",
+    "gearrep.replications.catt",
+]
 
 
 def script_request(script, *, input, output, log, timing, params=None, wildcards=None, preload=()):

@@ -13,22 +13,31 @@ tagged cell.
 Why not the ``notebook:`` directive: Snakemake runs such a job in a fresh process that parses the
 whole workflow again, asks ``papermill --version`` and starts the papermill command, about 3 s
 before the kernel starts; here that is the warm process's fork.
+
+The kernel is a fork of this process (:class:`ForkedKernelManager`) where the kernelspec would
+start this interpreter's ``ipykernel_launcher``: the fork runs the same kernel application with the
+same arguments, environment and working directory, but finds numpy, pandas, matplotlib, IPython
+and gearrep already imported (the warm process imports them once, ``NOTEBOOK_MODULES``), where a
+fresh kernel process spent 1-2 s of CPU importing them for every notebook. Any other kernel command
+(another interpreter or kernel) is started as a process, as jupyter_client does.
 """
 
+import asyncio
 import json
 import os
+import signal
+import sys
 from pathlib import Path
 
 import nbformat
 import papermill
-
-smk = snakemake  # noqa: F821  (provided by the step runner)
+from jupyter_client.manager import AsyncKernelManager
 
 PREAMBLE_TAG = "gearrep-step-properties"
 SCRIPTS = Path(__file__).resolve().parent
 
 
-def preamble_cell():
+def preamble_cell(smk):
     """The first cell: ``snakemake`` with the rule's named files and params, and the working
     directory of the workflow."""
     fields = {k: dict(getattr(smk, k).items()) for k in ("input", "output", "params", "log", "wildcards")}
@@ -45,14 +54,135 @@ def preamble_cell():
     return nbformat.v4.new_code_cell(source, metadata={"tags": [PREAMBLE_TAG]})
 
 
-nb = nbformat.read(smk.params.source, as_version=4)
-nb.cells.insert(0, preamble_cell())
-Path(smk.params.executed).parent.mkdir(parents=True, exist_ok=True)
-papermill.execute_notebook(
-    nb,
-    smk.params.executed,
-    cwd=os.getcwd(),
-    log_output=False,
-    progress_bar=False,
-    request_save_on_cell_execute=False,
-)
+class _ForkedKernel:
+    """The kernel fork, seen as the ``subprocess.Popen`` that jupyter_client's local provisioner
+    holds (poll, wait, send_signal, terminate, kill, pid, returncode; no pipes)."""
+
+    stdin = stdout = stderr = None
+
+    def __init__(self, pid: int):
+        self.pid = pid
+        self.returncode = None
+
+    def _reap(self, flags: int):
+        if self.returncode is None:
+            pid, status = os.waitpid(self.pid, flags)
+            if pid:
+                self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
+
+    def poll(self):
+        return self._reap(os.WNOHANG)
+
+    def wait(self, timeout=None):
+        return self._reap(0)
+
+    def send_signal(self, signum):
+        if self.poll() is None:
+            os.kill(self.pid, signum)
+
+    def terminate(self):
+        self.send_signal(signal.SIGTERM)
+
+    def kill(self):
+        self.send_signal(signal.SIGKILL)
+
+
+def _is_this_ipykernel(cmd) -> bool:
+    """Whether the kernel command is this interpreter's ``-m ipykernel_launcher -f <file>``, with
+    only ``--Name.trait=value`` options besides (papermill adds one: no history file)."""
+    return (
+        len(cmd) >= 5
+        and os.path.realpath(cmd[0]) == os.path.realpath(sys.executable)
+        and cmd[1:4] == ["-m", "ipykernel_launcher", "-f"]
+        and all(a.startswith("--") and "=" in a for a in cmd[5:])
+    )
+
+
+def _run_kernel(argv, env, cwd, parent_pid) -> None:
+    """In the fork: what ``python -m ipykernel_launcher ARGV`` does in a fresh process started by
+    jupyter_client (its own session, the given environment and directory, stdin from /dev/null,
+    the launcher's sys.path without this script's directory); never returns."""
+    code = 1
+    try:
+        os.setsid()
+        # a fresh event loop: the inherited one is the parent's (its selector's descriptors are
+        # shared with the parent, which runs it)
+        asyncio.set_event_loop(asyncio.new_event_loop())
+        if env is not None:
+            os.environ.clear()
+            os.environ.update(env)
+        os.environ["JPY_PARENT_PID"] = str(parent_pid)  # as jupyter_client's launcher sets it
+        # ... and given as an option too: the kernel application read the variable when the warm
+        # process imported it (the kernel exits when its parent dies, and prints no console hint)
+        argv = [*argv, f"--IPKernelApp.parent_handle={parent_pid}"]
+        if cwd:
+            os.chdir(cwd)
+        null = os.open(os.devnull, os.O_RDONLY)
+        os.dup2(null, 0)
+        os.close(null)
+        here = str(Path(__file__).resolve().parent)
+        sys.path[:] = [p for p in sys.path if p not in ("", here)]
+        sys.argv = ["ipykernel_launcher", *argv]
+        pd = sys.modules.get("pandas")
+        if pd is not None:
+            # pandas picks this default when imported: 0 (fit the terminal) outside IPython, as in
+            # the warm process, 20 inside a kernel, as a fresh kernel imports it
+            pd.set_option("display.max_columns", 20)
+        from ipykernel.kernelapp import IPKernelApp
+
+        IPKernelApp.launch_instance(argv=argv)
+        code = 0
+    except SystemExit as e:
+        code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
+    except BaseException:  # noqa: B036  (report anything, then leave without the parent's cleanup)
+        import traceback
+
+        traceback.print_exc()
+    finally:
+        for stream in (sys.stdout, sys.stderr, sys.__stdout__, sys.__stderr__):
+            try:
+                stream.flush()
+            except Exception:  # noqa: BLE001,S110  (a closed stream: nothing to flush)
+                pass
+        os._exit(code)
+
+
+class ForkedKernelManager(AsyncKernelManager):
+    """jupyter_client's kernel manager, with this interpreter's ipykernel started as a fork."""
+
+    async def _async_launch_kernel(self, kernel_cmd, **kw):
+        if not (hasattr(os, "fork") and _is_this_ipykernel(kernel_cmd)):
+            return await super()._async_launch_kernel(kernel_cmd, **kw)
+        sys.stdout.flush()
+        sys.stderr.flush()
+        parent_pid = os.getpid()
+        pid = os.fork()
+        if pid == 0:
+            _run_kernel(kernel_cmd[3:], kw.get("env"), kw.get("cwd"), parent_pid)
+        prov = self.provisioner
+        prov.process = _ForkedKernel(pid)
+        prov.pid = pid
+        prov.pgid = pid  # the fork is its session's leader (os.setsid), as Popen's start_new_session
+        prov.cwd = kw.get("cwd") or os.getcwd()
+        self._reconcile_connection_info(prov.connection_info)
+
+
+def main(smk) -> None:
+    """Execute ``smk.params.source`` into ``smk.params.executed`` with the preamble cell."""
+    nb = nbformat.read(smk.params.source, as_version=4)
+    nb.cells.insert(0, preamble_cell(smk))
+    Path(smk.params.executed).parent.mkdir(parents=True, exist_ok=True)
+    papermill.execute_notebook(
+        nb,
+        smk.params.executed,
+        cwd=os.getcwd(),
+        log_output=False,
+        progress_bar=False,
+        request_save_on_cell_execute=False,
+        kernel_manager_class=ForkedKernelManager,
+    )
+
+
+if __name__ == "__main__":  # run by the step runner (the tests import the module)
+    main(snakemake)  # noqa: F821  (provided by the step runner)
