@@ -85,3 +85,19 @@ def test_other_kernel_commands_are_started_as_processes():
     assert EX._is_this_ipykernel(
         [sys.executable, "-m", "ipykernel_launcher", "-f", "k.json", "--HistoryManager.hist_file=:memory:"]
     )
+
+
+def test_the_fork_handle_reports_an_exit_status_and_an_already_reaped_child():
+    import os
+
+    pid = os.fork()
+    if pid == 0:
+        os._exit(3)
+    k = EX._ForkedKernel(pid)
+    assert k.wait() == 3 and k.poll() == 3
+    k.kill()  # ended: no signal is sent
+    pid = os.fork()
+    if pid == 0:
+        os._exit(0)
+    os.waitpid(pid, 0)  # reaped by someone else
+    assert EX._ForkedKernel(pid).poll() == 0

@@ -66,7 +66,12 @@ class _ForkedKernel:
 
     def _reap(self, flags: int):
         if self.returncode is None:
-            pid, status = os.waitpid(self.pid, flags)
+            try:
+                pid, status = os.waitpid(self.pid, flags)
+            except ChildProcessError:
+                # reaped already (SIGCHLD ignored): ended, status unknown; Popen then says 0 too
+                self.returncode = 0
+                return self.returncode
             if pid:
                 self.returncode = os.waitstatus_to_exitcode(status)
         return self.returncode
