@@ -56,7 +56,8 @@ def preamble_cell(smk):
 
 class _ForkedKernel:
     """The kernel fork, seen as the ``subprocess.Popen`` that jupyter_client's local provisioner
-    holds (poll, wait, send_signal, terminate, kill, pid, returncode; no pipes)."""
+    holds (poll, wait, send_signal, terminate, kill, pid, returncode; no pipes). ``wait`` blocks
+    whatever its timeout: the provisioner calls it only after ``poll`` has seen the end."""
 
     stdin = stdout = stderr = None
 
@@ -126,8 +127,7 @@ def _run_kernel(argv, env, cwd, parent_pid) -> None:
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
         os.close(null)
-        here = str(Path(__file__).resolve().parent)
-        sys.path[:] = [p for p in sys.path if p not in ("", here)]
+        sys.path[:] = [p for p in sys.path if p not in ("", str(SCRIPTS))]
         sys.argv = ["ipykernel_launcher", *argv]
         pd = sys.modules.get("pandas")
         if pd is not None:
