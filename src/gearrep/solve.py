@@ -411,6 +411,11 @@ def _svd_step(J, F, rcond):
     return d, singular, s
 
 
+def _dense(J):
+    """A Jacobian as returned: a lazy one (a function, see :func:`newton`) formed for every row."""
+    return J() if callable(J) else J
+
+
 def _one_point_evaluator(fun, fun_jac, floats, k):
     """evaluate(x, derivs) -> (F, J or None) of one problem at the point ``x`` (a list of k
     floats) as lists (J as rows, with ``derivs``): by ``floats`` where given and it evaluates,
@@ -424,6 +429,7 @@ def _one_point_evaluator(fun, fun_jac, floats, k):
         xa = np.array([xl], dtype=float)
         if derivs:
             Fa, Ja = fun_jac(xa)
+            Ja = _dense(Ja)
             Fa = np.asarray(Fa, dtype=float).reshape(-1)
             return Fa.tolist(), np.asarray(Ja, dtype=float).reshape(len(Fa), k).tolist()
         return np.asarray(fun(xa), dtype=float).reshape(-1).tolist(), None
@@ -456,8 +462,10 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
             break
         if J is None:
             xa = np.array([xl], dtype=float)
-            Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, np.array([F], dtype=float))
+            Ja = _dense(jac(xa)) if jac is not None else numeric_jacobian(fun, xa, np.array([F], dtype=float))
             J = np.asarray(Ja, dtype=float).reshape(m, k).tolist()
+        elif callable(J):  # a lazy Jacobian of the floats evaluation (lists)
+            J = J()
         bad_j = not _matrix_finite(J)
         if bad_j:
             J = [[0.0] * k for _ in range(m)]
@@ -569,7 +577,8 @@ def newton(
     ----------
     fun : callable (n, k) -> (n, m), m >= k; rows are independent problems
     x0 : (n, k) or (k,) starting points
-    jac : callable (n, k) -> (n, m, k), optional; central differences when omitted
+    jac : callable (n, k) -> (n, m, k), optional; central differences when omitted (it may return
+        a lazy Jacobian as ``fun_jac`` may; it is formed for every row at once)
     tol : convergence when the Euclidean residual norm is below ``tol``
     maxiter : iteration limit (must be >= 1)
     damped : Armijo backtracking on the residual norm (step halved up to ``max_halvings``
@@ -584,14 +593,19 @@ def newton(
     fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
         evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
-        whose step the line search shortened is computed afresh). F must equal ``fun(x)``.
+        whose step the line search shortened is computed afresh). F must equal ``fun(x)``. J may
+        be lazy: a function ``J(rows=None)`` returning the Jacobians of the evaluated rows ``rows``
+        (indices into them, increasing; None: all), which the solver calls once, after the
+        convergence test, for the rows that take another step only (a row's last evaluation, at
+        its root, then costs no Jacobian).
     inverse_square : square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
         elimination over the batch (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
         the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
     floats : callable (x, derivs) -> (F, J) or None, optional, with ``fun_jac``: the same
         evaluation for ONE problem on Python floats (x a list of k floats; F a list of m floats,
-        J a list of m rows of k floats with ``derivs``, else None), used when the batch has one
+        J a list of m rows of k floats with ``derivs``, or a function of no argument returning
+        it when needed, else None), used when the batch has one
         row (a numpy call on one row costs more than its arithmetic). Its values must equal those
         of ``fun_jac``/``fun``; where it returns None these evaluate instead.
 
@@ -637,18 +651,19 @@ class _BatchState:
     def __init__(self, fun, fun_jac, x, opts: _BatchOptions):
         n, k = x.shape
         self.x, self.k = x, k
-        self.Jc = self.fresh = None
+        self.Jc = self.fresh = self.pending = None
         if fun_jac is not None:
             F, Jc = fun_jac(x)
             self.F = np.asarray(F, dtype=float).reshape(n, -1)
-            self.Jc = np.asarray(Jc, dtype=float).reshape(n, self.F.shape[1], k)
-            self.fresh = np.ones(n, dtype=bool)  # Jc holds the Jacobian at x
+            self.fresh = np.ones(n, dtype=bool)  # Jc (or the pending lazy one) holds the Jacobian at x
             self.own_jc = False  # Jc may be the caller's array: copied before a partial write
         else:
             self.F = np.asarray(fun(x), dtype=float).reshape(n, -1)
         self.m = self.F.shape[1]
         if self.m < k:
             raise ValueError(f"fun returns {self.m} equations for {k} unknowns; need m >= k")
+        if fun_jac is not None:
+            self.keep_jacobians(np.arange(n), Jc)
         self.res = _row_norms(self.F)
         self.iters = np.zeros(n, dtype=int)
         self.status = np.full(n, int(Status.NOT_CONVERGED), dtype=int)
@@ -661,9 +676,20 @@ class _BatchState:
 
     def keep_jacobians(self, act, J):
         """Keep the Jacobians ``J`` of the rows ``act`` (fresh at the new iterates); all rows:
-        ``J`` replaces the store without a copy."""
-        if act.size == len(self.Jc):
+        ``J`` replaces the store without a copy. A lazy ``J`` (see :func:`newton`) is kept pending,
+        formed by the next step for the rows it takes (:func:`_batch_step`)."""
+        if callable(J):
+            self.pending = (J, act)
+            self.fresh[act] = True
+            return
+        self.pending = None
+        J = np.asarray(J, dtype=float).reshape(act.size, self.m, self.k)
+        n = len(self.fresh)
+        if act.size == n:
             self.Jc, self.own_jc = J, False
+        elif self.Jc is None:  # after lazy ones: a store of every row
+            self.Jc, self.own_jc = np.full((n, self.m, self.k), np.nan), True
+            self.Jc[act] = J
         else:
             if not self.own_jc:
                 self.Jc, self.own_jc = self.Jc.copy(), True
@@ -685,15 +711,25 @@ def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
     """Jacobian of the active rows (reusing the fresh ones of ``fun_jac``) and their Newton step;
     records the condition and counts the iteration. Returns (d, singular)."""
     xa, Fa = S.x[sel], S.F[sel]
-    if S.Jc is not None:
+    if S.pending is not None:  # a lazy Jacobian of the last evaluation: formed for these rows only
+        lazy, evaluated = S.pending
+        S.pending = None
+        stale = np.flatnonzero(~S.fresh[sel])
+        Ja = lazy(None if act.size == evaluated.size else np.searchsorted(evaluated, act))
+        Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
+        if stale.size:
+            box["i"] = act[stale]
+            Ja[stale] = np.asarray(_dense(jac(xa[stale])), dtype=float).reshape(stale.size, S.m, S.k)
+            box["i"] = act
+    elif S.Jc is not None:
         stale = np.flatnonzero(~S.fresh[sel])
         Ja = S.Jc[act] if stale.size else S.Jc[sel]  # a view only where it is not written to
         if stale.size:
             box["i"] = act[stale]
-            Ja[stale] = np.asarray(jac(xa[stale]), dtype=float).reshape(stale.size, S.m, S.k)
+            Ja[stale] = np.asarray(_dense(jac(xa[stale])), dtype=float).reshape(stale.size, S.m, S.k)
             box["i"] = act
     else:
-        Ja = jac(xa) if jac is not None else numeric_jacobian(fun, xa, Fa)
+        Ja = _dense(jac(xa)) if jac is not None else numeric_jacobian(fun, xa, Fa)
     Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
     good_j = _rows_all_finite(Ja)
     bad_j = ~good_j
@@ -758,7 +794,7 @@ def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult
         if fun_jac is not None:
             F_new, J_new = fun_jac(x_new)
             F_new = np.asarray(F_new, dtype=float).reshape(act.size, -1)
-            S.keep_jacobians(act, np.asarray(J_new, dtype=float).reshape(act.size, F_new.shape[1], S.k))
+            S.keep_jacobians(act, J_new)
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
         r_new = _row_norms(F_new)

@@ -136,11 +136,9 @@ def test_closed_form_2x2_step_matches_the_svd_step():
     np.testing.assert_array_equal(d1[:50], d2[:50])  # singular rows: the SVD pseudo-inverse step itself
 
 
-def test_residual_and_jacobian_in_one_call_give_the_same_solves():
-    """newton(fun_jac=...) (issue 20): the same iterates and records as fun + jac, with fewer calls."""
-    rng = np.random.default_rng(3)
-    p = rng.uniform(0.5, 2.0, (40, 2))
-    calls = {"fj": 0}
+def _cubic_sine_rows(p):
+    """(fun, jac) of the 2 x 2 systems x0^3 + x1 = p0, sin x0 + x1^2 = p1, one per row of ``p``,
+    for ``newton(rows=True)``."""
 
     def fun(x, i):
         return np.column_stack([x[:, 0] ** 3 + x[:, 1] - p[i, 0], np.sin(x[:, 0]) + x[:, 1] ** 2 - p[i, 1]])
@@ -150,6 +148,17 @@ def test_residual_and_jacobian_in_one_call_give_the_same_solves():
         J[:, 0, 0], J[:, 0, 1] = 3 * x[:, 0] ** 2, 1.0
         J[:, 1, 0], J[:, 1, 1] = np.cos(x[:, 0]), 2 * x[:, 1]
         return J
+
+    return fun, jac
+
+
+def test_residual_and_jacobian_in_one_call_give_the_same_solves():
+    """newton(fun_jac=...) (issue 20): the same iterates and records as fun + jac, with fewer calls."""
+    rng = np.random.default_rng(3)
+    p = rng.uniform(0.5, 2.0, (40, 2))
+    calls = {"fj": 0}
+
+    fun, jac = _cubic_sine_rows(p)
 
     def fun_jac(x, i):
         calls["fj"] += 1
@@ -162,6 +171,46 @@ def test_residual_and_jacobian_in_one_call_give_the_same_solves():
         for f in ("x", "residual", "iterations", "status", "condition"):
             np.testing.assert_array_equal(getattr(a, f), getattr(b, f))
     assert calls["fj"] > 0
+
+
+def test_a_lazy_jacobian_gives_the_same_solves_and_is_formed_only_for_rows_that_step_again():
+    """newton(fun_jac=...) whose J is a function of the rows (issue 20): the same records as an
+    eager J, bit for bit (damped and plain, rows converging at different steps, a batch of one);
+    J is called at most once per evaluation, only for rows that are not done after it, and never
+    for the evaluation at which every row has converged."""
+    rng = np.random.default_rng(3)
+    p = rng.uniform(0.5, 2.0, (40, 2))
+
+    fun, jac = _cubic_sine_rows(p)
+
+    log = []
+
+    def fun_jac_lazy(x, i):
+        F, n_rows = fun(x, i), len(x)
+        entry = {"n": n_rows, "asked": []}
+        log.append(entry)
+
+        def J(rows=None):
+            entry["asked"].append(n_rows if rows is None else len(rows))
+            full = jac(x, i)
+            return full if rows is None else full[rows]
+
+        return F, J
+
+    x0 = rng.uniform(-2, 2, (40, 2))
+    for damped in (True, False):
+        for start in (x0, x0[:1]):
+            log.clear()
+            a = newton(fun, start, jac, rows=True, damped=damped, fun_jac=lambda x, i: (fun(x, i), jac(x, i)))
+            b = newton(fun, start, jac, rows=True, damped=damped, fun_jac=fun_jac_lazy)
+            for f in ("x", "residual", "iterations", "status", "condition"):
+                np.testing.assert_array_equal(getattr(a, f), getattr(b, f))
+            assert all(len(e["asked"]) <= 1 for e in log)
+            if len(start) > 1:
+                # the first evaluation (the start) forms every row; the last one none
+                assert log[0]["asked"] == [len(start)] and log[-1]["asked"] == []
+                assert sum(sum(e["asked"]) for e in log) < sum(e["n"] for e in log)
+                assert len(np.unique(a.iterations)) > 1 and (a.status == Status.CONVERGED).any()
 
 
 def test_square_step_matches_the_svd_step_and_flags_the_same_rows():

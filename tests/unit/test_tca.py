@@ -481,6 +481,104 @@ def test_one_point_solve_gives_its_batch_row(formulation, fixed):
     assert len(statuses) >= 2  # more than one outcome is exercised
 
 
+@pytest.mark.parametrize("v_column", [True, False])
+def test_a_lazy_jacobian_of_the_kernels_equals_the_eager_one(v_column):
+    """The kernels' lazy Jacobians (issue 20: a row's last evaluation forms none) give bit for bit
+    the eager Jacobians, for every row, a subset of rows and one point on floats, reduced and
+    conventional, with the same residuals."""
+    from gearrep.tca._kernels import _conventional_FJ3, _reduced_FJ3
+
+    rng = np.random.default_rng(5)
+    pair = helical_pair()[0]
+    n = 200
+    phi = -np.pi / 104 + rng.uniform(-0.6, 0.6, n) * 2 * np.pi / 52
+    x = default_start(pair, phi, "conventional") + rng.normal(0.0, 0.2, (n, 5))
+    c1, s1 = np.cos(phi), np.sin(phi)
+    drop = rng.integers(0, 3, n)
+    first0, last2 = drop == 0, drop == 2
+    rows = np.sort(rng.choice(n, 37, replace=False))
+    cols = (0, 1, 2, 3, 4) if v_column else (0, 2, 3, 4)
+
+    def red(derivs, i=None):
+        if i is None:
+            return _reduced_FJ3(pair, x[:, 0], x[:, 1], phi, c1, s1, first0, last2, derivs, v_column)[:2]
+        f = [float(a) for a in (x[i, 0], x[i, 1], phi[i], c1[i], s1[i])]
+        return _reduced_FJ3(pair, *f, bool(first0[i]), bool(last2[i]), derivs, v_column, lists=True)[:2]
+
+    def conv(derivs, i=None):
+        if i is None:
+            return _conventional_FJ3(pair, tuple(x.T), c1, s1, 5, first0, last2, cols, derivs)
+        x5 = x[i].tolist()
+        fl = (float(c1[i]), float(s1[i]), 5, bool(first0[i]), bool(last2[i]))
+        return _conventional_FJ3(pair, x5, *fl, cols, derivs, lists=True)
+
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for kernel in (red, conv):
+            F, J = kernel(True)
+            Fl, Jl = kernel("lazy")
+            np.testing.assert_array_equal(F, Fl)
+            np.testing.assert_array_equal(Jl(), J)
+            np.testing.assert_array_equal(kernel("lazy")[1](rows), J[rows])
+            for i in (0, 17):
+                F1, J1 = kernel(True, i)
+                F1l, J1l = kernel("lazy", i)
+                assert F1 == F1l and J1l() == J1
+                np.testing.assert_array_equal(np.array(J1), J[i])
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_a_solve_leaves_no_reference_cycle(formulation):
+    """A contact solve (batch and one point) frees its evaluations by reference counting: no
+    reference cycle (a lazy Jacobian referring to the dict that holds it, say) keeps the kernel's
+    arrays alive until the cyclic garbage collector runs."""
+    import gc
+
+    pair = spur_pair(crown1=ParabolicCrowning(0.002857), mis=Misalignment(d_gamma_out=D(0.05)))[0]
+    phi = np.linspace(-0.05, 0.05, 300)
+    start = default_start(pair, phi, formulation)
+    start[::7] += 0.4  # rows converging at different steps, some by a shortened step
+    solve_contact(pair, phi, start, formulation=formulation)
+    gc.collect()
+    gc.disable()
+    try:
+        solve_contact(pair, phi, start, formulation=formulation)
+        solve_contact(pair, phi[:1], start[:1], formulation=formulation)
+        assert gc.collect() == 0
+    finally:
+        gc.enable()
+
+
+def test_the_dropped_component_is_the_first_largest_of_the_normal():
+    """The default dropped component per row is argmax |n_f1| (the first on ties; 0 where the
+    normal is not finite), as the stacked array computes it."""
+    from gearrep.surface import cross3, dot3
+    from gearrep.tca._formulations import _largest_normal_component
+
+    pair = helical_pair()[0]
+    rng = np.random.default_rng(2)
+    n = 500
+    u1 = rng.uniform(pair.flank1.u_min, pair.flank1.u_max, n)
+    v1 = rng.uniform(pair.flank1.v_min, pair.flank1.v_max, n)
+    u1[:5] = np.nan
+    phi = rng.uniform(-np.pi, np.pi, n)
+    phi[10:60] = np.round(phi[10:60] / (np.pi / 2)) * (np.pi / 2)  # normals along axes: ties of zeros
+    c1, s1 = np.cos(phi), np.sin(phi)
+    with np.errstate(invalid="ignore"):
+        P = pair.flank1.evaluate_components(u1, v1)
+        N0, N1, N2 = cross3(P[1], P[2])
+        N = (c1 * N0 - s1 * N1, s1 * N0 + c1 * N1, np.broadcast_to(N2, u1.shape))
+        L = np.sqrt(dot3(N, N))
+        a = np.abs(np.stack([np.broadcast_to(x / L, (n,)) for x in N], axis=-1))
+    expected = np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
+    got = _largest_normal_component(pair, u1, v1, c1, s1)
+    np.testing.assert_array_equal(got, expected)
+    assert set(got[:5]) == {0.0} and len(set(got)) >= 2
+    for i in (7, 20):
+        np.testing.assert_array_equal(
+            _largest_normal_component(pair, u1[i : i + 1], v1[i : i + 1], c1[i : i + 1], s1[i : i + 1]), expected[i]
+        )
+
+
 def test_input_validation():
     pair, g1, g2 = spur_pair()
     with pytest.raises(ValueError, match="formulation"):

@@ -172,8 +172,9 @@ def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
         P = pair.flank1.evaluate_components(u1, v1)
         N = rotate_z(c1, s1, cross3(P[1], P[2]))
         L = np.sqrt(dot3(N, N))
-        a = np.abs(np.stack(np.broadcast_arrays(*(x / L for x in N)), axis=-1))
-        return np.argmax(np.nan_to_num(a, nan=0.0), axis=-1).astype(float)
+        a0, a1, a2 = (np.nan_to_num(np.abs(np.broadcast_to(x / L, u1.shape)), nan=0.0) for x in N)
+        # the first largest (argmax's choice on ties), by components
+        return np.where(a2 > np.maximum(a0, a1), 2.0, (a1 > a0).astype(float))
 
 
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
@@ -201,37 +202,47 @@ class _Record:
 
     def at(self, x):
         """(mask of the rows recorded at exactly ``x``, the record: ``x``, ``scalars`` and
-        ``vectors`` (n, 3) of each row's last evaluation)."""
+        ``vectors`` (n, 3) of each row's last evaluation). The last evaluation of every row is the
+        base; the later evaluations of some rows are written over it in their order."""
         n = self.n
-        if self.entries and self.entries[-1][0] is None:  # the last evaluation covered every row
-            _, xe, K = self.entries[-1]
-            self.x = np.array([xe], dtype=float) if type(xe) is list else xe  # a list: one point on floats
-            self.scalars = {key: np.array(K[key], dtype=float).reshape(n) for key in ("u2", "v2", "phi2") if key in K}
-            self.vectors = {key: _stack3(K[key], n) for key in ("r", "n1", "n2")}
-            self.entries = []
-            return (self.x == x).all(axis=1), self
-        self.x = np.full((n, self.k), np.nan)
-        self.scalars = {key: np.full(n, np.nan) for key in ("u2", "v2", "phi2")}
-        self.vectors = {key: np.full((n, 3), np.nan) for key in ("r", "n1", "n2")}
-        filled = np.zeros(n, dtype=bool)
-        for rows, xe, K in reversed(self.entries):
-            rows = np.arange(n) if rows is None else rows
-            new = ~filled[rows]
-            if not new.any():
-                continue
-            r = rows[new]
-            filled[r] = True
-            self.x[r] = xe[new]
-            for key, arr in self.scalars.items():
+        entries, self.entries = self.entries, []
+        full = max((i for i, e in enumerate(entries) if e[0] is None), default=-1)
+        later = entries[full + 1 :]
+        if full >= 0:
+            _, xe, K = entries[full]
+            xe = np.array([xe], dtype=float) if type(xe) is list else xe  # a list: one point on floats
+            if not later:  # the last evaluation covered every row: its arrays as they are
+                self.x = xe
+                self.scalars = {key: np.array(K[key], dtype=float).reshape(n) for key in _SCALARS if key in K}
+                self.vectors = {key: _stack3(K[key], n) for key in _VECTORS}
+                return (self.x == x).all(axis=1), self
+            self.x = np.array(xe, dtype=float)
+            scalars = {key: _own(K.get(key, np.nan), n) for key in _SCALARS}
+            comps = {key: [_own(c, n) for c in K[key]] for key in _VECTORS}
+        else:
+            self.x = np.full((n, self.k), np.nan)
+            scalars = {key: np.full(n, np.nan) for key in _SCALARS}
+            comps = {key: [np.full(n, np.nan) for _ in range(3)] for key in _VECTORS}
+        for rows, xe, K in later:
+            self.x[rows] = xe
+            for key, arr in scalars.items():
                 if key in K:
-                    arr[r] = np.broadcast_to(K[key], new.shape)[new]
-            for key, arr in self.vectors.items():
-                for i in range(3):
-                    arr[r, i] = np.broadcast_to(K[key][i], new.shape)[new]
-            if filled.all():
-                break
-        self.entries = []
+                    arr[rows] = K[key]
+            for key, arrs in comps.items():
+                for arr, c in zip(arrs, K[key]):
+                    arr[rows] = c
+        self.scalars = scalars
+        self.vectors = {key: _stack3(c, n) for key, c in comps.items()}
         return (self.x == x).all(axis=1), self
+
+
+#: the record's entries (reduced: also u2, v2, phi2)
+_SCALARS, _VECTORS = ("u2", "v2", "phi2"), ("r", "n1", "n2")
+
+
+def _own(c, n):
+    """A copy of the (n,) array (or float, broadcast) ``c`` that may be written to."""
+    return np.array(np.broadcast_to(c, (n,)), dtype=float)
 
 
 def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, drop):
@@ -267,11 +278,16 @@ def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, 
 class _Rows:
     """Per-row data of a contact solve (phi1, cos, sin, the dropped normal component as the masks
     drop == 0 and drop == 2, a fixed v1) as contiguous arrays, gathered for the active rows
-    (``idx``; no gather while all rows are active), and for one row as Python floats."""
+    (``idx``; no gather while all rows are active), and for one row as Python floats. Where every
+    row drops the same component the masks are Python bools (the kernels then pick the kept
+    components without a per-row selection)."""
 
     def __init__(self, phi1, c1, s1, drop, v1):
         self.n = len(phi1)
-        self.cols = {"phi1": phi1, "c1": c1, "s1": s1, "first0": drop == 0, "last2": drop == 2, "v1": v1}
+        first0, last2 = drop == 0, drop == 2
+        if self.n > 1 and (drop == drop[0]).all():
+            first0, last2 = bool(first0[0]), bool(last2[0])
+        self.cols = {"phi1": phi1, "c1": c1, "s1": s1, "first0": first0, "last2": last2, "v1": v1}
         self.one = None
         if self.n == 1:
             d = float(drop[0])
@@ -287,7 +303,13 @@ class _Rows:
     def take(self, idx):
         if len(idx) == self.n:
             return self.cols
-        return {k: v[idx] for k, v in self.cols.items()}
+        return {k: (v if type(v) is bool else v[idx]) for k, v in self.cols.items()}
+
+
+#: the ``derivs`` of the kernels for the solves' evaluations: the Jacobian is a lazy one
+#: (:func:`gearrep.tca._kernels._lazy_jacobian`), which :func:`gearrep.solve.newton` forms only for
+#: the rows that take another Newton step (a row's last evaluation, at its root, needs no Jacobian)
+_LAZY = "lazy"
 
 
 def _with_one_point(floats, arrays):
@@ -299,7 +321,10 @@ def _with_one_point(floats, arrays):
         if floats is not None and len(x) == 1:  # one point: the kernel on floats
             out = floats(x[0].tolist(), derivs)
             if out is not None:
-                return np.array([out[0]], dtype=float), (None if out[1] is None else np.array([out[1]], dtype=float))
+                J = out[1]
+                if callable(J):  # a lazy Jacobian on floats: its list formed now (one row)
+                    J = J()
+                return np.array([out[0]], dtype=float), (None if J is None else np.array([J], dtype=float))
         return arrays(x, idx, derivs)
 
     return FJ, floats
@@ -324,7 +349,7 @@ def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
                 q["s1"],
                 q["first0"],
                 q["last2"],
-                derivs=derivs,
+                derivs=_LAZY if derivs else False,
                 v_column=v_column,
                 lists=True,
             )
@@ -336,7 +361,18 @@ def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
     def arrays(x, idx, derivs):
         p = data.take(idx)
         v1 = p["v1"] if fixed else x[:, 1]
-        out = _reduced_FJ3(pair, x[:, 0], v1, p["phi1"], p["c1"], p["s1"], p["first0"], p["last2"], derivs, v_column)
+        out = _reduced_FJ3(
+            pair,
+            x[:, 0],
+            v1,
+            p["phi1"],
+            p["c1"],
+            p["s1"],
+            p["first0"],
+            p["last2"],
+            _LAZY if derivs else False,
+            v_column,
+        )
         record.store(None if len(idx) == data.n else idx, x, out[2])
         return out[:2]
 
@@ -360,7 +396,17 @@ def _conventional_FJ_rows(pair, data: _Rows, free, record):
         x5 = x if len(x) == 5 else [x[0], q["v1"], *x[1:]]  # free = all five or (0, 2, 3, 4)
         try:
             out = _conventional_FJ3(
-                pair, x5, q["c1"], q["s1"], _FIVE, q["first0"], q["last2"], cols, derivs, keep, lists=True
+                pair,
+                x5,
+                q["c1"],
+                q["s1"],
+                _FIVE,
+                q["first0"],
+                q["last2"],
+                cols,
+                _LAZY if derivs else False,
+                keep,
+                lists=True,
             )
         except _SCALAR_ERRORS:
             return None
@@ -372,7 +418,9 @@ def _conventional_FJ_rows(pair, data: _Rows, free, record):
         full = _expand(x, free, p["v1"])
         keep = {}
         x5 = tuple(full[:, i] for i in range(5))
-        out = _conventional_FJ3(pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, derivs, keep)
+        out = _conventional_FJ3(
+            pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, _LAZY if derivs else False, keep
+        )
         record.store(None if len(idx) == data.n else idx, x, keep)
         return out
 

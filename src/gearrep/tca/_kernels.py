@@ -54,26 +54,46 @@ _SCALAR_ERRORS = (ArithmeticError, ValueError)
 
 def _normal_derivatives3(P, sign):
     """:func:`normal_derivatives` in structure-of-arrays form: ``P`` = the six vectors of
-    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple.
-    ``sign`` -1 swaps the operands of every cross product (which negates N and its derivatives
-    exactly), so the signed normal and its derivatives come without a negation pass. On arrays
-    the cross products skip the float components 0.0 and 1.0 (:func:`~gearrep.surface.cross3_sparse`)."""
-    _, ru, rv, ruu, ruv, rvv = P
-    if type(ru[0]) is float:  # one point on floats: every component is a float
-        cr, add = cross3, _add3_plain
-    else:
-        cr, add = cross3_sparse, add3
-    if sign == 1:
-        N, dNu, dNv = cr(ru, rv), add(cr(ruu, rv), cr(ru, ruv)), add(cr(ruv, rv), cr(ru, rvv))
-    else:
-        N, dNu, dNv = cr(rv, ru), add(cr(rv, ruu), cr(ruv, ru)), add(cr(rv, ruv), cr(rvv, ru))
-    N0, N1, N2 = N
+    :meth:`~gearrep.surface.Surface.evaluate_components`; returns (n, n_u, n_v), each a 3-tuple
+    (:func:`_unit_normal3` followed by :func:`_normal_partials3`)."""
+    n, L = _unit_normal3(P, sign)
+    return (n, *_normal_partials3(P, sign, n, L))
+
+
+def _products(P):
+    """The cross product and sum :func:`_normal_derivatives3` uses for the vectors of ``P``: on
+    arrays the cross products skip the float components 0.0 and 1.0
+    (:func:`~gearrep.surface.cross3_sparse`); one point on floats: the plain forms."""
+    if type(P[1][0]) is float:  # one point on floats: every component is a float
+        return cross3, _add3_plain
+    return cross3_sparse, add3
+
+
+def _unit_normal3(P, sign):
+    """The signed unit normal sign * N/|N|, N = r_u x r_v, of the vectors ``P`` (see
+    :func:`_normal_derivatives3`) and |N|: what a residual needs. ``sign`` -1 swaps the operands
+    of the cross product (which negates N exactly), so the signed normal comes without a negation
+    pass."""
+    cr, _ = _products(P)
+    N0, N1, N2 = cr(P[1], P[2]) if sign == 1 else cr(P[2], P[1])
     L = _sqrt(N0 * N0 + N1 * N1 + N2 * N2)
-    n = (N0 / L, N1 / L, N2 / L)
+    return (N0 / L, N1 / L, N2 / L), L
+
+
+def _normal_partials3(P, sign, n, L):
+    """The u- and v-derivatives (n_u, n_v) of the signed unit normal ``n`` = :func:`_unit_normal3`
+    (with its ``L``): n_u = (N_u - n (n . N_u))/|N|, likewise n_v; what a Jacobian needs (the
+    operands of every cross product swapped for ``sign`` -1, as there)."""
+    _, ru, rv, ruu, ruv, rvv = P
+    cr, add = _products(P)
+    if sign == 1:
+        dNu, dNv = add(cr(ruu, rv), cr(ru, ruv)), add(cr(ruv, rv), cr(ru, rvv))
+    else:
+        dNu, dNv = add(cr(rv, ruu), cr(ruv, ru)), add(cr(rv, ruv), cr(rvv, ru))
     pu, pv = dot3(n, dNu), dot3(n, dNv)
     dnu = ((dNu[0] - n[0] * pu) / L, (dNu[1] - n[1] * pu) / L, (dNu[2] - n[2] * pu) / L)
     dnv = ((dNv[0] - n[0] * pv) / L, (dNv[1] - n[1] * pv) / L, (dNv[2] - n[2] * pv) / L)
-    return n, dnu, dnv
+    return dnu, dnv
 
 
 def _add3_plain(a, b):
@@ -95,18 +115,20 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
     ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
     of components: u2, v2, phi2 (arrays), r, n1, n2 (3-tuples) and, with ``derivs``, the
     derivatives with respect to u1 (suffix _u) and, with ``v_column``, v1 (suffix _v):
-    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples). Callers set ``np.errstate`` (off the flanks
-    the arrays hold NaN/inf). A spherical member 2 (bevel pairs, ``flank2.spherical``): the
-    cylindrical back-substitution on the pair's axial view, then (rho2, z2) -> (u2, v2) by
-    :func:`gearrep.tca._bevel.spherical_unknowns`."""
+    du2, dv2, dphi2 (arrays), dr, dn1, dn2 (3-tuples). ``derivs="lazy"``: the derivatives are not
+    computed; the dict's entry "derivs" is a function that returns them (the same values) when called.
+    Callers set ``np.errstate`` (off the flanks the arrays hold NaN/inf). A spherical member 2
+    (bevel pairs, ``flank2.spherical``): the cylindrical back-substitution on the pair's axial view,
+    then (rho2, z2) -> (u2, v2) by :func:`gearrep.tca._bevel.spherical_unknowns` (derivatives
+    computed at once)."""
     if getattr(pair.flank2, "spherical", False):
         from ._bevel import spherical_unknowns
 
-        K = _reduced3(pair.axial_view, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
-        return spherical_unknowns(K, derivs, v_column)
+        K = _reduced3(pair.axial_view, u1, v1, phi1, c1, s1, derivs=bool(derivs), v_column=v_column)
+        return spherical_unknowns(K, bool(derivs), v_column)
     g = pair._soa
     P1 = pair.flank1.evaluate_components(u1, v1)
-    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    n1l, L1 = _unit_normal3(P1, pair.sign1)
     r = rotate_z(c1, s1, P1[0])
     n1 = rotate_z(c1, s1, n1l)
     s = g["Q"](g["minus_O2"](r))  # member-2 axis frame, before Rz(-phi2)
@@ -120,30 +142,41 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
     ref = pair.ratio * phi1
     phi2 = ref + _wrap_any(ang2 - th - ref)
     c2, s2 = _cos_sin(pair.phase2 - phi2)
-    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
+    n2l, L2 = _unit_normal3(P2, pair.sign2)
     n2 = g["A2"](rotate_z(c2, s2, n2l))
     out = dict(u2=u2, v2=v2, phi2=phi2, r=r, n1=n1, n2=n2)
     if not derivs:
         return out
-    q2 = r2[0] * r2[0] + r2[1] * r2[1]
-    ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
-    ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
-    w2xn2 = cross3(g["w2"], n2)
-    for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
-        if j == "_v" and not v_column:
-            break
-        dr = rotate_z(c1, s1, rj)
-        ds = g["Q"](dr)
-        du2 = (sx * ds[0] + sy * ds[1]) / u2
-        dth = (sx * ds[1] - sy * ds[0]) / rho2
-        dv2 = ds[2]
-        dphi2 = ang_u * du2 + ang_v * dv2 - dth
-        dn2l = (dn2u[0] * du2 + dn2v[0] * dv2, dn2u[1] * du2 + dn2v[1] * dv2, dn2u[2] * du2 + dn2v[2] * dv2)
-        dn2 = g["A2"](rotate_z(c2, s2, dn2l))
-        out["dr" + j] = dr
-        out["dn1" + j] = rotate_z(c1, s1, dnj)
-        out["du2" + j], out["dv2" + j], out["dphi2" + j] = du2, dv2, dphi2
-        out["dn2" + j] = (dn2[0] + w2xn2[0] * dphi2, dn2[1] + w2xn2[1] * dphi2, dn2[2] + w2xn2[2] * dphi2)
+
+    def derivatives():  # a dict of its own: the function refers to no dict holding it (no cycle)
+        d = {}
+        dn1u, dn1v = _normal_partials3(P1, pair.sign1, n1l, L1)
+        dn2u, dn2v = _normal_partials3(P2, pair.sign2, n2l, L2)
+        q2 = r2[0] * r2[0] + r2[1] * r2[1]
+        ang_u = (r2[0] * P2[1][1] - r2[1] * P2[1][0]) / q2
+        ang_v = (r2[0] * P2[2][1] - r2[1] * P2[2][0]) / q2
+        w2xn2 = cross3(g["w2"], n2)
+        for j, rj, dnj in (("_u", P1[1], dn1u), ("_v", P1[2], dn1v)):
+            if j == "_v" and not v_column:
+                break
+            dr = rotate_z(c1, s1, rj)
+            ds = g["Q"](dr)
+            du2 = (sx * ds[0] + sy * ds[1]) / u2
+            dth = (sx * ds[1] - sy * ds[0]) / rho2
+            dv2 = ds[2]
+            dphi2 = ang_u * du2 + ang_v * dv2 - dth
+            dn2l = (dn2u[0] * du2 + dn2v[0] * dv2, dn2u[1] * du2 + dn2v[1] * dv2, dn2u[2] * du2 + dn2v[2] * dv2)
+            dn2 = g["A2"](rotate_z(c2, s2, dn2l))
+            d["dr" + j] = dr
+            d["dn1" + j] = rotate_z(c1, s1, dnj)
+            d["du2" + j], d["dv2" + j], d["dphi2" + j] = du2, dv2, dphi2
+            d["dn2" + j] = (dn2[0] + w2xn2[0] * dphi2, dn2[1] + w2xn2[1] * dphi2, dn2[2] + w2xn2[2] * dphi2)
+        return d
+
+    if derivs == "lazy":
+        out["derivs"] = derivatives
+    else:
+        out.update(derivatives())
     return out
 
 
@@ -201,7 +234,11 @@ def _keep3(v, first0, last2):
 def _pack(F_comps, J_cols, n, one):
     """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
     components; None: no J); ``one``: every entry a float (one point), packed by one np.array call;
-    ``one="lists"``: F as a list and J as a list of rows (the form of ``newton(floats=...)``)."""
+    ``one="lists"``: F as a list and J as a list of rows (the form of ``newton(floats=...)``).
+    ``J_cols`` a function: J is a lazy Jacobian for :func:`gearrep.solve.newton`, a function of the
+    rows wanted that packs the columns ``J_cols()`` when called (see :func:`_lazy_jacobian`)."""
+    if callable(J_cols):
+        return _pack(F_comps, None, n, one)[0], _lazy_jacobian(J_cols, n, one)
     if one == "lists":
         return list(F_comps), (None if J_cols is None else [list(row) for row in zip(*J_cols)])
     if one:
@@ -218,28 +255,60 @@ def _pack(F_comps, J_cols, n, one):
         Ft[i] = c
     if J_cols is None:
         return Ft.T, None
-    Jt = np.empty((len(F_comps), len(J_cols), n))
+    return Ft.T, _pack_jacobian(J_cols, len(F_comps), n)
+
+
+def _pack_jacobian(J_cols, m, n):
+    """J (n, m, k) of ``_pack`` from its k columns of m components each (arrays)."""
+    Jt = np.empty((m, len(J_cols), n))
     for k, col in enumerate(J_cols):
         for i, c in enumerate(col):
             Jt[i, k] = c
-    return Ft.T, Jt.transpose(2, 0, 1)
+    return Jt.transpose(2, 0, 1)
+
+
+def _lazy_jacobian(columns, n, one):
+    """The Jacobian of an evaluation as a function ``J(rows=None)`` (see
+    :func:`gearrep.solve.newton`): the columns are computed by ``columns()`` when it is first
+    called and packed as :func:`_pack` does; ``rows`` (indices into the evaluated rows) selects
+    rows of the packed array (a list of rows for one point: ``rows`` is ignored there)."""
+
+    def J(rows=None):
+        cols = columns()
+        m = len(cols[0])
+        if one == "lists":
+            return [list(row) for row in zip(*cols)]
+        if one:
+            return _pack([0.0] * m, cols, 1, True)[1]
+        if rows is not None:  # the components of these rows (1-D gathers), then packed
+            cols = [[c if np.ndim(c) == 0 else c[rows] for c in col] for col in cols]
+        return _pack_jacobian(cols, m, n if rows is None else len(rows))
+
+    return J
 
 
 def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True, lists=False):
     """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components (``lists``:
-    one point on floats, F and J as lists, see :func:`_pack`)."""
+    one point on floats, F and J as lists, see :func:`_pack`); ``derivs="lazy"``: J is a lazy
+    Jacobian (:func:`_lazy_jacobian`), its derivatives computed only when it is called."""
     K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
     n1, n2 = K["n1"], K["n2"]
     f = _keep3(cross3(n1, n2), first0, last2)
     one = "lists" if lists else type(u1) is float
-    n = 1 if one else np.size(f[0])
+    n = 1 if one else np.size(u1)
     if not derivs:
         return (*_pack(f, None, n, one), K)
-    J_cols = []
-    for j in ("_u", "_v") if v_column else ("_u",):
-        a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
-        J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
-    return (*_pack(f, J_cols, n, one), K)
+
+    def columns():
+        if "derivs" in K:
+            K.update(K.pop("derivs")())
+        J_cols = []
+        for j in ("_u", "_v") if v_column else ("_u",):
+            a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
+            J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
+        return J_cols
+
+    return (*_pack(f, columns if derivs == "lazy" else columns(), n, one), K)
 
 
 def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
@@ -254,13 +323,14 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
     five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
     the free ones; ``drop`` None keeps all three normal components (six equations); ``keep``: a dict
     that receives r (member 1's point), n1 and n2 (outward normals) by components; ``lists``: one
-    point on floats, F and J as lists (see :func:`_pack`)."""
+    point on floats, F and J as lists (see :func:`_pack`); ``derivs="lazy"``: J is a lazy Jacobian
+    (:func:`_lazy_jacobian`), the normals' derivatives computed only when it is called."""
     g = pair._soa
     u1, v1, u2, v2, phi2 = x
     P1 = pair.flank1.evaluate_components(u1, v1)
     P2 = pair.flank2.evaluate_components(u2, v2)
-    n2l, dn2u, dn2v = _normal_derivatives3(P2, pair.sign2)
-    n1l, dn1u, dn1v = _normal_derivatives3(P1, pair.sign1)
+    n2l, L2 = _unit_normal3(P2, pair.sign2)
+    n1l, L1 = _unit_normal3(P1, pair.sign1)
     c2, s2 = _cos_sin(pair.phase2 - phi2)
 
     def R2(v):
@@ -280,24 +350,30 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
     F += ns if drop is None else _keep3(ns, first0, last2)
     if not derivs:
         return _pack(F, None, n, one)
-    J_cols = []
-    for col in cols:
-        if col == 0:
-            jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
-        elif col == 1:
-            jr, jn = rotate_z(c1, s1, P1[2]), rotate_z(c1, s1, dn1v)
-        elif col == 2:
-            jr, jn = R2(P2[1]), R2(dn2u)
-            jr = (-jr[0], -jr[1], -jr[2])
-        elif col == 3:
-            jr, jn = R2(P2[2]), R2(dn2v)
-            jr = (-jr[0], -jr[1], -jr[2])
-        else:
-            jr = cross3(g["w2"], rel2)
-            jr = (-jr[0], -jr[1], -jr[2])
-            jn = cross3(g["w2"], n2)
-        J_cols.append(jr + (jn if drop is None else _keep3(jn, first0, last2)))
-    return _pack(F, J_cols, n, one)
+
+    def columns():
+        dn2u, dn2v = _normal_partials3(P2, pair.sign2, n2l, L2)
+        dn1u, dn1v = _normal_partials3(P1, pair.sign1, n1l, L1)
+        J_cols = []
+        for col in cols:
+            if col == 0:
+                jr, jn = rotate_z(c1, s1, P1[1]), rotate_z(c1, s1, dn1u)
+            elif col == 1:
+                jr, jn = rotate_z(c1, s1, P1[2]), rotate_z(c1, s1, dn1v)
+            elif col == 2:
+                jr, jn = R2(P2[1]), R2(dn2u)
+                jr = (-jr[0], -jr[1], -jr[2])
+            elif col == 3:
+                jr, jn = R2(P2[2]), R2(dn2v)
+                jr = (-jr[0], -jr[1], -jr[2])
+            else:
+                jr = cross3(g["w2"], rel2)
+                jr = (-jr[0], -jr[1], -jr[2])
+                jn = cross3(g["w2"], n2)
+            J_cols.append(jr + (jn if drop is None else _keep3(jn, first0, last2)))
+        return J_cols
+
+    return _pack(F, columns if derivs == "lazy" else columns(), n, one)
 
 
 def _conventional_FJ(pair, x, phi1, drop, derivs=True):
