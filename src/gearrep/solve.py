@@ -595,9 +595,9 @@ def newton(
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
         whose step the line search shortened is computed afresh). F must equal ``fun(x)``. J may
         be lazy: a function ``J(rows=None)`` returning the Jacobians of the evaluated rows ``rows``
-        (indices into them, increasing; None: all), which the solver calls once, after the
-        convergence test, for the rows that take another step only (a row's last evaluation, at
-        its root, then costs no Jacobian).
+        (indices into them, increasing; None: all), which the solver calls at most once, at the
+        next step, for the rows that step (a row's last evaluation, at its root, then costs no
+        Jacobian).
     inverse_square : square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
         elimination over the batch (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
@@ -718,6 +718,7 @@ def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
         Ja = lazy(None if act.size == evaluated.size else np.searchsorted(evaluated, act))
         Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
         if stale.size:
+            Ja = np.array(Ja)  # written to: the caller's array may be read-only
             box["i"] = act[stale]
             Ja[stale] = np.asarray(_dense(jac(xa[stale])), dtype=float).reshape(stale.size, S.m, S.k)
             box["i"] = act
