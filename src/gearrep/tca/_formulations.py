@@ -44,21 +44,21 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
 
 
 def _conventional_callables(pair: GearPair, phi1: float, drop: int | None):
-    """(F, J, FJ) of :func:`conventional_system`; FJ(x) = (F(x), J(x)) from one evaluation (the
-    residual by the same expressions as F alone), for ``newton(fun_jac=...)``."""
+    """(F, J, FJ) of :func:`conventional_system`; FJ(x) = (F(x), J) from one evaluation (the
+    residual by the same expressions as F alone) with J lazy (see :func:`gearrep.solve.newton`), for
+    ``newton(fun_jac=...)``; J(x) the Jacobian as an array."""
     if drop is not None and drop not in (0, 1, 2):
         raise ValueError(f"drop must be None or one of 0, 1, 2, got {drop!r}")
 
     def rows(x):
-        x = np.atleast_2d(x)
-        return x, None if drop is None else np.full(len(x), drop)
+        return np.atleast_2d(x), drop
 
     def FJ(x, derivs=True):
         x, d = rows(x)
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return _conventional_FJ(pair, x, phi1, d, derivs=derivs)
 
-    return (lambda x: FJ(x, derivs=False)[0]), (lambda x: FJ(x)[1]), FJ
+    return (lambda x: FJ(x, derivs=False)[0]), (lambda x: FJ(x)[1]), (lambda x: FJ(x, derivs=_LAZY))
 
 
 # ----------------------------------------------------------------------------------------------

@@ -377,12 +377,18 @@ def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, k
 
 
 def _conventional_FJ(pair, x, phi1, drop, derivs=True):
+    """:func:`_conventional_FJ3` of (n, 5) unknowns ``x`` at ``phi1``; ``drop``: None (six
+    equations), one component for every row (0, 1 or 2: picked without a per-row selection) or
+    one per row."""
     x = np.asarray(x, float)
     phi1 = np.broadcast_to(np.asarray(phi1, float), (len(x),))
     c1, s1 = np.cos(phi1), np.sin(phi1)
     d = None if drop is None else np.asarray(drop)
-    f0 = None if d is None else d == 0
-    l2 = None if d is None else d == 2
+    if d is not None and d.ndim == 0:
+        f0, l2 = bool(d == 0), bool(d == 2)
+    else:
+        f0 = None if d is None else d == 0
+        l2 = None if d is None else d == 2
     with np.errstate(invalid="ignore", divide="ignore"):
         return _conventional_FJ3(
             pair, tuple(x[:, i] for i in range(5)), c1, s1, d, f0, l2, (0, 1, 2, 3, 4), derivs=derivs
