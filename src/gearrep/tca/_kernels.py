@@ -269,9 +269,10 @@ def _pack_jacobian(J_cols, m, n):
 
 def _lazy_jacobian(columns, n, one):
     """The Jacobian of an evaluation as a function ``J(rows=None)`` (see
-    :func:`gearrep.solve.newton`): the columns are computed by ``columns()`` when it is first
-    called and packed as :func:`_pack` does; ``rows`` (indices into the evaluated rows) selects
-    rows of the packed array (a list of rows for one point: ``rows`` is ignored there)."""
+    :func:`gearrep.solve.newton`, which calls it at most once): the columns are computed by
+    ``columns()`` when it is called and packed as :func:`_pack` does, only the rows ``rows``
+    (indices into the evaluated rows; None: all) where given (a list of rows for one point:
+    ``rows`` is ignored there)."""
 
     def J(rows=None):
         cols = columns()
