@@ -527,6 +527,31 @@ def test_a_lazy_jacobian_of_the_kernels_equals_the_eager_one(v_column):
 
 
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_a_large_batch_solved_in_blocks_gives_the_same_points(formulation, monkeypatch):
+    """A batch above the block size is solved in equal blocks (issue 20: arrays that fit a core's
+    cache) with every field equal bit for bit to one batch: random starts (several statuses), a
+    fixed v1, an explicit dropped component."""
+    import gearrep.tca._formulations as tf
+
+    pair = helical_pair()[0]
+    rng = np.random.default_rng(9)
+    n = 2003
+    phi = -np.pi / 104 + rng.uniform(-0.6, 0.6, n) * 2 * np.pi / 52
+    start = default_start(pair, phi, formulation) + rng.normal(0.0, 0.3, (n, 2 if formulation == "reduced" else 5))
+    fields = [*ContactPoints.ARRAYS, "condition"]
+    statuses = set()
+    for kw in ({}, {"v1": rng.uniform(-3.0, 3.0, n)}, {"drop": 0, "phi10": 0.01}):
+        whole = solve_contact(pair, phi, start, formulation=formulation, **kw)
+        monkeypatch.setattr(tf, "_BLOCK_ROWS", 700)
+        blocks = solve_contact(pair, phi, start, formulation=formulation, **kw)
+        monkeypatch.setattr(tf, "_BLOCK_ROWS", 20_000)
+        for f in fields:
+            np.testing.assert_array_equal(getattr(blocks, f), getattr(whole, f), err_msg=f)
+        statuses |= set(whole.status.tolist())
+    assert len(statuses) >= 2
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_a_solve_leaves_no_reference_cycle(formulation):
     """A contact solve (batch and one point) frees its evaluations by reference counting: no
     reference cycle (a lazy Jacobian referring to the dict that holds it, say) keeps the kernel's
