@@ -244,10 +244,7 @@ def _pack(F_comps, J_cols, n, one):
     if one:
         m = len(F_comps)
         F = np.array(F_comps, dtype=float).reshape(1, m)
-        if J_cols is None:
-            return F, None
-        flat = [col[i] for i in range(m) for col in J_cols]  # row-major
-        return F, np.array(flat, dtype=float).reshape(1, m, len(J_cols))
+        return F, (None if J_cols is None else _pack_jacobian_one(J_cols, m))
     # filled component by component into (m, n) and (m, k, n) arrays (contiguous writes, one pass
     # each) and handed out as their transposed views (n, m) and (n, m, k): the same values
     Ft = np.empty((len(F_comps), n))
@@ -256,6 +253,12 @@ def _pack(F_comps, J_cols, n, one):
     if J_cols is None:
         return Ft.T, None
     return Ft.T, _pack_jacobian(J_cols, len(F_comps), n)
+
+
+def _pack_jacobian_one(J_cols, m):
+    """J (1, m, k) of ``_pack`` for one point from its k columns of m floats each."""
+    flat = [col[i] for i in range(m) for col in J_cols]  # row-major
+    return np.array(flat, dtype=float).reshape(1, m, len(J_cols))
 
 
 def _pack_jacobian(J_cols, m, n):
@@ -280,7 +283,7 @@ def _lazy_jacobian(columns, n, one):
         if one == "lists":
             return [list(row) for row in zip(*cols)]
         if one:
-            return _pack([0.0] * m, cols, 1, True)[1]
+            return _pack_jacobian_one(cols, m)
         if rows is not None:  # the components of these rows (1-D gathers), then packed
             cols = [[c if np.ndim(c) == 0 else c[rows] for c in col] for col in cols]
         return _pack_jacobian(cols, m, n if rows is None else len(rows))
