@@ -8,6 +8,8 @@
 * With every output up to date, touching one library module plans exactly the jobs that use it.
 
 Each test runs Snakemake in a private copy of the repository's tracked inputs (dry runs only).
+The plan of one target with ``--forceall`` is read off one dry run of every target at once (the
+jobs its output needs, input by input); a test checks that this gives Snakemake's own plan.
 """
 
 from __future__ import annotations
@@ -41,22 +43,48 @@ def smk(cwd, *args):
     return out.stdout + out.stderr
 
 
-_PLANS: dict = {}
+#: every target at once: the default target, the benchmark (all replications) and the screenshot
+EVERY_TARGET = ("all", "bench", "results/report.png")
+
+
+def full_plan(wf, bench_config: Path) -> list[dict]:
+    """The --forceall plan of EVERY_TARGET with every replication benchmarked (``bench_config``)."""
+    return plan(wf, *EVERY_TARGET, "--forceall", "--configfile", "config/config.yaml", str(bench_config))
+
+
+@pytest.fixture(scope="module")
+def bench_all(tmp_path_factory) -> Path:
+    """A config file that benchmarks every replication."""
+    extra = tmp_path_factory.mktemp("cfg") / "bench_all.yaml"
+    extra.write_text("bench:\n  replications: " + json.dumps(_bench_names()) + "\n")
+    return extra
+
+
+@pytest.fixture(scope="module")
+def every_job(wf, bench_all):
+    return full_plan(wf, bench_all)
+
+
+def needed(jobs: list[dict], target: str) -> list[dict]:
+    """The jobs of ``jobs`` (a --forceall plan) that ``target`` (an output file, or a rule without
+    output such as ``all``) needs: its own job and, input by input, the jobs writing their inputs;
+    each once, in plan order. With --forceall this is what Snakemake plans for ``target``
+    (checked against Snakemake's own plans by a test)."""
+    by_output = {o: i for i, j in enumerate(jobs) for o in j["output"]}
+    own = [i for i, j in enumerate(jobs) if target in j["output"] or (j["rule"] == target and not j["output"])]
+    assert len(own) == 1, f"{target}: {len(own)} jobs write it"
+    seen, todo = set(own), list(own)
+    while todo:
+        for path in jobs[todo.pop()]["input"]:
+            i = by_output.get(path)
+            if i is not None and i not in seen:
+                seen.add(i)
+                todo.append(i)
+    return [jobs[i] for i in sorted(seen)]
 
 
 def plan(cwd, *args) -> list[dict]:
-    """The jobs of a dry run: rule, input, output, wildcards, reason (lists of paths). Plans with
-    --forceall do not depend on the state of results/, so they are computed once per module."""
-    key = (str(cwd), args)
-    if "--forceall" in args and key in _PLANS:
-        return _PLANS[key]
-    jobs = _plan(cwd, *args)
-    if "--forceall" in args:
-        _PLANS[key] = jobs
-    return jobs
-
-
-def _plan(cwd, *args) -> list[dict]:
+    """The jobs of a dry run: rule, input, output, wildcards, reason (lists of paths)."""
     jobs, job = [], None
     for line in smk(cwd, "-n", *args).splitlines():
         m = re.match(r"^(?:local)?rule (\w+):$", line)
@@ -158,22 +186,20 @@ def _bench_names() -> list[str]:
     return sorted(REGISTRY)
 
 
-def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
-    extra = tmp_path / "bench_all.yaml"
-    extra.write_text("bench:\n  replications: " + json.dumps(_bench_names()) + "\n")
-    jobs = plan(
-        wf, "all", "bench", "results/report.png", "--forceall", "--configfile", "config/config.yaml", str(extra)
-    )
+def test_every_rule_declares_exactly_the_library_it_imports(every_job):
     sources = rule_sources()
-    checked, wrong = set(), []
-    for job in jobs:
+    checked, wrong, found = set(), [], {}
+    for job in every_job:
         src, dynamic = sources.get(job["rule"], (None, []))
         if src is None:
             continue
         if job["rule"] == "bench_replication":
             dynamic = [f"gearrep.replications.{job['wildcards']['name']}"]
         declared = {p for p in job["input"] if p.startswith("src/gearrep/")}
-        wanted = gearrep_files(src, dynamic)
+        key = (src, tuple(dynamic))  # many jobs run the same source (the study steps)
+        if key not in found:
+            found[key] = gearrep_files(src, dynamic)
+        wanted = found[key]
         if declared != wanted:
             wrong.append(
                 f"rule {job['rule']} ({src.name}): declared but not imported {sorted(declared - wanted)}; "
@@ -187,16 +213,29 @@ def test_every_rule_declares_exactly_the_library_it_imports(wf, tmp_path):
 FINAL_KINDS = re.compile(r"^results/(notebooks/|report|parity/|bench/|.*/figures/)")
 
 
-def _check_files(wf) -> dict[str, str]:
+def _check_files() -> dict[str, str]:
     from gearrep.replications import REGISTRY, load
 
     return {key: f"results/{load(key).CHECK_OUTPUTS['checks']}" for key in REGISTRY}
 
 
-def test_one_replication_check_file_plans_only_its_own_chain(wf):
-    files = _check_files(wf)
-    for name, target in files.items():
-        jobs = plan(wf, "--forceall", target)
+def _jobs(plan_jobs) -> list[tuple]:
+    return sorted((j["rule"], tuple(sorted(j["output"])), tuple(sorted(j["input"]))) for j in plan_jobs)
+
+
+@pytest.mark.parametrize("target", ["results/scorecard.md", "bench"])
+def test_the_jobs_a_target_needs_are_snakemakes_own_plan(wf, bench_all, every_job, target):
+    """What the other tests read off the plan of every target (:func:`needed`) is the plan
+    Snakemake itself makes for the target alone: the scorecard (every replication's check chain)
+    and the benchmark (a rule without output, with every replication configured)."""
+    extra = ("--configfile", "config/config.yaml", str(bench_all)) if target == "bench" else ()
+    own = plan(wf, "--forceall", target, *extra)
+    assert own and _jobs(needed(every_job, target)) == _jobs(own)
+
+
+def test_one_replication_check_file_plans_only_its_own_chain(every_job):
+    for name, target in _check_files().items():
+        jobs = needed(every_job, target)
         rules = [j["rule"] for j in jobs]
         assert all(r.startswith(f"{name}_") for r in rules), (target, rules)
         assert len(rules) == len(set(rules)), (target, rules)
@@ -204,37 +243,31 @@ def test_one_replication_check_file_plans_only_its_own_chain(wf):
         assert not [o for o in outs if FINAL_KINDS.match(o)], (target, outs)
 
 
-def test_scorecard_plans_no_figure_notebook_report_or_bench(wf):
-    jobs = plan(wf, "--forceall", "results/scorecard.md")
+def test_scorecard_plans_no_figure_notebook_report_or_bench(every_job):
+    jobs = needed(every_job, "results/scorecard.md")
     outs = [o for j in jobs for o in j["output"]]
     assert not [o for o in outs if FINAL_KINDS.match(o)], outs
-    n_checks = sum(len(plan(wf, "--forceall", t)) for t in _check_files(wf).values())
+    n_checks = sum(len(needed(every_job, t)) for t in _check_files().values())
     assert len(jobs) == 1 + n_checks  # the scorecard job itself plus each replication's check chain
 
 
-def test_job_counts_of_framework_targets(wf):
-    assert [j["rule"] for j in plan(wf, "--forceall", "results/bench/throughput.csv")] == ["bench_core"]
-    import yaml
-
+def test_job_counts_of_framework_targets(every_job):
+    assert [j["rule"] for j in needed(every_job, "results/bench/throughput.csv")] == ["bench_core"]
     from gearrep.replications import REGISTRY
 
-    n_rep = len(
-        ((yaml.safe_load((wf / "config" / "config.yaml").read_text()) or {}).get("bench") or {}).get(
-            "replications", list(REGISTRY)
-        )
-    )
-    bench = sorted(j["rule"] for j in plan(wf, "--forceall", "bench"))
-    assert bench == sorted(["bench", "bench_core", "bench_defaults"] + ["bench_replication"] * n_rep)
-    default = {j["rule"] for j in plan(wf, "--forceall")}
+    # one bench_replication job per configured replication (every_job configures all of them)
+    bench = sorted(j["rule"] for j in needed(every_job, "bench"))
+    assert bench == sorted(["bench", "bench_core", "bench_defaults"] + ["bench_replication"] * len(REGISTRY))
+    default = {j["rule"] for j in needed(every_job, "all")}
     assert not {r for r in default if r.startswith("bench")} and "report_screenshot" not in default
     assert {"scorecard", "report", "all"} <= default
 
 
-def test_touching_one_module_reruns_exactly_its_users(wf):
+def test_touching_one_module_reruns_exactly_its_users(wf, every_job):
     """Mark every output of the default target as up to date (empty files + --touch), then touch
     src/gearrep/report.py: only the report job, the per-seed parity-plot jobs that draw with it
     (one per seed with a study) and the `all` target may be planned."""
-    for job in plan(wf, "--forceall"):
+    for job in needed(every_job, "all"):
         for o in job["output"]:
             p = wf / o
             p.parent.mkdir(parents=True, exist_ok=True)
@@ -261,6 +294,6 @@ def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):
 
 
 @pytest.mark.parametrize("target", ["results/thesis/convergence.csv", "results/tseng/curvature_table_4_3.csv"])
-def test_one_study_output_plans_its_job_alone(wf, target):
-    jobs = plan(wf, "--forceall", target)
+def test_one_study_output_plans_its_job_alone(every_job, target):
+    jobs = needed(every_job, target)
     assert len(jobs) == 1, [j["rule"] for j in jobs]
