@@ -127,6 +127,18 @@ class SurfacePoint:
         """Unit normal n = (r_u x r_v) / |r_u x r_v| (the orientation every curvature uses)."""
         return unit(cross(self.r_u, self.r_v))
 
+    @classmethod
+    def from_components(cls, comps) -> SurfacePoint:
+        """The point of :meth:`Surface.evaluate_components`'s six vectors ``comps`` (3-tuples of
+        broadcastable arrays or floats): each stacked into a (..., 3) array (the inverse of
+        :meth:`components`; a float component is broadcast to the arrays' shape)."""
+        shape = np.broadcast_shapes(*(np.shape(c) for vec in comps for c in vec))
+        out = np.empty((6,) + shape + (3,))
+        for i, vec in enumerate(comps):
+            for k, c in enumerate(vec):
+                out[i, ..., k] = c
+        return cls(*out)
+
     def components(self) -> tuple:
         """The six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each as a 3-tuple of component arrays
         (views, no copies): the structure-of-arrays form of :meth:`Surface.evaluate_components`."""
@@ -304,28 +316,33 @@ class AxialForm(Surface):
         return self.flank.position(np.arctan2(rho, z), np.hypot(rho, z))
 
     def evaluate(self, rho, z) -> SurfacePoint:
+        return SurfacePoint.from_components(self.evaluate_components(rho, z))
+
+    def evaluate_components(self, rho, z) -> tuple:
+        """The chain rule of the class docstring by components (structure of arrays), on the
+        flank's own :meth:`~Surface.evaluate_components`."""
         rho, z = np.broadcast_arrays(np.asarray(rho, float), np.asarray(z, float))
         v = np.hypot(rho, z)
-        P = self.flank.evaluate(np.arctan2(rho, z), v)
+        r, r_u, r_v, r_uu, r_uv, r_vv = self.flank.evaluate_components(np.arctan2(rho, z), v)
         v2, v3, v4 = v * v, v**3, v**4
-        ua, ub = (z / v2)[..., None], (-rho / v2)[..., None]
-        va, vb = (rho / v)[..., None], (z / v)[..., None]
-        uaa, uab, ubb = (
-            (-2 * rho * z / v4)[..., None],
-            ((rho * rho - z * z) / v4)[..., None],
-            (2 * rho * z / v4)[..., None],
-        )
-        vaa, vab, vbb = ((z * z / v3)[..., None], (-rho * z / v3)[..., None], (rho * rho / v3)[..., None])
-        r_a = P.r_u * ua + P.r_v * va
-        r_b = P.r_u * ub + P.r_v * vb
+        ua, ub = z / v2, -rho / v2
+        va, vb = rho / v, z / v
+        uaa, uab, ubb = -2 * rho * z / v4, (rho * rho - z * z) / v4, 2 * rho * z / v4
+        vaa, vab, vbb = z * z / v3, -rho * z / v3, rho * rho / v3
+
+        def first(pu, pv):
+            return tuple(r_u[k] * pu + r_v[k] * pv for k in range(3))
 
         def second(pu, pv, qu, qv, uxy, vxy):
-            return P.r_uu * pu * qu + P.r_uv * (pu * qv + qu * pv) + P.r_vv * pv * qv + P.r_u * uxy + P.r_v * vxy
+            mixed = pu * qv + qu * pv
+            return tuple(
+                r_uu[k] * pu * qu + r_uv[k] * mixed + r_vv[k] * pv * qv + r_u[k] * uxy + r_v[k] * vxy for k in range(3)
+            )
 
-        return SurfacePoint(
-            P.r,
-            r_a,
-            r_b,
+        return (
+            r,
+            first(ua, va),
+            first(ub, vb),
             second(ua, va, ua, va, uaa, vaa),
             second(ua, va, ub, vb, uab, vab),
             second(ub, vb, ub, vb, ubb, vbb),

@@ -73,9 +73,14 @@ def test_every_point_on_its_sphere_and_derivatives(case, crown, side):
     for name in ("r_u", "r_v"):
         a, b = getattr(P, name), getattr(Q, name)
         assert np.max(np.abs(a - b)) < 1e-8 * np.max(np.abs(a))
-    h = 1e-6
-    A, B = f.evaluate(u + h, v), f.evaluate(u - h, v)
-    C, E = f.evaluate(u, v + h), f.evaluate(u, v - h)
+    _second_derivatives_match_differences(f, P, u, v)
+
+
+def _second_derivatives_match_differences(surface, P, u, v, h=1e-6):
+    """``P`` = surface.evaluate(u, v): its second derivatives against central differences of the
+    analytic first ones."""
+    A, B = surface.evaluate(u + h, v), surface.evaluate(u - h, v)
+    C, E = surface.evaluate(u, v + h), surface.evaluate(u, v - h)
     for got, want in (
         (P.r_uu, (A.r_u - B.r_u) / (2 * h)),
         (P.r_uv, (C.r_u - E.r_u) / (2 * h)),
@@ -152,6 +157,12 @@ def test_axial_form_is_the_same_surface():
     R = fd_derivatives(a.position, v * np.sin(u), v * np.cos(u), 1e-5, 1e-5)
     for name in ("r_u", "r_v"):
         assert np.max(np.abs(getattr(Q, name) - getattr(R, name))) < 1e-8
+    # the chain rule's second derivatives against differences of its analytic first ones
+    rho, z = v * np.sin(u), v * np.cos(u)
+    _second_derivatives_match_differences(a, Q, rho, z)
+    # by components (structure of arrays, what the TCA kernels read): the same numbers
+    for vec, comps in zip((Q.r, Q.r_u, Q.r_v, Q.r_uu, Q.r_uv, Q.r_vv), a.evaluate_components(rho, z)):
+        np.testing.assert_array_equal(np.stack(np.broadcast_arrays(*comps), axis=-1), vec)
 
 
 def _pair(case, crowning=None, mis=None):

@@ -99,7 +99,7 @@ def test_evaluate_components_equal_evaluate():
     """Structure-of-arrays evaluation (issue 20): the default (from evaluate), the involute flank's
     own (arrays and one point on floats) and a rotated surface give evaluate's numbers."""
     from gearrep.frames import rot_x
-    from gearrep.surface import RotatedSurface, cross3, dot3
+    from gearrep.surface import RotatedSurface, SurfacePoint, cross3, dot3
     from gearrep.surfaces.analytic import Sphere
     from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData, ParabolicCrowning, TipRelief
 
@@ -124,6 +124,11 @@ def test_evaluate_components_equal_evaluate():
             np.testing.assert_allclose(
                 np.array(comps, float).reshape(3), vec[0], rtol=0, atol=1e-12 * (1 + np.abs(vec).max())
             )
+    # SurfacePoint.from_components is the inverse of components, floats broadcast
+    P = flanks[1].evaluate(u, v)
+    np.testing.assert_array_equal(SurfacePoint.from_components(P.components()).r_vv, P.r_vv)
+    Q = SurfacePoint.from_components(flanks[1].evaluate_components(u, v))
+    assert Q.r_u.shape == (20, 3) and np.all(Q.r_u[:, 2] == 0.0) and np.all(Q.r_v[:, 2] == 1.0)
     a, b = (1.0, 2.0, 3.0), (-1.0, 0.5, 4.0)
     np.testing.assert_array_equal(cross3(a, b), np.cross(a, b))
     assert dot3(a, b) == 12.0

@@ -292,12 +292,13 @@ class SphericalInvoluteFlank(Surface):
         s, sb = self.side, self.sin_ab
         d = dp + dl
         with np.errstate(invalid="ignore", divide="ignore"):
-            psi = s * (self.c - inv - d / (v * sb)) + tw
-            psi_u = s * (-i1 - dp1 / (v * sb))
-            psi_uu = s * (-i2 - dp2 / (v * sb))
-            psi_v = s * (-(dl1 / v - d / (v * v)) / sb) + tw1
-            psi_uv = s * dp1 / (v * v * sb)
-            psi_vv = s * (-(dl2 / v - 2.0 * dl1 / (v * v) + 2.0 * d / v**3) / sb) + tw2
+            vsb, vv = v * sb, v * v  # each used more than once (the same products)
+            psi = s * (self.c - inv - d / vsb) + tw
+            psi_u = s * (-i1 - dp1 / vsb)
+            psi_uu = s * (-i2 - dp2 / vsb)
+            psi_v = s * (-(dl1 / v - d / vv) / sb) + tw1
+            psi_uv = s * dp1 / (vv * sb)
+            psi_vv = s * (-(dl2 / v - 2.0 * dl1 / vv + 2.0 * d / v**3) / sb) + tw2
         return psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv
 
     def azimuth(self, u, v):
@@ -317,28 +318,43 @@ class SphericalInvoluteFlank(Surface):
         r_uu = v (E_uu + 2 E_upsi psi_u + E_psipsi psi_u^2 + E_psi psi_uu),
         r_uv = E_u + E_psi psi_u + v (E_upsi psi_v + E_psipsi psi_u psi_v + E_psi psi_uv),
         r_vv = 2 E_psi psi_v + v (E_psipsi psi_v^2 + E_psi psi_vv)."""
+        return SurfacePoint.from_components(self.evaluate_components(u, v))
+
+    def evaluate_components(self, u, v) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays, see
+        :meth:`gearrep.surface.Surface.evaluate_components`): e_psi and e_rho have no axial
+        component, so the axial components leave out those (zero) terms."""
         u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
         psi, pu, pv, puu, puv, pvv = self.azimuth_derivs(u, v)
         su, cu = np.sin(u), np.cos(u)
         cp, sp = np.cos(psi), np.sin(psi)
-        zero = np.zeros(u.shape)
-        E = np.stack([su * cp, su * sp, cu], axis=-1)
-        Eu = np.stack([cu * cp, cu * sp, -su], axis=-1)
-        ep = np.stack([-sp, cp, zero], axis=-1)
-        er = np.stack([cp, sp, zero], axis=-1)
-        w = v[..., None]
-        a_u, a_v = pu[..., None], pv[..., None]
-        S, C = su[..., None], cu[..., None]
-        Ep = S * ep
-        Eup = C * ep
-        Epp = -S * er
-        r = w * E
-        r_u = w * (Eu + Ep * a_u)
-        r_v = E + w * Ep * a_v
-        r_uu = w * (-E + 2.0 * Eup * a_u + Epp * a_u * a_u + Ep * puu[..., None])
-        r_uv = Eu + Ep * a_u + w * (Eup * a_v + Epp * a_u * a_v + Ep * puv[..., None])
-        r_vv = 2.0 * Ep * a_v + w * (Epp * a_v * a_v + Ep * pvv[..., None])
-        return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
+        msp, msu = -sp, -su
+        # E, E_u; E_psi = sin u e_psi, E_upsi = cos u e_psi, E_psipsi = -sin u e_rho (x, y only)
+        Ex, Ey, Ez = su * cp, su * sp, cu
+        Eux, Euy = cu * cp, cu * sp
+        Epx, Epy = su * msp, su * cp
+        Eupx, Eupy = cu * msp, cu * cp
+        Eppx, Eppy = msu * cp, msu * sp
+        w = v
+        r = (w * Ex, w * Ey, w * Ez)
+        r_u = (w * (Eux + Epx * pu), w * (Euy + Epy * pu), w * msu)
+        r_v = (Ex + w * Epx * pv, Ey + w * Epy * pv, Ez)
+        r_uu = (
+            w * (-Ex + 2.0 * Eupx * pu + Eppx * pu * pu + Epx * puu),
+            w * (-Ey + 2.0 * Eupy * pu + Eppy * pu * pu + Epy * puu),
+            w * -Ez,
+        )
+        r_uv = (
+            Eux + Epx * pu + w * (Eupx * pv + Eppx * pu * pv + Epx * puv),
+            Euy + Epy * pu + w * (Eupy * pv + Eppy * pu * pv + Epy * puv),
+            msu,
+        )
+        r_vv = (
+            2.0 * Epx * pv + w * (Eppx * pv * pv + Epx * pvv),
+            2.0 * Epy * pv + w * (Eppy * pv * pv + Epy * pvv),
+            0.0 * w,
+        )
+        return r, r_u, r_v, r_uu, r_uv, r_vv
 
     def outward_normal(self, u, v) -> np.ndarray:
         return self.outward_sign * self.evaluate(u, v).normal
