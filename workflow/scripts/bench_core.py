@@ -112,6 +112,20 @@ def catt_case(rng, n):
     return mesh.gear_pair, phi, ca.starts(mesh, phi, q["start_offset_mm"]), {"tol": q["tol"], "maxiter": q["maxiter"]}
 
 
+def bevel_case(rng, n):
+    """Seed 003 sec. 5: the crowned spiral bevel pair of the convergence study (Table 12), aligned,
+    from the default starts, at angles where the tooth pair they start on is in contact (from half
+    an angular pitch before the pitch-point position to 0.05 of one after it; its contact ends
+    about 0.09 after)."""
+    from gearrep.replications.thesis.bevel import convergence_pair
+
+    s, d = study("thesis")
+    pair = convergence_pair(s, d, "spiral_bevel_17_17")
+    p = 2 * np.pi / pair.n1
+    phi = rng.uniform(-0.45 * p, 0.05 * p, n)
+    return pair, phi, default_start(pair, phi, "reduced"), {"tol": s["tol"]}
+
+
 rng = np.random.default_rng(7)
 README = "involute spur 52/72 crowned, 0.05 deg out-of-plane (README pair)"
 # (family, formulation, case, points per single-point run): the Novikov pair takes ~30 damped
@@ -133,6 +147,7 @@ CASES = [
         max(N_SINGLE // 20, 5),
     ),
     ("CATT pair of seed 004 sec. 4", "conventional", catt_case(rng, N_VEC), N_SINGLE),
+    ("spiral bevel pair of seed 003 sec. 5 (17/17, crowned)", "reduced", bevel_case(rng, N_VEC), N_SINGLE),
 ]
 
 rows = []
