@@ -67,7 +67,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..surface import Surface, SurfacePoint
-from .involute import InvoluteFlank, RootRelief, TipRelief, _check_finite, _flank_options, _mating_pair
+from .involute import (
+    InvoluteFlank,
+    RootRelief,
+    TipRelief,
+    _broadcast2,
+    _check_finite,
+    _flank_options,
+    _mating_pair,
+    _shaped,
+)
 
 __all__ = [
     "spherical_involute_azimuth",
@@ -276,7 +285,7 @@ class SphericalInvoluteFlank(Surface):
 
     def azimuth_derivs(self, u, v):
         """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
-        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
         _, inv, i1, i2 = _sigma_derivs(u, self.a_b)
         dp = np.zeros(u.shape)
         dp1 = np.zeros(u.shape)
@@ -285,7 +294,7 @@ class SphericalInvoluteFlank(Surface):
             a, b, c = r(u)
             dp, dp1, dp2 = dp + a, dp1 + b, dp2 + c
         if self.crowning is not None:
-            dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
+            dl, dl1, dl2 = (_shaped(x, u.shape) for x in self.crowning(v))
         else:
             dl = dl1 = dl2 = np.zeros(u.shape)
         tw, tw1, tw2 = self.twist(v)
@@ -305,7 +314,7 @@ class SphericalInvoluteFlank(Surface):
         return self.azimuth_derivs(u, v)[0]
 
     def position(self, u, v) -> np.ndarray:
-        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
         psi = self.azimuth(u, v)
         su = np.sin(u)
         return np.stack([v * su * np.cos(psi), v * su * np.sin(psi), v * np.cos(u)], axis=-1)
@@ -324,7 +333,7 @@ class SphericalInvoluteFlank(Surface):
         """:meth:`evaluate` by components (structure of arrays, see
         :meth:`gearrep.surface.Surface.evaluate_components`): e_psi and e_rho have no axial
         component, so the axial components leave out those (zero) terms."""
-        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
         psi, pu, pv, puu, puv, pvv = self.azimuth_derivs(u, v)
         su, cu = np.sin(u), np.cos(u)
         cp, sp = np.cos(psi), np.sin(psi)

@@ -122,6 +122,17 @@ def involute_polar_angle(u, r_b):
     return t - np.arctan(t)
 
 
+def _shaped(x, shape):
+    """``x`` broadcast to ``shape`` (a read-only view), or ``x`` itself where it has that shape
+    already (on small batches a broadcast costs more than the arithmetic)."""
+    return x if np.shape(x) == shape else np.broadcast_to(x, shape)
+
+
+def _broadcast2(u, v):
+    """``np.broadcast_arrays(u, v)`` of two arrays, or the two themselves where their shapes agree."""
+    return (u, v) if u.shape == v.shape else np.broadcast_arrays(u, v)
+
+
 def _inv_derivs(u, r_b):
     """inv(u), d inv/du = s/(r_b u), d2 inv/du2 = r_b/(s u^2) with s = sqrt(u^2 - r_b^2)."""
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -519,10 +530,10 @@ class InvoluteFlank(Surface):
         """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
-        u, v = np.broadcast_arrays(u, v)
+        u, v = _broadcast2(u, v)
         inv, i1, i2 = _inv_derivs(u, self.r_b)
         if self.crowning is not None:
-            dl, dl1, dl2 = (np.broadcast_to(x, u.shape) for x in self.crowning(v))
+            dl, dl1, dl2 = (_shaped(x, u.shape) for x in self.crowning(v))
         else:
             dl = dl1 = dl2 = 0.0
         tw, tw1, tw2 = self.twist(v)
@@ -543,7 +554,7 @@ class InvoluteFlank(Surface):
             psi_uu = s * -i2
         psi_v = tw1 - s * dl1 / rb
         psi_vv = tw2 - s * dl2 / rb
-        return psi, psi_u, np.broadcast_to(psi_v, u.shape), psi_uu, np.zeros_like(u), np.broadcast_to(psi_vv, u.shape)
+        return psi, psi_u, _shaped(psi_v, u.shape), psi_uu, np.zeros_like(u), _shaped(psi_vv, u.shape)
 
     def polar_angle(self, u, v):
         """Polar angle psi(u, v) of the flank point in the gear frame (eq B)."""
@@ -554,7 +565,7 @@ class InvoluteFlank(Surface):
         """r(u, v) = (u cos psi, u sin psi, v) (eq A; thesis eq 3-5 with corrections 1, 3, 4)."""
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
-        u, v = np.broadcast_arrays(u, v)
+        u, v = _broadcast2(u, v)
         psi = self.polar_angle(u, v)
         return np.stack([u * np.cos(psi), u * np.sin(psi), v], axis=-1)
 
@@ -569,7 +580,7 @@ class InvoluteFlank(Surface):
         """
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
-        u, v = np.broadcast_arrays(u, v)
+        u, v = _broadcast2(u, v)
         psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
         c, s = np.cos(psi), np.sin(psi)
         # the six vectors are written component by component into one array (no stacking)
@@ -600,7 +611,7 @@ class InvoluteFlank(Surface):
             return self._components_of_one_point(u, v)
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
-        u, v = np.broadcast_arrays(u, v)
+        u, v = _broadcast2(u, v)
         psi, pu, pv, puu, _, pvv = self.polar_angle_derivs(u, v)
         return _flank_components(u, v, np.cos(psi), np.sin(psi), pu, pv, puu, pvv)
 
