@@ -231,6 +231,17 @@ def _keep3(v, first0, last2):
     return np.where(first0, v[1], v[0]), np.where(last2, v[1], v[2])
 
 
+def _cross_kept(a, b, first0, last2):
+    """The two components of a x b (vectors by components) that :func:`_keep3` keeps; where every
+    row drops the same component (Python bools) only those two are computed (the same values)."""
+    if type(first0) is not bool:
+        return _keep3(cross3(a, b), first0, last2)
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    c1 = a2 * b0 - a0 * b2 if (first0 or last2) else None
+    return (c1 if first0 else a1 * b2 - a2 * b1), (c1 if last2 else a0 * b1 - a1 * b0)
+
+
 def _pack(F_comps, J_cols, n, one):
     """F (n, m) from its m components and J (n, m, len(J_cols)) from its columns (each m
     components; None: no J); ``one``: every entry a float (one point), packed by one np.array call;
@@ -297,7 +308,7 @@ def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_colum
     Jacobian (:func:`_lazy_jacobian`), its derivatives computed only when it is called."""
     K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
     n1, n2 = K["n1"], K["n2"]
-    f = _keep3(cross3(n1, n2), first0, last2)
+    f = _cross_kept(n1, n2, first0, last2)
     one = "lists" if lists else type(u1) is float
     n = 1 if one else np.size(u1)
     if not derivs:
@@ -308,8 +319,8 @@ def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_colum
             K.update(K.pop("derivs")())
         J_cols = []
         for j in ("_u", "_v") if v_column else ("_u",):
-            a, b = cross3(K["dn1" + j], n2), cross3(n1, K["dn2" + j])
-            J_cols.append(_keep3((a[0] + b[0], a[1] + b[1], a[2] + b[2]), first0, last2))
+            a, b = _cross_kept(K["dn1" + j], n2, first0, last2), _cross_kept(n1, K["dn2" + j], first0, last2)
+            J_cols.append((a[0] + b[0], a[1] + b[1]))
         return J_cols
 
     return (*_pack(f, columns if derivs == "lazy" else columns(), n, one), K)
