@@ -553,6 +553,44 @@ def test_a_large_batch_solved_in_blocks_gives_the_same_points(formulation, monke
 
 
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_the_flank_evaluation_that_picks_the_dropped_component_is_the_first_iterates(formulation, monkeypatch):
+    """Member 1's flank evaluated at the starts to pick the dropped component (issue 20) serves the
+    solve's first evaluation: a solve that picks it evaluates the flank as often as one given the
+    same component, with every field equal bit for bit (free and fixed v1); the evaluation is
+    handed out once, and only for exactly the starts' (u1, v1)."""
+    from gearrep.tca._formulations import _Rows
+
+    pair = spur_pair(crown1=ParabolicCrowning(0.002857), mis=Misalignment(d_gamma_out=D(0.05)))[0]
+    phi = np.linspace(-0.05, 0.05, 400)
+    start = default_start(pair, phi, formulation)
+    start[::5] += 0.3
+    flank = pair.flank1
+    calls = []
+
+    def counted(u, v, evaluate=flank.evaluate_components):
+        calls.append(np.size(u))
+        return evaluate(u, v)
+
+    monkeypatch.setattr(flank, "evaluate_components", counted)
+    for kw in ({}, {"v1": start[:, 1] - 0.2}):
+        calls[:] = []
+        picked = solve_contact(pair, phi, start, formulation=formulation, **kw)
+        n_picked, calls[:] = len(calls), []
+        given = solve_contact(pair, phi, start, formulation=formulation, drop=1, **kw)  # the spur pair's pick
+        assert n_picked == len(calls) > 2
+        for f in [*ContactPoints.ARRAYS, "condition"]:
+            np.testing.assert_array_equal(getattr(picked, f), getattr(given, f), err_msg=f)
+    u, v = np.array([1.0, 2.0]), np.array([3.0, 4.0])
+
+    def rows():
+        return _Rows(phi[:2], phi[:2], phi[:2], np.ones(2), np.full(2, np.nan), (u, v, "P"))
+
+    r = rows()
+    assert r.start_flank1(u.copy(), v.copy()) == "P" and r.start_flank1(u, v) is None  # once
+    assert rows().start_flank1(u, v + 1e-15) is None and rows().start_flank1(u[:1], v[:1]) is None
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_a_solve_leaves_no_reference_cycle(formulation):
     """A contact solve (batch and one point) frees its evaluations by reference counting: no
     reference cycle (a lazy Jacobian referring to the dict that holds it, say) keeps the kernel's

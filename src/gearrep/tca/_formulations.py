@@ -154,9 +154,11 @@ def _prep(phi1, start, width):
     return np.broadcast_to(phi1, (n,)).copy(), np.broadcast_to(start, (n, width)).copy()
 
 
-def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
+def _largest_normal_component(pair, u1, v1, c1, s1, keep=None) -> np.ndarray:
     """Per row the index (as float) of the largest component of member 1's unit normal in S_f at
-    (u1, v1) turned by (cos, sin) = (c1, s1); 0 where it is not finite (the solve reports those)."""
+    (u1, v1) turned by (cos, sin) = (c1, s1); 0 where it is not finite (the solve reports those).
+    ``keep``: a dict that receives member 1's flank evaluated at (u1, v1) by components as
+    ``keep["flank1"] = (u1, v1, P)`` (arrays only; see :meth:`_Rows.start_flank1`)."""
     if len(u1) == 1:  # one point: on floats (numpy scalars where the family has no float path)
         try:
             with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
@@ -170,6 +172,8 @@ def _largest_normal_component(pair, u1, v1, c1, s1) -> np.ndarray:
             pass
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):  # a non-finite start ends as DIVERGED
         P = pair.flank1.evaluate_components(u1, v1)
+        if keep is not None:
+            keep["flank1"] = (u1, v1, P)
         N = rotate_z(c1, s1, cross3(P[1], P[2]))
         L = np.sqrt(dot3(N, N))
         a0, a1, a2 = (np.nan_to_num(np.abs(np.broadcast_to(x / L, u1.shape)), nan=0.0) for x in N)
@@ -282,8 +286,9 @@ class _Rows:
     row drops the same component the masks are Python bools (the kernels then pick the kept
     components without a per-row selection)."""
 
-    def __init__(self, phi1, c1, s1, drop, v1):
+    def __init__(self, phi1, c1, s1, drop, v1, start_flank1=None):
         self.n = len(phi1)
+        self._start_flank1 = start_flank1
         first0, last2 = drop == 0, drop == 2
         if self.n > 1 and (drop == drop[0]).all():
             first0, last2 = bool(first0[0]), bool(last2[0])
@@ -299,6 +304,15 @@ class _Rows:
                 "last2": d == 2,
                 "v1": float(v1[0]),
             }
+
+    def start_flank1(self, u1, v1):
+        """Member 1's flank evaluated at the starts when the dropped component was chosen
+        (``start_flank1`` = (u1, v1, P)), handed out once: for the solve's first evaluation, if
+        that is at exactly these (u1, v1) (else None, and the caller evaluates it)."""
+        kept, self._start_flank1 = self._start_flank1, None
+        if kept is not None and np.array_equal(u1, kept[0]) and np.array_equal(v1, kept[1]):
+            return kept[2]
+        return None
 
     def take(self, idx):
         if len(idx) == self.n:
@@ -372,6 +386,7 @@ def _reduced_FJ_rows(pair, data: _Rows, fixed, record):
             p["last2"],
             _LAZY if derivs else False,
             v_column,
+            P1=data.start_flank1(x[:, 0], v1),
         )
         record.store(None if len(idx) == data.n else idx, x, out[2])
         return out[:2]
@@ -418,8 +433,9 @@ def _conventional_FJ_rows(pair, data: _Rows, free, record):
         full = _expand(x, free, p["v1"])
         keep = {}
         x5 = tuple(full[:, i] for i in range(5))
+        P1 = data.start_flank1(x5[0], x5[1])
         out = _conventional_FJ3(
-            pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, _LAZY if derivs else False, keep
+            pair, x5, p["c1"], p["s1"], _FIVE, p["first0"], p["last2"], cols, _LAZY if derivs else False, keep, P1=P1
         )
         record.store(None if len(idx) == data.n else idx, x, keep)
         return out
@@ -496,15 +512,16 @@ def solve_contact(
         )
     c1, s1 = np.cos(phi1), np.sin(phi1)
     # dropped normal component: the largest of member 1's normal at the start
+    first = {}  # member 1's flank at the starts, evaluated once for the drop and the first iterate
     if drop is None:
-        drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1)
+        drop = _largest_normal_component(pair, start[:, 0], start[:, 1], c1, s1, keep=first)
     else:
         drop = np.full(n, float(drop))
     reduced = formulation == "reduced"
     free = ([0] if fixed else [0, 1]) if reduced else ([0, 2, 3, 4] if fixed else [0, 1, 2, 3, 4])
     lo, hi = pair._free_bounds(tuple(free))
     x0 = start[:, : len(free)] if free == list(range(len(free))) else start[:, free]  # a view where contiguous
-    data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan))
+    data = _Rows(phi1, c1, s1, drop, start[:, 1] if fixed else np.full(n, np.nan), first.get("flank1"))
     record = _Record(n, len(free))
     FJ, floats = (
         _reduced_FJ_rows(pair, data, fixed, record) if reduced else _conventional_FJ_rows(pair, data, free, record)

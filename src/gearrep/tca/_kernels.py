@@ -109,7 +109,7 @@ def _stack3(v, n):
     return out
 
 
-def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
+def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True, P1=None):
     """The reduced formulation's explicit back-substitution (eq 37-44) in structure-of-arrays form.
 
     ``c1``, ``s1`` = cos, sin of ``phi1`` (computed once per solve by the caller). Returns a dict
@@ -120,14 +120,18 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True):
     Callers set ``np.errstate`` (off the flanks the arrays hold NaN/inf). A spherical member 2
     (bevel pairs, ``flank2.spherical``): the cylindrical back-substitution on the pair's axial view,
     then (rho2, z2) -> (u2, v2) by :func:`gearrep.tca._bevel.spherical_unknowns` (derivatives
-    computed at once)."""
+    computed at once). ``P1``: member 1's flank already evaluated at (u1, v1) by components, if
+    the caller has it."""
     if getattr(pair.flank2, "spherical", False):
         from ._bevel import spherical_unknowns
 
-        K = _reduced3(pair.axial_view, u1, v1, phi1, c1, s1, derivs=bool(derivs), v_column=v_column)
+        view = pair.axial_view
+        P1 = P1 if view.flank1 is pair.flank1 else None
+        K = _reduced3(view, u1, v1, phi1, c1, s1, derivs=bool(derivs), v_column=v_column, P1=P1)
         return spherical_unknowns(K, bool(derivs), v_column)
     g = pair._soa
-    P1 = pair.flank1.evaluate_components(u1, v1)
+    if P1 is None:
+        P1 = pair.flank1.evaluate_components(u1, v1)
     n1l, L1 = _unit_normal3(P1, pair.sign1)
     r = rotate_z(c1, s1, P1[0])
     n1 = rotate_z(c1, s1, n1l)
@@ -302,11 +306,11 @@ def _lazy_jacobian(columns, n, one):
     return J
 
 
-def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True, lists=False):
+def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_column=True, lists=False, P1=None):
     """(F (n, 2), J (n, 2, 1 or 2), kernel dict) of the reduced system by components (``lists``:
     one point on floats, F and J as lists, see :func:`_pack`); ``derivs="lazy"``: J is a lazy
     Jacobian (:func:`_lazy_jacobian`), its derivatives computed only when it is called."""
-    K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column)
+    K = _reduced3(pair, u1, v1, phi1, c1, s1, derivs=derivs, v_column=v_column, P1=P1)
     n1, n2 = K["n1"], K["n2"]
     f = _cross_kept(n1, n2, first0, last2)
     one = "lists" if lists else type(u1) is float
@@ -333,16 +337,18 @@ def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
         return _reduced_FJ3(pair, u1, v1, phi1, np.cos(phi1), np.sin(phi1), drop == 0, drop == 2, derivs=derivs)
 
 
-def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, keep=None, lists=False):
+def _conventional_FJ3(pair, x, c1, s1, drop, first0, last2, cols, derivs=True, keep=None, lists=False, P1=None):
     """(F (n, 5 or 6), J (n, m, len(cols))) of the conventional system by components; ``x``: the
     five unknowns (u1, v1, u2, v2, phi2) as columns (arrays, or floats for one point); ``cols``:
     the free ones; ``drop`` None keeps all three normal components (six equations); ``keep``: a dict
     that receives r (member 1's point), n1 and n2 (outward normals) by components; ``lists``: one
     point on floats, F and J as lists (see :func:`_pack`); ``derivs="lazy"``: J is a lazy Jacobian
-    (:func:`_lazy_jacobian`), the normals' derivatives computed only when it is called."""
+    (:func:`_lazy_jacobian`), the normals' derivatives computed only when it is called; ``P1``:
+    member 1's flank already evaluated at (u1, v1) by components, if the caller has it."""
     g = pair._soa
     u1, v1, u2, v2, phi2 = x
-    P1 = pair.flank1.evaluate_components(u1, v1)
+    if P1 is None:
+        P1 = pair.flank1.evaluate_components(u1, v1)
     P2 = pair.flank2.evaluate_components(u2, v2)
     n2l, L2 = _unit_normal3(P2, pair.sign2)
     n1l, L1 = _unit_normal3(P1, pair.sign1)
