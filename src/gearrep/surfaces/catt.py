@@ -310,53 +310,65 @@ class CATTFlank(Surface):
 
     # -- closed form (C) with analytic derivatives -------------------------------------------
     def _P(self, theta, phi, order=2):
-        """Rack-frame point P(theta, W) of (C) and its partials (before Rz(-phi))."""
+        """Rack-frame point P(theta, W) of (C) and its partials P_theta, P_phi, P_thetatheta,
+        P_thetaphi (before Rz(-phi); P_phiphi = 0, P is linear in W), each a 3-tuple of components
+        (a constant component is a float); ``order`` 0: P alone."""
         s, c, a, R, rho0 = self.side, self.c, self.sa, self.R, self.rho0
         ct, st = np.cos(theta), np.sin(theta)
         sec = 1.0 / ct
         tn = st * sec
         W = self.R_T + R * phi
         sc = s * a * c
-        P = np.stack([c * c * (W - rho0 * ct), sc * (W * sec - rho0) - R, rho0 * c * c * st + a * a * W * tn], axis=-1)
+        P = (c * c * (W - rho0 * ct), sc * (W * sec - rho0) - R, rho0 * c * c * st + a * a * W * tn)
         if order == 0:
             return P
-        P_t = np.stack([c * c * rho0 * st, sc * W * sec * tn, rho0 * c * c * ct + a * a * W * sec * sec], -1)
-        P_p = R * np.stack([np.full_like(W, c * c), sc * sec, a * a * tn], -1)
-        P_tt = np.stack(
-            [c * c * rho0 * ct, sc * W * (sec * tn * tn + sec**3), -rho0 * c * c * st + 2 * a * a * W * sec * sec * tn],
-            -1,
+        P_t = (c * c * rho0 * st, sc * W * sec * tn, rho0 * c * c * ct + a * a * W * sec * sec)
+        P_p = (R * (c * c), R * (sc * sec), R * (a * a * tn))
+        P_tt = (
+            c * c * rho0 * ct,
+            sc * W * (sec * tn * tn + sec**3),
+            -rho0 * c * c * st + 2 * a * a * W * sec * sec * tn,
         )
-        P_tp = R * np.stack([np.zeros_like(W), sc * sec * tn, a * a * sec * sec], -1)
+        P_tp = (0.0, R * (sc * sec * tn), R * (a * a * sec * sec))
         return P, P_t, P_p, P_tt, P_tp
 
     def position(self, theta, phi) -> np.ndarray:
         """r(theta, phi), closed form (C) (equal to eq (6))."""
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
-        return frames.transform_vectors(frames.rot_z(-phi), self._P(theta, phi, order=0))
+        cm, sm = np.cos(-phi), np.sin(-phi)
+        return np.stack(np.broadcast_arrays(*frames.rotate_z(cm, sm, self._P(theta, phi, order=0))), axis=-1)
 
     def evaluate(self, theta, phi) -> SurfacePoint:
         """Position and analytic first and second partials with respect to (theta, phi)."""
+        return SurfacePoint.from_components(self.evaluate_components(theta, phi))
+
+    def evaluate_components(self, theta, phi) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays): r = Rz(-phi) P with
+        r_theta = Rz P_theta, r_phi = Rz' P + Rz P_phi, r_thetatheta = Rz P_thetatheta,
+        r_thetaphi = Rz' P_theta + Rz P_thetaphi, r_phiphi = Rz'' P + 2 Rz' P_phi (Rz' and Rz'' the
+        phi-derivatives of Rz(-phi): no axial row)."""
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
         P, P_t, P_p, P_tt, P_tp = self._P(theta, phi)
-        # Rz(-phi) and its first and second derivatives with respect to phi
-        Rz, dRz, d2Rz = frames.rot_z(-phi), -frames.drot_z(-phi), frames.drot_z(-phi, order=2)
+        cm, sm = np.cos(-phi), np.sin(-phi)  # Rz(-phi) = rot_z(a) at a = -phi
 
         def Q(V):
-            return frames.transform_vectors(Rz, V)
+            return frames.rotate_z(cm, sm, V)
 
-        def Q1(V):
-            return frames.transform_vectors(dRz, V)
+        def Q1(V):  # d/dphi Rz(-phi) = -rot_z'(a): [[sm, cm, 0], [-cm, sm, 0], [0, 0, 0]]
+            return sm * V[0] + cm * V[1], sm * V[1] - cm * V[0]
 
-        def Q2(V):
-            return frames.transform_vectors(d2Rz, V)
-
-        r = Q(P)
-        r_t = Q(P_t)
-        r_p = Q1(P) + Q(P_p)
-        r_tt = Q(P_tt)
-        r_tp = Q1(P_t) + Q(P_tp)
-        r_pp = Q2(P) + 2.0 * Q1(P_p)  # P_pp = 0 (P is linear in W)
-        return SurfacePoint(r, r_t, r_p, r_tt, r_tp, r_pp)
+        r_p, r_tp = Q1(P), Q1(P_t)
+        Qp, Qtp = Q(P_p), Q(P_tp)
+        q2x, q2y = sm * P[1] - cm * P[0], -(sm * P[0] + cm * P[1])  # d2/dphi2 Rz(-phi) = rot_z''(a)
+        q1x, q1y = Q1(P_p)
+        return (
+            Q(P),
+            Q(P_t),
+            (r_p[0] + Qp[0], r_p[1] + Qp[1], Qp[2]),
+            Q(P_tt),
+            (r_tp[0] + Qtp[0], r_tp[1] + Qtp[1], Qtp[2]),
+            (q2x + 2.0 * q1x, q2y + 2.0 * q1y, 0.0),
+        )
 
     def outward_normal(self, theta, phi) -> np.ndarray:
         """Unit normal pointing out of the tooth material."""
