@@ -202,35 +202,45 @@ class RackGeneratedFlank(Surface):
         :func:`gearrep.envelope.rack_generation_motion`), phi(u, theta) from :meth:`rolling_angle`
         (phi_u_theta = phi_theta_theta = 0). Tested against the envelope solve and
         :class:`gearrep.envelope.EnvelopeSurface` (tests/unit/test_nasa_surface.py)."""
+        return SurfacePoint.from_components(self.evaluate_components(u, v))
+
+    def evaluate_components(self, u, v) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays): with K w = e_z x w = (-w_y, w_x, 0)
+        and T' = (0, -r_p, 0), q = r_c + T, dq/dj = r_c,j + T' phi_j,
+        q_j = dq/dj + s K q phi_j, d(q_i)/dj = r_c,ij + T' phi_ij + s K (dq/dj) phi_i + s K q phi_ij,
+        r_ij = s K q_i phi_j + d(q_i)/dj, each turned by Rz(s phi); the terms with a zero component
+        of K or T' are left out of the axial (and T' of the x) components."""
         u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
-        c = self.rack.evaluate(u, v)
+        c_r, c_u, c_v, c_uu, c_uv, c_vv = self.rack.evaluate_components(u, v)
         phi, pu, puu, pv = self.rolling_angle(u, v)
         s = -float(self.member_side)
         rp = self.r_p
-        Tp = np.array([0.0, -rp, 0.0])
-        q = c.r + np.stack([np.full(u.shape, s * rp), -rp * phi, np.zeros(u.shape)], axis=-1)
+        q = (c_r[0] + s * rp, c_r[1] + -rp * phi, c_r[2])
+        dq_u = (c_u[0], c_u[1] + -rp * pu, c_u[2])
+        dq_v = (c_v[0], c_v[1] + -rp * pv, c_v[2])
 
-        def Kx(w):  # e_z x w
-            return np.stack([-w[..., 1], w[..., 0], np.zeros(w.shape[:-1])], axis=-1)
+        def sK(w, f):  # (s K w) f, x and y components
+            return s * -w[1] * f, s * w[0] * f
 
-        pu_, puu_, pv_ = pu[..., None], puu[..., None], pv[..., None]
-        dq_u = c.r_u + Tp * pu_
-        dq_v = c.r_v + Tp * pv_
-        qu = dq_u + s * Kx(q) * pu_
-        qv = dq_v + s * Kx(q) * pv_
-        # d(q_i)/dj = r_c,ij + T' phi_ij + s K (dq/dj) phi_i + s K q phi_ij
-        dqu_u = c.r_uu + Tp * puu_ + s * Kx(dq_u) * pu_ + s * Kx(q) * puu_
-        dqu_v = c.r_uv + s * Kx(dq_v) * pu_
-        dqv_v = c.r_vv + s * Kx(dq_v) * pv_
-        r_uu = s * Kx(qu) * pu_ + dqu_u
-        r_uv = s * Kx(qu) * pv_ + dqu_v
-        r_vv = s * Kx(qv) * pv_ + dqv_v
-        Rz = frames.rot_z(s * phi)
+        def plus(a, w, f):  # a + (s K w) f (a 3-tuple; K w has no axial component)
+            x, y = sK(w, f)
+            return (a[0] + x, a[1] + y, a[2])
 
-        def A(w):
-            return frames.transform_vectors(Rz, w)
+        qu = plus(dq_u, q, pu)
+        qv = plus(dq_v, q, pv)
+        dqu_u = plus(plus((c_uu[0], c_uu[1] + -rp * puu, c_uu[2]), dq_u, pu), q, puu)
+        dqu_v = plus(c_uv, dq_v, pu)
+        dqv_v = plus(c_vv, dq_v, pv)
 
-        return SurfacePoint(A(q), A(qu), A(qv), A(r_uu), A(r_uv), A(r_vv))
+        def then(w, f, a):  # (s K w) f + a
+            x, y = sK(w, f)
+            return (x + a[0], y + a[1], a[2])
+
+        r_uu = then(qu, pu, dqu_u)
+        r_uv = then(qu, pv, dqu_v)
+        r_vv = then(qv, pv, dqv_v)
+        cz, sz = np.cos(s * phi), np.sin(s * phi)
+        return tuple(frames.rotate_z(cz, sz, w) for w in (q, qu, qv, r_uu, r_uv, r_vv))
 
     def profile_angle(self, u) -> np.ndarray:
         """Turn of the rack profile tangent from Q to parameter u (rad): atan(2 a u) for the
