@@ -132,7 +132,17 @@ class SurfacePoint:
         """The point of :meth:`Surface.evaluate_components`'s six vectors ``comps`` (3-tuples of
         broadcastable arrays or floats): each stacked into a (..., 3) array (the inverse of
         :meth:`components`; a float component is broadcast to the arrays' shape)."""
-        shape = np.broadcast_shapes(*(np.shape(c) for vec in comps for c in vec))
+        if len(comps) != 6 or any(len(vec) != 3 for vec in comps):
+            raise ValueError(
+                "comps must be the six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each a 3-tuple of "
+                f"components; got {len(comps)} entries of lengths {[len(vec) for vec in comps]}"
+            )
+        try:
+            shape = np.broadcast_shapes(*(np.shape(c) for vec in comps for c in vec))
+        except ValueError:
+            raise ValueError(
+                f"the components' shapes do not broadcast: {[[np.shape(c) for c in vec] for vec in comps]}"
+            ) from None
         out = np.empty((6,) + shape + (3,))
         for i, vec in enumerate(comps):
             for k, c in enumerate(vec):

@@ -129,6 +129,10 @@ def test_evaluate_components_equal_evaluate():
     np.testing.assert_array_equal(SurfacePoint.from_components(P.components()).r_vv, P.r_vv)
     Q = SurfacePoint.from_components(flanks[1].evaluate_components(u, v))
     assert Q.r_u.shape == (20, 3) and np.all(Q.r_u[:, 2] == 0.0) and np.all(Q.r_v[:, 2] == 1.0)
+    with pytest.raises(ValueError, match="six vectors"):
+        SurfacePoint.from_components(P.components()[:5])
+    with pytest.raises(ValueError, match="do not broadcast"):
+        SurfacePoint.from_components(((u, v[:3], 0.0),) + P.components()[1:])
     a, b = (1.0, 2.0, 3.0), (-1.0, 0.5, 4.0)
     np.testing.assert_array_equal(cross3(a, b), np.cross(a, b))
     assert dot3(a, b) == 12.0
