@@ -26,6 +26,7 @@ import numpy as np
 from .envelope import local_geometry
 from .frames import rot_z
 from .solve import SolveResult, Status, newton, status_names
+from .surface import cross
 
 # The flanks are gearrep.surfaces.hob.GeneratedGear objects and the tool a ZAHob; the core does not
 # import the surface families (not even for annotations), so they are typed by what is used.
@@ -98,14 +99,14 @@ def member_geometry(flank: Flank, q):
     T = np.einsum("nab,nqb->nqa", R, loc.T)
     n1 = loc.n
     Nn = np.linalg.norm(loc.N, axis=-1, keepdims=True)
-    N_u = np.cross(p.r_uu, p.r_v) + np.cross(p.r_u, p.r_uv)
-    N_v = np.cross(p.r_uv, p.r_v) + np.cross(p.r_u, p.r_vv)
+    N_u = cross(p.r_uu, p.r_v) + cross(p.r_u, p.r_uv)
+    N_v = cross(p.r_uv, p.r_v) + cross(p.r_u, p.r_vv)
 
     def dn(Nx):
         return (Nx - n1 * np.sum(n1 * Nx, -1, keepdims=True)) / Nn
 
     # d n / d m_j = R (omega_j x n1): the normal is carried by the motion's rotation
-    dn1 = np.stack([dn(N_u), dn(N_v), np.cross(loc.omega[:, 0], n1), np.cross(loc.omega[:, 1], n1)], 1)
+    dn1 = np.stack([dn(N_u), dn(N_v), cross(loc.omega[:, 0], n1), cross(loc.omega[:, 1], n1)], 1)
     return r, T, np.einsum("nab,nb->na", R, n1), np.einsum("nab,nqb->nqa", R, dn1), loc.f, loc.J
 
 
@@ -125,7 +126,7 @@ def tangency_system(pair, x, phi1, drop, derivs=True):
     keep = _KEEP[drop]
     rows = np.arange(len(x))[:, None]
     dpos = np.einsum("nab,nb->na", Ap, rp) - np.einsum("nab,nb->na", Ag, rg) - pair.gear_origin
-    F = np.concatenate([fp, fg, dpos, np.cross(Np, Ng)[rows, keep]], axis=1)
+    F = np.concatenate([fp, fg, dpos, cross(Np, Ng)[rows, keep]], axis=1)
     if not derivs:
         return F, None, None
     n = len(x)
@@ -135,16 +136,16 @@ def tangency_system(pair, x, phi1, drop, derivs=True):
     J[:, 4:7, 0:4] = np.einsum("nab,nqb->naq", Ap, Tp)
     J[:, 4:7, 4:8] = -np.einsum("nab,nqb->naq", Ag, Tg)
     J[:, 4:7, 8] = -np.einsum("nab,nb->na", dAg, rg)
-    dc_p = np.cross(np.einsum("nab,nqb->nqa", Ap, Dnp), Ng[:, None])
-    dc_g = np.cross(Np[:, None], np.einsum("nab,nqb->nqa", Ag, Dng))
-    dc_2 = np.cross(Np, np.einsum("nab,nb->na", dAg, ng))
+    dc_p = cross(np.einsum("nab,nqb->nqa", Ap, Dnp), Ng[:, None])
+    dc_g = cross(Np[:, None], np.einsum("nab,nqb->nqa", Ag, Dng))
+    dc_2 = cross(Np, np.einsum("nab,nb->na", dAg, ng))
     J[:, 7:9, 0:4] = np.swapaxes(dc_p, 1, 2)[rows, keep]
     J[:, 7:9, 4:8] = np.swapaxes(dc_g, 1, 2)[rows, keep]
     J[:, 7:9, 8] = dc_2[rows, keep]
     dAp = pair.pinion_rotation(phi1, deriv=True)
     Fphi = np.zeros((n, 9))
     Fphi[:, 4:7] = np.einsum("nab,nb->na", dAp, rp)
-    Fphi[:, 7:9] = np.cross(np.einsum("nab,nb->na", dAp, np_), Ng)[rows, keep]
+    Fphi[:, 7:9] = cross(np.einsum("nab,nb->na", dAp, np_), Ng)[rows, keep]
     return F, J, Fphi
 
 
@@ -227,7 +228,7 @@ def _finish(pair, x, phi1, res: SolveResult, drop) -> ContactPath:
         s = np.linalg.svd(J[ok], compute_uv=False)
         cond[ok] = s[:, 0] / np.where(s[:, -1] > 0, s[:, -1], np.nan)
     status = res.status.copy()
-    false_root = np.linalg.norm(np.cross(Np, Ng), axis=1) > 1e-9
+    false_root = np.linalg.norm(cross(Np, Ng), axis=1) > 1e-9
     status[(status == Status.CONVERGED) & false_root] = int(Status.WRONG_ROOT)
     res = SolveResult(res.x, res.residual, res.iterations, status, res.condition)
     # member frames (placement): Z and radius of the point on each member
@@ -442,7 +443,7 @@ def _face_search(pair, sol: ContactPath, m: int, tol, maxiter, max_halvings, sam
 
 def _turn_gap_factor(pair, sol: ContactPath) -> np.ndarray:
     """s = (e_z x (r - O_g)) . n_p,out: normal gap per unit turn of the gear about its axis."""
-    return np.sum(np.cross([0.0, 0.0, 1.0], sol.r_f - pair.gear_origin) * pinion_outward(pair, sol), -1)
+    return np.sum(cross([0.0, 0.0, 1.0], sol.r_f - pair.gear_origin) * pinion_outward(pair, sol), -1)
 
 
 def turn_gap(pair, at: ContactPath, phi2_rad) -> np.ndarray:
