@@ -578,28 +578,10 @@ class InvoluteFlank(Surface):
         r_uv = -u psi_u psi_v e_r + (psi_v + u psi_uv) e_t,
         r_vv = -u psi_v^2 e_r + u psi_vv e_t.
         """
-        u = np.asarray(u, dtype=float)
-        v = np.asarray(v, dtype=float)
-        u, v = _broadcast2(u, v)
-        psi, pu, pv, puu, puv, pvv = self.polar_angle_derivs(u, v)
-        c, s = np.cos(psi), np.sin(psi)
-        # the six vectors are written component by component into one array (no stacking)
-        out = np.zeros((6,) + u.shape + (3,))
-        r, r_u, r_v, r_uu, r_uv, r_vv = out
-
-        def put(vec, a, b):  # vec <- a e_r + b e_t in the x, y components
-            vec[..., 0] = a * c - b * s
-            vec[..., 1] = a * s + b * c
-
-        put(r, u, 0.0)
-        r[..., 2] = v
-        put(r_u, 1.0, u * pu)
-        put(r_v, 0.0, u * pv)
-        r_v[..., 2] = 1.0
-        put(r_uu, -u * pu * pu, 2 * pu + u * puu)
-        put(r_uv, -u * pu * pv, pv + u * puv)
-        put(r_vv, -u * pv * pv, u * pvv)
-        return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
+        # the components of evaluate_components (arrays: no one-point float path), stacked
+        return SurfacePoint.from_components(
+            self.evaluate_components(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
+        )
 
     def evaluate_components(self, u, v) -> tuple:
         """:meth:`evaluate` by components (structure of arrays, see
