@@ -91,3 +91,27 @@ def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
     out = smk(wf, "-n")
     assert out.returncode != 0
     assert message in out.stdout + out.stderr, (out.stdout + out.stderr)[-2000:]
+
+
+def test_the_run_ends_without_waiting_for_snakemakes_selection_timers(wf):
+    """Snakemake starts a selection timer of one max-jobs-per-timespan span after each selection
+    that leaves a job waiting (two jobs on one core here); the Snakefile's hooks cancel the timers
+    still pending at the end, so the process exits when the jobs are done instead of one span (600 s
+    here) later. The subprocess timeout is only the guard of that hang, far from the run's time."""
+    targets = ["results/tseng/curvature_table_4_2.csv", "results/tseng/curvature_table_4_5.csv"]
+    try:
+        out = smk(wf, "--cores", "1", "--max-jobs-per-timespan", "1000/600s", *targets, timeout=300)
+    except subprocess.TimeoutExpired as e:
+        raise AssertionError("Snakemake did not exit: a selection timer kept it alive") from e
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    assert all((wf / t).is_file() for t in targets)
+
+
+def test_both_end_hooks_cancel_the_selection_timers():
+    """A failed run (onerror) exits at once as well as a successful one (onsuccess)."""
+    from conftest import ROOT
+
+    text = (ROOT / "Snakefile").read_text()
+    for hook in ("onsuccess", "onerror"):
+        body = text.split(f"\n{hook}:\n", 1)[1].split("\n\n", 1)[0]
+        assert body.strip() == "cancel_pending_timers()", (hook, body)

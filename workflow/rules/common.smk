@@ -14,6 +14,7 @@ sys.path.insert(0, str(Path(workflow.basedir, "workflow", "lib")))
 
 from modgraph import ModuleGraph
 from wfconfig import resolve_config, validate_studies
+from wftimers import cancel_pending_timers
 
 from gearrep import published as _published
 from gearrep.replications import REGISTRY
