@@ -183,3 +183,28 @@ def test_a_script_step_waits_for_its_own_subprocesses_as_a_fresh_process(tmp_pat
         assert (tmp_path / "rc.txt").read_text() == "3"
         head, values = (line.split("\t") for line in (tmp_path / "t.tsv").read_text().splitlines())
         assert float(dict(zip(head, values))["cpu_time"]) >= 0.3
+
+
+def test_later_steps_inherit_the_modules_the_warm_process_imports_after_its_first_child(tmp_path):
+    """The library imports scipy inside the functions that use it; the warm process imports those
+    modules once, after forking its first child, so that every later step inherits them instead of
+    importing them again (nine jobs of a full run did)."""
+    script = tmp_path / "mods.py"
+    script.write_text(
+        "import sys\n"
+        "smk = snakemake  # noqa: F821\n"
+        f"names = {list(run_study_step.BACKGROUND_IMPORTS)!r}\n"
+        "open(smk.output.seen, 'w').write(' '.join(str(n in sys.modules) for n in names))\n"
+    )
+    seen = []
+    for i in range(2):
+        req = {
+            "script": str(script),
+            "output": {"seen": str(tmp_path / f"seen{i}.txt")},
+            "log": {"log": str(tmp_path / "mods.log")},
+            "timing": str(tmp_path / "t.tsv"),
+        }
+        r = run(tmp_path, req, warm=True)
+        assert r.returncode == 0, r.stderr
+        seen.append((tmp_path / f"seen{i}.txt").read_text().split())
+    assert seen[1] == ["True"] * len(run_study_step.BACKGROUND_IMPORTS), seen

@@ -39,6 +39,12 @@ from pathlib import Path
 
 IDLE_SECONDS = 30.0
 _ACCEPTED = b"A"
+#: what the library imports inside functions (for a single process, scipy's 0.2-1.3 s are only paid
+#: where used) but a full run's steps need again and again: nine of the jobs imported scipy, each in
+#: its own child (about 7 s of CPU in a cold run). The warm process imports them once, after forking
+#: its first child (the step that started it does not wait for them), so that later children
+#: inherit them.
+BACKGROUND_IMPORTS = ("scipy.optimize", "scipy.interpolate", "scipy.special")
 
 
 # -- the step itself ---------------------------------------------------------------------------
@@ -178,6 +184,7 @@ def serve(path: Path) -> None:
     os.replace(tmp, path)  # atomically over a stale socket or a racing warm process's
     signal.signal(signal.SIGCHLD, signal.SIG_IGN)  # children are reaped by the kernel
     srv.settimeout(IDLE_SECONDS)
+    background = list(BACKGROUND_IMPORTS)
     try:
         while True:
             try:
@@ -206,6 +213,9 @@ def serve(path: Path) -> None:
             for fd in fds:
                 os.close(fd)
             conn.close()
+            if background:
+                _import_quietly(background)
+                background = []
     finally:
         srv.close()
         try:
@@ -222,6 +232,16 @@ def _preload(modules) -> bool:
     for m in new:
         importlib.import_module(m)
     return bool(new)
+
+
+def _import_quietly(modules) -> None:
+    """Import ``modules`` into the warm process where they can be (one that cannot is left to the
+    step that needs it, which reports its own error)."""
+    for m in modules:
+        try:
+            importlib.import_module(m)
+        except Exception:  # noqa: BLE001,S112  (a child then imports it and fails with its own traceback)
+            continue
 
 
 def _is_ours(path: Path) -> bool:
