@@ -9,6 +9,7 @@ rule render_notebook:
         "results/notebooks/{name}.executed",
         runner=STEP_RUNNER,
         script="workflow/scripts/render_notebook.py",
+        exporter=NOTEBOOK_HTML,
         template="workflow/report/notebook/collapsed.html.j2",
         code=script_lib("workflow/scripts/render_notebook.py"),
     output:

@@ -4,6 +4,8 @@
   files and the machine's working directory) is removed;
 * every code cell is folded under a "code" toggle (template ``workflow/report/notebook``), so
   prose, tables and figures come first;
+* the page is JupyterLab's (``notebook_html.LabExporter``: nbconvert's HTML exporter without its
+  BeautifulSoup round trip, the same page once parsed);
 * paths of the machine that ran the notebook (working directory, interpreter prefix, home) are
   replaced in every output by relative or neutral names (the report job then refuses any rendered
   page that still shows an absolute path: ``gearrep.report.absolute_paths``; the check is not made
@@ -15,8 +17,8 @@ import sys
 from pathlib import Path
 
 import nbformat
-from nbconvert import HTMLExporter
 from nbconvert.preprocessors import TagRemovePreprocessor
+from notebook_html import LabExporter
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
@@ -59,7 +61,7 @@ def clean_notebook(nb, pairs) -> None:
 
 nb = nbformat.read(smk.params.notebook, as_version=4)
 clean_notebook(nb, _replacements())
-exporter = HTMLExporter(template_name="lab", extra_template_paths=[str(TEMPLATE_DIR.resolve())])
+exporter = LabExporter(template_name="lab", extra_template_paths=[str(TEMPLATE_DIR.resolve())])
 exporter.template_file = Path(smk.input.template).name
 exporter.register_preprocessor(TagRemovePreprocessor(remove_cell_tags={PREAMBLE_TAG}, enabled=True), enabled=True)
 body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": Path(smk.output[0]).stem}})
