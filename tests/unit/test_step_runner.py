@@ -7,6 +7,7 @@ import os
 import socket
 import subprocess
 import sys
+from pathlib import Path
 
 from conftest import ROOT
 
@@ -81,7 +82,7 @@ def test_a_stale_socket_is_replaced_and_a_changed_source_refused(tmp_path, monke
     # (bound by its path relative to the working directory, as the runner does: socket paths are
     # limited to about 100 characters)
     monkeypatch.chdir(tmp_path)
-    path = run_study_step.socket_path()
+    path = Path(run_study_step.socket_path())
     path.parent.mkdir()
     dead = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     dead.bind(str(path))
@@ -208,3 +209,19 @@ def test_later_steps_inherit_the_modules_the_warm_process_imports_after_its_firs
         assert r.returncode == 0, r.stderr
         seen.append((tmp_path / f"seen{i}.txt").read_text().split())
     assert seen[1] == ["True"] * len(run_study_step.BACKGROUND_IMPORTS), seen
+
+
+def test_the_client_imports_only_what_it_needs_to_hand_a_step_on():
+    """Every step starts a client process (89 in a full run): json, pathlib, subprocess, hashlib
+    and re (28 ms of its 80 ms of CPU) are imported only where used, not when the client starts."""
+
+    def modules(code):
+        out = subprocess.run(
+            [sys.executable, "-c", code + "; print(' '.join(sys.modules))"], capture_output=True, text=True
+        )
+        assert out.returncode == 0, out.stderr
+        return set(out.stdout.split())
+
+    bare = modules("import sys")
+    client = modules(f"import sys; sys.path.insert(0, {str(RUNNER.parent)!r}); import run_study_step")
+    assert not {"json", "pathlib", "subprocess", "hashlib", "re"} & (client - bare)
