@@ -225,3 +225,15 @@ def test_the_client_imports_only_what_it_needs_to_hand_a_step_on():
     bare = modules("import sys")
     client = modules(f"import sys; sys.path.insert(0, {str(RUNNER.parent)!r}); import run_study_step")
     assert not {"json", "pathlib", "subprocess", "hashlib", "re"} & (client - bare)
+
+
+def test_a_request_that_is_not_a_json_object_fails_its_step_and_leaves_the_warm_process_serving(tmp_path):
+    ok = run(tmp_path, request(tmp_path / "a"), warm=True)
+    assert ok.returncode == 0, ok.stderr
+    sock = tmp_path / run_study_step.socket_path()
+    inode = os.stat(sock).st_ino
+    bad = run(tmp_path, [1, 2], warm=True)  # refused by the warm process; the client's own run fails
+    assert bad.returncode != 0 and "TypeError" in bad.stderr
+    again = run(tmp_path, request(tmp_path / "b"), warm=True)
+    assert again.returncode == 0, again.stderr
+    assert os.stat(sock).st_ino == inode  # the same warm process took the step

@@ -36,9 +36,9 @@ import sys
 
 IDLE_SECONDS = 30.0
 _ACCEPTED = b"A"
-#: what the library imports inside functions (for a single process, scipy's 0.2-1.3 s are only paid
+#: what the library imports inside functions (for a single process, scipy's 0.3-0.7 s are only paid
 #: where used) but a full run's steps need again and again: nine of the jobs imported scipy, each in
-#: its own child (about 7 s of CPU in a cold run). The warm process imports them once, after forking
+#: its own child (about 5 s of CPU in a cold run). The warm process imports them once, after forking
 #: its first child (the step that started it does not wait for them), so that later children
 #: inherit them.
 BACKGROUND_IMPORTS = ("scipy.optimize", "scipy.interpolate", "scipy.special")
@@ -207,7 +207,7 @@ def serve(path) -> None:
                 req = dict(json.loads(text), cwd=os.fsdecode(cwd))
                 if _preload(req.get("preload", ())):
                     sources = _imported_sources() | {me: sources_self}
-            except (OSError, ValueError, ImportError):
+            except (OSError, ValueError, TypeError, ImportError):  # TypeError: a request not a JSON object
                 for fd in fds:  # the client's stdio: held open here, its reader would wait for us
                     os.close(fd)
                 conn.close()  # not accepted: the client runs the step itself
