@@ -1,7 +1,7 @@
 """JupyterLab's HTML export of a notebook without its BeautifulSoup pass (rule render_notebook).
 
 nbconvert's ``HTMLExporter`` renders the page from its templates and then parses the whole page
-(1-2.3 MB here, the figures inline) with BeautifulSoup only to add three attributes, and
+(1-2.3 MB here, the figures inline) with BeautifulSoup only to add two attributes, and
 serialises it again: about half of a render's CPU (3.4 s of a cold run's 6.3 s). ``LabExporter``
 adds the same attributes to the rendered text directly:
 
@@ -10,7 +10,8 @@ adds the same attributes to the rendered text directly:
   (``jp-OutputArea-output``), so the keyboard reaches them.
 
 Parsed by an HTML parser, the page is the stock exporter's page (tests/unit/test_notebook_html.py
-compares the two on an executed notebook); only the serialisation of the markup that the parser
+compares the two on a notebook with every kind of cell and output; the five notebooks of a cold run
+were compared when this was written); only the serialisation of the markup that the parser
 would have rewritten (quoting, void tags) may differ, not what a browser shows.
 """
 

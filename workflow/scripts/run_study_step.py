@@ -188,7 +188,7 @@ def serve(path) -> None:
     os.replace(tmp, path)  # atomically over a stale socket or a racing warm process's
     signal.signal(signal.SIGCHLD, signal.SIG_IGN)  # children are reaped by the kernel
     srv.settimeout(IDLE_SECONDS)
-    background = list(BACKGROUND_IMPORTS)
+    background = BACKGROUND_IMPORTS
     try:
         while True:
             try:
@@ -219,8 +219,11 @@ def serve(path) -> None:
                 os.close(fd)
             conn.close()
             if background:
-                _import_quietly(background)
-                background = []
+                try:
+                    _preload(background)
+                except Exception:  # noqa: BLE001,S110  (a step that needs it imports it and reports its own error)
+                    pass
+                background = ()
     finally:
         srv.close()
         try:
@@ -239,18 +242,6 @@ def _preload(modules) -> bool:
     for m in new:
         importlib.import_module(m)
     return bool(new)
-
-
-def _import_quietly(modules) -> None:
-    """Import ``modules`` into the warm process where they can be (one that cannot is left to the
-    step that needs it, which reports its own error)."""
-    import importlib
-
-    for m in modules:
-        try:
-            importlib.import_module(m)
-        except Exception:  # noqa: BLE001,S112  (a child then imports it and fails with its own traceback)
-            continue
 
 
 def _is_ours(path) -> bool:
@@ -294,7 +285,7 @@ def _child(conn, req: dict, fds) -> int:
 def _connect(path: str):
     s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
-        s.connect(str(path))
+        s.connect(path)
         return s
     except OSError:
         s.close()
@@ -308,7 +299,7 @@ def _start_warm_process(path: str):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     log = open(os.path.splitext(path)[0] + ".log", "ab")  # noqa: SIM115  (handed to the child process)
     subprocess.Popen(
-        [sys.executable, __file__, "--serve", str(path)],
+        [sys.executable, __file__, "--serve", path],
         stdin=subprocess.DEVNULL,
         stdout=log,
         stderr=log,
