@@ -102,6 +102,31 @@ def test_worm_hand_and_crossing_angle():
         assert between_axes == pytest.approx(angle, abs=1e-12)
 
 
+@pytest.mark.parametrize("feed", ["translation", "rotation"])
+def test_worm_motion_derivatives(feed):
+    """The worm -> pinion motion's exact dM and d2M (product rule over shared products) equal the
+    finite-difference derivatives of its M (FunctionMotion, 4th order); batched and single points
+    give the same matrices."""
+    from gearrep.envelope import FunctionMotion
+    from gearrep.surfaces.novikov import WormGeneratedPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    l, rp, a = np.cos(an) / Pn, pitch_radius(17, Pn, beta), Pn / (2 * 5.88)
+    w = WormGeneratedPinion(a, an, l, beta, rp, Pn, 3.82, 0.00139, feed=feed)
+    m = np.array([[0.1, -0.8], [-0.3, 0.5], [0.0, 1.7]])
+    M, dM, d2M = w.motion.matrices(m)
+    assert (M.shape, dM.shape, d2M.shape) == ((3, 4, 4), (3, 2, 4, 4), (3, 2, 2, 4, 4))
+    A, (B, _, _), C, D = w._factors(m)
+    np.testing.assert_array_equal(M, A[0] @ B @ C @ D[0])
+    fdM, fdd, fdd2 = FunctionMotion(lambda mm: w.motion.matrices(mm)[0], n_params=2, names=("psi", "l")).matrices(m)
+    np.testing.assert_array_equal(fdM, M)
+    np.testing.assert_allclose(dM, fdd, atol=1e-9)
+    np.testing.assert_allclose(d2M, fdd2, atol=1e-6)
+    for i in range(3):
+        for got, want in zip(w.motion.matrices(m[i]), (M[i], dM[i], d2M[i])):
+            np.testing.assert_array_equal(got, want)
+
+
 def test_worm_options_are_checked():
     from gearrep.surfaces.novikov import WormGeneratedPinion
 

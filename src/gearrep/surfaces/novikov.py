@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import frames
-from ..envelope import Envelope, rack_generation_motion
+from ..envelope import Envelope, Motion, rack_generation_motion
 from ..surface import Surface, SurfacePoint
 from .rack import CircularArcRackCutter, ParabolicRackCutter
 
@@ -550,8 +550,6 @@ class WormGeneratedPinion(Surface):
         feed: str = "translation",
         worm_hand: str = "same",
     ):
-        from ..envelope import Envelope, FunctionMotion
-
         if feed not in ("translation", "rotation"):
             raise ValueError(f"feed must be 'translation' or 'rotation', got {feed!r}")
         if worm_hand not in ("same", "opposite"):
@@ -579,7 +577,7 @@ class WormGeneratedPinion(Surface):
         rot = feed == "rotation"
         self.kappa = np.tan(self.beta) / self.r_p if rot else 0.0
         self.tq = 0.0 if rot else float(np.tan(self.beta))
-        self.motion = FunctionMotion(self._M, n_params=2, names=("psi", "l"), dM=self._dM, d2M=self._d2M)
+        self.motion = _WormMotion(self)
         self.envelope = Envelope(self.worm, self.motion, free=("psi", "l"), tol=tol, maxiter=maxiter)
         self._q0, self._J = self._reference()
         self._surface = self.envelope.surface(self._guess)
@@ -609,25 +607,6 @@ class WormGeneratedPinion(Surface):
         d2B[..., 0, 3] = -2.0 * self.a_pl
         C = frames.homogeneous(frames.rot_x(self.delta))
         return A, (B, dB, d2B), C, D
-
-    def _M(self, m):
-        (A, _, _), (B, _, _), C, (D, _, _) = self._factors(m)
-        return A @ B @ C @ D
-
-    def _dM(self, m):
-        (A, A1, _), (B, B1, _), C, (D, D1, _) = self._factors(m)
-        k, r = self.kappa, self.ratio_w
-        Mp = A1 @ B @ C @ D + r * (A @ B @ C @ D1)
-        Ml = k * (A1 @ B @ C @ D) + A @ B1 @ C @ D
-        return np.stack([Mp, Ml], axis=-3)
-
-    def _d2M(self, m):
-        (A, A1, A2), (B, B1, B2), C, (D, D1, D2) = self._factors(m)
-        k, r = self.kappa, self.ratio_w
-        pp = A2 @ B @ C @ D + 2 * r * (A1 @ B @ C @ D1) + r * r * (A @ B @ C @ D2)
-        pl = k * (A2 @ B @ C @ D) + A1 @ B1 @ C @ D + r * k * (A1 @ B @ C @ D1) + r * (A @ B1 @ C @ D1)
-        ll = k * k * (A2 @ B @ C @ D) + 2 * k * (A1 @ B1 @ C @ D) + A @ B2 @ C @ D
-        return np.stack([np.stack([pp, pl], axis=-3), np.stack([pl, ll], axis=-3)], axis=-4)
 
     def _reference(self):
         """Worm parameters (u_w, theta_w) at (psi, l) near 0 and their linear rate, for starts."""
@@ -670,6 +649,37 @@ class WormGeneratedPinion(Surface):
     def light(self) -> NormalPartSurface:
         """This surface with cheap second derivatives for TCA (:class:`NormalPartSurface`)."""
         return NormalPartSurface(self)
+
+
+class _WormMotion(Motion):
+    """The worm -> pinion motion M = A B C D of :class:`WormGeneratedPinion` (parameters psi, l) with
+    its exact first and second derivatives by the product rule. Each product of factors is formed
+    once per call and shared by M, dM and d2M (they are the same products, in the same order, as
+    writing each term out: 22 stacked 4 x 4 products instead of 45, the factors built once instead of
+    three times)."""
+
+    n_params = 2
+    names = ("psi", "l")
+
+    def __init__(self, pinion: WormGeneratedPinion):
+        self.pinion = pinion
+
+    def matrices(self, m):
+        m = self._params(m)
+        (A, A1, A2), (B, B1, B2), C, (D, D1, D2) = self.pinion._factors(m)
+        k, r = self.pinion.kappa, self.pinion.ratio_w
+        ABC = A @ B @ C
+        A1BC, A2BC = A1 @ B @ C, A2 @ B @ C
+        AB1C, A1B1C, AB2C = A @ B1 @ C, A1 @ B1 @ C, A @ B2 @ C
+        ABCD, A1BCD, A2BCD = ABC @ D, A1BC @ D, A2BC @ D
+        AB1CD, A1B1CD, AB2CD = AB1C @ D, A1B1C @ D, AB2C @ D
+        ABCD1, A1BCD1, AB1CD1 = ABC @ D1, A1BC @ D1, AB1C @ D1
+        dM = np.stack([A1BCD + r * ABCD1, k * A1BCD + AB1CD], axis=-3)
+        pp = A2BCD + 2 * r * A1BCD1 + r * r * (ABC @ D2)
+        pl = k * A2BCD + A1B1CD + r * k * A1BCD1 + r * AB1CD1
+        ll = k * k * A2BCD + 2 * k * A1B1CD + AB2CD
+        d2M = np.stack([np.stack([pp, pl], axis=-3), np.stack([pl, ll], axis=-3)], axis=-4)
+        return ABCD, dM, d2M
 
 
 class NormalPartSurface(Surface):
