@@ -53,9 +53,9 @@ format: $(STAMP)
 	$(BIN)/ruff format .
 	$(BIN)/snakefmt Snakefile workflow/rules src/gearrep/cli/sweep.smk
 
-# config/schema.yaml from the settings declarations (a test keeps them equal).
+# config/schema.json from the settings declarations (a test keeps them equal).
 schema: $(STAMP)
-	$(BIN)/python workflow/lib/wfconfig.py --write-schema config/schema.yaml
+	$(BIN)/python workflow/lib/wfconfig.py --write-schema config/schema.json
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -m ''

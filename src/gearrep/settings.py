@@ -7,7 +7,7 @@ A replication (or any other user of the library) declares its settings as a mapp
 - :func:`resolve` merges overrides (a config section, a test configuration) over the declared
   values and checks every one of them: unknown keys are refused with the closest declared name,
   NaN and infinity are refused, numbers must lie in their range, strings among their choices;
-- :func:`json_schema` is the JSON schema of the overrides (``config/schema.yaml`` is generated
+- :func:`json_schema` is the JSON schema of the overrides (``config/schema.json`` is generated
   from it, and a test keeps the file equal to it);
 - :func:`rows` lists name, value, unit, allowed range and reason for documentation.
 

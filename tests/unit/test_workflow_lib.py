@@ -3,6 +3,7 @@ configuration declaration that the schema, the config files and the test configu
 
 import ast
 import copy
+import json
 import sys
 
 import pytest
@@ -101,11 +102,12 @@ def _config(name):
 
 
 def test_schema_file_is_generated_from_the_declarations():
-    text = (ROOT / "config" / "schema.yaml").read_text()
-    assert text.startswith(wfconfig.SCHEMA_HEADER)
-    assert yaml.safe_load(text) == yaml.safe_load(yaml.safe_dump(wfconfig.schema())), (
-        "config/schema.yaml differs from the settings declarations: run `make schema`"
+    text = (ROOT / "config" / "schema.json").read_text()
+    assert json.loads(text) == json.loads(json.dumps(wfconfig.schema())), (
+        "config/schema.json differs from the settings declarations: run `make schema`"
     )
+    assert json.loads(text)["$comment"] == wfconfig.SCHEMA_COMMENT
+    assert not (ROOT / "config" / "schema.yaml").exists()
 
 
 def test_every_study_is_declared_and_every_config_key_is_a_setting():
