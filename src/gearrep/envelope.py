@@ -216,6 +216,7 @@ class _Factor:
     coeffs: np.ndarray  # (k,) or empty for a fixed factor
     offset: float
     matrix: np.ndarray | None = None
+    generators: tuple | None = None  # (K, K^2) of a rotation's axis (frames.axis_generators)
 
     def evaluate(self, s):
         """F, dF/ds, d^2F/ds^2 at scalar parameters s (n,) -> (n, 4, 4) each."""
@@ -230,7 +231,7 @@ class _Factor:
             F[:, :3, 3] = s[:, None] * self.vector
             dF[:, :3, 3] = self.vector
             return F, dF, d2F
-        R, dR, d2R = frames.rotation_about_axis_with_derivatives(self.vector, s)
+        R, dR, d2R = frames.rotation_about_axis_with_derivatives(self.vector, s, self.generators)
         p = self.point
         F[:, :3, :3] = R
         F[:, :3, 3] = p - R @ p
@@ -258,8 +259,14 @@ def _coeffs(coeffs):
 def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
     """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
     s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
+    k = _unit3(axis, "axis")
     return _Factor(
-        "rot", _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3), _coeffs(coeffs), float(offset)
+        "rot",
+        k,
+        np.asarray(point, dtype=float).reshape(3),
+        _coeffs(coeffs),
+        float(offset),
+        generators=frames.axis_generators(k),
     )
 
 
@@ -299,25 +306,67 @@ class ChainMotion(Motion):
             if f.kind != "fixed" and f.coeffs.size != self.n_params:
                 raise ValueError(f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}")
         self.factors = tuple(factors)
+        self._steps = self._plan()
+
+    def _plan(self):
+        """The factors as steps of :meth:`matrices`: ("fixed", M) for a fixed factor or one whose
+        coefficients are all zero (a constant: M at its offset), ("one", factor, j) for a factor
+        that moves with the single parameter j, ("any", factor) otherwise."""
+        plan = []
+        for f in self.factors:
+            nz = np.flatnonzero(f.coeffs) if f.kind != "fixed" else ()
+            if f.kind == "fixed":
+                plan.append(("fixed", f.matrix))
+            elif len(nz) == 0:
+                plan.append(("fixed", f.evaluate(np.array([f.offset]))[0][0]))
+            elif len(nz) == 1:
+                plan.append(("one", f, int(nz[0])))
+            else:
+                plan.append(("any", f))
+        return tuple(plan)
 
     def matrices(self, m):
+        """M, dM and d2M by the product rule, factor by factor. The blocks that are zero are not
+        formed: a constant factor has no derivatives, and one that moves with a single parameter j
+        adds to dP only in column j and to d2P only in row and column j (the sums that remain are
+        those of the full product rule, in the same order)."""
         m = self._params(m)
         shape = m.shape[:-1]
         k = self.n_params
         mm = m.reshape(-1, k)
         n = mm.shape[0]
-        P = np.broadcast_to(np.eye(4), (n, 4, 4)).copy()
-        dP = np.zeros((n, k, 4, 4))
-        d2P = np.zeros((n, k, k, 4, 4))
-        for f in self.factors:
-            if f.kind == "fixed":
-                F = f.matrix
-                P, dP, d2P = P @ F, dP @ F, d2P @ F
+        P = dP = d2P = None  # the identity and zeros before the first factor
+        for step in self._steps:
+            kind, f = step[0], step[1]
+            if kind == "fixed":
+                if P is None:
+                    P, dP, d2P = np.broadcast_to(f, (n, 4, 4)).copy(), np.zeros((n, k, 4, 4)), np.zeros((n, k, k, 4, 4))
+                else:
+                    P, dP, d2P = P @ f, dP @ f, d2P @ f
                 continue
-            s = f.offset + mm @ f.coeffs
-            F, Fs, Fss = f.evaluate(s)
+            F, Fs, Fss = f.evaluate(f.offset + mm @ f.coeffs)
+            if kind == "one":
+                j = step[2]
+                c = f.coeffs[j]
+                dFj, d2Fjj = c * Fs, (c * c) * Fss
+                if P is None:
+                    dP, d2P = np.zeros((n, k, 4, 4)), np.zeros((n, k, k, 4, 4))
+                    P, dP[:, j], d2P[:, j, j] = F, dFj, d2Fjj
+                    continue
+                G = dP @ dFj[:, None]  # dP_i dF_j
+                d2P = d2P @ F[:, None, None]
+                d2P[:, :, j] += G
+                d2P[:, j, :] += G
+                d2P[:, j, j] += P @ d2Fjj
+                dP = dP @ F[:, None]
+                dP[:, j] += P @ dFj
+                P = P @ F
+                continue
             dF = f.coeffs[None, :, None, None] * Fs[:, None]  # (n, k, 4, 4)
             d2F = (f.coeffs[:, None] * f.coeffs[None, :])[None, :, :, None, None] * Fss[:, None, None]
+            if P is None:
+                P, dP, d2P = F, dF, d2F
+                continue
             d2P = (
                 d2P @ F[:, None, None]
                 + dP[:, :, None] @ dF[:, None, :]

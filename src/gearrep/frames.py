@@ -42,6 +42,7 @@ __all__ = [
     "rotation_about_axis",
     "drotation_about_axis",
     "rotation_about_axis_with_derivatives",
+    "axis_generators",
     "homogeneous",
     "translation",
     "compose",
@@ -169,12 +170,20 @@ def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
     return rotation_about_axis_with_derivatives(axis, a)[order]
 
 
-def rotation_about_axis_with_derivatives(axis, a):
+def axis_generators(axis):
+    """(K, K^2): the cross-product matrix K of the unit direction of ``axis`` and its square, as
+    :func:`rotation_about_axis_with_derivatives` forms them (pass them as ``generators`` where the
+    same axis turns again and again, e.g. a factor of a motion chain)."""
+    K = _axis_generator(axis)
+    return K, K @ K
+
+
+def rotation_about_axis_with_derivatives(axis, a, generators=None):
     """(R, dR/da, d2R/da2) of :func:`rotation_about_axis` in one evaluation (one generator K,
     one K^2, one sine and cosine): what a chain of rotations differentiated by the product rule
-    needs at every step."""
-    K = _axis_generator(axis)
-    K2 = K @ K
+    needs at every step. ``generators``: :func:`axis_generators` of ``axis``, if the caller keeps
+    them (the same values)."""
+    K, K2 = axis_generators(axis) if generators is None else generators
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
     return np.eye(3) + s * K + (1.0 - c) * K2, c * K + s * K2, -s * K + c * K2

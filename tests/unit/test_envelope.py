@@ -64,6 +64,41 @@ def test_chain_motion_derivatives_match_finite_differences():
     assert M.shape == (2, 4, 4) and dM.shape == (2, 2, 4, 4) and d2M.shape == (2, 2, 2, 4, 4)
 
 
+@pytest.mark.parametrize("first", ["constant", "both", "one"])
+def test_chain_motion_steps(first):
+    """Every kind of step of ChainMotion.matrices (a factor with all-zero coefficients is a constant,
+    one moving with a single parameter adds only its row and column, one moving with both the full
+    product rule), first in the chain or after others: the derivatives match finite differences,
+    and a constant factor gives the same matrices, bit for bit, as the fixed factor of its matrix."""
+    head = {
+        "constant": rotation((1, 0, 0), [0.0, 0.0], offset=0.4),
+        "both": rotation((0, 1, 0), [0.5, -0.3]),
+        "one": translation((0, 0, 2.0), [0.0, 1.0]),
+    }[first]
+    rest = [
+        rotation((0, 0, 1), [0.05, 0.0]),
+        translation((1, 0, 0), [0.0, 0.0], offset=60),
+        rotation((1, 0.2, 0), [0.0, 1.0], point=(60, 110, 0)),
+        rotation((0, 1, 1), [0.0, 0.0], offset=-0.7, point=(1.0, 2.0, 3.0)),
+        rotation((0, 0, 1), [1.0, 0.7]),
+    ]
+    mot = ChainMotion([head, *rest], names=("theta", "psi"))
+    m = np.array([[0.3, -0.1], [2.0, 0.05], [-1.0, 0.4]])
+    M, dM, d2M = mot.matrices(m)
+    fd = FunctionMotion(lambda x: mot.matrices(x)[0], 2, ("theta", "psi"), fd_step=1e-3)
+    _, dMf, d2Mf = fd.matrices(m)
+    np.testing.assert_allclose(dM, dMf, atol=1e-8)
+    np.testing.assert_allclose(d2M, d2Mf, atol=1e-6)
+    const = [f for f in [head, *rest] if not f.coeffs.any()]
+    as_fixed = [fixed(f.evaluate(np.array([f.offset]))[0][0]) if not f.coeffs.any() else f for f in [head, *rest]]
+    assert len(const) >= 2
+    for a, b in zip(mot.matrices(m), ChainMotion(as_fixed, names=("theta", "psi")).matrices(m)):
+        np.testing.assert_array_equal(a, b)
+    for i in range(len(m)):  # one point alone: the same matrices
+        for a, b in zip(mot.matrices(m[i]), (M[i], dM[i], d2M[i])):
+            np.testing.assert_array_equal(a, b)
+
+
 @pytest.mark.parametrize("member_side", [-1, 1])
 def test_rack_meshing_equals_seed002_eq_2_3_6(member_side):
     """n . v^(1c) = +-[(r_p phi - y_c) N_x + x_c N_y] / |N| (seed 002 eq 2.2.9 / 2.3.6)."""
