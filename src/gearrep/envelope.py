@@ -259,15 +259,8 @@ def _coeffs(coeffs):
 def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
     """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
     s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
-    k = _unit3(axis, "axis")
-    return _Factor(
-        "rot",
-        k,
-        np.asarray(point, dtype=float).reshape(3),
-        _coeffs(coeffs),
-        float(offset),
-        generators=frames.axis_generators(k),
-    )
+    k, p = _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3)
+    return _Factor("rot", k, p, _coeffs(coeffs), float(offset), generators=frames.axis_generators(k))
 
 
 def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
@@ -314,7 +307,7 @@ class ChainMotion(Motion):
         that moves with the single parameter j, ("any", factor) otherwise."""
         plan = []
         for f in self.factors:
-            nz = np.flatnonzero(f.coeffs) if f.kind != "fixed" else ()
+            nz = np.flatnonzero(f.coeffs)
             if f.kind == "fixed":
                 plan.append(("fixed", f.matrix))
             elif len(nz) == 0:

@@ -13,6 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from replication_io import save_figure  # noqa: E402
 
 from gearrep import plotting  # noqa: E402
 
@@ -25,12 +26,6 @@ st = pd.read_csv(TABLES["settings"]).iloc[0]
 WLO, WHI = float(st["window_lo_deg"]), float(st["window_hi_deg"])
 PAIR = str(st["primary_pair"])
 XLAB = {"R1": "phi1 = pinion angle, root -> top [deg]", "R2": "phi1 read as gear angle, root -> top [deg]"}
-
-
-def save(fig, path):
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
 
 
 def curve(design, reading, pair=PAIR):
@@ -62,19 +57,19 @@ fig, axes = plt.subplots(1, 2, figsize=(12, 4.4))
 for ax, rd in zip(axes, ("R1", "R2")):
     panel(ax, designs("fig12", "module_mm"), "m", "g", rd, f"Fig 12 (z1=21, z2=29, R_T=500): {rd}", " mm")
 fig.suptitle(note, fontsize=9)
-save(fig, out.fig12)
+save_figure(fig, out.fig12)
 
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.4))
 for ax, z2 in zip(axes, (29, 89)):
     panel(ax, designs("fig13", "R_T_mm", z2=z2), "R_T", "g", "R1", f"Fig 13 (z1=21, z2={z2}, m=8): R1", " mm")
 fig.suptitle(note, fontsize=9)
-save(fig, out.fig13)
+save_figure(fig, out.fig13)
 
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.4))
 for ax, rd in zip(axes, ("R1", "R2")):
     panel(ax, designs("fig15", "z2"), "z2", "g", rd, f"Fig 15 (z1=21, m=8, R_T=500): {rd}")
 fig.suptitle(note, fontsize=9)
-save(fig, out.fig15)
+save_figure(fig, out.fig15)
 
 th = pd.read_csv(TABLES["thickness"])
 fig, ax = plt.subplots()
@@ -88,7 +83,7 @@ plotting.label_axes(
     f"Fig 14: thickness vs R_T (z={int(th['z'].iloc[0])}, m={th['module_mm'].iloc[0]:g})",
 )
 plotting.finish(ax)
-save(fig, out.fig14)
+save_figure(fig, out.fig14)
 
 fig, axes = plt.subplots(2, 2, figsize=(12, 7.5), constrained_layout=True)
 for ax in axes.flat:
@@ -106,4 +101,4 @@ plotting.label_axes(axes[1, 0], XLAB["R1"], "minor axis 2b [mm]")
 plotting.label_axes(axes[1, 1], XLAB["R1"], "|S_pipeline / S_closed_form - 1| [-]", "TCA pipeline vs closed form")
 for ax in axes.flat:
     plotting.finish(ax)
-save(fig, out.sec4)
+save_figure(fig, out.sec4)

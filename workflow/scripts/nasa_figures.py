@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from replication_io import save_figure  # noqa: E402
 
 from gearrep import plotting  # noqa: E402
 
@@ -37,12 +38,6 @@ LABEL = {
     "dE_0.001in": "dE = 0.001 in",
     "dgamma_intersecting": "3' in the plane of the axes",
 }
-
-
-def save(fig, path):
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
 
 
 # TE functions and TE_max
@@ -97,8 +92,8 @@ ax2w.set_xticks(
 )
 plotting.label_axes(ax2w, "case [-]", "TE_max [arcsec]", "Worm-ground pinion: maximal TE")
 plotting.finish(ax2w)
-save(fig_w, out.worm)
-save(fig, out.te)
+save_figure(fig_w, out.worm)
+save_figure(fig, out.te)
 
 # contact ellipses (principal axes, major along x)
 ell = pd.read_csv(T["ellipse"])
@@ -114,7 +109,7 @@ for ax, (v, zone) in zip(axes, ((1, "single"), (2, "pinion_addendum"), (3, "sing
     ax.set_aspect("equal", adjustable="datalim")
     plotting.label_axes(ax, "along major axis [in]", "along minor axis [in]", f"version {v}")
     plotting.finish(ax, loc="lower center")
-save(fig, out.ellipses)
+save_figure(fig, out.ellipses)
 
 # sensitivity to dE (Table 6.2.3)
 sens = pd.read_csv(T["sensitivity"])
@@ -132,7 +127,7 @@ plotting.label_axes(ax, "version [-]", "pressure-angle change [deg]", "Sensitivi
 plotting.label_axes(ax2, "version [-]", "shift / active height [-]")
 plotting.finish(ax)
 plotting.finish(ax2)
-save(fig, out.sensitivity)
+save_figure(fig, out.sensitivity)
 
 # contact paths on the pinion (rack profile parameter vs axial position), fig. 1.10
 sg = pd.read_csv(T["te_single"])
@@ -147,6 +142,6 @@ plotting.label_axes(
     "Contact paths on the pinion (u = 0: helix through Q)",
 )
 plotting.finish(ax)
-save(fig, out.paths)
+save_figure(fig, out.paths)
 Path(smk.log[0]).parent.mkdir(parents=True, exist_ok=True)
 Path(smk.log[0]).write_text("nasa figures: " + ", ".join(str(f) for f in out) + "\n")

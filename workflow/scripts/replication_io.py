@@ -61,6 +61,16 @@ def write_timing(path: str, compute_s: float) -> None:
     Path(path).write_text("\t".join(row) + "\n" + "\t".join(f"{v:.4f}" for v in row.values()) + "\n")
 
 
+def save_figure(fig, path) -> None:
+    """Write a matplotlib figure (format from the file name, the gearrep style's dpi and tight box;
+    directories made as needed) and close it."""
+    import matplotlib.pyplot as plt
+
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path)
+    plt.close(fig)
+
+
 def timed(fn, *args):
     """(seconds, fn(*args))."""
     t0 = time.perf_counter()

@@ -11,6 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from replication_io import save_figure  # noqa: E402
 
 from gearrep import plotting, published  # noqa: E402
 
@@ -29,12 +30,6 @@ COLORS = {
     "singular": "tab:purple",
     "diverged": "0.6",
 }
-
-
-def save(fig, path):
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
 
 
 def cloud(ax, df, x, y, variant, title):
@@ -57,7 +52,7 @@ for ax in axes[-1]:
 for ax in axes[:, 0]:
     ax.set_ylabel("start v1 (thesis) [mm]")
 fig.suptitle("Table 10 (spur 52/72): outcome of each start on the (u1, v1) plane")
-save(fig, smk.output.clouds)
+save_figure(fig, smk.output.clouds)
 
 fig, axes = plt.subplots(1, 3, figsize=(13, 4.2), sharey=True)
 for ax, v in zip(axes, ["plain", "damped", "domain"]):
@@ -66,7 +61,7 @@ for ax, v in zip(axes, ["plain", "damped", "domain"]):
     ax.set_xlabel("start phi2 (thesis frame) [rad]")
 axes[0].set_ylabel("start u1 [mm]")
 fig.suptitle("Table 10: the outcome is decided by the phi2 start")
-save(fig, smk.output.clouds_phi2)
+save_figure(fig, smk.output.clouds_phi2)
 
 # --- convergence against the phi2 window -------------------------------------------------------
 conv = pd.read_csv(TABLES["convergence"])
@@ -89,7 +84,7 @@ plotting.label_axes(
     "Spur 52/72: convergence against the phi2 guess window",
 )
 ax.set_ylim(-2, 105)
-save(plotting.finish(ax, loc="lower left"), smk.output.window)
+save_figure(plotting.finish(ax, loc="lower left"), smk.output.window)
 
 # --- sec 6.1: fixed phi2 guesses ----------------------------------------------------------------
 det = pd.read_csv(TABLES["convergence_detail"])
@@ -119,7 +114,7 @@ plotting.label_axes(
     "correct-root convergence [%]",
     "Spur 25/25 (sec 6.1): fixed phi2 guess, u2 and v2 at the flank mid-point",
 )
-save(plotting.finish(ax), smk.output.guess)
+save_figure(plotting.finish(ax), smk.output.guess)
 
 # --- TE curves -----------------------------------------------------------------------------------
 cur = pd.read_csv(TABLES["te_curves"])
@@ -141,7 +136,7 @@ plotting.label_axes(
     axes[1], "phi1 [rad]", "transmitted TE, thesis sign [arcsec]", "Helical 40/37, Tables 3-4 first rows, one cycle"
 )
 plotting.finish(axes[1], loc="best")
-save(fig, smk.output.te)
+save_figure(fig, smk.output.te)
 
 # --- paths of contact ------------------------------------------------------------------------------
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.2))
@@ -158,4 +153,4 @@ axes[1].axvline(10.0, ls="--", color="0.5", lw=1)
 axes[1].set_xlim(0.0, 20.0)
 plotting.label_axes(axes[1], "v1 (thesis, face 0..20) [mm]", "u1 [mm]", "Helical 40/37: path of contact on the pinion")
 plotting.finish(axes[1], loc="best")
-save(fig, smk.output.paths)
+save_figure(fig, smk.output.paths)

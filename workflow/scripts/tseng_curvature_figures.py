@@ -11,6 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from replication_io import save_figure  # noqa: E402
 
 from gearrep import plotting  # noqa: E402
 
@@ -35,12 +36,6 @@ NAMES = {
 }
 
 
-def save(fig, path):
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
-
-
 def printed(tab, q):
     p = pub[(pub["source"] == f"Table {tab}") & (pub["quantity"] == q)].sort_values("l1_mm")
     return p["l1_mm"], p["value"]
@@ -60,7 +55,7 @@ for ax, (a, b, pt) in zip(axes[1:], (("4.2", "4.3", "4.3"), ("4.4", "4.5", "4.4"
     plotting.published(ax, *printed(pt, "k_s"), f"Table {pt}")
     plotting.label_axes(ax, "l_1 [mm]", "k_s [1/mm]", f"trace curvature k_s, {NAMES[a].split(', ')[1]} mm")
     plotting.finish(ax)
-save(fig, smk.output.tables)
+save_figure(fig, smk.output.tables)
 
 face = pd.read_csv(tables["face"])
 fig, axes = plt.subplots(2, 2, figsize=(12, 7.5))
@@ -83,7 +78,7 @@ for i, fl in enumerate(("Sigma_2R", "Sigma_2L")):
     plotting.finish(axes[i, 1], loc="upper right")
 fig.suptitle("x = beyond the envelope's limiting line (undercut region, not joined)", fontsize=9)
 fig.tight_layout()
-save(fig, smk.output.face)
+save_figure(fig, smk.output.face)
 
 rc = pd.read_csv(tables["rc_sweep"])
 spur = rc[~np.isfinite(rc["R_c_mm"])]
@@ -103,5 +98,5 @@ plotting.label_axes(axes[1], "R_c [mm]", "k_q [1/mm]", "profile curvature (indep
 plotting.finish(axes[0], loc="lower right")
 plotting.finish(axes[1], loc="center right")
 fig.tight_layout()
-save(fig, smk.output.rc)
+save_figure(fig, smk.output.rc)
 Path(smk.log[0]).write_text("figures: " + ", ".join(str(f) for f in smk.output) + "\n")

@@ -12,6 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
+from replication_io import save_figure  # noqa: E402
 
 from gearrep import plotting  # noqa: E402
 
@@ -36,12 +37,6 @@ def printed(table, quantity):
     return v.sort_values("phi1_deg")
 
 
-def save(fig, path):
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
-
-
 for key, col, q, ylabel in (("ke", "KE_arcsec", "KE", "KE [arcsec]"), ("zp", "Z_p_mm", "Z_p", "Z_p [mm]")):
     fig, ax = plt.subplots(figsize=(7.2, 4.6))
     for i, tab in enumerate(SURVIVING):
@@ -59,14 +54,14 @@ for key, col, q, ylabel in (("ke", "KE_arcsec", "KE", "KE [arcsec]"), ("zp", "Z_
         ylabel,
         "seed 000 Tables 5.2-5.9: " + ("kinematic error" if key == "ke" else "contact position on the pinion face"),
     )
-    save(plotting.finish(ax, loc="upper center" if key == "ke" else "best"), smk.output[key])
+    save_figure(plotting.finish(ax, loc="upper center" if key == "ke" else "best"), smk.output[key])
 
 h = tables["ke_vs_hob_radius"]
 fig, ax = plt.subplots()
 for r, g in h.groupby("hob_pitch_radius_mm"):
     plotting.computed(ax, g["phi1_deg"], g["KE_arcsec"], f"r_h = {r:g} mm")
 plotting.label_axes(ax, "phi1' [deg]", "KE [arcsec]", "Fig 5.5: ideal 110/110 pair, KE by hob pitch radius")
-save(plotting.finish(ax), smk.output["hob"])
+save_figure(plotting.finish(ax), smk.output["hob"])
 er = tables["ellipse_ratio"]
 fig, ax = plt.subplots()
 for i, (a, g) in enumerate(er.groupby("alpha_n_deg")):
@@ -77,5 +72,5 @@ for i, (a, g) in enumerate(er.groupby("alpha_n_deg")):
     v = values[(values["quantity"] == "a_over_b") & values["row"].str.contains(f"alpha_n_deg={a:g};")]
     plotting.published(ax, [110.0] * len(v), v["value"], "Fig 5.7 text", label=f"{a:g} deg", color=f"C{i}")
 plotting.label_axes(ax, "R_c [mm]", "a/b [-]", "Fig 5.7: contact-ellipse axis ratio (curvature method)")
-save(plotting.finish(ax), smk.output["ab"])
+save_figure(plotting.finish(ax), smk.output["ab"])
 Path(smk.log[0]).write_text("figures: " + ", ".join(str(f) for f in smk.output) + "\n")
