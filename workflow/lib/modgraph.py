@@ -107,17 +107,46 @@ class ModuleGraph:
         return sorted(str(self.module_file(list(k)).relative_to(self.root)) for k in seen)
 
     # -- scripts and notebooks -----------------------------------------------------------------
-    def source_modules(self, path: Path | str) -> list[str]:
-        """Dotted names of the package modules a script (.py) or notebook (.ipynb) imports."""
-        path = Path(path)
+    @staticmethod
+    def _source_text(path: Path) -> str:
+        """The code of a script, or of a notebook's code cells (without magics and shell lines)."""
         text = path.read_text()
         if path.suffix == ".ipynb":
             cells = json.loads(text)["cells"]
             text = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
             text = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith(("%", "!")))
-        return sorted({".".join(m) for m in self._parse(text, str(path), None)})
+        return text
+
+    def source_files(self, path: Path | str) -> list[Path]:
+        """The script or notebook ``path`` and the scripts beside it that it imports, in turn (e.g.
+        ``workflow/scripts/replication_io.py``: importable because the step runner puts the
+        scripts' directory on ``sys.path``)."""
+        path = Path(path)
+        seen, todo = [], [path]
+        while todo:
+            f = todo.pop()
+            if f in seen:
+                continue
+            seen.append(f)
+            for node in _import_nodes(self._source_text(f), str(f)):
+                names = [a.name for a in node.names] if isinstance(node, ast.Import) else []
+                if isinstance(node, ast.ImportFrom) and not node.level and node.module:
+                    names = [node.module]
+                for name in names:
+                    sibling = path.parent / f"{name.split('.')[0]}.py"
+                    if sibling.is_file():
+                        todo.append(sibling)
+        return seen
+
+    def source_modules(self, path: Path | str) -> list[str]:
+        """Dotted names of the package modules a script (.py) or notebook (.ipynb) imports, itself
+        or through the scripts beside it that it imports (:meth:`source_files`)."""
+        return sorted(
+            {".".join(m) for f in self.source_files(path) for m in self._parse(self._source_text(f), str(f), None)}
+        )
 
     def source_closure(self, path: Path | str, *extra: str) -> list[str]:
         """:meth:`closure` of what a script or notebook imports (plus ``extra`` modules it imports
-        dynamically)."""
-        return self.closure(*self.source_modules(path), *extra)
+        dynamically), and the files of the scripts beside it that it imports."""
+        scripts = [str(f.resolve().relative_to(self.root)) for f in self.source_files(path)[1:]]
+        return self.closure(*self.source_modules(path), *extra) + sorted(scripts)
