@@ -46,6 +46,8 @@ has a nonzero solution. Its (2 + k)-square matrix is Litvin's determinant test (
 dependent. :func:`singular_points` solves (E) together with det = 0 (Litvin's limiting line on
 the tool surface).
 
+The motions live in :mod:`gearrep.motion` (re-exported here, the names of this module's face).
+
 Usage (the two-parameter hob set-up of seed 000; tool parameters are always called u, v):
 
     motion = ChainMotion([rotation((0, 0, 1), [1 / N, 0]),            # gear turns theta / N
@@ -69,340 +71,26 @@ tests/unit/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import frames
+from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
+from .motion import TOOL_NAMES, Motion
+from .motion import __all__ as _MOTION_NAMES
 from .solve import SolveResult, Status, newton
-from .surface import Surface, SurfacePoint, cross
+from .surface import _D1, _D1_OFF, Surface, SurfacePoint, cross
 
 __all__ = [
-    "Motion",
-    "FunctionMotion",
-    "ChainMotion",
-    "rotation",
-    "translation",
-    "fixed",
-    "rack_generation_motion",
+    *_MOTION_NAMES,
     "EnvelopeResult",
     "Envelope",
     "EnvelopeSurface",
     "singular_points",
     "LocalGeometry",
     "local_geometry",
-    "TOOL_NAMES",
 ]
-
-TOOL_NAMES = ("u", "v")
-
-
-# --------------------------------------------------------------------------------------------
-# motions
-# --------------------------------------------------------------------------------------------
-def _check_names(names, k):
-    names = tuple(str(s) for s in names)
-    if len(names) != k:
-        raise ValueError(f"names must have {k} entries (one per motion parameter), got {names!r}")
-    if len(set(names)) != k or set(names) & set(TOOL_NAMES):
-        raise ValueError(f"motion parameter names must be distinct and not 'u' or 'v', got {names!r}")
-    return names
-
-
-class Motion:
-    """A rigid motion M_21(m) from the tool frame S_1 to the generated member's frame S_2.
-
-    Subclasses implement :meth:`matrices`. ``n_params`` is k (1 or 2) and ``names`` names the
-    motion parameters (e.g. ``("phi",)`` or ``("theta", "psi")``).
-    """
-
-    n_params: int = 1
-    names: tuple[str, ...] = ("phi",)
-
-    def matrices(self, m):  # pragma: no cover - abstract
-        """(M, dM, d2M) at parameters m (..., k): shapes (..., 4, 4), (..., k, 4, 4) and
-        (..., k, k, 4, 4); dM[..., j] = dM/dm_j, d2M[..., i, j] = d^2 M / dm_i dm_j."""
-        raise NotImplementedError
-
-    def _params(self, m):
-        m = np.asarray(m, dtype=float)
-        if self.n_params == 1 and (m.ndim == 0 or m.shape[-1] != 1):
-            m = m[..., None]
-        if m.shape[-1] != self.n_params:
-            raise ValueError(
-                f"m must have last dimension {self.n_params} (motion parameters {self.names}), got shape {m.shape}"
-            )
-        return m
-
-
-# fourth-order central differences (same weights as gearrep.surface)
-_D1 = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0
-_D1_OFF = np.array([-2.0, -1.0, 1.0, 2.0])
-_D2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0
-_D2_OFF = np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
-
-
-class FunctionMotion(Motion):
-    """A motion given by a function ``M(m)`` (m (..., k) -> (..., 4, 4)).
-
-    ``dM`` and ``d2M`` (same signatures as :meth:`Motion.matrices` returns) may be supplied;
-    otherwise they are taken by 4th-order central differences with step ``fd_step`` (error
-    O(h^4) + O(eps/h) for dM and O(eps/h^2) for d2M: with h = 1e-3 and O(1) parameters about
-    1e-12 and 1e-10 relative, enough for curvatures to ~1e-9). Prefer :class:`ChainMotion`
-    (exact derivatives) when the motion is a product of rotations and translations.
-    """
-
-    def __init__(
-        self,
-        M: Callable,
-        n_params: int = 1,
-        names: Sequence[str] | None = None,
-        dM: Callable | None = None,
-        d2M: Callable | None = None,
-        fd_step: float = 1e-3,
-    ):
-        if n_params not in (1, 2):
-            raise ValueError(f"n_params must be 1 or 2, got {n_params!r}")
-        if not (fd_step > 0):
-            raise ValueError(f"fd_step must be > 0, got {fd_step!r}")
-        self.n_params = int(n_params)
-        self.names = _check_names(names or (("phi",) if n_params == 1 else ("theta", "psi")), n_params)
-        self._M, self._dM, self._d2M, self.fd_step = M, dM, d2M, float(fd_step)
-
-    def matrices(self, m):
-        m = self._params(m)
-        k, h = self.n_params, self.fd_step
-        M = np.asarray(self._M(m), dtype=float)
-        eye = np.eye(k)
-
-        def at(off):
-            return np.asarray(self._M(m + off), dtype=float)
-
-        if self._dM is not None:
-            dM = np.asarray(self._dM(m), dtype=float)
-        else:
-            dM = np.stack([sum(w * at(o * h * eye[j]) for w, o in zip(_D1, _D1_OFF)) / h for j in range(k)], axis=-3)
-        if self._d2M is not None:
-            d2M = np.asarray(self._d2M(m), dtype=float)
-        else:
-            rows = []
-            for i in range(k):
-                row = []
-                for j in range(k):
-                    if i == j:
-                        row.append(sum(w * (M if o == 0 else at(o * h * eye[i])) for w, o in zip(_D2, _D2_OFF)) / h**2)
-                    else:
-                        row.append(
-                            sum(
-                                wi * wj * at(oi * h * eye[i] + oj * h * eye[j])
-                                for wi, oi in zip(_D1, _D1_OFF)
-                                for wj, oj in zip(_D1, _D1_OFF)
-                            )
-                            / h**2
-                        )
-                rows.append(np.stack(row, axis=-3))
-            d2M = np.stack(rows, axis=-4)
-        return M, dM, d2M
-
-
-@dataclass(frozen=True)
-class _Factor:
-    """One factor F(s) of a :class:`ChainMotion`; s = offset + coeffs . m (affine in m)."""
-
-    kind: str  # "rot", "trans", "fixed"
-    vector: np.ndarray  # unit axis (rot) or direction (trans)
-    point: np.ndarray  # a point on the rotation axis
-    coeffs: np.ndarray  # (k,) or empty for a fixed factor
-    offset: float
-    matrix: np.ndarray | None = None
-    generators: tuple | None = None  # (K, K^2) of a rotation's axis (frames.axis_generators)
-
-    def evaluate(self, s):
-        """F, dF/ds, d^2F/ds^2 at scalar parameters s (n,) -> (n, 4, 4) each."""
-        n = s.shape[0]
-        F = np.broadcast_to(np.eye(4), (n, 4, 4)).copy()
-        dF = np.zeros((n, 4, 4))
-        d2F = np.zeros((n, 4, 4))
-        if self.kind == "fixed":
-            F[:] = self.matrix
-            return F, dF, d2F
-        if self.kind == "trans":
-            F[:, :3, 3] = s[:, None] * self.vector
-            dF[:, :3, 3] = self.vector
-            return F, dF, d2F
-        R, dR, d2R = frames.rotation_about_axis_with_derivatives(self.vector, s, self.generators)
-        p = self.point
-        F[:, :3, :3] = R
-        F[:, :3, 3] = p - R @ p
-        dF[:, :3, :3] = dR
-        dF[:, :3, 3] = -dR @ p
-        d2F[:, :3, :3] = d2R
-        d2F[:, :3, 3] = -d2R @ p
-        return F, dF, d2F
-
-
-def _unit3(v, name):
-    v = np.asarray(v, dtype=float).reshape(-1)
-    if v.shape != (3,) or not np.all(np.isfinite(v)) or np.linalg.norm(v) == 0:
-        raise ValueError(f"{name} must be a finite nonzero 3-vector, got {v!r}")
-    return v / np.linalg.norm(v)
-
-
-def _coeffs(coeffs):
-    c = np.atleast_1d(np.asarray(coeffs, dtype=float))
-    if c.ndim != 1 or c.size not in (1, 2) or not np.all(np.isfinite(c)):
-        raise ValueError(f"coeffs must be 1 or 2 finite numbers (one per motion parameter), got {coeffs!r}")
-    return c
-
-
-def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
-    """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
-    s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
-    k, p = _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3)
-    return _Factor("rot", k, p, _coeffs(coeffs), float(offset), generators=frames.axis_generators(k))
-
-
-def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
-    """Factor of a :class:`ChainMotion`: translation by s * direction, s = offset + coeffs . m
-    (``direction`` is used as given, not normalised, so s may be an angle times a radius)."""
-    d = np.asarray(direction, dtype=float).reshape(-1)
-    if d.shape != (3,) or not np.all(np.isfinite(d)):
-        raise ValueError(f"direction must be a finite 3-vector, got {direction!r}")
-    return _Factor("trans", d, np.zeros(3), _coeffs(coeffs), float(offset))
-
-
-def fixed(M) -> _Factor:
-    """Factor of a :class:`ChainMotion`: a constant 4 x 4 homogeneous matrix."""
-    M = np.asarray(M, dtype=float)
-    if M.shape != (4, 4) or not np.all(np.isfinite(M)):
-        raise ValueError(f"M must be a finite 4x4 matrix, got shape {M.shape}")
-    return _Factor("fixed", np.zeros(3), np.zeros(3), np.zeros(0), 0.0, M)
-
-
-class ChainMotion(Motion):
-    """M_21(m) = F_1 F_2 ... F_n, each factor a :func:`rotation`, :func:`translation` or
-    :func:`fixed` matrix (Litvin's chain M_21 = M_2f M_fh ... of GGAT ch. 2), with exact first
-    and second derivatives by the product rule. Factor parameters are affine in m."""
-
-    def __init__(self, factors: Sequence[_Factor], names: Sequence[str] = ("phi",)):
-        names = tuple(names)
-        if len(names) not in (1, 2):
-            raise ValueError(f"names must name 1 or 2 motion parameters, got {names!r}")
-        self.n_params = len(names)
-        self.names = _check_names(names, self.n_params)
-        if len(factors) == 0:
-            raise ValueError("factors must not be empty")
-        for f in factors:
-            if not isinstance(f, _Factor):
-                raise ValueError("factors must be made by rotation(), translation() or fixed()")
-            if f.kind != "fixed" and f.coeffs.size != self.n_params:
-                raise ValueError(f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}")
-        self.factors = tuple(factors)
-        self._steps = self._plan()
-
-    def _plan(self):
-        """The factors as steps of :meth:`matrices`: ("fixed", M) for a fixed factor or one whose
-        coefficients are all zero (a constant: M at its offset), ("one", factor, j) for a factor
-        that moves with the single parameter j, ("any", factor) otherwise."""
-        plan = []
-        for f in self.factors:
-            nz = np.flatnonzero(f.coeffs)
-            if f.kind == "fixed":
-                plan.append(("fixed", f.matrix))
-            elif len(nz) == 0:
-                plan.append(("fixed", f.evaluate(np.array([f.offset]))[0][0]))
-            elif len(nz) == 1:
-                plan.append(("one", f, int(nz[0])))
-            else:
-                plan.append(("any", f))
-        return tuple(plan)
-
-    def matrices(self, m):
-        """M, dM and d2M by the product rule, factor by factor. The blocks that are zero are not
-        formed: a constant factor has no derivatives, and one that moves with a single parameter j
-        adds to dP only in column j and to d2P only in row and column j (the sums that remain are
-        those of the full product rule, in the same order)."""
-        m = self._params(m)
-        shape = m.shape[:-1]
-        k = self.n_params
-        mm = m.reshape(-1, k)
-        n = mm.shape[0]
-        P = dP = d2P = None  # the identity and zeros before the first factor
-        for step in self._steps:
-            kind, f = step[0], step[1]
-            if kind == "fixed":
-                if P is None:
-                    P, dP, d2P = np.broadcast_to(f, (n, 4, 4)).copy(), np.zeros((n, k, 4, 4)), np.zeros((n, k, k, 4, 4))
-                else:
-                    P, dP, d2P = P @ f, dP @ f, d2P @ f
-                continue
-            F, Fs, Fss = f.evaluate(f.offset + mm @ f.coeffs)
-            if kind == "one":
-                j = step[2]
-                c = f.coeffs[j]
-                dFj, d2Fjj = c * Fs, (c * c) * Fss
-                if P is None:
-                    dP, d2P = np.zeros((n, k, 4, 4)), np.zeros((n, k, k, 4, 4))
-                    P, dP[:, j], d2P[:, j, j] = F, dFj, d2Fjj
-                    continue
-                G = dP @ dFj[:, None]  # dP_i dF_j
-                d2P = d2P @ F[:, None, None]
-                d2P[:, :, j] += G
-                d2P[:, j, :] += G
-                d2P[:, j, j] += P @ d2Fjj
-                dP = dP @ F[:, None]
-                dP[:, j] += P @ dFj
-                P = P @ F
-                continue
-            dF = f.coeffs[None, :, None, None] * Fs[:, None]  # (n, k, 4, 4)
-            d2F = (f.coeffs[:, None] * f.coeffs[None, :])[None, :, :, None, None] * Fss[:, None, None]
-            if P is None:
-                P, dP, d2P = F, dF, d2F
-                continue
-            d2P = (
-                d2P @ F[:, None, None]
-                + dP[:, :, None] @ dF[:, None, :]
-                + dP[:, None, :] @ dF[:, :, None]
-                + P[:, None, None] @ d2F
-            )
-            dP = dP @ F[:, None] + P[:, None] @ dF
-            P = P @ F
-        return (P.reshape(shape + (4, 4)), dP.reshape(shape + (k, 4, 4)), d2P.reshape(shape + (k, k, 4, 4)))
-
-
-def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi") -> ChainMotion:
-    """Rack-cutter -> member motion of seed 002 sec. 2.2-2.3 (fig. 2.2.3): M_1c(phi).
-
-    The rack frame S_c has its pitch plane x_c = 0 and the member's axis parallel to z_c, at
-    x_c = member_side * r_p (``member_side`` = -1, the default, puts the member on the side
-    x_c < 0; +1 on x_c > 0, e.g. the gear of seed 002, generated by the rigidly connected rack on
-    the other side from the pinion). The rack translates by s_c = r_p phi (along -y in the fixed
-    frame) while the member turns by phi (clockwise for member_side = -1):
-
-        member_side = -1:  M_1c = Rot_z(phi)  Trans(r_p, -r_p phi, 0)
-        member_side = +1:  M_1c = Rot_z(-phi) Trans(-r_p, -r_p phi, 0)
-
-    In both cases the instantaneous axis is x_c = 0, y_c = r_p phi (the point (X_c, Y_c) of
-    seed 002 eq 2.2.8-2.2.9) and the generic meshing equation n . v^(1c) = 0 equals seed 002
-    eq 2.3.6, +-[(r_p phi - y_c) N_x + x_c N_y] = 0 (tested). With member_side = -1 a rack of
-    helix angle beta > 0 (:mod:`gearrep.surfaces.rack`) generates a right-hand member; with
-    member_side = +1 a left-hand one (seed 002 sec. 2.1: one rack generates a left-hand pinion
-    and a right-hand gear).
-    """
-    if not (np.isfinite(r_p) and r_p > 0):
-        raise ValueError(f"r_p (pitch radius) must be finite and > 0, got {r_p!r}")
-    if member_side not in (1, -1):
-        raise ValueError(f"member_side must be +1 or -1, got {member_side!r}")
-    s = -float(member_side)
-    return ChainMotion(
-        [
-            rotation((0, 0, 1), [s]),
-            translation((1.0, 0.0, 0.0), [0.0], offset=s * r_p),
-            translation((0.0, -r_p, 0.0), [1.0]),
-        ],
-        names=(name,),
-    )
 
 
 # --------------------------------------------------------------------------------------------

@@ -14,7 +14,7 @@ SOURCES = sorted(SRC.rglob("*.py"))
 ROTATION_NAME = re.compile(r"^_?(d?rot|rx|ry|rz|drx|dry|drz|rotation)(_?[xyz])?$")
 #: the one function of that name outside frames, and why it is not a second definition
 NOT_A_ROTATION = {
-    ("envelope.py", "rotation"): "a factor of a ChainMotion, evaluated by frames.rotation_about_axis_with_derivatives",
+    ("motion.py", "rotation"): "a factor of a ChainMotion, evaluated by frames.rotation_about_axis_with_derivatives",
 }
 
 

@@ -18,7 +18,7 @@ Sources
   - theta = hob spin, the work gear turns theta / N; psi swivels the whole hob about an axis
     parallel to the centre-distance line X, through the arc centre, which lies R_c from the hob
     centre in the tangential (Y) direction; centre distance E = m N / 2 + r_h; hob axis set at
-    the lead angle. The chain (hob frame S_1 -> gear frame S_2, :class:`gearrep.envelope.ChainMotion`):
+    the lead angle. The chain (hob frame S_1 -> gear frame S_2, :class:`gearrep.motion.ChainMotion`):
 
         M_21 = Rot_z(theta/N) Rot_x(psi; about (E, s_c R_c, 0)) Trans_x(E) Rot_x(lambda - pi/2) Rot_z(theta)
 
@@ -63,7 +63,8 @@ from ..curvature_relations import (
     two_parameter_principal_curvatures,
     two_parameter_system,
 )
-from ..envelope import ChainMotion, Envelope, EnvelopeResult, EnvelopeSurface, rotation, translation
+from ..envelope import Envelope, EnvelopeResult, EnvelopeSurface
+from ..motion import ChainMotion, rotation, translation
 from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 

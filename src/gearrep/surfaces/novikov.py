@@ -5,7 +5,7 @@ rack-cutters Sigma_c (pinion) and Sigma_t (gear) with parabolic normal profiles,
 sec. 2.7 (l = cos(alpha_n)/P_n, a_i = 1/(2 rho_i), eq 2.7.4) and sec. 2.8 (TCA set-up).
 
 The tooth surface of member i is the envelope of its rack-cutter in the rolling motion of
-seed 002 eq 2.2.6-2.2.9 / 2.3.5-2.3.6 (:func:`gearrep.envelope.rack_generation_motion`): the
+seed 002 eq 2.2.6-2.2.9 / 2.3.5-2.3.6 (:func:`gearrep.motion.rack_generation_motion`): the
 pinion on the side x_c < 0 of the rack pitch plane (``member_side=-1``), the gear on the side
 x_c > 0 (``member_side=+1``), both racks sharing the point Q and its normal (the profiles are in
 tangency at Q, fig. 2.7.1). The surfaces are parameterised by the rack parameters (u, theta):
@@ -26,7 +26,8 @@ from __future__ import annotations
 import numpy as np
 
 from .. import frames
-from ..envelope import Envelope, Motion, rack_generation_motion
+from ..envelope import Envelope
+from ..motion import Motion, rack_generation_motion
 from ..surface import Surface, SurfacePoint
 from .rack import CircularArcRackCutter, ParabolicRackCutter
 
@@ -199,7 +200,7 @@ class RackGeneratedFlank(Surface):
     def evaluate(self, u, v) -> SurfacePoint:
         """Position and analytic first and second derivatives of r = Rz(s phi)(r_c + T(phi)),
         s = -member_side, T = (s r_p, -r_p phi, 0) (the motion of
-        :func:`gearrep.envelope.rack_generation_motion`), phi(u, theta) from :meth:`rolling_angle`
+        :func:`gearrep.motion.rack_generation_motion`), phi(u, theta) from :meth:`rolling_angle`
         (phi_u_theta = phi_theta_theta = 0). Tested against the envelope solve and
         :class:`gearrep.envelope.EnvelopeSurface` (tests/unit/test_nasa_surface.py)."""
         return SurfacePoint.from_components(self.evaluate_components(u, v))

@@ -14,7 +14,7 @@ angle alpha_n (GGAT ch. on involute helical gears: a rack-cutter with a straight
 profile generates an involute helicoid, tested in tests/unit/test_envelope.py).
 
 Frames (the figures of seed 002 are not in the text, so they are fixed here and used by
-:func:`gearrep.envelope.rack_generation_motion`):
+:func:`gearrep.motion.rack_generation_motion`):
 
 * S_c (rack): the pitch plane is x_c = 0; x_c points AWAY from the generated member (the member
   lies on x_c < 0); y_c is the direction of the rack's translation; z_c is parallel to the
@@ -36,7 +36,7 @@ Frames (the figures of seed 002 are not in the text, so they are fixed here and 
   a > 0 the centre of curvature C (|QC| = 1/(2a), seed 002 eq 2.7.4) lies on the same ray beyond or before P. The
   placement reproduces the principal curvatures of seed 002 sec. 2.5 (tested) when the pinion
   is generated on the side x_c < 0 and the gear on x_c > 0
-  (:func:`gearrep.envelope.rack_generation_motion`, ``member_side``): Q lies at
+  (:func:`gearrep.motion.rack_generation_motion`, ``member_side``): Q lies at
   x_b(Q) = l sin alpha_n > 0, i.e. in the pinion's addendum and the gear's dedendum.
 
 * Circular-arc profile (:class:`CircularArcRackCutter`; the racks of the Novikov-Wildhaber
@@ -186,7 +186,7 @@ class StraightRackCutter(RackCutter):
     ----------
     alpha_n : normal pressure angle, in (0, pi/2) rad
     beta : helix angle of the rack teeth, in (-pi/2, pi/2) rad (beta > 0 generates a
-        right-hand member with :func:`gearrep.envelope.rack_generation_motion` and
+        right-hand member with :func:`gearrep.motion.rack_generation_motion` and
         member_side = -1, a left-hand one with member_side = +1)
     y0 : where the profile crosses the pitch line, along y_b (length)
     side : +1 or -1, the flank (module doc)
