@@ -654,11 +654,12 @@ class _BatchState:
         self.Jc = self.fresh = self.pending = None
         if fun_jac is not None:
             F, Jc = fun_jac(x)
-            self.F = np.asarray(F, dtype=float).reshape(n, -1)
+            # a copy: the store is written to, and F may be the caller's array (or a read-only one)
+            self.F = np.array(F, dtype=float).reshape(n, -1)
             self.fresh = np.ones(n, dtype=bool)  # Jc (or the pending lazy one) holds the Jacobian at x
             self.own_jc = False  # Jc may be the caller's array: copied before a partial write
         else:
-            self.F = np.asarray(fun(x), dtype=float).reshape(n, -1)
+            self.F = np.array(fun(x), dtype=float).reshape(n, -1)
         self.m = self.F.shape[1]
         if self.m < k:
             raise ValueError(f"fun returns {self.m} equations for {k} unknowns; need m >= k")
@@ -798,6 +799,8 @@ def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult
             S.keep_jacobians(act, J_new)
         else:
             F_new = np.asarray(fun(x_new), dtype=float).reshape(act.size, -1)
+        if opts.damped and not F_new.flags.writeable:
+            F_new = F_new.copy()  # the line search writes to it (it may be a read-only array of the caller's)
         r_new = _row_norms(F_new)
         if opts.damped:
             _line_search(S, act, sel, d, x_new, F_new, r_new, fun, box, opts)

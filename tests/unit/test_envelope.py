@@ -355,3 +355,48 @@ def test_local_geometry_passes_nonfinite_rows_through():
     assert not np.all(np.isfinite(loc.f[1]))
     with pytest.raises(ValueError, match="finite"):
         env.local(q)
+
+
+def test_recent_local_geometries_are_reused_read_only():
+    """The local geometry of one of the last few small batches is returned again for the same tool,
+    motion and q (values equal to a fresh evaluation, arrays read-only); another q, tool or motion,
+    or a q changed in place after the call, is evaluated anew."""
+    import gearrep.envelope as E
+
+    r_p = 7.0
+    rack = StraightRackCutter(25 * DEG, 19.948 * DEG, y0=0.1)
+    mot = rack_generation_motion(r_p, -1)
+    q = np.random.default_rng(3).uniform(-1, 1, (5, 3))
+    a = E.local_geometry(rack, mot, q)
+    fresh = E._local_geometry(rack, mot, q.copy())
+    assert E.local_geometry(rack, mot, q.copy()) is a
+    for f in ("M", "N", "n", "w", "f", "J", "T", "H"):
+        np.testing.assert_array_equal(getattr(a, f), getattr(fresh, f))
+        assert not getattr(a, f).flags.writeable
+    assert not a.tool.r.flags.writeable
+    with pytest.raises(ValueError, match="read-only"):
+        a.f[0] = 0.0
+    q[0, 0] += 1e-9  # changed in place: a new key
+    assert E.local_geometry(rack, mot, q) is not a
+    assert E.local_geometry(rack, rack_generation_motion(r_p, -1), q.copy()) is not E.local_geometry(rack, mot, q)
+
+
+def test_newton_does_not_write_to_the_callers_arrays():
+    """newton keeps its own copies of the residuals: a fun_jac that returns read-only arrays (as the
+    reused local geometries are) is solved, damped and not, with the same result as writeable ones."""
+
+    def fun_jac(x, frozen):
+        F = np.column_stack([x[:, 0] ** 3 - 2.0, x[:, 1] - 0.5 * x[:, 0]])
+        J = np.zeros((len(x), 2, 2))
+        J[:, 0, 0], J[:, 1, 0], J[:, 1, 1] = 3 * x[:, 0] ** 2, -0.5, 1.0
+        if frozen:
+            F.flags.writeable = J.flags.writeable = False
+        return F, J
+
+    x0 = np.array([[3.0, 0.0], [0.2, 1.0], [-4.0, 2.0]])
+    for damped in (True, False):
+        a = newton(lambda x: fun_jac(x, True)[0], x0, fun_jac=lambda x: fun_jac(x, True), damped=damped, tol=1e-13)
+        b = newton(lambda x: fun_jac(x, False)[0], x0, fun_jac=lambda x: fun_jac(x, False), damped=damped, tol=1e-13)
+        np.testing.assert_array_equal(a.x, b.x)
+        np.testing.assert_array_equal(a.status, b.status)
+        assert (a.status == Status.CONVERGED).any()
