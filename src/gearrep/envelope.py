@@ -124,8 +124,9 @@ def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometr
 #: the local geometries of the last few small batches, newest first: (tool, motion, q's shape and
 #: bytes, LocalGeometry). A solve's record, a TCA's finish and the generated curvatures evaluate the
 #: converged iterate again: a third of the calls of the seed 000 and NASA jobs repeat one of the four
-#: before (measured). The tool and motion are held, so their identities stay theirs; the arrays are
-#: read-only, so that no caller can change what another receives.
+#: before (measured). The tool and motion are held, so their identities stay theirs (a tool or motion
+#: is not changed after it is made: none of the library's is); the arrays are read-only, so that no
+#: caller can change what another receives.
 _RECENT: list = []
 _RECENT_SIZE = 4
 _RECENT_MAX_ROWS = 256
@@ -370,7 +371,8 @@ class Envelope:
     def local(self, q) -> LocalGeometry:
         """All local quantities at flat q (n, 2+k) (vectors in the tool frame S_1): the tool
         point and derivatives, unit normal, w_j = v^(12, j), omega_j, the meshing functions and
-        their Jacobian (used by :mod:`gearrep.curvature_relations`)."""
+        their Jacobian (used by :mod:`gearrep.curvature_relations`). For up to 256 points the arrays
+        are read-only: the same geometry is returned to a repeated call (copy one to change it)."""
         q = np.atleast_2d(self._q(q))
         if q.ndim != 2 or not np.all(np.isfinite(q)):
             raise ValueError(f"q must be a finite (n, {2 + self.k}) array")
