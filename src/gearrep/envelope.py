@@ -351,13 +351,13 @@ class Envelope:
         seed 002 eq 2.2.7) at q (..., 2+k) -> (..., k)."""
         q = self._q(q)
         flat = q.reshape(-1, 2 + self.k)
-        return _local(self.tool, self.motion, flat).f.reshape(q.shape[:-1] + (self.k,))
+        return np.array(_local(self.tool, self.motion, flat).f).reshape(q.shape[:-1] + (self.k,))
 
     def meshing_jacobian(self, q) -> np.ndarray:
         """Partial derivatives of the meshing functions in q: (..., k, 2+k)."""
         q = self._q(q)
         flat = q.reshape(-1, 2 + self.k)
-        return _local(self.tool, self.motion, flat).J.reshape(q.shape[:-1] + (self.k, 2 + self.k))
+        return np.array(_local(self.tool, self.motion, flat).J).reshape(q.shape[:-1] + (self.k, 2 + self.k))
 
     def family(self, q) -> np.ndarray:
         """Family of tool surfaces in S_2, r_2 = M_21(m) r_1(u, v) (eq F) at q -> (..., 3)."""

@@ -107,7 +107,8 @@ def member_geometry(flank: Flank, q):
 
     # d n / d m_j = R (omega_j x n1): the normal is carried by the motion's rotation
     dn1 = np.stack([dn(N_u), dn(N_v), cross(loc.omega[:, 0], n1), cross(loc.omega[:, 1], n1)], 1)
-    return r, T, np.einsum("nab,nb->na", R, n1), np.einsum("nab,nqb->nqa", R, dn1), loc.f, loc.J
+    # f and J copied: the local geometry's arrays may be shared (envelope._local's reuse, read-only)
+    return r, T, np.einsum("nab,nb->na", R, n1), np.einsum("nab,nqb->nqa", R, dn1), np.array(loc.f), np.array(loc.J)
 
 
 _KEEP = np.array([[1, 2], [0, 2], [0, 1]])

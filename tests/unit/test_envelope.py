@@ -400,3 +400,18 @@ def test_newton_does_not_write_to_the_callers_arrays():
         np.testing.assert_array_equal(a.x, b.x)
         np.testing.assert_array_equal(a.status, b.status)
         assert (a.status == Status.CONVERGED).any()
+
+
+def test_meshing_functions_are_the_callers_own_arrays():
+    """Envelope.meshing and meshing_jacobian return writeable copies even where the local geometry
+    is reused (read-only)."""
+    r_p = 7.0
+    rack = StraightRackCutter(25 * DEG, 19.948 * DEG, y0=0.1)
+    env = Envelope(rack, rack_generation_motion(r_p, -1))
+    q = np.random.default_rng(4).uniform(-1, 1, (3, 3))
+    for _ in range(2):
+        f, J = env.meshing(q), env.meshing_jacobian(q)
+        assert f.flags.writeable and J.flags.writeable
+        f[:] = 0.0
+        J[:] = 0.0
+    np.testing.assert_array_equal(env.meshing(q), env.local(q).f)
