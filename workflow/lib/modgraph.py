@@ -52,6 +52,7 @@ class ModuleGraph:
         self.pkg_dir = Path(src).resolve() / package
         self._imports: dict[tuple, list] = {}
         self._files: dict[tuple, Path | None] = {}
+        self._script_nodes: dict[Path, list] = {}
 
     # -- modules -------------------------------------------------------------------------------
     def module_file(self, parts) -> Path | None:
@@ -64,11 +65,11 @@ class ModuleGraph:
             self._files[key] = f if f.is_file() else None
         return self._files[key]
 
-    def _parse(self, text: str, filename: str, package: list[str] | None) -> list[list[str]]:
-        """Modules of the package imported by source ``text``; ``package`` is the importing
-        module's package (for relative imports), None for a script outside the package."""
+    def _parse(self, nodes: list[ast.stmt], package: list[str] | None) -> list[list[str]]:
+        """Modules of the package imported by the import statements ``nodes``; ``package`` is the
+        importing module's package (for relative imports), None for a script outside the package."""
         found = []
-        for node in _import_nodes(text, filename):
+        for node in nodes:
             if isinstance(node, ast.Import):
                 found += [a.name.split(".")[1:] for a in node.names if a.name.split(".")[0] == self.package]
             elif isinstance(node, ast.ImportFrom):
@@ -88,7 +89,7 @@ class ModuleGraph:
         if key not in self._imports:
             f = self.module_file(list(parts))
             package = list(parts) if f.name == "__init__.py" else list(parts[:-1])
-            self._imports[key] = self._parse(f.read_text(), str(f), package)
+            self._imports[key] = self._parse(_import_nodes(f.read_text(), str(f)), package)
         return self._imports[key]
 
     def closure(self, *modules: str) -> list[str]:
@@ -107,6 +108,13 @@ class ModuleGraph:
         return sorted(str(self.module_file(list(k)).relative_to(self.root)) for k in seen)
 
     # -- scripts and notebooks -----------------------------------------------------------------
+    def _source_nodes(self, path: Path) -> list[ast.stmt]:
+        """The import statements of a script, or of a notebook's code cells (without magics and
+        shell lines); each file read and parsed once per graph."""
+        if path not in self._script_nodes:
+            self._script_nodes[path] = _import_nodes(self._source_text(path), str(path))
+        return self._script_nodes[path]
+
     @staticmethod
     def _source_text(path: Path) -> str:
         """The code of a script, or of a notebook's code cells (without magics and shell lines)."""
@@ -128,12 +136,12 @@ class ModuleGraph:
             if f in seen:
                 continue
             seen.append(f)
-            for node in _import_nodes(self._source_text(f), str(f)):
+            for node in self._source_nodes(f):
                 names = [a.name for a in node.names] if isinstance(node, ast.Import) else []
                 if isinstance(node, ast.ImportFrom) and not node.level and node.module:
                     names = [node.module]
                 for name in names:
-                    sibling = path.parent / f"{name.split('.')[0]}.py"
+                    sibling = f.parent / f"{name.split('.')[0]}.py"
                     if sibling.is_file():
                         todo.append(sibling)
         return seen
@@ -141,12 +149,14 @@ class ModuleGraph:
     def source_modules(self, path: Path | str) -> list[str]:
         """Dotted names of the package modules a script (.py) or notebook (.ipynb) imports, itself
         or through the scripts beside it that it imports (:meth:`source_files`)."""
-        return sorted(
-            {".".join(m) for f in self.source_files(path) for m in self._parse(self._source_text(f), str(f), None)}
-        )
+        return self._modules_of(self.source_files(path))
+
+    def _modules_of(self, files: list[Path]) -> list[str]:
+        return sorted({".".join(m) for f in files for m in self._parse(self._source_nodes(f), None)})
 
     def source_closure(self, path: Path | str, *extra: str) -> list[str]:
         """:meth:`closure` of what a script or notebook imports (plus ``extra`` modules it imports
         dynamically), and the files of the scripts beside it that it imports."""
-        scripts = [str(f.resolve().relative_to(self.root)) for f in self.source_files(path)[1:]]
-        return self.closure(*self.source_modules(path), *extra) + sorted(scripts)
+        files = self.source_files(path)
+        scripts = [str(f.resolve().relative_to(self.root)) for f in files[1:]]
+        return self.closure(*self._modules_of(files), *extra) + sorted(scripts)
