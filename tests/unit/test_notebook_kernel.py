@@ -101,3 +101,27 @@ def test_the_fork_handle_reports_an_exit_status_and_an_already_reaped_child():
         os._exit(0)
     os.waitpid(pid, 0)  # reaped by someone else
     assert EX._ForkedKernel(pid).poll() == 0
+
+
+def test_the_kernel_talks_over_unix_sockets_in_a_directory_of_its_own(tmp_path):
+    """No TCP ports: two notebooks started together could both be given one (papermill issue 511;
+    it happened in a cold two-core run). The sockets' directory is removed with the kernel."""
+    import asyncio
+    import os
+    import tempfile
+
+    if os.name != "posix":
+        pytest.skip("Unix sockets: POSIX only")
+    before = set(Path(tempfile.gettempdir()).glob("gearrep-kernel-*"))
+    km = EX.ForkedKernelManager(kernel_name="python3")
+    assert km.transport == "ipc" and not km.cache_ports
+    assert Path(km.ip).parent.is_dir() and len(km.ip) < 80
+    asyncio.run(km.cleanup_resources())
+    assert not Path(km.ip).parent.exists()
+
+    cell = "from ipykernel.kernelapp import IPKernelApp\napp = IPKernelApp.instance()\nprint(app.transport, app.ip)"
+    out = _run(tmp_path, [cell], "ipc", kernel_manager_class=EX.ForkedKernelManager)
+    transport, ip = "".join(out["cells"][0]["outputs"][0]["text"]).split()
+    assert transport == "ipc" and Path(ip).name == "k"
+    assert not Path(ip).parent.exists()
+    assert set(Path(tempfile.gettempdir()).glob("gearrep-kernel-*")) == before

@@ -20,18 +20,28 @@ same arguments, environment and working directory, but finds numpy, pandas, matp
 and gearrep already imported (the warm process imports them once, ``NOTEBOOK_MODULES``), where a
 fresh kernel process spent 1-2 s of CPU importing them for every notebook. Any other kernel command
 (another interpreter or kernel) is started as a process, as jupyter_client does.
+
+The kernel and papermill talk over Unix sockets (ZeroMQ's ``ipc`` transport) in a private
+directory of the manager, not over TCP ports of 127.0.0.1: jupyter_client picks five free ports
+(binds and closes them) and the kernel binds them later, so a second notebook starting at the same
+time, or any connection's local port, can take one in between; the kernel then dies with "Address
+already in use" (papermill issue 511, open). It happened in a cold ``snakemake --cores 2`` run
+(the thesis and CATT notebooks started together); a socket path of its own cannot be taken.
 """
 
 import asyncio
 import json
 import os
+import shutil
 import signal
 import sys
+import tempfile
 from pathlib import Path
 
 import nbformat
 import papermill
 from jupyter_client.manager import AsyncKernelManager
+from traitlets import default
 
 PREAMBLE_TAG = "gearrep-step-properties"
 SCRIPTS = Path(__file__).resolve().parent
@@ -154,7 +164,31 @@ def _run_kernel(argv, env, cwd, parent_pid) -> None:
 
 
 class ForkedKernelManager(AsyncKernelManager):
-    """jupyter_client's kernel manager, with this interpreter's ipykernel started as a fork."""
+    """jupyter_client's kernel manager, with this interpreter's ipykernel started as a fork and
+    its channels on Unix sockets in a directory of its own (where the platform has them)."""
+
+    _socket_dir: str | None = None
+
+    @default("transport")
+    def _default_transport(self) -> str:
+        return "ipc" if os.name == "posix" else "tcp"
+
+    @default("ip")
+    def _default_ip(self) -> str:
+        if self.transport != "ipc":
+            return super()._ip_default()
+        # a short path (a Unix socket's path is limited to about 107 bytes): the runtime
+        # directory's kernel-<uuid>-ipc-N can pass that under a long home directory
+        self._socket_dir = tempfile.mkdtemp(prefix="gearrep-kernel-")
+        return os.path.join(self._socket_dir, "k")
+
+    async def _async_cleanup_resources(self, restart: bool = False) -> None:
+        await super()._async_cleanup_resources(restart=restart)
+        if self._socket_dir and not restart:
+            shutil.rmtree(self._socket_dir, ignore_errors=True)
+            self._socket_dir = None
+
+    cleanup_resources = _async_cleanup_resources  # as AsyncKernelManager's (the base class's function)
 
     async def _async_launch_kernel(self, kernel_cmd, **kw):
         if not (hasattr(os, "fork") and _is_this_ipykernel(kernel_cmd)):
