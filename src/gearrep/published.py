@@ -132,35 +132,58 @@ def printed_precision(printed: str) -> tuple[str, int]:
     return "decimals", len(mant.partition(".")[2])
 
 
-def _read_csv(path: Path) -> pd.DataFrame:
-    """One published CSV with every cell as its string; a file pandas cannot read, an empty file
-    and a header-only file are refused naming the file."""
+def _read_rows(path: Path) -> tuple[list[str], list[list[str]]]:
+    """(header, data rows) of one published CSV, every cell its string; blank lines are no rows (as
+    in the manifest's count) and a UTF-8 byte-order mark is dropped. Refused naming the file: a
+    file that is not UTF-8 CSV (an unclosed quote included), an empty or header-only file, a
+    column name given twice, and a data row whose number of fields is not the header's (pandas'
+    reader, used before, filled a short row with empty cells and, where every row had one field
+    more than the header, took the first column as the index and shifted every other one)."""
     try:
-        df = pd.read_csv(path, dtype=str, keep_default_na=False)
-    except pd.errors.EmptyDataError as exc:
-        raise PublishedDataError(f"{path.name}: the file is empty (not even a header row)") from exc
-    except (pd.errors.ParserError, UnicodeDecodeError) as exc:
-        raise PublishedDataError(f"{path.name}: not a readable UTF-8 CSV file: {exc}") from exc
-    if df.empty:
+        with path.open(encoding="utf-8-sig", newline="") as f:
+            records = [r for r in csv.reader(f, strict=True) if r]
+    except (UnicodeDecodeError, csv.Error) as exc:
+        raise PublishedDataError(f"{path.name}: not a readable UTF-8 CSV file: {exc}") from None
+    if not records:
+        raise PublishedDataError(f"{path.name}: the file is empty (not even a header row)")
+    header, rows = records[0], records[1:]
+    if not rows:
         raise PublishedDataError(f"{path.name}: a header row but no data rows")
-    return df
+    repeated = sorted({c for c in header if header.count(c) > 1})
+    if repeated:
+        raise PublishedDataError(f"{path.name}: column name(s) {repeated} given twice in the header row")
+    for n, r in enumerate(rows, start=1):
+        if len(r) != len(header):
+            raise PublishedDataError(
+                f"{path.name} data row {n}: {len(r)} fields, the header row has {len(header)} ({r[:3]}...)"
+            )
+    return header, rows
+
+
+def _read_csv(path: Path) -> pd.DataFrame:
+    """One published CSV as a frame of strings (see :func:`_read_rows`)."""
+    header, rows = _read_rows(path)
+    return pd.DataFrame(rows, columns=header, dtype=str)
 
 
 def _read(directory: Path, pattern: str, columns: list[str], files=None) -> pd.DataFrame:
-    frames = []
+    """The ``columns`` of every file matching ``pattern`` (and ``files``), after a ``file`` column,
+    as one frame of strings built once from the files' rows."""
+    cells: dict[str, list] = {c: [] for c in ["file", *columns]}
     for path in sorted(directory.glob(pattern)):
         if files is not None and not any(fnmatch.fnmatchcase(path.name, f) for f in files):
             continue
-        df = _read_csv(path)
-        missing = [c for c in columns if c not in df.columns]
+        header, rows = _read_rows(path)
+        missing = [c for c in columns if c not in header]
         if missing:
             raise PublishedDataError(f"{path.name}: missing required column(s) {missing}")
-        df = df[columns].copy()
-        df.insert(0, "file", path.name)
-        frames.append(df)
-    if not frames:
+        cells["file"] += [path.name] * len(rows)
+        for c in columns:
+            i = header.index(c)
+            cells[c] += [r[i] for r in rows]
+    if not cells["file"]:
         return pd.DataFrame(columns=["file", *columns])
-    return pd.concat(frames, ignore_index=True)
+    return pd.DataFrame(cells, dtype=str)
 
 
 def _where(row: dict, n: int) -> str:
@@ -178,16 +201,25 @@ def _number(where: str, column: str, text, kind=float):
         raise PublishedDataError(f"{where} column {column!r}: {text!r} is not {what}") from None
 
 
-def _row_numbers(df: pd.DataFrame) -> pd.Series:
-    """1-based data-row number of each row within its file (the header is not counted)."""
-    return df.groupby("file", sort=False).cumcount() + 1
+def _row_numbers(files: list) -> list[int]:
+    """1-based data-row number of each row within its file (the header is not counted), from the
+    rows' file names in order."""
+    seen: dict = {}
+    out = []
+    for f in files:
+        seen[f] = seen.get(f, 0) + 1
+        out.append(seen[f])
+    return out
 
 
 def _numbered_rows(df: pd.DataFrame):
     """(row as a dict of its cells, its 1-based data-row number in its file), row by row (plain
-    dicts: ``iterrows`` builds a Series per row and made loading the data the slowest part of
-    every workflow job's start)."""
-    return zip(df.to_dict("records"), _row_numbers(df).tolist())
+    dicts from the columns' lists: ``iterrows`` builds a Series per row, and even ``to_dict`` and a
+    groupby made reading the data a tenth of a short workflow job)."""
+    names = list(df.columns)
+    cols = [df[c].tolist() for c in names]
+    files = cols[names.index("file")]
+    return zip((dict(zip(names, cells)) for cells in zip(*cols)), _row_numbers(files))
 
 
 def validate_values(values: pd.DataFrame) -> pd.DataFrame:
@@ -246,9 +278,13 @@ def validate_params(params: pd.DataFrame) -> pd.DataFrame:
         elif not str(r["notes"]).strip():
             # a parameter the text implies but does not print has an empty value (NaN) and a note
             raise PublishedDataError(f"{where} column 'value': empty value needs a note")
-    key = p[["file", "example", "parameter"]].apply(tuple, axis=1)
-    if key.duplicated().any():
-        raise PublishedDataError(f"duplicate parameters: {list(key[key.duplicated()])[:10]}")
+    seen, repeated = set(), []
+    for key in zip(p["file"].tolist(), p["example"].tolist(), p["parameter"].tolist()):
+        if key in seen:
+            repeated.append(key)
+        seen.add(key)
+    if repeated:
+        raise PublishedDataError(f"duplicate parameters: {repeated[:10]}")
     p["value"] = p["value"].where(~blank, "nan").astype(float)
     p["line"] = p["line"].astype(int)
     return p

@@ -140,3 +140,49 @@ def test_duplicate_ids_name_their_files(tmp_path):
         published.PublishedDataError, match=r"duplicate ids: .*values_000_T5\.4\.csv.*values_000_T5\.9\.csv"
     ):
         published.load(d)
+
+
+@pytest.mark.parametrize("name", [VALUES, PARAMS, CLAIMS])
+def test_a_row_with_a_missing_field_is_named(data, name):
+    """pandas' reader filled a short row with empty cells without a word."""
+    path = data / name
+    rows = _rows(path)
+    rows[3] = rows[3][:-1]
+    _write(path, rows)
+    _refused(data, name, "data row 3", f"{len(rows[0]) - 1} fields", f"has {len(rows[0])}")
+
+
+def test_one_field_more_in_every_row_is_refused_not_shifted(data):
+    """pandas' reader took the first column as the index when every data row had one field more
+    than the header, and shifted every column by one."""
+    path = data / VALUES
+    rows = _rows(path)
+    _write(path, [rows[0]] + [r + ["extra"] for r in rows[1:]])
+    _refused(data, VALUES, "data row 1", f"{len(rows[0]) + 1} fields")
+
+
+def test_a_repeated_column_name_is_refused(data):
+    """pandas' reader renamed the second one ("notes.1") and read the first."""
+    path = data / CLAIMS
+    rows = _rows(path)
+    _write(path, [rows[0] + ["notes"]] + [r + [""] for r in rows[1:]])
+    _refused(data, CLAIMS, "['notes'] given twice")
+
+
+def test_an_unclosed_quote_is_refused(data):
+    path = data / PARAMS
+    path.write_text(path.read_text(encoding="utf-8") + '003,"Table 1,1,ex,p,1,1,mm,\n', encoding="utf-8")
+    _refused(data, PARAMS, "not a readable UTF-8 CSV file")
+
+
+def test_a_byte_order_mark_and_blank_lines_are_read_as_before(data):
+    """A UTF-8 byte-order mark (as pandas dropped it) and blank lines (no rows, as the manifest
+    counts them) change nothing."""
+    before = pub.load(data)
+    path = data / VALUES
+    text = path.read_text(encoding="utf-8")
+    lines = text.splitlines(keepends=True)
+    path.write_bytes(b"\xef\xbb\xbf" + "".join(lines[:3] + ["\n"] + lines[3:] + ["\n"]).encode("utf-8"))
+    after = pub.load(data)
+    for kind in ("values", "params", "claims"):
+        assert getattr(before, kind).equals(getattr(after, kind))
