@@ -215,6 +215,25 @@ def test_parity_plots_drawn_beforehand_give_the_same_page(paper):
         report.parity_rows(card.drop(columns=["computed"]))
 
 
+def test_parity_plots_of_a_paper_share_one_figure_and_nothing_else(paper):
+    """parity_pngs draws a paper's plots on one cleared figure (one renderer: the symlog axis's
+    math-text tick labels are parsed once, not once per plot); every plot is byte for byte the
+    one parity_png draws on a figure of its own."""
+    from matplotlib.mathtext import MathTextParser
+
+    card, _ = paper
+    rows = report.parity_rows(card)
+    alone = {src: report.parity_png(r, src) for src, r in rows.items()}
+    MathTextParser._parse_cached.cache_clear()
+    together = report.parity_pngs(card)
+    shared = MathTextParser._parse_cached.cache_info()
+    assert together == alone
+    MathTextParser._parse_cached.cache_clear()
+    for src, r in rows.items():
+        report.parity_png(r, src)
+    assert shared.misses < MathTextParser._parse_cached.cache_info().misses
+
+
 def test_findings_are_written_from_the_records(paper):
     card, order = paper
     errata = pd.DataFrame({"seed": ["000"], "location": ["eq 4.23"]})
