@@ -47,7 +47,7 @@ localrules:
 
 
 # Snakemake selects jobs again on timers (threading.Timer, one max-jobs-per-timespan span after a
-# selection; profiles/default sets 10 s) that would keep the process alive after the run: cancel
+# selection; profiles/default sets 60 s) that would keep the process alive after the run: cancel
 # them when it ends (workflow/lib/wftimers.py; `--no-hooks` skips this, the exit then waits for
 # at most one span).
 onsuccess:

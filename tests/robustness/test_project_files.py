@@ -82,7 +82,7 @@ def test_default_workflow_profile_sets_valid_snakemake_options():
         "rerun-incomplete": True,
         "printshellcmds": True,
         "scheduler": "greedy",
-        "max-jobs-per-timespan": "1000/10s",
+        "max-jobs-per-timespan": "6000/60s",
     }
     args = []
     for key, value in profile.items():
@@ -90,8 +90,9 @@ def test_default_workflow_profile_sets_valid_snakemake_options():
     parsed = snakemake_cli.get_argument_parser().parse_args(args)
     assert (parsed.cores, parsed.rerun_incomplete, parsed.printshellcmds) == (2, True, True)
     assert parsed.scheduler == "greedy"
-    # a limit that never binds on a workstation, re-selecting every 10 s instead of every second
-    assert (parsed.max_jobs_per_timespan.max_jobs, parsed.max_jobs_per_timespan.timespan) == (1000, 10)
+    # Snakemake's rate of 100 starts per second, which never binds on a workstation, over a span
+    # that re-selects every 60 s instead of every second
+    assert (parsed.max_jobs_per_timespan.max_jobs, parsed.max_jobs_per_timespan.timespan) == (6000, 60)
 
 
 def test_readme_documents_the_seed_texts_and_keeps_snakemakes_report_under_results():

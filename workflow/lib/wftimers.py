@@ -1,7 +1,7 @@
 """Snakemake's selection timers, cancelled when a run ends.
 
 Snakemake 9 selects the jobs to start again one timespan (of ``--max-jobs-per-timespan``; the
-default profile sets 10 s) after every selection that leaves jobs waiting, on a
+default profile sets 60 s) after every selection, on a
 ``threading.Timer``. Those threads are not daemons: without this, the interpreter would wait for
 the last of them before exiting. The Snakefile calls :func:`cancel_pending_timers` from its
 ``onsuccess`` and ``onerror`` hooks.
