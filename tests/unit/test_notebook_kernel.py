@@ -119,6 +119,10 @@ def test_the_kernel_talks_over_unix_sockets_in_a_directory_of_its_own(tmp_path):
     asyncio.run(km.cleanup_resources())
     assert not Path(km.ip).parent.exists()
 
+    other = EX.ForkedKernelManager(kernel_name="python3")
+    other.kernel_spec.argv = ["/usr/bin/other-kernel", "-f", "{connection_file}"]
+    assert other.transport == "tcp"  # not every kernel speaks ipc: another one keeps TCP
+
     cell = "from ipykernel.kernelapp import IPKernelApp\napp = IPKernelApp.instance()\nprint(app.transport, app.ip)"
     out = _run(tmp_path, [cell], "ipc", kernel_manager_class=EX.ForkedKernelManager)
     transport, ip = "".join(out["cells"][0]["outputs"][0]["text"]).split()

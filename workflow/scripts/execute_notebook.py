@@ -171,7 +171,18 @@ class ForkedKernelManager(AsyncKernelManager):
 
     @default("transport")
     def _default_transport(self) -> str:
-        return "ipc" if os.name == "posix" else "tcp"
+        return "ipc" if self._forks() else "tcp"
+
+    def _forks(self) -> bool:
+        """Whether the kernel will be this interpreter's ipykernel as a fork (on Unix sockets);
+        another kernel keeps jupyter_client's TCP (not every kernel speaks ``ipc``)."""
+        try:
+            argv = list(self.kernel_spec.argv)
+        except Exception:  # noqa: BLE001  (no kernelspec: jupyter_client reports it at launch)
+            return False
+        if argv and argv[0] in {"python", f"python{sys.version_info[0]}", "python{}.{}".format(*sys.version_info[:2])}:
+            argv[0] = sys.executable  # as jupyter_client's format_kernel_cmd does
+        return hasattr(os, "fork") and _is_this_ipykernel(argv)
 
     @default("ip")
     def _default_ip(self) -> str:
