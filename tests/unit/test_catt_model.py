@@ -4,6 +4,7 @@ library routes the replication computes with (gearrep.ellipse, gearrep.curvature
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from gearrep import curvature, ellipse
 from gearrep.replications.catt import model
@@ -72,3 +73,27 @@ def test_second_form_in_basis_is_the_shape_matrix_on_a_catt_flank():
     np.testing.assert_allclose(k2, pc.k2, rtol=1e-10)
     # the opposite normal flips the form
     np.testing.assert_allclose(curvature.second_form_in_basis(P, -n, t1, t2), -K, atol=1e-15)
+
+
+def test_the_cycle_index_looks_each_design_and_curve_up_once():
+    """The claims ask for the same curves hundreds of times: each is selected and sorted once and
+    handed out again (the same frame), per reading of on_path; designs likewise."""
+    import pandas as pd
+
+    from gearrep.replications.catt import sweeps
+
+    rows = []
+    for design, module in (("a", 4.0), ("b", 8.0)):
+        for phi, on_path in ((2.0, True), (1.0, False), (0.0, True)):
+            rows.append(
+                {"design": design, "group": "fig12", "module_mm": module, "pair": "B", "reading": "R1",
+                 "phi_paper_deg": phi, "in_window": True, "on_path": on_path, "S_mm2": phi + module}
+            )  # fmt: skip
+    idx = sweeps.CycleIndex(pd.DataFrame(rows))
+    c = sweeps.curve(idx, "a", "B", "R1")
+    assert list(c["phi_paper_deg"]) == [0.0, 2.0]
+    assert sweeps.curve(idx, "a", "B", "R1") is c
+    assert list(sweeps.curve(idx, "a", "B", "R1", on_path_only=False)["phi_paper_deg"]) == [0.0, 1.0, 2.0]
+    assert sweeps._design(idx, "F12", 8.0, {}) == "b" == sweeps._design(idx, "F12", 8.0, {})
+    with pytest.raises(ValueError, match="expected one design"):
+        sweeps._design(idx, "F12", 12.0, {})
