@@ -8,18 +8,27 @@ import pandas as pd
 __all__ = ["params_from_published", "design_beta"]
 
 
-def _param(params: pd.DataFrame, file: str, example: str, name: str) -> float:
-    sel = params[(params["file"] == file) & (params["example"] == example) & (params["parameter"] == name)]
+def _index(frame: pd.DataFrame, keys: list[str]) -> dict:
+    """{key tuple: [value, ...]} of a published frame (one pass: 40 boolean selections of the
+    frame cost more than the rest of loading the design)."""
+    out: dict = {}
+    for key, v in zip(zip(*(frame[k].tolist() for k in keys)), frame["value"].tolist()):
+        out.setdefault(key, []).append(v)
+    return out
+
+
+def _param(params: dict, file: str, example: str, name: str) -> float:
+    sel = params.get((file, example, name), [])
     if len(sel) != 1:
         raise KeyError(f"published params: no unique {name!r} in {file} / {example}")
-    return float(sel["value"].iloc[0])
+    return float(sel[0])
 
 
-def _value(values: pd.DataFrame, vid: str) -> float:
-    sel = values[values["id"] == vid]
+def _value(values: dict, vid: str) -> float:
+    sel = values.get((vid,), [])
     if len(sel) != 1:
         raise KeyError(f"published values: no unique id {vid!r}")
-    return float(sel["value"].iloc[0])
+    return float(sel[0])
 
 
 def params_from_published(published) -> dict:
@@ -29,7 +38,8 @@ def params_from_published(published) -> dict:
     distance E = 10 in (19.948 deg; the printed 19.548 deg is kept as ``beta_printed_deg`` and
     computed as a variant, see errata). Rack radii: rho = (5.88, 6.35)/P_n (eq 2.7.2); the
     printed a_c, a_t (their rounded halves-reciprocals) are a variant."""
-    P, V = published.params, published.values
+    P = _index(published.params, ["file", "example", "parameter"])
+    V = _index(published.values, ["id"])
     f5, f6, f54 = "params_002_S2.5.csv", "params_002_T6.2.csv", "params_002_S5.4.csv"
     d = {
         "N1": _param(P, f5, "S2.5_example", "N1"),
