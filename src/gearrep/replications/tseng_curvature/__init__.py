@@ -120,13 +120,19 @@ def _rows_of_table(values: pd.DataFrame, source: str) -> tuple[int, int]:
 def params_from_published(published) -> Design:
     """The design of ch. 4 from a loaded :class:`gearrep.published.Published` (params_000_*.csv
     and the row keys of Table 4.3)."""
-    rows = published.params[published.params["seed"] == SEED]
+    P = published.params
+    found: dict = {}  # (example, parameter) -> values of the seed's rows (one pass over the frame)
+    for seed, ex, name, value in zip(
+        P["seed"].tolist(), P["example"].tolist(), P["parameter"].tolist(), P["value"].tolist()
+    ):
+        if seed == SEED:
+            found.setdefault((str(ex), name), []).append(value)
 
     def val(example, parameter):
-        r = rows[(rows["example"].astype(str) == example) & (rows["parameter"] == parameter)]
+        r = found.get((example, parameter), [])
         if len(r) != 1:
             raise ValueError(f"published parameter {parameter!r} of example {example} not found once")
-        return float(r["value"].iloc[0])
+        return float(r[0])
 
     n_rows, decimals = _rows_of_table(published.values, "Table 4.3")
     t51 = table_5_1(published.params)  # the Table 5.1 pinion, gear and hob, shared with tseng_tca

@@ -142,9 +142,9 @@ def _cases(params: pd.DataFrame) -> dict:
             "dC_mm": 0.0,
             "dZ_mm": 0.0,
         }
-        for _, r in g.iterrows():
-            v = float(r["value"]) if pd.notna(r["value"]) and str(r["value"]) != "" else 0.0
-            name, unit = str(r["parameter"]), str(r["unit"])
+        for value, name, unit in zip(g["value"].tolist(), g["parameter"].tolist(), g["unit"].tolist()):
+            v = float(value) if pd.notna(value) and str(value) != "" else 0.0
+            name, unit = str(name), str(unit)
             if name in ("R_cp", "R_cg", "dC", "dZ"):
                 d[f"{name}_mm"] = v
             elif name in ("dgamma_h", "dgamma_v"):
