@@ -74,9 +74,10 @@ def one(df, **sel):
     m = np.ones(len(df), bool)
     for k, v in sel.items():
         m &= (df[k].astype(str) == str(v)).to_numpy()
-    if m.sum() != 1:
-        raise KeyError(f"no unique row for {sel} ({m.sum()} rows)")
-    return df[m].iloc[0]
+    hit = np.flatnonzero(m)
+    if len(hit) != 1:
+        raise KeyError(f"no unique row for {sel} ({len(hit)} rows)")
+    return df.iloc[int(hit[0])]
 
 
 def evaluate(entry, tables: dict):

@@ -19,10 +19,10 @@ _KE_TABLES = ("5.2", "5.3", "5.4", "5.5", "5.6", "5.7", "5.8", "5.9")
 
 def row_at(table: pd.DataFrame, phi1_deg: float) -> pd.Series:
     """The one row of ``table`` at phi1' = ``phi1_deg``."""
-    hit = table[np.isclose(table["phi1_deg"], phi1_deg, atol=1e-9)]
+    hit = np.flatnonzero(np.isclose(table["phi1_deg"].to_numpy(float), phi1_deg, atol=1e-9))
     if len(hit) != 1:
         raise KeyError(f"computed table has no unique row phi1_deg={phi1_deg}")
-    return hit.iloc[0]
+    return table.iloc[int(hit[0])]
 
 
 def p2p(t: pd.DataFrame, column: str = "KE_arcsec") -> float:
