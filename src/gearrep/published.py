@@ -42,6 +42,7 @@ __all__ = [
     "load",
     "parse_row",
     "param_table",
+    "values_by",
     "design_table",
     "document_order",
     "ERRATA_COLUMNS",
@@ -378,6 +379,17 @@ def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> 
         raise KeyError(f"no parameters for file={file!r} example={example!r}")
     names, values = params["parameter"].tolist(), params["value"].tolist()
     return {names[i]: values[i] for i in keep}
+
+
+def values_by(frame: pd.DataFrame, keys: list[str]) -> dict[tuple, list]:
+    """``{(frame[keys[0]], ...): [value, ...]}`` of a values or params frame, in row order: every
+    look-up of a study's design data from one pass over the frame (a boolean selection per
+    parameter cost more than the rest of reading the design). A key with other than one value is
+    the caller's to refuse."""
+    out: dict[tuple, list] = {}
+    for key, v in zip(zip(*(frame[k].tolist() for k in keys)), frame["value"].tolist()):
+        out.setdefault(key, []).append(v)
+    return out
 
 
 def design_table(params: pd.DataFrame, seed: str | None = None) -> pd.DataFrame:

@@ -403,9 +403,9 @@ def parity_png(rows: pd.DataFrame, title: str) -> bytes:
 
     ``rows``: scorecard rows with ``published``, ``computed``, ``tolerance``, ``status``,
     ``quantity``; rows without a finite computed value are left out (and counted in the title)."""
-    _parity_arrays(rows, title)  # bad rows are refused before a figure is made
+    plotted = _parity_plotted(rows, title)  # bad rows are refused before a figure is made
     with _parity_canvas() as fig:
-        return _draw_parity(fig, rows, title)
+        return _draw_parity(fig, rows, plotted, title)
 
 
 @contextlib.contextmanager
@@ -426,7 +426,9 @@ def _parity_canvas():
         plt.close(fig)
 
 
-def _parity_arrays(rows: pd.DataFrame, title: str):
+def _parity_plotted(rows: pd.DataFrame, title: str) -> pd.DataFrame:
+    """The rows of a parity plot with both a published and a computed value (ValueError naming the
+    missing columns, or the plot without such a row)."""
     missing = [c for c in ("published", "computed", "tolerance", "status", "quantity") if c not in rows.columns]
     if missing:
         raise ValueError(f"parity rows lack columns {missing}")
@@ -436,9 +438,9 @@ def _parity_arrays(rows: pd.DataFrame, title: str):
     return r
 
 
-def _draw_parity(fig, rows: pd.DataFrame, title: str) -> bytes:
-    """:func:`parity_png` drawn on ``fig`` (cleared first)."""
-    r = _parity_arrays(rows, title)
+def _draw_parity(fig, rows: pd.DataFrame, r: pd.DataFrame, title: str) -> bytes:
+    """:func:`parity_png` of ``rows`` drawn on ``fig`` (cleared first); ``r``: its plotted rows
+    (:func:`_parity_plotted`)."""
     p = r["published"].astype(float).to_numpy()
     c = r["computed"].astype(float).to_numpy()
     tol = r["tolerance"].astype(float).fillna(0.0).to_numpy()
@@ -500,10 +502,9 @@ def parity_pngs(grp: pd.DataFrame) -> dict[str, bytes]:
     of :func:`parity_rows`. The workflow draws them per seed, as soon as that seed's checks exist,
     and hands them to :func:`render`."""
     todo = parity_rows(grp)
-    for src, rows in todo.items():
-        _parity_arrays(rows, src)
+    plotted = {src: _parity_plotted(rows, src) for src, rows in todo.items()}  # all refused before drawing
     with _parity_canvas() as fig:
-        return {src: _draw_parity(fig, rows, src) for src, rows in todo.items()}
+        return {src: _draw_parity(fig, rows, plotted[src], src) for src, rows in todo.items()}
 
 
 def _paper_findings(grp, errata, order, specs) -> list[str]:

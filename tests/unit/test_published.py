@@ -129,3 +129,15 @@ def test_errata_evidence_points_at_tests_that_exist():
         assert f.is_file(), f"{ref}: no such file"
         if name:
             assert re.search(rf"^def {name}\(", f.read_text(), flags=re.M), f"{ref}: no such test"
+
+
+def test_values_by_keys_every_row_in_order():
+    """One pass over a params or values frame: each key's values in row order (a repeated key
+    keeps all of them, for the caller to refuse)."""
+    frame = pd.DataFrame(
+        {"file": ["a", "a", "b", "a"], "parameter": ["x", "y", "x", "x"], "value": [1.0, 2.0, 3.0, float("nan")]}
+    )
+    got = pub.values_by(frame, ["file", "parameter"])
+    assert list(got) == [("a", "x"), ("a", "y"), ("b", "x")]
+    assert got[("a", "y")] == [2.0] and got[("b", "x")] == [3.0]
+    assert got[("a", "x")][0] == 1.0 and got[("a", "x")][1] != got[("a", "x")][1]  # NaN

@@ -3,18 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
+
+from ...published import values_by
 
 __all__ = ["params_from_published", "design_beta"]
-
-
-def _index(frame: pd.DataFrame, keys: list[str]) -> dict:
-    """{key tuple: [value, ...]} of a published frame (one pass: 40 boolean selections of the
-    frame cost more than the rest of loading the design)."""
-    out: dict = {}
-    for key, v in zip(zip(*(frame[k].tolist() for k in keys)), frame["value"].tolist()):
-        out.setdefault(key, []).append(v)
-    return out
 
 
 def _param(params: dict, file: str, example: str, name: str) -> float:
@@ -38,8 +30,8 @@ def params_from_published(published) -> dict:
     distance E = 10 in (19.948 deg; the printed 19.548 deg is kept as ``beta_printed_deg`` and
     computed as a variant, see errata). Rack radii: rho = (5.88, 6.35)/P_n (eq 2.7.2); the
     printed a_c, a_t (their rounded halves-reciprocals) are a variant."""
-    P = _index(published.params, ["file", "example", "parameter"])
-    V = _index(published.values, ["id"])
+    P = values_by(published.params, ["file", "example", "parameter"])
+    V = values_by(published.values, ["id"])
     f5, f6, f54 = "params_002_S2.5.csv", "params_002_T6.2.csv", "params_002_S5.4.csv"
     d = {
         "N1": _param(P, f5, "S2.5_example", "N1"),

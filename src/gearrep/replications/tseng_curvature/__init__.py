@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
+from ...published import values_by
 from .._face import FACE, Job, run_jobs
 from .._seed000 import table_5_1
 from . import studies
@@ -120,16 +121,10 @@ def _rows_of_table(values: pd.DataFrame, source: str) -> tuple[int, int]:
 def params_from_published(published) -> Design:
     """The design of ch. 4 from a loaded :class:`gearrep.published.Published` (params_000_*.csv
     and the row keys of Table 4.3)."""
-    P = published.params
-    found: dict = {}  # (example, parameter) -> values of the seed's rows (one pass over the frame)
-    for seed, ex, name, value in zip(
-        P["seed"].tolist(), P["example"].tolist(), P["parameter"].tolist(), P["value"].tolist()
-    ):
-        if seed == SEED:
-            found.setdefault((str(ex), name), []).append(value)
+    found = values_by(published.params, ["seed", "example", "parameter"])
 
     def val(example, parameter):
-        r = found.get((example, parameter), [])
+        r = found.get((SEED, example, parameter), [])
         if len(r) != 1:
             raise ValueError(f"published parameter {parameter!r} of example {example} not found once")
         return float(r[0])
