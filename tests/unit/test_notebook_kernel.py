@@ -129,3 +129,17 @@ def test_the_kernel_talks_over_unix_sockets_in_a_directory_of_its_own(tmp_path):
     assert transport == "ipc" and Path(ip).name == "k"
     assert not Path(ip).parent.exists()
     assert set(Path(tempfile.gettempdir()).glob("gearrep-kernel-*")) == before
+
+
+def test_the_forked_kernel_does_not_walk_the_objects_it_inherits_when_it_collects(tmp_path):
+    """The step process freezes its objects (``gc.freeze``) before forking the kernel: the kernel's
+    full collections walk only what its cells create; the step process collects as before."""
+    import gc
+
+    import pandas  # noqa: F401  (imported before the fork, as in the warm process)
+
+    out = _run(
+        tmp_path, ["import gc\nprint(gc.get_freeze_count())"], "frozen", kernel_manager_class=EX.ForkedKernelManager
+    )
+    assert int("".join(out["cells"][0]["outputs"][0]["text"])) > 10_000
+    assert gc.get_freeze_count() == 0

@@ -237,3 +237,64 @@ def test_a_request_that_is_not_a_json_object_fails_its_step_and_leaves_the_warm_
     again = run(tmp_path, request(tmp_path / "b"), warm=True)
     assert again.returncode == 0, again.stderr
     assert os.stat(sock).st_ino == inode  # the same warm process took the step
+
+
+def test_steps_that_start_together_start_one_warm_process(tmp_path):
+    """The first steps of a run start at the same moment; their clients take turns on a lock, so the
+    second finds the warm process the first started instead of starting (and importing) another."""
+    script = tmp_path / "parent.py"
+    script.write_text("import os\nopen(snakemake.output.pid, 'w').write(str(os.getppid()))  # noqa: F821\n")
+    env = dict(os.environ, GEARREP_WARM_PROCESS="1")
+    procs = []
+    for i in range(3):
+        req = {
+            "script": str(script),
+            "output": {"pid": str(tmp_path / f"pid{i}.txt")},
+            "log": {"log": str(tmp_path / f"p{i}.log")},
+            "timing": str(tmp_path / f"t{i}.tsv"),
+        }
+        procs.append(
+            subprocess.Popen(
+                [sys.executable, str(RUNNER), json.dumps(req)],
+                cwd=tmp_path,
+                env=env,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.PIPE,
+                text=True,
+            )
+        )
+    for p in procs:
+        _, err = p.communicate(timeout=300)
+        assert p.returncode == 0, err
+    parents = {(tmp_path / f"pid{i}.txt").read_text() for i in range(3)}
+    assert len(parents) == 1, parents  # every step a child of the same warm process
+    # and no other warm process was started (one that lost the race would idle until its timeout)
+    if Path("/proc/self/cwd").exists():
+        serving = []
+        for d in Path("/proc").iterdir():
+            try:
+                if "--serve" in (d / "cmdline").read_bytes().decode() and (d / "cwd").resolve() == tmp_path.resolve():
+                    serving.append(d.name)
+            except OSError:
+                continue
+        assert serving == list(parents), serving
+
+
+def test_a_step_does_not_walk_the_warm_processs_objects_when_it_collects(tmp_path):
+    """The warm process freezes its objects (``gc.freeze``) before forking a step: the step's full
+    collections walk only what the step created, not the ~170 000 objects it inherited (and so do
+    not copy the pages they sit on); the warm process itself collects as before."""
+    script = tmp_path / "frozen.py"
+    script.write_text("import gc\nopen(snakemake.output.n, 'w').write(str(gc.get_freeze_count()))  # noqa: F821\n")
+    counts = {}
+    for warm in (False, True):
+        req = {
+            "script": str(script),
+            "output": {"n": str(tmp_path / f"n{warm}.txt")},
+            "log": {"log": str(tmp_path / "f.log")},
+            "timing": str(tmp_path / "t.tsv"),
+        }
+        r = run(tmp_path, req, warm)
+        assert r.returncode == 0, r.stderr
+        counts[warm] = int((tmp_path / f"n{warm}.txt").read_text())
+    assert counts[False] == 0 and counts[True] > 10_000, counts

@@ -30,6 +30,7 @@ already in use" (papermill issue 511, open). It happened in a cold ``snakemake -
 """
 
 import asyncio
+import gc
 import json
 import os
 import shutil
@@ -207,9 +208,11 @@ class ForkedKernelManager(AsyncKernelManager):
         sys.stdout.flush()
         sys.stderr.flush()
         parent_pid = os.getpid()
+        gc.freeze()  # the kernel's full collections skip what it inherits (as the warm process's children)
         pid = os.fork()
         if pid == 0:
             _run_kernel(kernel_cmd[3:], kw.get("env"), kw.get("cwd"), parent_pid)
+        gc.unfreeze()  # the freeze is the kernel's; this process collects as before
         prov = self.provisioner
         prov.process = _ForkedKernel(pid)
         prov.pid = pid
