@@ -40,9 +40,11 @@ def request(out, study="tseng_tca", job="ke_table_5_4"):
 
 
 def run(cwd, req, warm, timeout=300):
+    """The client as the rules start it (``python -S``: without site-packages until it runs a step
+    itself)."""
     env = dict(os.environ, GEARREP_WARM_PROCESS="1" if warm else "0")
     return subprocess.run(
-        [sys.executable, str(RUNNER), json.dumps(req)],
+        [sys.executable, "-S", str(RUNNER), json.dumps(req)],
         cwd=cwd,
         env=env,
         capture_output=True,
@@ -213,18 +215,44 @@ def test_later_steps_inherit_the_modules_the_warm_process_imports_after_its_firs
 
 def test_the_client_imports_only_what_it_needs_to_hand_a_step_on():
     """Every step starts a client process (89 in a full run): json, pathlib, subprocess, hashlib
-    and re (28 ms of its 80 ms of CPU) are imported only where used, not when the client starts."""
+    and re (34 ms of CPU) are imported only where used, and the client speaks through ``_socket``
+    (the socket module, with selectors and enum, costs 19 ms), started without site-packages."""
 
     def modules(code):
         out = subprocess.run(
-            [sys.executable, "-c", code + "; print(' '.join(sys.modules))"], capture_output=True, text=True
+            [sys.executable, "-S", "-c", code + "; print(' '.join(sys.modules))"], capture_output=True, text=True
         )
         assert out.returncode == 0, out.stderr
         return set(out.stdout.split())
 
     bare = modules("import sys")
     client = modules(f"import sys; sys.path.insert(0, {str(RUNNER.parent)!r}); import run_study_step")
-    assert not {"json", "pathlib", "subprocess", "hashlib", "re"} & (client - bare)
+    assert "_socket" in client
+    assert not {"json", "pathlib", "subprocess", "hashlib", "re", "socket", "struct", "selectors", "enum"} & (
+        client - bare
+    )
+    # the rules start it with -S (the shell command of every rule that runs it)
+    rules = "".join(p.read_text() for p in (ROOT / "workflow" / "rules").glob("*.smk"))
+    assert rules.count("{input.runner:q}") == rules.count("{params.python:q} -S {input.runner:q}") > 0
+
+
+def test_a_client_without_site_packages_runs_its_step_itself_when_no_warm_process_takes_it(tmp_path):
+    """Started with -S (as the rules do) and the warm process switched off, the client turns
+    site-packages on before it imports the step's modules (numpy, pandas, gearrep)."""
+    r = run(tmp_path, request(tmp_path / "out"), warm=False)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "out" / "timing.tsv").exists()
+
+
+def test_the_socket_name_is_a_stable_hash_of_the_environment():
+    """FNV-1a 64 (the client imports no hashlib): the published test vectors, and the name
+    follows the interpreter, PYTHONPATH and the runner's path."""
+    assert run_study_step._fnv1a64(b"") == 0xCBF29CE484222325
+    assert run_study_step._fnv1a64(b"a") == 0xAF63DC4C8601EC8C
+    assert run_study_step._fnv1a64(b"foobar") == 0x85944171F73967E8
+    name = run_study_step.socket_path()
+    assert name.startswith(os.path.join(".snakemake", "gearrep-warm-")) and name.endswith(".sock")
+    assert len(os.path.basename(name)) == len("gearrep-warm-.sock") + 16
 
 
 def test_a_request_that_is_not_a_json_object_fails_its_step_and_leaves_the_warm_process_serving(tmp_path):

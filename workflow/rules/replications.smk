@@ -49,7 +49,7 @@ for _key in REGISTRY:
                     log=f"results/logs/{_key}/{_job}.log",
                 ),
             shell:
-                "{params.python:q} {input.runner:q} {params.request:q}"
+                "{params.python:q} -S {input.runner:q} {params.request:q}"
 
     rule:
         name:
@@ -79,7 +79,7 @@ for _key in REGISTRY:
                 log=f"results/logs/{_key}/checks.log",
             ),
         shell:
-            "{params.python:q} {input.runner:q} {params.request:q}"
+            "{params.python:q} -S {input.runner:q} {params.request:q}"
 
     if _figures:
 
@@ -112,7 +112,7 @@ for _key in REGISTRY:
                     preload=FIGURE_MODULES,
                 ),
             shell:
-                "{params.python:q} {input.runner:q} {params.request:q}"
+                "{params.python:q} -S {input.runner:q} {params.request:q}"
 
     rule:
         name:
@@ -153,7 +153,7 @@ for _key in REGISTRY:
                 settings=SETTINGS[_key],
             ),
         shell:
-            "{params.python:q} {input.runner:q} {params.request:q}"
+            "{params.python:q} -S {input.runner:q} {params.request:q}"
 
     CHECK_FILES.append(f"results/{_study.CHECK_OUTPUTS['checks']}")
     FINAL_OUTPUTS.extend(

@@ -33,7 +33,7 @@ rule render_notebook:
             preload=RENDER_MODULES,
         ),
     shell:
-        "{params.python:q} {input.runner:q} {params.request:q}"
+        "{params.python:q} -S {input.runner:q} {params.request:q}"
 
 
 # The parity plots of one paper (seed), drawn as soon as the checks of its studies exist, so that
@@ -81,7 +81,7 @@ rule report_parity:
             preload=FIGURE_MODULES,
         ),
     shell:
-        "{params.python:q} {input.runner:q} {params.request:q}"
+        "{params.python:q} -S {input.runner:q} {params.request:q}"
 
 
 BENCHMARKS.extend(expand("results/benchmarks/parity/{seed}.tsv", seed=PARITY_SEEDS))
@@ -126,7 +126,7 @@ rule report:
             timing="results/benchmarks/report.tsv",
         ),
     shell:
-        "{params.python:q} {input.runner:q} {params.request:q}"
+        "{params.python:q} -S {input.runner:q} {params.request:q}"
 
 
 # Optional (not in the default target; needs Chromium): `snakemake --cores 1 results/report.png`.

@@ -33,4 +33,4 @@ rule scorecard:
             timing="results/benchmarks/scorecard.tsv",
         ),
     shell:
-        "{params.python:q} {input.runner:q} {params.request:q}"
+        "{params.python:q} -S {input.runner:q} {params.request:q}"

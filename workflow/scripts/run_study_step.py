@@ -1,4 +1,4 @@
-"""One step of the workflow, run by its rule as ``python run_study_step.py REQUEST`` with REQUEST the
+"""One step of the workflow, run by its rule as ``python -S run_study_step.py REQUEST`` with REQUEST the
 JSON the rule builds: a study's job (its tables) or its checks (workflow/rules/replications.smk:
 study, step, settings, input and output paths, log), or a workflow script (a study's figures, a
 notebook's rendering: ``script`` with the rule's named ``input``, ``output``, ``log``, ``params``
@@ -28,15 +28,18 @@ The numerics are in ``gearrep.replications.<study>``; the reading and writing in
 from __future__ import annotations
 
 # the client (one per step: 89 in a full run) imports only what it needs to hand its step to the
-# warm process (json, pathlib, subprocess, hashlib and re cost it about 28 ms of CPU each time): everything
-# else is imported where it is used
+# warm process: everything else is imported where it is used. json, pathlib, subprocess and re
+# would cost it about 28 ms of CPU each time, hashlib 6 ms; and it speaks to the warm process
+# through ``_socket``, the socket module's C core, because ``socket`` itself costs 19 ms (it builds
+# its enums from the C constants and imports selectors and enum). The rules start it with
+# ``python -S`` (no site-packages: 10 ms less); a client that runs its step itself turns site on.
+import _socket
 import os
-import socket
-import struct
 import sys
 
 IDLE_SECONDS = 30.0
 _ACCEPTED = b"A"
+_INT_SIZE = 4  # a C int, as SCM_RIGHTS carries file descriptors (socket.send_fds's array("i"))
 #: what the library imports inside functions (for a single process, scipy's 0.3-0.7 s are only paid
 #: where used) but a full run's steps need again and again: nine of the jobs imported scipy, each in
 #: its own child (about 5 s of CPU in a cold run). The warm process imports them once, after forking
@@ -133,12 +136,18 @@ def _run_here(req: dict) -> int:
 
 
 # -- the warm process ----------------------------------------------------------------------------
+def _fnv1a64(data: bytes) -> int:
+    """64-bit FNV-1a hash (a name, not a secret: no import for the client)."""
+    h = 0xCBF29CE484222325
+    for byte in data:
+        h = ((h ^ byte) * 0x100000001B3) & 0xFFFFFFFFFFFFFFFF
+    return h
+
+
 def socket_path() -> str:
     """The socket of this environment's warm process (relative to the working directory)."""
-    import hashlib
-
     key = "\0".join([sys.executable, os.environ.get("PYTHONPATH", ""), os.path.realpath(__file__)])
-    return os.path.join(".snakemake", f"gearrep-warm-{hashlib.sha256(key.encode()).hexdigest()[:12]}.sock")
+    return os.path.join(".snakemake", f"gearrep-warm-{_fnv1a64(os.fsencode(key)):016x}.sock")
 
 
 def _imported_sources() -> dict[str, int]:
@@ -171,6 +180,7 @@ def serve(path) -> None:
     import gc
     import json
     import signal
+    import socket
 
     import replication_io  # noqa: F401  (imported once for every child)
 
@@ -254,6 +264,8 @@ def _preload(modules) -> bool:
 
 def _is_ours(path) -> bool:
     """Whether the socket file at ``path`` is still this process's (not a newer warm process's)."""
+    import socket
+
     try:
         probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
         probe.settimeout(0.2)
@@ -283,7 +295,7 @@ def _child(conn, req: dict, fds) -> int:
         rc = _run_here(req)
         sys.stdout.flush()
         sys.stderr.flush()
-        conn.sendall(struct.pack("!i", rc))
+        conn.sendall(rc.to_bytes(4, "big", signed=True))
         return rc
     except BaseException:  # noqa: B036
         return 1
@@ -291,7 +303,7 @@ def _child(conn, req: dict, fds) -> int:
 
 # -- the client ----------------------------------------------------------------------------------
 def _connect(path: str):
-    s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    s = _socket.socket(_socket.AF_UNIX, _socket.SOCK_STREAM)
     try:
         s.connect(path)
         return s
@@ -341,9 +353,13 @@ def _via_warm_process(request: str) -> int | None:
     s = _connect(path) or _start_warm_process(path)
     if s is None:
         return None
-    with s:
+    try:
         try:
-            socket.send_fds(s, [os.fsencode(os.getcwd()) + b"\0" + request.encode()], [0, 1, 2])
+            # the working directory and the request, with the client's stdin, stdout and stderr
+            # (what socket.send_fds sends: the descriptors as C ints in one SCM_RIGHTS message)
+            fds = b"".join(fd.to_bytes(_INT_SIZE, sys.byteorder, signed=True) for fd in (0, 1, 2))
+            cwd = os.fsencode(os.getcwd())
+            s.sendmsg([cwd + b"\0" + request.encode()], [(_socket.SOL_SOCKET, _socket.SCM_RIGHTS, fds)])
             if s.recv(1) != _ACCEPTED:
                 return None  # refused (stale code) before starting: run here
         except OSError:
@@ -355,7 +371,9 @@ def _via_warm_process(request: str) -> int | None:
                 print("gearrep warm process: the step's child ended without a status", file=sys.stderr)
                 return 1
             status += chunk
-        return struct.unpack("!i", status)[0]
+        return int.from_bytes(status, "big", signed=True)
+    finally:
+        s.close()
 
 
 def main(argv: list[str]) -> int:
@@ -364,10 +382,14 @@ def main(argv: list[str]) -> int:
 
         serve(Path(argv[1]))
         return 0
-    if os.environ.get("GEARREP_WARM_PROCESS", "1") != "0" and hasattr(socket, "send_fds"):
+    if os.environ.get("GEARREP_WARM_PROCESS", "1") != "0" and hasattr(_socket, "SCM_RIGHTS"):
         rc = _via_warm_process(argv[0])
         if rc is not None:
             return rc
+    if sys.flags.no_site:  # started with -S: the step needs site-packages
+        import site
+
+        site.main()
     import json
 
     return _run_here(dict(json.loads(argv[0]), cwd=os.getcwd()))
