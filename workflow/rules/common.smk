@@ -60,14 +60,16 @@ def step_request(study, step, **fields):
 
 #: modules the warm process imports once for every figure script (matplotlib, the plot style)
 FIGURE_MODULES = ["matplotlib", "matplotlib.pyplot", "gearrep.plotting"]
-#: and for every notebook rendering (nbconvert's HTML exporter and ours, beside the scripts)
-RENDER_MODULES = ["nbformat", "nbconvert", "notebook_html"]
+#: and for every notebook rendering (nbconvert's HTML exporter and ours, beside the scripts; the
+#: notebook format's validators compiled once)
+RENDER_MODULES = ["nbformat", "nbconvert", "notebook_html", "notebook_validators"]
 #: the HTML exporter the rendering script imports (declared as its input)
 NOTEBOOK_HTML = "workflow/scripts/notebook_html.py"
 #: the script that executes a study's notebook, and what the warm process imports once for it
 NOTEBOOK_EXECUTOR = "workflow/scripts/execute_notebook.py"
 NOTEBOOK_MODULES = [
     "nbformat",
+    "notebook_validators",  # the notebook format's validators, compiled once (beside the scripts)
     "papermill",
     # what the notebooks' forked kernels import (execute_notebook.py): the kernel itself, then the
     # notebooks' own imports
