@@ -43,8 +43,8 @@ _INT_SIZE = 4  # a C int, as SCM_RIGHTS carries file descriptors (socket.send_fd
 #: what the library imports inside functions (for a single process, scipy's 0.3-0.7 s are only paid
 #: where used) but a full run's steps need again and again: nine of the jobs imported scipy, each in
 #: its own child (about 5 s of CPU in a cold run). The warm process imports them once, after forking
-#: its first child (the step that started it does not wait for them), so that later children
-#: inherit them.
+#: its first child when no other step is waiting (the steps that started it do not wait for them),
+#: so that later children inherit them.
 BACKGROUND_IMPORTS = ("scipy.optimize", "scipy.interpolate", "scipy.special")
 
 
@@ -179,6 +179,7 @@ def serve(path) -> None:
     request until idle or stale."""
     import gc
     import json
+    import select
     import signal
     import socket
 
@@ -236,7 +237,9 @@ def serve(path) -> None:
             for fd in fds:
                 os.close(fd)
             conn.close()
-            if background:
+            # the background imports once no other client is waiting (a run's first steps start
+            # together: the second would otherwise wait for them, 0.5-0.7 s)
+            if background and not select.select([srv], [], [], 0)[0]:
                 try:
                     _preload(background)
                 except Exception:  # noqa: BLE001,S110  (a step that needs it imports it and reports its own error)
