@@ -163,12 +163,11 @@ def scipy_root_solves(pair, phi1, start, formulation: str = "reduced", *, tol: f
     Returns (x (n, 2 or 5), success (n,) bool)."""
     from scipy.optimize import root
 
-    from .tca import conventional_system, reduced_unknowns
+    from .tca import check_formulation, conventional_system, reduced_unknowns
 
+    check_formulation(formulation)
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     start = np.atleast_2d(np.asarray(start, float))
-    if formulation not in ("reduced", "conventional"):
-        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
     if len(start) != len(phi1):
         raise ValueError(f"start has {len(start)} rows for {len(phi1)} angles")
     xs, ok = [], []

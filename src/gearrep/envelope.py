@@ -79,7 +79,7 @@ from . import frames
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
 from .motion import __all__ as _MOTION_NAMES
-from .solve import SolveResult, Status, newton
+from .solve import SolveResult, Status, check_integer, newton
 from .surface import _D1, _D1_OFF, Surface, SurfacePoint, cross
 
 __all__ = [
@@ -337,7 +337,8 @@ class Envelope:
             raise ValueError(f"tol must be > 0, got {tol!r}")
         if not (singular_tol >= 0):
             raise ValueError(f"singular_tol must be >= 0, got {singular_tol!r}")
-        self.tol, self.maxiter, self.singular_tol = float(tol), int(maxiter), float(singular_tol)
+        maxiter = check_integer("maxiter", maxiter)
+        self.tol, self.maxiter, self.singular_tol = float(tol), maxiter, float(singular_tol)
 
     # ---- basic evaluations --------------------------------------------------------------
     def _q(self, q):

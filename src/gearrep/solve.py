@@ -30,6 +30,7 @@ __all__ = [
     "SolveResult",
     "numeric_jacobian",
     "newton",
+    "check_integer",
 ]
 
 
@@ -518,6 +519,14 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
     )
 
 
+def check_integer(name: str, value, minimum: int = 1) -> int:
+    """``value`` as an int when it is an integer >= ``minimum`` (a Python or numpy integer, not a
+    bool); ValueError naming ``name`` otherwise (``maxiter=2.5`` is an error, not 2 iterations)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
+    return int(value)
+
+
 def _check_bounds(lower, upper, k):
     """(lo, hi) (k,) arrays of the bounds (+-inf where None); ValueError if lo > hi somewhere."""
     lo, hi = (
@@ -580,7 +589,7 @@ def newton(
     jac : callable (n, k) -> (n, m, k), optional; central differences when omitted (it may return
         a lazy Jacobian as ``fun_jac`` may; it is formed for every row at once)
     tol : convergence when the Euclidean residual norm is below ``tol``
-    maxiter : iteration limit (must be >= 1)
+    maxiter : iteration limit (an integer >= 1)
     damped : Armijo backtracking on the residual norm (step halved up to ``max_halvings``
         times); with ``damped=False`` the full Newton step is always taken (plain Newton)
     lower, upper : (k,) bounds of the parameter domain (use +-inf for none). A converged root
@@ -616,8 +625,8 @@ def newton(
     """
     if not (tol > 0):
         raise ValueError(f"tol must be > 0, got {tol!r}")
-    if int(maxiter) < 1:
-        raise ValueError(f"maxiter must be >= 1, got {maxiter!r}")
+    maxiter = check_integer("maxiter", maxiter)
+    max_halvings = check_integer("max_halvings", max_halvings, 0)
     x = np.atleast_2d(np.array(x0, dtype=float))
     n, k = x.shape
     lo, hi = _check_bounds(lower, upper, k)
@@ -626,7 +635,7 @@ def newton(
     box = {"i": None}
     if rows:
         fun, jac, fun_jac, box = _bind_rows(fun, jac, fun_jac, n)
-    opts = _BatchOptions(tol, int(maxiter), damped, int(max_halvings), lo, hi, rcond, inverse_square, keep_inside)
+    opts = _BatchOptions(tol, maxiter, damped, max_halvings, lo, hi, rcond, inverse_square, keep_inside)
     if n == 1 and not keep_inside:  # one problem: the same steps on floats with scalar bookkeeping
         return _newton_one(fun, x, jac, fun_jac, floats if fun_jac is not None else None, opts)
     return _newton_batch(fun, jac, fun_jac, x, box, opts)

@@ -298,3 +298,52 @@ def test_meshing_cycle_takes_an_integer_grid_size(n_points):
 def test_pair_te_curves_refuses_mismatched_shapes(phi1, te, at, msg):
     with pytest.raises(ValueError, match=msg):
         pair_te_curves(phi1, te, 0.1, at)
+
+
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"maxiter": 2.5}, r"maxiter must be an integer >= 1, got 2.5"),
+        ({"maxiter": True}, r"maxiter must be an integer >= 1, got True"),
+        ({"maxiter": "50"}, r"maxiter must be an integer >= 1, got '50'"),
+        ({"max_halvings": -1}, r"max_halvings must be an integer >= 0, got -1"),
+        ({"max_halvings": 2.5}, r"max_halvings must be an integer >= 0, got 2.5"),
+    ],
+)
+def test_newton_refuses_iteration_counts_that_are_not_integers(kw, msg):
+    """A fractional iteration limit was truncated (maxiter=2.5 ran 2 iterations) and a negative
+    number of step halvings turned the damped solve into plain Newton, both silently."""
+    from gearrep.solve import newton
+
+    with pytest.raises(ValueError, match=msg):
+        newton(lambda x: x - 1.0, np.zeros((2, 1)), lambda x: np.ones((len(x), 1, 1)), **kw)
+
+
+def test_newton_takes_numpy_integers():
+    from gearrep.solve import Status, newton
+
+    r = newton(lambda x: x - 1.0, np.zeros((2, 1)), lambda x: np.ones((len(x), 1, 1)), maxiter=np.int64(3))
+    assert (r.status == Status.CONVERGED).all()
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_solve_contact_refuses_a_fractional_iteration_limit(formulation):
+    with pytest.raises(ValueError, match=r"maxiter must be an integer >= 1, got 2.5"):
+        solve_contact(_pair(), np.zeros(2), formulation=formulation, maxiter=2.5)
+
+
+def test_default_start_names_the_formulations():
+    """default_start gave conventional starts for any name but 'reduced'."""
+    with pytest.raises(ValueError, match=r"formulation must be 'reduced' or 'conventional', got 'Reduced'"):
+        default_start(_pair(), np.zeros(2), "Reduced")
+
+
+def test_envelope_and_hob_gear_refuse_a_fractional_iteration_limit():
+    from gearrep.envelope import Envelope
+    from gearrep.surfaces.hob import GeneratedGear
+
+    gear = GeneratedGear()
+    with pytest.raises(ValueError, match=r"maxiter must be an integer >= 1, got 2.5"):
+        Envelope(gear.thread(), gear.motion(), free=("u", "psi"), maxiter=2.5)
+    with pytest.raises(ValueError, match=r"maxiter must be an integer >= 1, got 2.5"):
+        GeneratedGear(maxiter=2.5)

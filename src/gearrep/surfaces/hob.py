@@ -65,7 +65,7 @@ from ..curvature_relations import (
 )
 from ..envelope import Envelope, EnvelopeResult, EnvelopeSurface
 from ..motion import ChainMotion, rotation, translation
-from ..solve import SolveResult, Status, newton
+from ..solve import SolveResult, Status, check_integer, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
@@ -257,8 +257,7 @@ class GeneratedGear:
         if self.arc_centre not in (1, -1):
             raise ValueError(f"arc_centre must be +1 or -1, got {self.arc_centre!r}")
         _pos("tol", self.tol)
-        if int(self.maxiter) < 1:
-            raise ValueError(f"maxiter must be >= 1, got {self.maxiter!r}")
+        check_integer("maxiter", self.maxiter)
 
     @classmethod
     def flank(cls, name: str, **kw) -> GeneratedGear:

@@ -100,6 +100,7 @@ cold-run goal of 45 s for the whole workflow: not adopted; numpy is the only pat
 from ._bevel import BevelMisalignment, BevelPair
 from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
 from ._formulations import (
+    check_formulation,
     conventional_system,
     default_start,
     newton_rows,
@@ -135,6 +136,7 @@ __all__ = [
     "normal_derivatives",
     "conventional_system",
     "newton_rows",
+    "check_formulation",
     "default_start",
     "solve_contact",
     "reduced_unknowns",

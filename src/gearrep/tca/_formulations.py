@@ -25,6 +25,7 @@ from ._pair import ContactPoints, GearPair, _wrap, transmission_error
 __all__ = [
     "conventional_system",
     "newton_rows",
+    "check_formulation",
     "default_start",
     "solve_contact",
     "reduced_unknowns",
@@ -181,8 +182,17 @@ def _largest_normal_component(pair, u1, v1, c1, s1, keep=None) -> np.ndarray:
         return np.where(a2 > np.maximum(a0, a1), 2.0, (a1 > a0).astype(float))
 
 
+def check_formulation(formulation) -> str:
+    """``formulation`` when it names a TCA formulation ('reduced': 2 unknowns per point,
+    'conventional': 5); ValueError otherwise."""
+    if formulation not in ("reduced", "conventional"):
+        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
+    return formulation
+
+
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
     """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
+    check_formulation(formulation)
     phi1 = _angles(phi1)
     mid1, mid2 = pair._mid_flanks
     if formulation == "reduced":
@@ -252,8 +262,7 @@ def _own(c, n):
 def _check_solve_inputs(pair: GearPair, phi1, start, formulation, v1, jacobian, drop):
     """Validated (phi1 (n,), start (n, width) with a fixed v1 written into its column 1, fixed);
     ValueError naming the argument otherwise (before any work)."""
-    if formulation not in ("reduced", "conventional"):
-        raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
+    check_formulation(formulation)
     if jacobian not in ("analytic", "numeric"):
         raise ValueError(f"jacobian must be 'analytic' or 'numeric', got {jacobian!r}")
     if drop is not None and drop not in (0, 1, 2):

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solve import SolveResult, Status, newton
+from ..solve import SolveResult, Status, check_integer, newton
 from ..surface import cross
 from ._formulations import (
     _angles,
@@ -83,11 +83,9 @@ def _starts5(x0, name: str = "x0") -> np.ndarray:
     return a
 
 
-def _positive(name: str, value, *, integer: bool = False):
-    ok = (isinstance(value, (int, np.integer)) and not isinstance(value, bool)) if integer else np.isfinite(value)
-    if not ok or not value > 0:
-        kind = "an integer >= 1" if integer else "a finite number > 0"
-        raise ValueError(f"{name} must be {kind}, got {value!r}")
+def _positive(name: str, value):
+    if not (np.isfinite(value) and value > 0):
+        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
 
 
 def flank_boxes(pair: GearPair, margin: float = 0.0):
@@ -127,7 +125,7 @@ def solve_conventional(
     phi1 = _one_angle(phi1)
     x0 = _starts5(x0)
     _positive("tol", tol)
-    _positive("maxiter", maxiter, integer=True)
+    check_integer("maxiter", maxiter)
     if not (np.isfinite(margin) and 0.0 <= margin < 0.5):
         raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
     if equations not in ("five", "six", "drop_nz"):
@@ -159,7 +157,7 @@ def guard_reduced_starts(pair: GearPair, phi1, u1, v1, n_bisect: int = 40):
     flank 1 (bisection in u1 towards u1_min) onto the part of flank 1 that maps onto flank 2.
     ``phi1`` scalar or one angle per start. Returns (u1, moved mask)."""
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
-    _positive("n_bisect", n_bisect, integer=True)
+    check_integer("n_bisect", n_bisect)
     return _guard(pair, ph, u1.copy(), v1, n_bisect)
 
 
@@ -196,7 +194,7 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
     """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     _positive("tol", tol)
-    _positive("maxiter", maxiter, integer=True)
+    check_integer("maxiter", maxiter)
     return _transverse(pair, ph, u1, v1, tol, maxiter)
 
 
