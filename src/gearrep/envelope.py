@@ -79,7 +79,7 @@ from . import frames
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
 from .motion import __all__ as _MOTION_NAMES
-from .solve import SolveResult, Status, check_integer, newton
+from .solve import SolveResult, Status, check_integer, check_positive, newton
 from .surface import _D1, _D1_OFF, Surface, SurfacePoint, cross
 
 __all__ = [
@@ -333,8 +333,7 @@ class Envelope:
             self.upper = None if upper is None else np.broadcast_to(np.asarray(upper, float), (self.k,))
         except ValueError:
             raise ValueError(f"lower and upper must broadcast to ({self.k},) (one per solved parameter)") from None
-        if not (tol > 0):
-            raise ValueError(f"tol must be > 0, got {tol!r}")
+        check_positive("tol", tol)
         if not (singular_tol >= 0):
             raise ValueError(f"singular_tol must be >= 0, got {singular_tol!r}")
         maxiter = check_integer("maxiter", maxiter)

@@ -31,6 +31,7 @@ __all__ = [
     "numeric_jacobian",
     "newton",
     "check_integer",
+    "check_positive",
 ]
 
 
@@ -519,6 +520,18 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
     )
 
 
+def check_positive(name: str, value) -> float:
+    """``value`` as a float when it is a finite number > 0; ValueError naming ``name`` otherwise
+    (``tol=inf`` would call every start converged)."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        x = math.nan
+    if isinstance(value, bool) or not (math.isfinite(x) and x > 0):
+        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
+    return x
+
+
 def check_integer(name: str, value, minimum: int = 1) -> int:
     """``value`` as an int when it is an integer >= ``minimum`` (a Python or numpy integer, not a
     bool); ValueError naming ``name`` otherwise (``maxiter=2.5`` is an error, not 2 iterations)."""
@@ -623,8 +636,7 @@ def newton(
     SolveResult; ``status`` is CONVERGED only for a finite root with residual < tol that lies
     inside the bounds.
     """
-    if not (tol > 0):
-        raise ValueError(f"tol must be > 0, got {tol!r}")
+    check_positive("tol", tol)
     maxiter = check_integer("maxiter", maxiter)
     max_halvings = check_integer("max_halvings", max_halvings, 0)
     x = np.atleast_2d(np.array(x0, dtype=float))

@@ -347,3 +347,34 @@ def test_envelope_and_hob_gear_refuse_a_fractional_iteration_limit():
         Envelope(gear.thread(), gear.motion(), free=("u", "psi"), maxiter=2.5)
     with pytest.raises(ValueError, match=r"maxiter must be an integer >= 1, got 2.5"):
         GeneratedGear(maxiter=2.5)
+
+
+def test_solve_contact_refuses_an_infinite_tolerance():
+    """tol=inf called every start converged at once (status CONVERGED, no iteration)."""
+    with pytest.raises(ValueError, match=r"tol must be a finite number > 0, got inf"):
+        solve_contact(_pair(), np.zeros(2), tol=np.inf)
+
+
+def test_ellipse_and_hertz_take_one_value_per_contact_point():
+    """A per-point elastic approach or load is taken row by row also when some points did not
+    converge (it was broadcast against the converged rows only: a numpy shape error), and any other
+    length is refused naming the argument."""
+    from gearrep.tca import contact_ellipse, contact_hertz
+
+    pair = _pair()
+    phi = np.array([-0.02, 0.0, 3.0, 0.02])  # the third is not a contact of this flank pair
+    c = solve_contact(pair, phi)
+    assert not c.converged[2] and c.converged[[0, 1, 3]].all()
+    delta = np.array([0.002, 0.004, 0.006, 0.008])
+    per_point = contact_ellipse(pair, c, delta)
+    for i in (0, 1, 3):
+        assert per_point.a[i] == contact_ellipse(pair, c, delta[i]).a[i]
+    assert np.isnan(per_point.a[2])
+    load = np.array([500.0, 1000.0, 1500.0, 2000.0])
+    h = contact_hertz(pair, c, load, 2.06e5, 0.3)
+    for i in (0, 1, 3):
+        assert h.p0[i] == contact_hertz(pair, c, load[i], 2.06e5, 0.3).p0[i]
+    with pytest.raises(ValueError, match=r"delta must be a scalar or one value per contact point \(length 4\)"):
+        contact_ellipse(pair, c, np.full(3, 0.002))
+    with pytest.raises(ValueError, match=r"load_N must be a scalar or one value per contact point \(length 4\)"):
+        contact_hertz(pair, c, np.ones((2, 2)), 2.06e5, 0.3)

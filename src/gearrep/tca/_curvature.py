@@ -50,6 +50,21 @@ def contact_curvatures(pair: GearPair, contact: ContactPoints):
     return out[0], out[1]
 
 
+def _per_point(name: str, value, contact: ContactPoints, ok):
+    """``value`` (a scalar, or one per contact point) for the converged rows ``ok``; ValueError
+    naming ``name`` for any other shape (a length-n array is taken row by row, never broadcast
+    against the converged subset)."""
+    a = np.asarray(value, dtype=float)
+    n = len(contact)
+    if a.ndim == 0:
+        return value
+    if a.ndim == 1 and len(a) == 1:
+        return a[0]
+    if a.ndim == 1 and len(a) == n:
+        return a[ok]
+    raise ValueError(f"{name} must be a scalar or one value per contact point (length {n}), got shape {a.shape}")
+
+
 def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
     """Litvin's elastic-approach contact ellipse at the contact points (seed 002 eq 2.6.1-2.6.6 =
     seed 000 eq 5.14-5.17 = seed 004 eq 21-26) for an elastic approach ``delta`` (length unit of
@@ -60,6 +75,7 @@ def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
 
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
+    delta = _per_point("delta", delta, contact, ok)
     el = elastic_ellipse_at(type(c1)(*(x[ok] for x in c1)), type(c2)(*(x[ok] for x in c2)), delta)
     full = []
     for x in el:
@@ -80,6 +96,7 @@ def contact_hertz(pair: GearPair, contact: ContactPoints, load_N, E1_MPa, nu1, E
 
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
+    load_N = _per_point("load_N", load_N, contact, ok)
     h = hertz_contact_at(
         type(c1)(*(x[ok] for x in c1)), type(c2)(*(x[ok] for x in c2)), load_N, E1_MPa, nu1, E2_MPa, nu2
     )

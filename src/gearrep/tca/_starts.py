@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solve import SolveResult, Status, check_integer, newton
+from ..solve import SolveResult, Status, check_integer, check_positive, newton
 from ..surface import cross
 from ._formulations import (
     _angles,
@@ -83,11 +83,6 @@ def _starts5(x0, name: str = "x0") -> np.ndarray:
     return a
 
 
-def _positive(name: str, value):
-    if not (np.isfinite(value) and value > 0):
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
-
-
 def flank_boxes(pair: GearPair, margin: float = 0.0):
     """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
     moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
@@ -124,7 +119,7 @@ def solve_conventional(
         raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS}, got {variant!r}")
     phi1 = _one_angle(phi1)
     x0 = _starts5(x0)
-    _positive("tol", tol)
+    check_positive("tol", tol)
     check_integer("maxiter", maxiter)
     if not (np.isfinite(margin) and 0.0 <= margin < 0.5):
         raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
@@ -193,7 +188,7 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
     per start. Returns (u1, iterations); rows that fail keep their u1.
     """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
-    _positive("tol", tol)
+    check_positive("tol", tol)
     check_integer("maxiter", maxiter)
     return _transverse(pair, ph, u1, v1, tol, maxiter)
 
