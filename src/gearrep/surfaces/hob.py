@@ -65,7 +65,7 @@ from ..curvature_relations import (
 )
 from ..envelope import Envelope, EnvelopeResult, EnvelopeSurface
 from ..motion import ChainMotion, rotation, translation
-from ..solve import SolveResult, Status, check_integer, newton
+from ..solve import SolveResult, Status, check_integer, check_positive, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
@@ -84,13 +84,6 @@ HOB_VARIANTS = ("axial", "printed")
 FLANK_SIDE = {"R": +1, "L": -1}
 
 
-def _pos(name, x):
-    x = float(x)
-    if not (np.isfinite(x) and x > 0):
-        raise ValueError(f"{name} must be a finite number > 0, got {x!r}")
-    return x
-
-
 @dataclass(frozen=True)
 class ZAHob:
     """Design data of the ZA worm-type hob (defaults: Table 5.1 of seed 000).
@@ -107,11 +100,11 @@ class ZAHob:
     variant: str = "axial"
 
     def __post_init__(self):
-        m = _pos("module_mm", self.module_mm)
+        m = check_positive("module_mm", self.module_mm)
         a = float(self.pressure_angle_rad)
         if not (np.isfinite(a) and 0 < a < np.pi / 2):
             raise ValueError(f"pressure_angle_rad must be in (0, pi/2), got {self.pressure_angle_rad!r}")
-        r = _pos("pitch_radius_mm", self.pitch_radius_mm)
+        r = check_positive("pitch_radius_mm", self.pitch_radius_mm)
         if r <= m / 2:
             raise ValueError(f"pitch_radius_mm must be > module_mm / 2 = {m / 2}, got {r!r}")
         if self.variant not in HOB_VARIANTS:
@@ -256,7 +249,7 @@ class GeneratedGear:
             raise ValueError(f"side must be +1 or -1, got {self.side!r}")
         if self.arc_centre not in (1, -1):
             raise ValueError(f"arc_centre must be +1 or -1, got {self.arc_centre!r}")
-        _pos("tol", self.tol)
+        check_positive("tol", self.tol)
         check_integer("maxiter", self.maxiter)
 
     @classmethod
