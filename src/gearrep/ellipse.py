@@ -71,7 +71,8 @@ class ContactEllipse(NamedTuple):
     """Elastic-approach contact ellipse (see module docstring for conventions).
 
     a, b: semi-major / semi-minor axis; alpha: angle e_I^(1) -> minor axis (about n, sense of
-    sigma); A, B: Litvin's coefficients (A <= B algebraically); area = pi a b; elliptic: A B > 0.
+    sigma); A, B: Litvin's coefficients (A <= B algebraically); area = pi a b; elliptic: A B > 0 and
+    min(|A|, |B|) > LINE_CONTACT_RTOL max(|A|, |B|) (else a line contact, whose a is no contact length).
     major_axis, minor_axis: unit 3-vectors (only from :func:`elastic_ellipse_at`)."""
 
     a: np.ndarray
@@ -127,7 +128,9 @@ def _ellipse_from_AB(A, B, alpha_B, delta):
     a = np.where(b_is_minor, sa, sb)
     b = np.where(b_is_minor, sb, sa)
     alpha = _wrap_half_pi(np.where(b_is_minor, alpha_B, alpha_B + np.pi / 2))
-    elliptic = A * B > 0
+    # both relative curvatures of one sign, the smaller not a rounding-made fraction of the larger
+    # (a line contact: conjugate flanks give ~1e-12 of it, and an axis of ~1e15 mm)
+    elliptic = (A * B > 0) & (np.minimum(np.abs(A), np.abs(B)) > LINE_CONTACT_RTOL * np.maximum(np.abs(A), np.abs(B)))
     return ContactEllipse(a, b, alpha, A, B, np.pi * a * b, elliptic)
 
 

@@ -404,7 +404,14 @@ def pair_te_curves(
         raise ValueError(f"pitch must be > 0 rad, got {pitch!r}")
     if interpolation not in ("linear", "cubic"):
         raise ValueError(f"interpolation must be 'linear' or 'cubic', got {interpolation!r}")
+    if not (np.isfinite(tol) and tol >= 0):
+        raise ValueError(f"tol must be a finite number >= 0 [rad], got {tol!r}")
+    pairs = list(pairs)
+    if not pairs or any(isinstance(k, bool) or not isinstance(k, (int, np.integer)) for k in pairs):
+        raise ValueError(f"pairs must be one or more integers (tooth-pair offsets), got {pairs!r}")
     x, y = phi1[ok], te[ok]
+    if np.any(np.diff(x) <= 0):
+        raise ValueError("phi1 must increase strictly along the grid (at its finite TE samples)")
     lo, hi = x.min(), x.max()
     if interpolation == "cubic":
         from scipy.interpolate import CubicSpline

@@ -378,3 +378,57 @@ def test_ellipse_and_hertz_take_one_value_per_contact_point():
         contact_ellipse(pair, c, np.full(3, 0.002))
     with pytest.raises(ValueError, match=r"load_N must be a scalar or one value per contact point \(length 4\)"):
         contact_hertz(pair, c, np.ones((2, 2)), 2.06e5, 0.3)
+
+
+def test_contact_ellipse_of_a_line_contact_is_not_elliptic():
+    """An unmodified aligned spur pair touches along a line: its relative curvature across the
+    line is a rounding-made ~1e-34 1/mm, which gave an 'ellipse' of semi-axis ~5e15 mm flagged
+    elliptic (contact_hertz already called those points singular)."""
+    from gearrep.tca import contact_ellipse, contact_hertz
+
+    pair = _pair(crowning1=None)
+    c = solve_contact(pair, np.array([0.0, 0.01]), v1=0.0)
+    assert c.converged.all()
+    assert not contact_ellipse(pair, c, 0.005).elliptic.any()
+    assert (contact_hertz(pair, c, 1000.0, 2.06e5, 0.3).status == 3).all()  # SINGULAR
+    assert contact_ellipse(_pair(), solve_contact(_pair(), np.array([0.0, 0.01])), 0.005).elliptic.all()
+
+
+@pytest.mark.parametrize(
+    "phi1, kw, msg",
+    [
+        (np.linspace(0.2, -0.2, 11), {}, r"phi1 must increase strictly along the grid"),
+        (np.r_[np.linspace(-0.2, 0.0, 6), np.linspace(0.0, 0.2, 6)], {}, r"phi1 must increase strictly"),
+        (np.linspace(-0.2, 0.2, 11), {"tol": -1.0}, r"tol must be a finite number >= 0 \[rad\], got -1.0"),
+        (np.linspace(-0.2, 0.2, 11), {"tol": np.nan}, r"tol must be a finite number >= 0 \[rad\], got nan"),
+        (np.linspace(-0.2, 0.2, 11), {"pairs": [0.5]}, r"pairs must be one or more integers .*got \[0.5\]"),
+        (np.linspace(-0.2, 0.2, 11), {"pairs": []}, r"pairs must be one or more integers .*got \[\]"),
+    ],
+)
+def test_pair_te_curves_refuses_grids_it_would_misread(phi1, kw, msg):
+    """np.interp needs increasing angles: a reversed grid gave a TE 14 times too large, and a
+    negative or NaN tol called every pair disengaged (-inf), all silently."""
+    from gearrep.meshing import sampled_cycle
+
+    te = 1e-6 * phi1**2
+    with pytest.raises(ValueError, match=msg):
+        pair_te_curves(phi1, te, 0.3, [0.05], **({"pairs": [0]} | kw))
+    if not kw:
+        with pytest.raises(ValueError, match=msg):
+            sampled_cycle(phi1, te, 0.3, 11)
+
+
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"thinning": -5.0}, r"thinning = -5.0 mm makes the tooth at least as thick as the circular pitch"),
+        ({"h_a": 0.0}, r"h_a \(addendum coefficient\) must be > 0, got 0.0"),
+        ({"h_f": -2.0}, r"h_f \(dedendum coefficient\) must be > -h_a = -1.0, got -2.0"),
+        ({"h_f": 50.0}, r"h_f = 50.0 puts the root circle at r_f = -40.0 mm; allowed range: h_f < 10.0"),
+    ],
+)
+def test_involute_gear_data_has_lower_bounds_too(kw, msg):
+    """A tooth thicker than the circular pitch, no addendum, or a root below the axis were
+    accepted (a meshing cycle then reported a contact ratio for teeth that cannot exist)."""
+    with pytest.raises(ValueError, match=msg):
+        InvoluteGearData(20, 1.0, ALPHA, 10.0, **kw)

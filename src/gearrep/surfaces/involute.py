@@ -347,7 +347,22 @@ class InvoluteGearData:
             raise ValueError(f"helix_angle must be in [0, pi/2) rad, got {self.helix_angle!r}")
         for n in ("x", "h_a", "h_f", "thinning"):
             _check_finite(n, getattr(self, n))
+        if not self.h_a > 0:
+            raise ValueError(f"h_a (addendum coefficient) must be > 0, got {self.h_a!r}")
+        if not self.h_f > -self.h_a:
+            raise ValueError(f"h_f (dedendum coefficient) must be > -h_a = {-self.h_a!r}, got {self.h_f!r}")
+        if not self.r_f > 0:
+            raise ValueError(
+                f"h_f = {self.h_f!r} puts the root circle at r_f = {float(self.r_f)!r} mm; allowed range: "
+                f"h_f < {float(self.r_p / self.module + self.x)!r} (r_f = r_p - (h_f - x) m > 0)"
+            )
         s0 = float(self.tooth_thickness + self.thinning)  # unthinned transverse thickness at the pitch circle
+        p_t = float(np.pi * self.transverse_module)  # transverse circular pitch
+        if not self.thinning > s0 - p_t:
+            raise ValueError(
+                f"thinning = {self.thinning!r} mm makes the tooth at least as thick as the circular pitch "
+                f"{p_t!r} mm (no tooth space); allowed range: thinning > {s0 - p_t!r} mm"
+            )
         if not self.thinning < s0:
             raise ValueError(
                 f"thinning = {self.thinning!r} mm must be < {s0!r} mm, the tooth thickness at the pitch circle "
