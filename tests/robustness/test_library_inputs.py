@@ -349,9 +349,13 @@ def test_envelope_and_hob_gear_refuse_a_fractional_iteration_limit():
         GeneratedGear(maxiter=2.5)
 
 
-def test_solve_contact_refuses_an_infinite_tolerance():
+def test_newton_refuses_an_infinite_tolerance():
     """tol=inf called every start converged at once (status CONVERGED, no iteration)."""
+    from gearrep.solve import newton
+
     with pytest.raises(ValueError, match=r"tol must be a finite number > 0, got inf"):
+        newton(lambda x: x - 1.0, np.zeros((2, 1)), lambda x: np.ones((len(x), 1, 1)), tol=np.inf)
+    with pytest.raises(ValueError, match=r"tol must be a number in \(0, 0.001\].*got inf"):
         solve_contact(_pair(), np.zeros(2), tol=np.inf)
 
 
@@ -432,3 +436,32 @@ def test_involute_gear_data_has_lower_bounds_too(kw, msg):
     accepted (a meshing cycle then reported a contact ratio for teeth that cannot exist)."""
     with pytest.raises(ValueError, match=msg):
         InvoluteGearData(20, 1.0, ALPHA, 10.0, **kw)
+
+
+@pytest.mark.parametrize("call", [solve_contact, trace_path])
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        (
+            {"tol": 0.1},
+            r"tol must be a number in \(0, 0.001\] \(a larger one calls an untouched start converged\), got 0.1",
+        ),
+        ({"tol": 1e300}, r"tol must be a number in \(0, 0.001\]"),
+        ({"tol": True}, r"tol must be a number in \(0, 0.001\]"),
+        ({"phi10": np.nan}, r"phi10 \(TE reference angle\) must be one finite number \[rad\], got nan"),
+        ({"phi20": np.inf}, r"phi20 \(TE reference angle\) must be one finite number \[rad\], got inf"),
+        ({"phi10": np.zeros(3)}, r"phi10 \(TE reference angle\) must be one finite number"),
+        ({"formulation": "Reduced"}, r"formulation must be 'reduced' or 'conventional', got 'Reduced'"),
+    ],
+)
+def test_contact_solves_refuse_knobs_that_make_their_answer_meaningless(call, kw, msg):
+    """tol=1.0 reported the middle of the flank as a converged contact after 0 iterations (TE -99
+    arcsec where the contact gives 0.36); a NaN or infinite TE reference made every TE NaN or -inf
+    with status converged."""
+    with pytest.raises(ValueError, match=msg):
+        call(_pair(), np.array([0.0, 0.02]), **kw)
+
+
+def test_the_largest_tolerance_still_solves():
+    c = solve_contact(_pair(), np.array([0.0, 0.02]), tol=1e-3)
+    assert c.converged.all() and (c.iterations >= 1).all()

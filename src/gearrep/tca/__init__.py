@@ -100,6 +100,7 @@ cold-run goal of 45 s for the whole workflow: not adopted; numpy is the only pat
 from ._bevel import BevelMisalignment, BevelPair
 from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
 from ._formulations import (
+    MAX_CONTACT_TOL,
     check_formulation,
     conventional_system,
     default_start,
@@ -137,6 +138,7 @@ __all__ = [
     "conventional_system",
     "newton_rows",
     "check_formulation",
+    "MAX_CONTACT_TOL",
     "default_start",
     "solve_contact",
     "reduced_unknowns",

@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from ..frames import rotate_z
-from ..solve import SolveResult, Status, _rows_all_finite, newton
+from ..solve import SolveResult, Status, _rows_all_finite, check_integer, newton
 from ..surface import cross3, dot3
 from ._kernels import (
     _SCALAR_ERRORS,
@@ -26,6 +26,7 @@ __all__ = [
     "conventional_system",
     "newton_rows",
     "check_formulation",
+    "MAX_CONTACT_TOL",
     "default_start",
     "solve_contact",
     "reduced_unknowns",
@@ -188,6 +189,33 @@ def check_formulation(formulation) -> str:
     if formulation not in ("reduced", "conventional"):
         raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
     return formulation
+
+
+#: the largest solver tolerance a contact solve takes: its residual holds unit-normal components
+#: (and distances in the design's length unit), so a tolerance near 1 calls an untouched start
+#: converged (the bench's time-against-error sweep goes up to this value)
+MAX_CONTACT_TOL = 1e-3
+
+
+def _check_knobs(tol, maxiter, phi10, phi20) -> None:
+    """ValueError naming the knob: tol in (0, MAX_CONTACT_TOL], maxiter an integer >= 1, the TE reference
+    angles phi10, phi20 one finite number each [rad]."""
+    if (
+        isinstance(tol, bool)
+        or not isinstance(tol, (int, float, np.integer, np.floating))
+        or not 0 < tol <= MAX_CONTACT_TOL
+    ):
+        raise ValueError(
+            f"tol must be a number in (0, {MAX_CONTACT_TOL:g}] (a larger one calls an untouched start converged), got {tol!r}"
+        )
+    check_integer("maxiter", maxiter)
+    for name, value in (("phi10", phi10), ("phi20", phi20)):
+        if (
+            isinstance(value, bool)
+            or not isinstance(value, (int, float, np.integer, np.floating))
+            or not math.isfinite(value)
+        ):
+            raise ValueError(f"{name} (TE reference angle) must be one finite number [rad], got {value!r}")
 
 
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
@@ -509,6 +537,7 @@ def solve_contact(
     than ``_BLOCK_ROWS`` (20 000) rows is solved in equal blocks (faster: arrays that fit a core's
     cache), with the same results.
     """
+    _check_knobs(tol, maxiter, phi10, phi20)
     phi1, start, fixed = _check_solve_inputs(pair, phi1, start, formulation, v1, jacobian, drop)
     n = len(phi1)
     if n > _BLOCK_ROWS:  # equal blocks of at most _BLOCK_ROWS rows, each solved as a batch
@@ -747,6 +776,8 @@ def trace_path(
     position. A failed position does not seed the next one. Returns ContactPoints in the order
     of ``phi1``.
     """
+    check_formulation(formulation)
+    _check_knobs(tol, maxiter, phi10, phi20)
     phi1 = _angles(phi1)
     width = 2 if formulation == "reduced" else 5
     x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
