@@ -58,9 +58,10 @@ __all__ = [
 
 def contact_ratio(phi1_begin, phi1_end, n1):
     """Contact ratio from the engagement limits of one tooth pair, seed 000 eq (5.13) corrected:
-    m_c = (phi_1E - phi_1B) / (2 pi / N1) (angles in rad). Vectorised."""
-    if not (np.isfinite(n1) and n1 > 0):
-        raise ValueError(f"n1 must be > 0, got {n1!r}")
+    m_c = (phi_1E - phi_1B) / (2 pi / N1) (angles in rad; negative when phi1 decreases through the
+    mesh, e.g. for the opposite sense of rotation). Vectorised."""
+    if isinstance(n1, (bool, str)) or not (np.isfinite(n1) and n1 > 0):
+        raise ValueError(f"n1 must be a number > 0 (teeth of member 1), got {n1!r}")
     return (np.asarray(phi1_end, float) - np.asarray(phi1_begin, float)) * n1 / (2.0 * np.pi)
 
 
@@ -70,16 +71,31 @@ def contact_ratio_closed_form(r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitc
 
     For the standard centre distance alpha_w = alpha and p_b = pi m cos(alpha). Vectorised.
     """
-    ra1, rb1, ra2, rb2, a, pb = (np.asarray(x, float) for x in (r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitch))
-    for name, v in (("r_b1", rb1), ("r_b2", rb2), ("base_pitch", pb)):
-        if np.any(~(v > 0)):
-            raise ValueError(f"{name} must be > 0")
+    names = ("r_a1", "r_b1", "r_a2", "r_b2", "centre_distance", "base_pitch")
+    values = (r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitch)
+    arrays = {}
+    for name, v in zip(names, values):
+        try:
+            arrays[name] = x = np.asarray(v, float)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be a number or an array of numbers [mm], got {v!r}") from None
+        if not np.all(np.isfinite(x) & (x > 0)):
+            raise ValueError(f"{name} must be finite and > 0 [mm], got {v!r}")
+    ra1, rb1, ra2, rb2, a, pb = arrays.values()
     if np.any(ra1 < rb1) or np.any(ra2 < rb2):
-        raise ValueError("tip radii r_a1, r_a2 must be >= the base radii")
+        raise ValueError(
+            f"tip radii must be >= the base radii, got r_a1 = {r_a1!r}, r_b1 = {r_b1!r}, r_a2 = {r_a2!r}, r_b2 = {r_b2!r}"
+        )
     if np.any(a < rb1 + rb2):
-        raise ValueError("centre_distance must be >= r_b1 + r_b2")
+        raise ValueError(f"centre_distance must be >= r_b1 + r_b2 = {rb1 + rb2!r}, got {centre_distance!r}")
     sin_aw = np.sqrt(1.0 - ((rb1 + rb2) / a) ** 2)
-    return (np.sqrt(ra1**2 - rb1**2) + np.sqrt(ra2**2 - rb2**2) - a * sin_aw) / pb
+    ratio = (np.sqrt(ra1**2 - rb1**2) + np.sqrt(ra2**2 - rb2**2) - a * sin_aw) / pb
+    if not np.all(ratio > 0):
+        raise ValueError(
+            f"no path of contact: at centre_distance = {centre_distance!r} the tip circles do not reach across "
+            f"the line of action (contact ratio {np.round(ratio, 6).tolist()!r}); allowed: a centre distance where the teeth overlap"
+        )
+    return ratio
 
 
 # ----------------------------------------------------------------------------------------------

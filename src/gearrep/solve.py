@@ -32,6 +32,7 @@ __all__ = [
     "newton",
     "check_integer",
     "check_positive",
+    "check_finite",
 ]
 
 
@@ -520,14 +521,37 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
     )
 
 
+def _real(value) -> float:
+    """``value`` as a float if it is a real number (not a string, bool or None), else NaN."""
+    if isinstance(value, (str, bytes, bool)) or value is None:
+        return math.nan
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def check_finite(name: str, value, *, positive: bool = False, nonneg: bool = False) -> float:
+    """``value`` as a float when it is a finite real number (and > 0 with ``positive``, >= 0 with
+    ``nonneg``); ValueError naming ``name`` and the value otherwise. A string, a bool or None is
+    not a number here (a numeric string would be stored as a string and fail far away)."""
+    x = _real(value)
+    if not math.isfinite(x):
+        number = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
+        what = "finite" if number else "a finite number"
+        raise ValueError(f"{name} must be {what}, got {value!r}")
+    if positive and not x > 0:
+        raise ValueError(f"{name} must be > 0, got {value!r}")
+    if nonneg and not x >= 0:
+        raise ValueError(f"{name} must be >= 0, got {value!r}")
+    return x
+
+
 def check_positive(name: str, value) -> float:
     """``value`` as a float when it is a finite number > 0; ValueError naming ``name`` otherwise
     (``tol=inf`` would call every start converged)."""
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        x = math.nan
-    if isinstance(value, bool) or not (math.isfinite(x) and x > 0):
+    x = _real(value)
+    if not (math.isfinite(x) and x > 0):
         raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
     return x
 

@@ -465,3 +465,42 @@ def test_contact_solves_refuse_knobs_that_make_their_answer_meaningless(call, kw
 def test_the_largest_tolerance_still_solves():
     c = solve_contact(_pair(), np.array([0.0, 0.02]), tol=1e-3)
     assert c.converged.all() and (c.iterations >= 1).all()
+
+
+@pytest.mark.parametrize(
+    "make, msg",
+    [
+        (lambda: InvoluteGearData(20, 1.0, ALPHA, "10"), r"face_width must be a finite number, got '10'"),
+        (lambda: InvoluteGearData(20, True, ALPHA, 10.0), r"module must be a finite number, got True"),
+        (lambda: ParabolicCrowning("0.003"), r"c1 must be a finite number, got '0.003'"),
+        (lambda: __import__("gearrep.tca", fromlist=["Misalignment"]).Misalignment(d_E="0.1"), r"d_E must be a finite"),
+        (
+            lambda: __import__("gearrep.tca", fromlist=["BevelMisalignment"]).BevelMisalignment(d_A="0.1"),
+            r"d_A must be a finite number, got '0.1'",
+        ),
+    ],
+)
+def test_numbers_given_as_strings_or_bools_are_refused_where_they_are_given(make, msg):
+    """A numeric string passed the checks (float('10') works) and was stored as a string, to fail
+    far away ("unsupported operand type(s) for +: 'float' and 'str'" in a later solve)."""
+    with pytest.raises(ValueError, match=msg):
+        make()
+
+
+@pytest.mark.parametrize(
+    "a, pb, msg",
+    [
+        (40.0, None, r"no path of contact: at centre_distance = 40.0 the tip circles do not reach across"),
+        (np.nan, None, r"centre_distance must be finite and > 0 \[mm\], got nan"),
+        (30.0, np.inf, r"base_pitch must be finite and > 0 \[mm\], got inf"),
+    ],
+)
+def test_closed_form_contact_ratio_has_no_negative_values(a, pb, msg):
+    """Gears too far apart gave a contact ratio of -4.5, NaN inputs NaN and an infinite base pitch 0."""
+    from gearrep.meshing import contact_ratio_closed_form
+
+    g1, g2 = _gears()
+    pb = g1.base_pitch if pb is None else pb
+    assert contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, 30.0, g1.base_pitch) > 1.0
+    with pytest.raises(ValueError, match=msg):
+        contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, a, pb)

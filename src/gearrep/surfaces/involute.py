@@ -76,6 +76,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..solve import check_finite as _check_finite
 from ..surface import Surface, SurfacePoint
 
 __all__ = [
@@ -92,17 +93,6 @@ __all__ = [
     "standard_centre_distance",
     "undercut_limit",
 ]
-
-
-def _check_finite(name: str, value, *, positive=False, nonneg=False):
-    v = float(value)
-    if not np.isfinite(v):
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    if positive and not v > 0:
-        raise ValueError(f"{name} must be > 0, got {value!r}")
-    if nonneg and not v >= 0:
-        raise ValueError(f"{name} must be >= 0, got {value!r}")
-    return v
 
 
 # ----------------------------------------------------------------------------------------------

@@ -53,6 +53,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..frames import rot_y, rot_z
+from ..solve import check_finite
 from ..surface import AxialForm
 from ._pair import GearPair
 
@@ -76,9 +77,7 @@ class BevelMisalignment:
 
     def __post_init__(self):
         for n in ("d_A", "d_E", "d_G", "d_gamma"):
-            v = getattr(self, n)
-            if not np.isfinite(float(v)):
-                raise ValueError(f"{n} must be finite, got {v!r}")
+            check_finite(n, getattr(self, n))
         if abs(self.d_gamma) >= 0.5:
             raise ValueError(f"d_gamma must be a small angle, |d_gamma| < 0.5 rad, got {self.d_gamma!r}")
 

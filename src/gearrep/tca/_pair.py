@@ -10,7 +10,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..frames import matrix_applier, rot_x, rot_y, rot_z
-from ..solve import Status, status_names
+from ..solve import Status, check_finite, status_names
 from ..units import ARCSEC
 
 __all__ = ["Misalignment", "GearPair", "transmission_error", "ContactPoints"]
@@ -51,9 +51,7 @@ class Misalignment:
 
     def __post_init__(self):
         for n in ("d_gamma_in", "d_gamma_out", "d_E", "d_H", "d_Z"):
-            v = getattr(self, n)
-            if not np.isfinite(float(v)):
-                raise ValueError(f"{n} must be finite, got {v!r}")
+            check_finite(n, getattr(self, n))
         for n in ("d_gamma_in", "d_gamma_out"):
             if abs(getattr(self, n)) >= 0.5:
                 raise ValueError(f"{n} must be a small angle, |{n}| < 0.5 rad, got {getattr(self, n)!r}")
