@@ -90,7 +90,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import frames
-from ..solve import SolveResult, Status, newton
+from ..solve import SolveResult, Status, check_finite, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
@@ -110,17 +110,6 @@ __all__ = [
     "starts",
     "solve_cycle",
 ]
-
-
-def _finite(name, value, *, positive=False, nonneg=False):
-    v = float(value)
-    if not np.isfinite(v):
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    if positive and not v > 0:
-        raise ValueError(f"{name} must be > 0, got {value!r}")
-    if nonneg and not v >= 0:
-        raise ValueError(f"{name} must be >= 0, got {value!r}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -143,14 +132,14 @@ class CATTGearData:
     def __post_init__(self):
         if int(self.n_teeth) != self.n_teeth or not 5 <= self.n_teeth <= 10000:
             raise ValueError(f"n_teeth must be an integer in [5, 10000], got {self.n_teeth!r}")
-        _finite("module", self.module, positive=True)
-        _finite("face_width", self.face_width, positive=True)
-        a = _finite("pressure_angle", self.pressure_angle)
+        check_finite("module", self.module, positive=True)
+        check_finite("face_width", self.face_width, positive=True)
+        a = check_finite("pressure_angle", self.pressure_angle)
         if not 0.05 < a < 0.8:
             raise ValueError(f"pressure_angle must be in (0.05, 0.8) rad, got {a!r}")
-        _finite("addendum", self.addendum, nonneg=True)
-        _finite("clearance", self.clearance, nonneg=True)
-        rt = _finite("R_T", self.R_T, positive=True)
+        check_finite("addendum", self.addendum, nonneg=True)
+        check_finite("clearance", self.clearance, nonneg=True)
+        rt = check_finite("R_T", self.R_T, positive=True)
         if not rt > self.face_width / 2 + np.pi * self.module:
             raise ValueError(
                 f"R_T must exceed face_width/2 + pi*module = {self.face_width / 2 + np.pi * self.module:g}, got {rt!r}"
