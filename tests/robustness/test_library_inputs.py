@@ -504,3 +504,49 @@ def test_closed_form_contact_ratio_has_no_negative_values(a, pb, msg):
     assert contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, 30.0, g1.base_pitch) > 1.0
     with pytest.raises(ValueError, match=msg):
         contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, a, pb)
+
+
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"phase2": np.nan}, r"phase2 must be finite, got nan"),
+        ({"phase2": np.inf}, r"phase2 must be finite, got inf"),
+        ({"shaft_angle": "0"}, r"shaft_angle must be a finite number, got '0'"),
+        ({"n1": np.nan}, r"n1 must be a positive integer, got nan"),
+        ({"n1": None}, r"n1 must be a positive integer, got None"),
+        ({"n1": True}, r"n1 must be a positive integer, got True"),
+    ],
+)
+def test_gear_pair_checks_every_argument(kw, msg):
+    """phase2=nan built a pair whose first solve failed on "M must be one finite 3x3 matrix" (an
+    internal matrix, not the argument); n1=nan or None gave raw conversion errors."""
+    g1, g2 = _gears()
+    f1, f2 = mating_flanks(g1, g2, crowning1=CROWN)
+    args = {"n1": 20, "n2": 40} | kw
+    extra = {k: v for k, v in kw.items() if k not in ("n1", "n2")}
+    with pytest.raises(ValueError, match=msg):
+        GearPair(f1, f2, args["n1"], args["n2"], standard_centre_distance(g1, g2), **extra)
+
+
+def test_bevel_flanks_need_the_bevel_pair_and_line_of_action_starts_need_involutes():
+    """Both failed with AttributeErrors about internals ('axial_view', 'alpha_t')."""
+    from gearrep.surfaces.bevel import BevelGearData, mating_bevel_flanks
+    from gearrep.tca import BevelPair
+
+    f1, f2 = mating_bevel_flanks(BevelGearData(39, 32, 2.5, ALPHA, 14.0), BevelGearData(32, 39, 2.5, ALPHA, 14.0))
+    with pytest.raises(ValueError, match=r"bevel \(spherical\) flanks mesh on intersecting axes.*BevelPair"):
+        GearPair(f1, f2, 39, 32, 50.0)
+    bevel = BevelPair(f1, f2, 39, 32)
+    for call, phi in ((line_of_action_start, 0.0), (line_of_action_starts, [0.0])):
+        with pytest.raises(ValueError, match=r"line-of-action starts need member 1 to be a cylindrical involute"):
+            call(bevel, phi)
+    with pytest.raises(ValueError, match=r"phi1 must be finite"):
+        line_of_action_starts(_pair(), [np.nan])
+
+
+@pytest.mark.parametrize("margin", [0.7, np.nan, -0.1])
+def test_flank_boxes_refuse_a_margin_that_inverts_the_box(margin):
+    from gearrep.tca import flank_boxes
+
+    with pytest.raises(ValueError, match=r"margin must be in \[0, 0.5\) \(fraction of the flank height\)"):
+        flank_boxes(_pair(), margin)

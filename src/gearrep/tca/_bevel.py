@@ -88,6 +88,8 @@ class BevelPair(GearPair):
     :mod:`gearrep.tca` accepts it); ``centre_distance`` is 0. The reduced formulation needs
     ``flank2.spherical`` (u = polar angle, v = cone distance)."""
 
+    _INTERSECTING_AXES = True
+
     def __init__(
         self, flank1, flank2, n1: int, n2: int, *, shaft_angle: float = np.pi / 2, misalignment=None, phase2=None
     ):

@@ -80,6 +80,9 @@ class GearPair:
     phase2 : fixed turn of member 2 in its frame; default pi - side pi / n2 (see module docstring)
     """
 
+    #: whether the axes intersect (the bevel pair); spherical flanks need it
+    _INTERSECTING_AXES = False
+
     def __init__(
         self,
         flank1,
@@ -92,8 +95,15 @@ class GearPair:
         shaft_angle: float = 0.0,
         phase2=None,
     ):
+        if not self._INTERSECTING_AXES and any(getattr(f, "spherical", False) for f in (flank1, flank2)):
+            raise ValueError(
+                "bevel (spherical) flanks mesh on intersecting axes, with the cone apex at the origin: pair them "
+                "with gearrep.tca.BevelPair, not GearPair"
+            )
         for name, n in (("n1", n1), ("n2", n2)):
-            if int(n) != n or n < 1:
+            if not isinstance(n, (int, float, np.integer, np.floating)) or isinstance(n, bool):
+                raise ValueError(f"{name} must be a positive integer, got {n!r}")
+            if not math.isfinite(n) or int(n) != n or n < 1:
                 raise ValueError(f"{name} must be a positive integer, got {n!r}")
         for name, n, flank in (("n1", n1, flank1), ("n2", n2, flank2)):
             own = getattr(getattr(flank, "gear", None), "n_teeth", None)  # the flank's own tooth number
@@ -102,11 +112,11 @@ class GearPair:
                     f"{name} = {n!r} disagrees with the tooth number of flank{name[1]} "
                     f"(flank{name[1]}.gear.n_teeth = {own!r}); allowed: {name} = {own!r}"
                 )
-        a = float(centre_distance)
-        if not (np.isfinite(a) and a > 0):
-            raise ValueError(f"centre_distance must be > 0, got {centre_distance!r}")
-        if not np.isfinite(float(shaft_angle)) or abs(shaft_angle) > np.pi:
+        a = check_finite("centre_distance", centre_distance, positive=True)
+        if abs(check_finite("shaft_angle", shaft_angle)) > np.pi:
             raise ValueError(f"shaft_angle must be in [-pi, pi] rad, got {shaft_angle!r}")
+        if phase2 is not None:
+            check_finite("phase2", phase2)
         mis = Misalignment() if misalignment is None else misalignment
         if not isinstance(mis, Misalignment):
             raise ValueError("misalignment must be a Misalignment or None")

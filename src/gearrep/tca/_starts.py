@@ -83,9 +83,15 @@ def _starts5(x0, name: str = "x0") -> np.ndarray:
     return a
 
 
+def _check_margin(margin) -> None:
+    if isinstance(margin, (str, bool)) or not (np.isfinite(margin) and 0.0 <= margin < 0.5):
+        raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
+
+
 def flank_boxes(pair: GearPair, margin: float = 0.0):
     """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
     moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
+    _check_margin(margin)
     lo = np.concatenate([pair.lower1, pair.lower2, [-np.inf]]).astype(float)
     hi = np.concatenate([pair.upper1, pair.upper2, [np.inf]]).astype(float)
     for j in (0, 2):
@@ -121,8 +127,7 @@ def solve_conventional(
     x0 = _starts5(x0)
     check_positive("tol", tol)
     check_integer("maxiter", maxiter)
-    if not (np.isfinite(margin) and 0.0 <= margin < 0.5):
-        raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
+    _check_margin(margin)
     if equations not in ("five", "six", "drop_nz"):
         raise ValueError(f"equations must be 'five', 'six' or 'drop_nz', got {equations!r}")
     if equations == "five" and drop not in (0, 1, 2):
@@ -281,6 +286,18 @@ def solve_variant(
     return r.x, status, np.asarray(r.iterations + extra)
 
 
+def _involute_gear(pair: GearPair):
+    """Member 1's gear data for a line-of-action start (a cylindrical involute gear: base radius and
+    transverse pressure angle); ValueError for any other flank family."""
+    g1 = getattr(pair.flank1, "gear", None)
+    if not (getattr(pair.flank1, "cylindrical", False) and hasattr(g1, "alpha_t") and hasattr(g1, "r_b")):
+        raise ValueError(
+            "line-of-action starts need member 1 to be a cylindrical involute flank (base radius, transverse "
+            f"pressure angle), got {type(pair.flank1).__name__}; use default_start or draw_starts for other families"
+        )
+    return g1
+
+
 def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     """(u1, v1) start at a fixed phi1: the contact of the aligned pair on mid-face to first order.
 
@@ -291,7 +308,7 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     if a.ndim != 0 or not np.isfinite(a):
         raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
     phi1 = float(a)
-    g1 = pair.flank1.gear
+    g1 = _involute_gear(pair)
     t_p = np.tan(g1.alpha_t)
     best = None
     for s in (1.0, -1.0):
@@ -312,7 +329,9 @@ def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
     """First-order (u1, v1 = 0) starts along the line of action for the angles ``phi1`` (array);
     the direction in which the contact climbs member 1's flank is found by one trial solve."""
     phi1 = _angles(phi1)
-    g1 = pair.flank1.gear
+    if not np.all(np.isfinite(phi1)):
+        raise ValueError("phi1 must be finite")
+    g1 = _involute_gear(pair)
     t_p = np.tan(g1.alpha_t)
     s = 1.0
     h = 0.25 * 2 * np.pi / pair.n1
