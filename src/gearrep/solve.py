@@ -576,7 +576,10 @@ def _check_bounds(lower, upper, k):
         )
         for b, sign in ((lower, -1), (upper, 1))
     )
-    if any(a > b for a, b in zip(lo.tolist(), hi.tolist())):  # k is small: on floats
+    lo_f, hi_f = lo.tolist(), hi.tolist()  # k is small: on floats
+    if any(a != a for a in lo_f) or any(b != b for b in hi_f):
+        raise ValueError(f"lower and upper must not be NaN (use -inf or inf for no bound), got {lower!r}, {upper!r}")
+    if any(a > b for a, b in zip(lo_f, hi_f)):
         raise ValueError("lower bound exceeds upper bound")
     return lo, hi
 
@@ -661,6 +664,8 @@ def newton(
     inside the bounds.
     """
     check_positive("tol", tol)
+    if isinstance(rcond, bool) or not (0.0 <= _real(rcond) < 1.0):
+        raise ValueError(f"rcond must be in [0, 1) (relative singular-value threshold), got {rcond!r}")
     maxiter = check_integer("maxiter", maxiter)
     max_halvings = check_integer("max_halvings", max_halvings, 0)
     x = np.atleast_2d(np.array(x0, dtype=float))

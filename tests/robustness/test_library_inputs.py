@@ -550,3 +550,20 @@ def test_flank_boxes_refuse_a_margin_that_inverts_the_box(margin):
 
     with pytest.raises(ValueError, match=r"margin must be in \[0, 0.5\) \(fraction of the flank height\)"):
         flank_boxes(_pair(), margin)
+
+
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"lower": [np.nan]}, r"lower and upper must not be NaN \(use -inf or inf for no bound\)"),
+        ({"upper": np.nan}, r"lower and upper must not be NaN"),
+        ({"rcond": np.nan}, r"rcond must be in \[0, 1\) \(relative singular-value threshold\), got nan"),
+        ({"rcond": 1.5}, r"rcond must be in \[0, 1\)"),
+    ],
+)
+def test_newton_refuses_nan_bounds_and_thresholds(kw, msg):
+    """A NaN bound reported the root of x - 1 as off_flank, a NaN rcond as singular."""
+    from gearrep.solve import newton
+
+    with pytest.raises(ValueError, match=msg):
+        newton(lambda x: x - 1.0, np.zeros((1, 1)), lambda x: np.ones((len(x), 1, 1)), **kw)
