@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .solve import SolveResult, Status, newton
+from .solve import SolveResult, Status, check_positive, newton
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
 from .tca._kernels import _reduced_FJ
 from .units import ARCSEC
@@ -60,8 +60,7 @@ def contact_ratio(phi1_begin, phi1_end, n1):
     """Contact ratio from the engagement limits of one tooth pair, seed 000 eq (5.13) corrected:
     m_c = (phi_1E - phi_1B) / (2 pi / N1) (angles in rad; negative when phi1 decreases through the
     mesh, e.g. for the opposite sense of rotation). Vectorised."""
-    if isinstance(n1, (bool, str)) or not (np.isfinite(n1) and n1 > 0):
-        raise ValueError(f"n1 must be a number > 0 (teeth of member 1), got {n1!r}")
+    check_positive("n1", n1)
     return (np.asarray(phi1_end, float) - np.asarray(phi1_begin, float)) * n1 / (2.0 * np.pi)
 
 

@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from ..frames import rotate_z
-from ..solve import SolveResult, Status, _rows_all_finite, check_integer, newton
+from ..solve import SolveResult, Status, _real, _rows_all_finite, check_integer, newton
 from ..surface import cross3, dot3
 from ._kernels import (
     _SCALAR_ERRORS,
@@ -199,22 +199,14 @@ MAX_CONTACT_TOL = 1e-3
 
 def _check_knobs(tol, maxiter, phi10, phi20) -> None:
     """ValueError naming the knob: tol in (0, MAX_CONTACT_TOL], maxiter an integer >= 1, the TE reference
-    angles phi10, phi20 one finite number each [rad]."""
-    if (
-        isinstance(tol, bool)
-        or not isinstance(tol, (int, float, np.integer, np.floating))
-        or not 0 < tol <= MAX_CONTACT_TOL
-    ):
+    angles phi10, phi20 one finite number each [rad] (a string or a bool is no number: ``_real``)."""
+    if not 0 < _real(tol) <= MAX_CONTACT_TOL:
         raise ValueError(
             f"tol must be a number in (0, {MAX_CONTACT_TOL:g}] (a larger one calls an untouched start converged), got {tol!r}"
         )
     check_integer("maxiter", maxiter)
     for name, value in (("phi10", phi10), ("phi20", phi20)):
-        if (
-            isinstance(value, bool)
-            or not isinstance(value, (int, float, np.integer, np.floating))
-            or not math.isfinite(value)
-        ):
+        if np.ndim(value) != 0 or not math.isfinite(_real(value)):
             raise ValueError(f"{name} (TE reference angle) must be one finite number [rad], got {value!r}")
 
 

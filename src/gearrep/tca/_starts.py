@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solve import SolveResult, Status, check_integer, check_positive, newton
+from ..solve import SolveResult, Status, _real, check_integer, check_positive, newton
 from ..surface import cross
 from ._formulations import (
     _angles,
@@ -84,7 +84,7 @@ def _starts5(x0, name: str = "x0") -> np.ndarray:
 
 
 def _check_margin(margin) -> None:
-    if isinstance(margin, (str, bool)) or not (np.isfinite(margin) and 0.0 <= margin < 0.5):
+    if not 0.0 <= _real(margin) < 0.5:
         raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
 
 
