@@ -285,7 +285,8 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
     * ``"profile_end"``: the profile tangent turns parallel to the pitch line (x_b' = 0, pressure
       angle 90 deg): the profile reaches its deepest point (the end of a convex arc) and turns back.
 
-    All three are bracketed on ``n`` samples and refined by Brent's method (xtol 1e-15).
+    All three are bracketed on ``n`` samples (a sample on the generation's pole, where the
+    rolling angle is undefined, is skipped) and refined by Brent's method (xtol 1e-15).
     Returns (u, x_b(u), kind); (NaN, NaN, "none") if neither occurs before ``u_end``."""
     from scipy.optimize import brentq
 
@@ -312,11 +313,16 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
     us = np.linspace(0.0, float(u_end), int(n) + 1)
     found = []
     for kind, fn in (("singular", singular), ("zero_pressure_angle", slope), ("profile_end", depth_rate)):
-        v = fn(us)
-        i = np.nonzero(np.sign(v[1:]) != np.sign(v[0]))[0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            v = fn(us)
+        # a sample that lands on the generation's pole (rack normal along the pitch line: the rolling
+        # angle divides by zero there) has no sign: the bracket spans the finite samples around it
+        ok = np.flatnonzero(np.isfinite(v))
+        sv = np.sign(v[ok])
+        i = np.nonzero(sv[1:] != sv[0])[0]
         if len(i):
-            k = i[0]
-            found.append((brentq(lambda x: float(fn(x)[0]), us[k], us[k + 1], xtol=1e-15), kind))
+            a, b = us[ok[i[0]]], us[ok[i[0] + 1]]
+            found.append((brentq(lambda x: float(fn(x)[0]), a, b, xtol=1e-15), kind))
     if not found:
         return np.nan, np.nan, "none"
     u, kind = min(found, key=lambda f: abs(f[0]))

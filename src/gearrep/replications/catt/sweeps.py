@@ -39,12 +39,17 @@ def _design(cycle: CycleIndex, fig, v, fixed) -> str:
     return cycle.found[key]
 
 
+#: a sweep value names the design whose parameter was printed as that value: they agree to rounding
+_SAME_VALUE_RTOL = 1e-9
+
+
 def _find_design(cycle: CycleIndex, fig, v, fixed) -> str:
     group, col = SWEEPS[fig][:2]
     d = cycle.designs
-    sel = d[(d["group"] == group) & (d[col] == v)]
+    # a design's value is the printed one as read (within rounding: 1e-9 relative), not its bits
+    sel = d[(d["group"] == group) & np.isclose(d[col], v, rtol=_SAME_VALUE_RTOL, atol=0.0)]
     for k, x in fixed.items():
-        sel = sel[sel[k] == x]
+        sel = sel[np.isclose(sel[k], x, rtol=_SAME_VALUE_RTOL, atol=0.0)]
     names = sorted(set(sel["design"]))
     if len(names) != 1:
         raise ValueError(f"{fig}: expected one design with {col}={v} {fixed}, found {names}")

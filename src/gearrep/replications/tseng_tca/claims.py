@@ -233,10 +233,15 @@ def _rc_localizes(e: Evidence):
 
 def _ab_110(e: Evidence):
     er = e.tables["ellipse_ratio"]
-    r110 = er[np.isclose(er["R_cp_mm"], 110.0)].set_index("alpha_n_deg")["a_over_b"]
-    if not {20.0, 25.0} <= set(r110.index):
-        raise KeyError("ellipse_ratio lacks the R_cp = 110 rows for 20 and 25 deg")
-    a20, a25 = float(r110[20.0]), float(r110[25.0])
+    r110 = er[np.isclose(er["R_cp_mm"], 110.0)]
+
+    def at(alpha_deg):  # the row of a printed pressure angle (its value as read, to rounding)
+        row = r110[np.isclose(r110["alpha_n_deg"], alpha_deg, rtol=1e-9, atol=0.0)]
+        if len(row) != 1:
+            raise KeyError(f"ellipse_ratio lacks the R_cp = 110 row for {alpha_deg:g} deg")
+        return float(row["a_over_b"].iloc[0])
+
+    a20, a25 = at(20.0), at(25.0)
     holds = (round(a20, 1) == 43.2 and round(a25, 1) == 42.3) or (
         abs(a20 - 43.2) <= 1 and abs(a25 - 42.3) <= 1 and a25 < a20
     )
