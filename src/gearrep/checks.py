@@ -8,6 +8,12 @@ gives the printed number:
   the printed number, i.e. it lies in ``[p, p + 10**-d)`` for ``p >= 0`` (mirrored for ``p < 0``);
 * ``sig=s``: ``|computed - printed| <= 0.5 * 10**(floor(log10|p|) - s + 1)``.
 
+A computed value whose magnitude is below :func:`resolution` of its unit (1e-12 in the library's
+internal unit: rad for angles, the design's own length unit for lengths) is written as 0: the
+workflow's solves stop at residuals of 1e-12, so such a value is zero to the computation's accuracy
+(a residual or a vector component that is zero in exact arithmetic), and its digits would differ
+from machine to machine. The smallest nonzero published magnitude is 1e-10, so no comparison moves.
+
 These tolerances are computed here from the printed string, never typed by hand. A replication
 may widen one only with ``extra_tol`` and a stated physical reason (``extra_basis``), e.g. the
 uncertainty a rounded table key (l_1 printed to 3 decimals) propagates into the value. A tiny
@@ -30,6 +36,7 @@ import numpy as np
 import pandas as pd
 
 from .published import printed_precision
+from .units import TO_INTERNAL
 
 __all__ = [
     "STATUSES",
@@ -38,6 +45,8 @@ __all__ = [
     "INPUT",
     "CHECK_COLUMNS",
     "TEXT_COLUMNS",
+    "RESOLUTION_INTERNAL",
+    "resolution",
     "printed_interval",
     "compare_value",
     "check_values",
@@ -82,6 +91,17 @@ TEXT_COLUMNS = {
 
 _FP_SLACK = 1e-12
 
+#: the absolute resolution of a computed value in the library's internal units (rad; lengths in
+#: the design's unit): the Newton residual tolerance of the workflow's solves
+RESOLUTION_INTERNAL = 1e-12
+
+
+def resolution(unit: str) -> float:
+    """Absolute resolution of a computed value given in ``unit`` (:data:`RESOLUTION_INTERNAL`
+    converted: 2.06e-7 arcsec, 5.73e-11 deg; 1e-12 for lengths, ratios and units it does not
+    know). A computed value of smaller magnitude is recorded as 0 (see the module docstring)."""
+    return RESOLUTION_INTERNAL / TO_INTERNAL.get(unit, 1.0)
+
 
 def printed_interval(printed: str, rounding: str = "round") -> tuple[float, float, str]:
     """Interval ``[lo, hi]`` of true values that print as ``printed``, and its basis.
@@ -115,9 +135,9 @@ def compare_value(
     lo, hi, basis = printed_interval(pub["printed"], pub["rounding"])
     if extra_tol < 0:
         raise ValueError(f"extra_tol must be >= 0, got {extra_tol}")
-    if extra_tol:
-        if not extra_basis:
-            raise ValueError("extra_tol needs a stated physical reason (extra_basis)")
+    if extra_tol and not extra_basis:
+        raise ValueError("extra_tol needs a stated physical reason (extra_basis)")
+    if extra_tol >= resolution(str(pub.get("unit", ""))):  # below it, a widening is rounding noise
         lo, hi = lo - extra_tol, hi + extra_tol
         basis = f"{basis}; plus {extra_tol:.3g} because {extra_basis}"
     value = float(pub["value"])
@@ -133,6 +153,8 @@ def compare_value(
         )
         return rec
     computed = float(computed)
+    if abs(computed) < resolution(str(rec["unit"])):
+        computed = 0.0  # zero to the computation's accuracy (no -0.0, no rounding noise)
     slack = _FP_SLACK * max(abs(value), abs(computed), 1e-300)
     if pub["rounding"] == "truncate":
         # the end away from zero is open: -4.998 truncated covers (-4.999, -4.998]

@@ -15,6 +15,7 @@ import fnmatch
 import hashlib
 import io
 import math
+import os
 import re
 import sys
 from dataclasses import dataclass
@@ -40,6 +41,11 @@ __all__ = [
     "validate_params",
     "validate_claims",
     "load",
+    "PERTURB_ENV",
+    "PERTURBED_UNITS",
+    "perturbed_value",
+    "perturbed_params",
+    "perturb_ulps_from_env",
     "parse_row",
     "param_table",
     "values_by",
@@ -310,16 +316,81 @@ def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
     return c
 
 
+#: environment variable of the portability check (``docs/validation.md``): a whole number k >= 1
+#: moves every design length and angle read by :func:`load` by 1 to k units in the last place
+#: (:func:`perturbed_params`); unset, empty or 0 reads the data as printed
+PERTURB_ENV = "GEARREP_PERTURB_ULPS"
+#: the units of the parameters it moves: lengths, angles and curvatures (not counts or ratios,
+#: whose printed values are exact)
+PERTURBED_UNITS = frozenset({"mm", "in", "deg", "rad", "arcmin", "per_mm", "per_in"})
+
+
+def perturbed_value(value: float, ulps: int) -> float:
+    """``value`` moved by 1 to ``ulps`` units in the last place, up or down, the count and direction
+    drawn from a hash of the value itself (the same in every process; equal values move alike).
+    Zero, NaN and infinities are returned as they are; ``ulps`` = 0 returns ``value``."""
+    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
+        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
+    value = float(value)
+    if ulps == 0 or value == 0.0 or not math.isfinite(value):
+        return value
+    h = int.from_bytes(hashlib.blake2b(repr(value).encode(), digest_size=4).digest(), "little")
+    step, toward = 1 + h % ulps, math.inf if (h >> 16) & 1 else -math.inf
+    for _ in range(step):
+        value = math.nextafter(value, toward)
+    return value
+
+
+def perturbed_params(params: pd.DataFrame, ulps: int) -> pd.DataFrame:
+    """``params`` with every value in :data:`PERTURBED_UNITS` moved by 1 to ``ulps`` units in the
+    last place, up or down.
+
+    A result that such a nudge of its inputs moves beyond its stated tolerance is ill-conditioned
+    or tested too tightly; the portability check runs the number-comparing tests on these inputs.
+    The count and direction come from a hash of the printed value, so they are the same in every
+    process, and equal values stay equal (a design's stated equalities, such as equal cutter radii
+    or a symmetric pair, are part of the design); zero stays zero (an exact statement, such as an
+    aligned assembly).
+    """
+    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
+        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
+    out = params.copy()
+    if ulps == 0:
+        return out
+    values = out["value"].to_numpy(dtype=float).copy()
+    for i, unit in enumerate(out["unit"].tolist()):
+        if unit in PERTURBED_UNITS:
+            values[i] = perturbed_value(values[i], ulps)
+    out["value"] = values
+    return out
+
+
+def perturb_ulps_from_env() -> int:
+    """The ulps of :data:`PERTURB_ENV` (0 when unset or empty); anything but a whole number is refused."""
+    text = os.environ.get(PERTURB_ENV, "").strip()
+    if not text:
+        return 0
+    if not text.isdigit():
+        raise ValueError(f"environment variable {PERTURB_ENV}={text!r}: must be a whole number >= 0 (0 or unset: off)")
+    return int(text)
+
+
 def load(directory, files=None) -> Published:
     """Read and validate every ``values_*``, ``params_*`` and ``claims_*`` CSV in ``directory``
     (only those whose names match one of the glob patterns ``files``, if given: a workflow job
-    reads exactly the files it declares as inputs)."""
+    reads exactly the files it declares as inputs).
+
+    With the environment variable :data:`PERTURB_ENV` set to k >= 1 the design parameters are
+    returned nudged by :func:`perturbed_params` (the portability check; never in a normal run)."""
     d = Path(directory)
     if not d.is_dir():
         raise PublishedDataError(f"published-data directory {d} does not exist")
     files = None if files is None else [Path(f).name for f in files]
     values = validate_values(_read(d, "values_*.csv", VALUE_COLUMNS, files))
     params = validate_params(_read(d, "params_*.csv", PARAM_COLUMNS, files))
+    ulps = perturb_ulps_from_env()
+    if ulps:
+        params = perturbed_params(params, ulps)
     claims = validate_claims(_read(d, "claims_*.csv", CLAIM_COLUMNS, files))
     both = pd.concat([values[["file", "id"]], claims[["file", "id"]]], ignore_index=True)
     _duplicates(both, "id", "ids shared by a value and a claim")
