@@ -15,7 +15,7 @@ PIP_TOOLS := pip-tools==7.6.2
 LOCK_PYTHON ?= python3.11
 PIP    := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-.PHONY: setup bytecode reproduce test test-all test-cluster lint format schema stress bench screenshot clean lock
+.PHONY: setup bytecode reproduce test test-all test-portability test-cluster lint format schema stress bench screenshot clean lock
 
 $(STAMP): $(LOCK) pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -63,6 +63,13 @@ format: $(STAMP)
 # config/schema.json from the settings declarations (a test keeps them equal).
 schema: $(STAMP)
 	$(BIN)/python workflow/lib/wfconfig.py --write-schema config/schema.json
+
+# The number-comparing tests (marker `numerics`: one code path against another, the scorecard
+# against its accepted reference) run twice more, as on another machine: on design inputs moved by
+# a few ulps (GEARREP_PERTURB_ULPS, see docs/validation.md) and with numpy's best SIMD group off.
+test-portability: bytecode
+	GEARREP_PERTURB_ULPS=4 $(BIN)/python -m pytest -m "numerics and not slow and not bench and not cluster"
+	NPY_DISABLE_CPU_FEATURES="$$($(BIN)/python .ci/simd_off.py)" $(BIN)/python -m pytest -m "numerics and not slow and not bench and not cluster"
 
 test-all: bytecode
 	$(BIN)/python -m pytest -m ''

@@ -20,6 +20,9 @@ from gearrep import checks as C
 from gearrep import settings as S
 from gearrep.replications import catt
 
+#: statuses and values of the studies: run again by the portability passes (tests/README.md)
+pytestmark = pytest.mark.numerics
+
 ROOT = Path(__file__).parents[2]
 EXPECTED = pd.read_csv(Path(__file__).with_name("expected_catt.csv"))
 

@@ -16,6 +16,9 @@ from conftest import study_settings
 from gearrep import settings as gs
 from gearrep.replications import _face, nasa
 
+#: statuses and values of the studies: run again by the portability passes (tests/README.md)
+pytestmark = pytest.mark.numerics
+
 EXPECTED = Path(__file__).with_name("expected_nasa.csv")
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from _numerics import reads_printed_design
 from conftest import study_settings
 
 from gearrep import checks as ck
@@ -22,6 +23,9 @@ from gearrep.replications import thesis as T
 from gearrep.replications.thesis import facts as TC
 from gearrep.replications.thesis.te import TE_READINGS
 from gearrep.tca import draw_starts
+
+#: statuses and values of the studies: run again by the portability passes (tests/README.md)
+pytestmark = pytest.mark.numerics
 
 
 @pytest.fixture(scope="module")
@@ -118,6 +122,7 @@ def test_jobs_write_their_declared_tables(tables):
     assert T.JOBS["convergence"].tables["convergence"] == "thesis/convergence.csv"
 
 
+@reads_printed_design
 def test_design_from_published_equals_the_printed_numbers(design):
     """The design read from data/published/params_003_*.csv is the one the replication used to
     hard-code (numbers as printed; the readings the thesis leaves open are design.READINGS)."""

@@ -1,5 +1,7 @@
 """Check records: tolerances from printed precision, truncation, statuses, scorecard."""
 
+import math
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -149,3 +151,21 @@ def test_printed_input_records_and_scorecard_counts_them_apart():
     # results exclude the printed inputs; the total keeps every published row
     assert s["results"] == 2 and s["total"] == 4
     assert list(checks.summary(card).columns) == ["seed", *checks.STATUSES, "results", "total"]
+
+
+def test_values_below_the_resolution_are_recorded_as_zero():
+    """A computed value below 1e-12 in the library's internal unit (a residual or vector component
+    that is zero in exact arithmetic) is written as 0 (no -0.0, no rounding noise that differs by
+    machine); a widening below it is dropped; larger values are kept as computed."""
+    from gearrep.checks import compare_value, resolution
+    from gearrep.units import ARCSEC
+
+    assert resolution("mm") == 1e-12 and resolution("arcsec") == pytest.approx(1e-12 / ARCSEC, rel=1e-15)
+    row = pd.Series({"id": "x", "seed": "000", "source": "T", "row": "r", "quantity": "e_z", "unit": "1"})
+    row = pd.concat([row, pd.Series({"printed": "0.000", "value": 0.0, "rounding": "round"})])
+    for noise in (-1.003e-15, 8.7e-16, -0.0):
+        rec = compare_value(row, noise, extra_tol=6e-15, extra_basis="noise")
+        assert rec["computed"] == 0.0 and math.copysign(1.0, rec["computed"]) == 1.0
+        assert rec["status"] == "reproduced" and "plus" not in rec["tolerance_basis"]
+    assert compare_value(row, 2e-12)["computed"] == 2e-12
+    assert compare_value(row, 2e-4, extra_tol=1e-3, extra_basis="key")["tolerance"] == pytest.approx(1.5e-3)

@@ -2,8 +2,10 @@
 
 import re
 
+import numpy as np
 import pandas as pd
 import pytest
+from conftest import PUBLISHED_DIR
 
 from gearrep import published as pub
 
@@ -141,3 +143,31 @@ def test_values_by_keys_every_row_in_order():
     assert list(got) == [("a", "x"), ("a", "y"), ("b", "x")]
     assert got[("a", "y")] == [2.0] and got[("b", "x")] == [3.0]
     assert got[("a", "x")][0] == 1.0 and got[("a", "x")][1] != got[("a", "x")][1]  # NaN
+
+
+def test_perturbed_params_move_lengths_and_angles_by_a_few_ulps(published, monkeypatch):
+    """The portability check's switch: every length, angle and curvature moves by 1 to k ulps (the
+    same way in every process, equal values alike), counts, ratios, zeros and NaN stay; a bad
+    value of the environment variable is refused naming it."""
+    import math
+
+    p = published.params
+    q = pub.perturbed_params(p, 4)
+    a, b = p["value"].to_numpy(), q["value"].to_numpy()
+    moved = p["unit"].isin(pub.PERTURBED_UNITS).to_numpy() & (a != 0) & np.isfinite(a)
+    assert moved.sum() > 100 and np.all(b[moved] != a[moved])
+    ulps = np.abs(b[moved] - a[moved]) / np.spacing(np.abs(a[moved]))
+    assert np.all((ulps >= 0.5) & (ulps <= 8.0))  # 1-4 ulps (an ulp halves across a power of 2)
+    np.testing.assert_array_equal(b[~moved], a[~moved])  # exact: the same numbers, unmoved
+    assert pub.perturbed_value(110.0, 4) == pub.perturbed_value(110.0, 4) != 110.0
+    assert pub.perturbed_value(0.0, 4) == 0.0 and math.isnan(pub.perturbed_value(math.nan, 4))
+    assert pub.perturbed_value(3.5, 0) == 3.5
+    with pytest.raises(ValueError, match="ulps"):
+        pub.perturbed_value(1.0, -1)
+    monkeypatch.setenv(pub.PERTURB_ENV, "4")
+    assert pub.perturb_ulps_from_env() == 4
+    loaded = pub.load(PUBLISHED_DIR)
+    np.testing.assert_array_equal(loaded.params["value"].to_numpy(), b)  # exact: the same perturbation
+    monkeypatch.setenv(pub.PERTURB_ENV, "few")
+    with pytest.raises(ValueError, match="GEARREP_PERTURB_ULPS='few'"):
+        pub.load(PUBLISHED_DIR)

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from _numerics import assert_same_solve
 
 from gearrep.solve import Status, newton, numeric_jacobian, status_names
 
@@ -268,12 +269,14 @@ def test_gauss_jordan_matches_the_inverse_and_one_system_alone_gets_its_batch_va
             np.testing.assert_array_equal(a, b, err_msg=f"step of system {r}")
 
 
+@pytest.mark.numerics
 @pytest.mark.parametrize("damped", [True, False])
 @pytest.mark.parametrize("mode", ["analytic", "numeric", "fun_jac", "least_squares"])
 def test_one_problem_alone_gives_its_batch_record(damped, mode):
-    """newton on one row (its own scalar bookkeeping) returns exactly what the same row gets in a
-    batch: solution, residual, iterations, status and condition, for converging, diverging,
-    singular, stalling and non-finite starts."""
+    """newton on one row (its own scalar bookkeeping) returns what the same row gets in a batch:
+    the status, and where converged the solution, residual, iterations and condition within the
+    solver's accuracy (tests/_numerics.py), for converging, diverging, singular, stalling and
+    non-finite starts."""
     rng = np.random.default_rng(5)
     x0 = np.vstack(
         [
@@ -317,6 +320,5 @@ def test_one_problem_alone_gives_its_batch_record(damped, mode):
                     ),
                 },
             )
-            for f in ("x", "residual", "iterations", "status", "condition"):
-                np.testing.assert_array_equal(getattr(one, f)[0], getattr(batch, f)[r], err_msg=f"row {r} {f}")
+            assert_same_solve(one, batch, 1e-12, ("x", "residual"), [0], [r], what=f"row {r}")
     assert len(set(batch.status.tolist())) >= 3  # converged, diverged and another outcome are all exercised
