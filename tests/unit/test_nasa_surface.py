@@ -386,3 +386,32 @@ def test_offset_start_keeps_the_nominal_start_where_it_cannot_help():
         offset_start(pair, phi, lambda p, ph: aligned_start(p, ph)[:, :2])
     with pytest.raises(ValueError, match="formulation"):
         offset_start(pair, phi, aligned_start, formulation="fast")
+
+
+def test_one_point_on_floats_gives_the_array_values():
+    """A rack-generated flank evaluated at one point given as Python floats computes on floats
+    (the single-point TCA's path) and gives the array path's values (cos/sin of the rolling angle
+    by math instead of numpy: rounding only); a one-point contact solve gives its batch row."""
+    from gearrep.surfaces.novikov import aligned_start
+    from gearrep.tca import Misalignment, offset_start, solve_contact
+
+    pair = _novikov_pair(Misalignment(d_gamma_out=3 * DEG / 60))
+    for f in (pair.flank1, pair.flank2):
+        for u, th in ((0.1, 0.3), (-0.12, -0.7), (0.0, 0.0)):
+            A = f.evaluate_components(np.array([u]), np.array([th]))
+            B = f.evaluate_components(u, th)
+            assert all(type(c) is float for vec in B for c in vec)
+            for va, vb in zip(A, B):
+                assert np.allclose(np.concatenate([np.ravel(c) for c in va]), vb, rtol=1e-14, atol=1e-14)
+        yp = f.rack.pitch_crossing(0.05)
+        assert all(type(c) is float for c in yp)
+        assert np.allclose(yp, [c[0] for c in f.rack.pitch_crossing(np.array([0.05]))], rtol=1e-15, atol=0)
+    phi = np.linspace(-0.2, 0.2, 5)
+    start = offset_start(pair, phi, aligned_start)
+    kw = dict(formulation="conventional", tol=1e-12, maxiter=50)
+    batch = solve_contact(pair, phi, start, **kw).unknowns("conventional")
+    for i in range(len(phi)):
+        one = solve_contact(pair, phi[i : i + 1], start[i : i + 1], **kw)
+        assert one.converged[0]
+        # both converged to 1e-12 residual (condition ~5e4): the same root to 1e-9
+        assert np.abs(one.unknowns("conventional")[0] - batch[i]).max() < 1e-9
