@@ -243,10 +243,11 @@ def offset_start(pair: GearPair, phi1, nominal, *, formulation="conventional", s
 
     ``solve(pair, phi_ref, start)`` -> :class:`ContactPoints` (phi_ref and start one row each) solves
     the reference; default :func:`solve_contact` (damped Newton, ``formulation``, ``tol``,
-    ``maxiter``): the root it reaches is the one the nominal start reaches, so the moved starts lead
-    to the same roots. A stronger start strategy plugs in here. Where the reference does not
-    converge, or ``phi1`` is one angle (the reference would be the solve itself), the nominal starts
-    are returned unchanged."""
+    ``maxiter``), so the reference is the root the nominal start reaches, and where the offset
+    changes slowly with the angle the moved starts lead to the roots the nominal ones reach
+    (tested on the seed-002 pair). A stronger start strategy (a robust solve of the reference)
+    plugs in here. Where the reference does not converge, or ``phi1`` is one angle (the reference
+    would be the solve itself), the nominal starts are returned unchanged."""
     check_formulation(formulation)
     phi1 = _angles(phi1)
     start = np.array(nominal(pair, phi1), dtype=float)
