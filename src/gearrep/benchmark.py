@@ -47,6 +47,7 @@ __all__ = [
     "reference_kernel",
     "time_interleaved",
     "THROUGHPUT_TARGETS",
+    "FAMILY_TARGETS",
     "scipy_root_solves",
     "tca_throughput",
     "sweep",
@@ -153,6 +154,16 @@ def time_interleaved(
 #: point), for the crowned 52/72 spur pair of the README
 THROUGHPUT_TARGETS = {"reduced": 6.0, "conventional": 12.0, "single": 1000.0}
 
+#: targets of every gear family in reference-kernel elements per vectorised solve and per
+#: single-point call, by the kind of tooth surface: "analytic" (closed-form surfaces: involute,
+#: bevel, CATT, rack-generated Novikov-Wildhaber) or "generated" (a tool's envelope solved where
+#: it is evaluated: worm- and disk-ground Novikov pinions, hob-cut flanks); a benchmark fails a
+#: family above 1.5 times its targets
+FAMILY_TARGETS = {
+    "analytic": {"vectorised": 30.0, "single": 3000.0},
+    "generated": {"vectorised": 150.0, "single": 10000.0},
+}
+
 
 def scipy_root_solves(pair, phi1, start, formulation: str = "reduced", *, tol: float = 1e-12):
     """The same contact solves with ``scipy.optimize.root`` (MINPACK hybrid method), one point per
@@ -192,6 +203,29 @@ def scipy_root_solves(pair, phi1, start, formulation: str = "reduced", *, tol: f
     return np.array(xs), np.array(ok)
 
 
+def _iterations(result) -> np.ndarray:
+    """Newton iterations per row of a contact solve's result (``iterations`` or ``solve.iterations``)."""
+    it = getattr(result, "iterations", None)
+    return np.asarray(result.solve.iterations if it is None else it)
+
+
+def _throughput_inputs(phi1, start, n_single, scipy_points, solve):
+    """(phi1, start) as float arrays after the checks of :func:`tca_throughput` (ValueError naming
+    the argument)."""
+    if solve is not None and scipy_points:
+        raise ValueError("scipy_points must be 0 with a solve of the family's own")
+    phi1 = np.asarray(phi1, float)
+    start = np.asarray(start, float)
+    n = len(phi1)
+    if n < 1 or len(start) != n:
+        raise ValueError(f"phi1 and start must have the same length >= 1, got {n} and {len(start)}")
+    if not isinstance(n_single, (int, np.integer)) or not 1 <= n_single <= n:
+        raise ValueError(f"n_single must be an integer in [1, {n}], got {n_single!r}")
+    if not isinstance(scipy_points, (int, np.integer)) or not 0 <= scipy_points <= n:
+        raise ValueError(f"scipy_points must be an integer in [0, {n}], got {scipy_points!r}")
+    return phi1, start
+
+
 def tca_throughput(
     pair,
     phi1,
@@ -202,6 +236,7 @@ def tca_throughput(
     repeats: int = 5,
     solve_kwargs: dict | None = None,
     scipy_points: int = 0,
+    solve: Callable[[np.ndarray, np.ndarray], Any] | None = None,
 ) -> dict:
     """Contact solves of ``pair`` at the angles ``phi1`` from ``start`` (one row per angle), timed in
     ONE interleaved run (:func:`time_interleaved`, best of ``repeats``, CPU time of the process:
@@ -210,22 +245,21 @@ def tca_throughput(
     on as many elements as there are angles (at least 10 000): vectorised (one :func:`gearrep.tca.solve_contact`
     call), single point (``n_single`` calls of one point each) and, with ``scipy_points`` > 0,
     :func:`scipy_root_solves` on that many points. Returns seconds and reference elements per
-    solve (per call for the single points; CPU seconds), the converged fractions, and the machine
-    load before and after."""
+    solve (per call for the single points; CPU seconds), the converged fractions, the mean Newton
+    iterations of the vectorised solve, and the machine load before and after. ``solve(phi1, start)``
+    replaces :func:`gearrep.tca.solve_contact` for a family with its own contact solve (e.g.
+    :func:`gearrep.tca_envelope.solve_points`); its result has ``converged`` and ``iterations`` or
+    ``solve.iterations`` (``solve_kwargs`` and ``scipy_points`` are then unused)."""
     from .tca import solve_contact
 
-    kw = dict(solve_kwargs or {})
-    phi1 = np.asarray(phi1, float)
-    start = np.asarray(start, float)
+    phi1, start = _throughput_inputs(phi1, start, n_single, scipy_points, solve)
     n = len(phi1)
-    if n < 1 or len(start) != n:
-        raise ValueError(f"phi1 and start must have the same length >= 1, got {n} and {len(start)}")
-    if not isinstance(n_single, (int, np.integer)) or not 1 <= n_single <= n:
-        raise ValueError(f"n_single must be an integer in [1, {n}], got {n_single!r}")
-    if not isinstance(scipy_points, (int, np.integer)) or not 0 <= scipy_points <= n:
-        raise ValueError(f"scipy_points must be an integer in [0, {n}], got {scipy_points!r}")
+    kw = dict(solve_kwargs or {})
+    own = solve
 
     def one(i):
+        if own is not None:
+            return own(phi1[i : i + 1], start[i : i + 1])
         return solve_contact(
             pair,
             phi1[i : i + 1],
@@ -234,11 +268,16 @@ def tca_throughput(
             **{k: (v[i : i + 1] if isinstance(v, np.ndarray) else v) for k, v in kw.items()},
         )
 
+    def batch():
+        if own is not None:
+            return own(phi1, start)
+        return solve_contact(pair, phi1, start, formulation=formulation, **kw)
+
     out = {}
     n_ref = max(n, 10_000)  # enough elements that the kernel's own per-call overhead does not count
     fns = {
         "reference": lambda: reference_kernel(n_ref),
-        "vectorised": lambda: out.__setitem__("vec", solve_contact(pair, phi1, start, formulation=formulation, **kw)),
+        "vectorised": lambda: out.__setitem__("vec", batch()),
         "single": lambda: out.__setitem__("single", [one(i) for i in range(n_single)]),
     }
     if scipy_points:
@@ -259,6 +298,7 @@ def tca_throughput(
         "single_elements_per_call": t["single"] / n_single / ref,
         "converged_fraction_vectorised": float(np.mean(out["vec"].converged)),
         "converged_fraction_single": float(np.mean([c.converged[0] for c in out["single"]])),
+        "mean_iterations": float(np.mean(_iterations(out["vec"]))),
         "load_1min_before": load0,
         "load_1min_after": load_average(),
     }

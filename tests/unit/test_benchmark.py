@@ -104,3 +104,31 @@ def test_scipy_baseline_finds_the_same_contacts():
     assert r["vectorised_elements_per_solve"] > 0 and r["scipy_over_single"] > 0
     with pytest.raises(ValueError, match="n_single"):
         B.tca_throughput(pair, phi, default_start(pair, phi, "reduced"), formulation="reduced", n_single=5)
+
+
+def test_throughput_of_a_family_with_its_own_solve():
+    """A family with its own contact solve (``solve=``) is timed the same way; the row holds the
+    vectorised solve's mean Newton iterations (from ``iterations`` or ``solve.iterations``)."""
+    from types import SimpleNamespace
+
+    from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance
+    from gearrep.tca import GearPair, Misalignment, default_start, solve_contact
+
+    g1, g2 = InvoluteGearData(52, 1.0, np.radians(20), 11.42), InvoluteGearData(72, 1.0, np.radians(20), 11.42)
+    f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(0.002857))
+    pair = GearPair(f1, f2, 52, 72, standard_centre_distance(g1, g2), misalignment=Misalignment(d_gamma_out=1e-3))
+    phi = np.array([-0.05, -0.03, 0.0])
+    start = default_start(pair, phi, "reduced")
+    calls = []
+
+    def own(ph, st):  # a result shaped like gearrep.tca_envelope.ContactPath (iterations in .solve)
+        calls.append(len(ph))
+        c = solve_contact(pair, ph, st, formulation="reduced")
+        return SimpleNamespace(converged=c.converged, solve=SimpleNamespace(iterations=c.iterations))
+
+    r = B.tca_throughput(pair, phi, start, formulation="own", n_single=2, repeats=1, solve=own)
+    assert 3 in calls and 1 in calls  # the vectorised call and the single-point calls went to it
+    assert r["converged_fraction_single"] == 1.0 and r["formulation"] == "own"
+    assert r["mean_iterations"] == solve_contact(pair, phi, start, formulation="reduced").iterations.mean()
+    with pytest.raises(ValueError, match="scipy_points"):
+        B.tca_throughput(pair, phi, start, formulation="own", n_single=2, scipy_points=1, solve=own)

@@ -1,12 +1,16 @@
 """Benchmarks of the contact core (Snakemake script of the `bench` target; not in the default run).
 
 Writes
-* throughput.csv: one row per gear family and TCA formulation: contact solves vectorised (one
-  call for all points) and single-point (one call per point), in seconds and in elements of the
-  fixed reference kernel (gearrep.benchmark.reference_kernel: 20 sin/cos and 300 multiply-adds
-  per element) timed in the same interleaved run, so that the ratios hold on a loaded machine;
-  the issue-20 targets for the README pair; for the README pair also the same solves with
-  scipy.optimize.root point by point (the baseline a user would write) and the ratio; the
+* throughput.csv: one row per gear family the library and the CLI know (involute spur and
+  helical, straight and spiral bevel, CATT, Novikov-Wildhaber with rack-generated, worm-ground and
+  disk-ground pinions, hob-cut curvilinear) and TCA formulation (both where both exist): contact
+  solves vectorised (one call for all points) and single-point (one call per point), in seconds
+  and in elements of the fixed reference kernel (gearrep.benchmark.reference_kernel: 20 sin/cos
+  and 300 multiply-adds per element) timed in the same interleaved run, so that the ratios hold on
+  a loaded machine; the mean Newton iterations; the starts' cost; the family's targets by surface
+  kind (gearrep.benchmark.FAMILY_TARGETS); the stricter targets of the README pair; for the
+  README pair also the same solves with scipy.optimize.root point by point (the baseline a user
+  would write) and the ratio; the
   thesis's own timing of the README pair (seed 003 Table 10, Mathematica: total time for 5000
   converged points, from data/published) per point over ours; the machine load before and after
   each row;
@@ -64,21 +68,27 @@ def angles(pair, n, rng):
 def readme_case(rng, n, formulation):
     pair = spur(True, Misalignment(d_gamma_out=0.05 * DEG))
     phi = angles(pair, n, rng)
-    return pair, phi, default_start(pair, phi, formulation), {}
+    return pair, phi, lambda: default_start(pair, phi, formulation), {}
 
 
-def novikov_case(rng, n, worm=False):
-    """Seed 002: the profile-crowned Novikov-Wildhaber pair (rack-generated flanks), or with the
-    worm-ground (hob-generated) pinion, under the study's 3 arcmin dgamma, from the study's
-    starts (aligned contact) and with its solver settings."""
+def novikov_case(rng, n, pinion="rack"):
+    """Seed 002: the profile-crowned Novikov-Wildhaber pair (rack-generated flanks, ``pinion``
+    "rack"), or with the worm-ground (``"worm"``, sec. 5.4) or disk-ground (``"disk"``, sec. 4.2,
+    at the middle of the study's bracket of the disk-pinion distance E_d) pinion, under the
+    study's 3 arcmin dgamma, from the study's starts (the aligned contact; for the rack-generated
+    and the disk-ground pinion moved by the offset solved at one angle, gearrep.tca.offset_start,
+    whose reference solve is in the row's start cost) and with its solver settings."""
     from gearrep.replications.nasa import geometry as ng
     from gearrep.surfaces.novikov import aligned_start
+    from gearrep.tca import offset_start
 
     s, d = study("nasa")
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
     Pn, an, beta, lead = ng.basics(d)
-    if worm:
+    if pinion == "worm":
         pair = ng.make_worm_pair(d, s, misalignment=mis)
+    elif pinion == "disk":
+        pair = ng.make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
     else:
         pair = ng.make_pair(
             d,
@@ -93,8 +103,11 @@ def novikov_case(rng, n, worm=False):
         )
     per = 2 * np.pi / pair.n1
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
-    start = ng.worm_start(pair, phi) if worm else aligned_start(pair, phi)
-    return pair, phi, start, {"tol": s["tol"], "maxiter": s["maxiter"]}
+    kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
+    nominal = {"worm": ng.worm_start, "disk": ng.disk_start, "rack": aligned_start}[pinion]
+    if pinion == "worm":
+        return pair, phi, lambda: nominal(pair, phi), kw
+    return pair, phi, lambda: offset_start(pair, phi, nominal, **kw), kw
 
 
 def catt_case(rng, n):
@@ -109,51 +122,122 @@ def catt_case(rng, n):
     mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
     phi = rng.uniform(lim["phi1_lo"], lim["phi1_hi"], n)
-    return mesh.gear_pair, phi, ca.starts(mesh, phi, q["start_offset_mm"]), {"tol": q["tol"], "maxiter": q["maxiter"]}
+    kw = {"tol": q["tol"], "maxiter": q["maxiter"]}
+    return mesh.gear_pair, phi, lambda: ca.starts(mesh, phi, q["start_offset_mm"]), kw
 
 
-def bevel_case(rng, n):
-    """Seed 003 sec. 5: the crowned spiral bevel pair of the convergence study (Table 12), aligned,
-    from the default starts, at angles where the tooth pair they start on is in contact (from half
-    an angular pitch before the pitch-point position to 0.05 of one after it; its contact ends
-    about 0.09 after)."""
+def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
+    """Seed 003 sec. 5: the crowned spiral (17/17, Table 12) or straight (39/32, Table 11) bevel
+    pair of the convergence study, aligned, from the default starts, at angles where the tooth pair
+    they start on is in contact (spiral: from half an angular pitch before the pitch-point position
+    to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
+    side of it)."""
     from gearrep.replications.thesis.bevel import convergence_pair
 
     s, d = study("thesis")
-    pair = convergence_pair(s, d, "spiral_bevel_17_17")
+    pair = convergence_pair(s, d, case)
     p = 2 * np.pi / pair.n1
-    phi = rng.uniform(-0.45 * p, 0.05 * p, n)
-    return pair, phi, default_start(pair, phi, "reduced"), {"tol": s["tol"]}
+    if case.startswith("spiral"):
+        phi = rng.uniform(-0.45 * p, 0.05 * p, n)
+    else:
+        phi = angles(pair, n, rng)
+    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": s["tol"]}
+
+
+def helical_case(rng, n, formulation):
+    """Seed 003 Table 9: the profile-crowned helical pair 25/77 under the study's in-plane
+    misalignment, from the default starts, over 0.8 of an angular pitch around the pitch-point
+    position; the thesis's solver tolerance."""
+    from gearrep.replications.thesis.design import design_pair
+
+    s, d = study("thesis")
+    pair = design_pair(d, "helical_25_77", Misalignment(d_gamma_in=float(d.helical_misalignment_arcmin) * ARCMIN))
+    # the angles at which the tooth pair the default start is on meets inside both flanks
+    grid = -np.pi / (2 * pair.n1) + np.linspace(-1.0, 1.0, 401) * 2 * np.pi / pair.n1
+    ok = solve_contact(pair, grid, default_start(pair, grid, formulation), formulation=formulation).converged
+    phi = rng.uniform(grid[ok].min(), grid[ok].max(), n)
+    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": s["tol"]}
+
+
+def hobbed_case(rng, n):
+    """Seed 000 ch. 5: the hob-cut curvilinear pair of Table 5.4's example (its assembly errors),
+    the 9-unknown envelope-pair TCA (gearrep.tca_envelope.solve_points) at angles over the
+    study's phi1' grid, each from the first-order path predictor off the nearest point of the
+    study's path on that grid (continuation and path not timed)."""
+    from gearrep.hobbed import continue_to
+    from gearrep.replications.tseng_tca import TABLE_EXAMPLE
+    from gearrep.replications.tseng_tca.studies import assembly_of, phi1_grid
+    from gearrep.tca_envelope import predict, solve_points, trace_path
+
+    s, d = study("tseng_tca")
+    case = d.cases[TABLE_EXAMPLE["5.4"]]
+    tol = s["tol"]
+    pair, s0 = continue_to(
+        d.gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=s["continuation_steps"], tol=tol
+    )
+    grid = phi1_grid(s)
+    path = trace_path(pair, s0, grid, tol=tol)
+    phi = rng.uniform(grid.min(), grid.max(), n)
+    j = np.abs(phi[:, None] - grid[None, :]).argmin(axis=1)  # the nearest grid point on the path
+    return (
+        pair,
+        phi,
+        lambda: predict(pair, path.x[j], grid[j], phi),
+        {"solve": lambda ph, st: solve_points(pair, ph, st, tol=tol)},
+    )
 
 
 rng = np.random.default_rng(7)
 README = "involute spur 52/72 crowned, 0.05 deg out-of-plane (README pair)"
-# (family, formulation, case, points per single-point run): the Novikov pair takes ~30 damped
-# iterations from the study's aligned starts and the worm-ground pinion's surface is an envelope
-# solved at every evaluation, so they run on fewer points
+HELICAL = "involute helical 25/77 profile-crowned, in-plane misaligned (seed 003 Table 9)"
+SPIRAL = "spiral bevel pair of seed 003 sec. 5 (17/17, crowned)"
+STRAIGHT = "straight bevel pair of seed 003 sec. 5 (39/32, crowned)"
+NOVIKOV = "Novikov-Wildhaber profile-crowned pair (seed 002)"
+# (family, formulation, case, points per single-point run): the surfaces of the ground Novikov
+# pinions and of the hob-cut pair are envelopes solved at every evaluation, so those run on fewer
+# points (the disk-ground pinion's surface is a spline of its grinding line carried by a screw motion,
+# differentiated numerically)
+N_GEN, N_GEN_SINGLE = max(N_VEC // 50, 20), max(N_SINGLE // 20, 5)
 CASES = [
     (README, "reduced", readme_case(rng, N_VEC, "reduced"), N_SINGLE),
     (README, "conventional", readme_case(rng, N_VEC, "conventional"), N_SINGLE),
+    (HELICAL, "reduced", helical_case(rng, N_VEC, "reduced"), N_SINGLE),
+    (HELICAL, "conventional", helical_case(rng, N_VEC, "conventional"), N_SINGLE),
+    (SPIRAL, "reduced", bevel_case(rng, N_VEC), N_SINGLE),
+    (SPIRAL, "conventional", bevel_case(rng, N_VEC, "conventional"), N_SINGLE),
+    (STRAIGHT, "reduced", bevel_case(rng, N_VEC, "reduced", "straight_bevel_39_32"), N_SINGLE),
+    (STRAIGHT, "conventional", bevel_case(rng, N_VEC, "conventional", "straight_bevel_39_32"), N_SINGLE),
+    ("CATT pair of seed 004 sec. 4", "conventional", catt_case(rng, N_VEC), N_SINGLE),
+    (NOVIKOV, "conventional", novikov_case(rng, N_VEC), N_SINGLE),
     (
         "hob-generated: worm-ground Novikov pinion (seed 002 sec. 5.4)",
         "conventional",
-        novikov_case(rng, max(N_VEC // 50, 20), True),
-        max(N_SINGLE // 20, 5),
+        novikov_case(rng, N_GEN, "worm"),
+        N_GEN_SINGLE,
     ),
     (
-        "Novikov-Wildhaber profile-crowned pair (seed 002)",
+        "generated: disk-ground Novikov pinion (seed 002 sec. 4.2)",
         "conventional",
-        novikov_case(rng, max(N_VEC // 10, 20)),
-        max(N_SINGLE // 20, 5),
+        novikov_case(rng, N_GEN, "disk"),
+        N_GEN_SINGLE,
     ),
-    ("CATT pair of seed 004 sec. 4", "conventional", catt_case(rng, N_VEC), N_SINGLE),
-    ("spiral bevel pair of seed 003 sec. 5 (17/17, crowned)", "reduced", bevel_case(rng, N_VEC), N_SINGLE),
+    (
+        "hob-cut curvilinear pair (seed 000 ch. 5, Table 5.4 example)",
+        "envelope pair (9 unknowns)",
+        hobbed_case(rng, N_GEN),
+        N_GEN_SINGLE,
+    ),
 ]
 
 rows = []
-for family, form, (pair, phi, start, kw), n_single in CASES:
+for family, form, (pair, phi, start_of, kw), n_single in CASES:
     readme = "README" in family
+    kw = dict(kw)
+    own = kw.pop("solve", None)
     with np.errstate(all="ignore"):
+        t0 = time.process_time()
+        start = start_of()
+        start_s = time.process_time() - t0
         r = benchmark.tca_throughput(
             pair,
             phi,
@@ -163,12 +247,17 @@ for family, form, (pair, phi, start, kw), n_single in CASES:
             repeats=REPEATS,
             solve_kwargs=kw,
             scipy_points=min(n_single, 50, len(phi)) if readme else 0,
+            solve=own,
         )
-        iters = solve_contact(pair, phi, start, formulation=form, **kw).iterations
-    r = {"family": family, **r, "mean_iterations": float(np.mean(iters))}
+    # the starts' cost, timed once (for the rack-generated and disk-ground Novikov pairs it holds the
+    # reference solve of gearrep.tca.offset_start)
+    r = {"family": family, **r, "start_elements_per_point": start_s / len(phi) / r["reference_s_per_element"]}
     if readme:
         r["target_vectorised_elements"] = benchmark.THROUGHPUT_TARGETS[form]
         r["target_single_elements"] = benchmark.THROUGHPUT_TARGETS["single"]
+    r["surface_kind"] = "generated" if "generated" in family or "hob-cut" in family else "analytic"
+    r["family_target_vectorised_elements"] = benchmark.FAMILY_TARGETS[r["surface_kind"]]["vectorised"]
+    r["family_target_single_elements"] = benchmark.FAMILY_TARGETS[r["surface_kind"]]["single"]
     r["machine"] = (
         f"{platform.machine()} {platform.processor() or platform.system()}, {__import__('os').cpu_count()} cores"
     )

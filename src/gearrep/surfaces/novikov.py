@@ -23,6 +23,8 @@ Units: lengths in inches (P_n in 1/in), angles in radians.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .. import frames
@@ -183,15 +185,17 @@ class RackGeneratedFlank(Surface):
         y_P = y_b + x_b x_b' / y_b' the point where the profile normal meets the pitch line
         (:meth:`gearrep.surfaces.rack.RackCutter.pitch_crossing`).
         """
-        u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
+        one = type(u) is float and type(theta) is float  # one point on Python floats: floats
+        if not one:
+            u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
         yp, yp1, yp2 = self.rack.pitch_crossing(u)
-        cb, sb = np.cos(self.rack.beta), np.sin(self.rack.beta)
+        cb, sb = self.rack._cb, self.rack._sb
         rp = self.r_p
         return (
             (yp * cb + theta * sb) / rp,
             yp1 * cb / rp,
             yp2 * cb / rp,
-            np.full(u.shape, sb / rp),
+            sb / rp if one else np.full(u.shape, sb / rp),
         )
 
     def position(self, u, v) -> np.ndarray:
@@ -211,7 +215,9 @@ class RackGeneratedFlank(Surface):
         q_j = dq/dj + s K q phi_j, d(q_i)/dj = r_c,ij + T' phi_ij + s K (dq/dj) phi_i + s K q phi_ij,
         r_ij = s K q_i phi_j + d(q_i)/dj, each turned by Rz(s phi); the terms with a zero component
         of K or T' are left out of the axial (and T' of the x) components."""
-        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        one = type(u) is float and type(v) is float and type(self.rack) is ParabolicRackCutter
+        if not one:  # (one point of a parabolic rack on Python floats: floats throughout)
+            u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
         c_r, c_u, c_v, c_uu, c_uv, c_vv = self.rack.evaluate_components(u, v)
         phi, pu, puu, pv = self.rolling_angle(u, v)
         s = -float(self.member_side)
@@ -240,7 +246,7 @@ class RackGeneratedFlank(Surface):
         r_uu = then(qu, pu, dqu_u)
         r_uv = then(qu, pv, dqu_v)
         r_vv = then(qv, pv, dqv_v)
-        cz, sz = np.cos(s * phi), np.sin(s * phi)
+        cz, sz = (math.cos(s * phi), math.sin(s * phi)) if one else (np.cos(s * phi), np.sin(s * phi))
         return tuple(frames.rotate_z(cz, sz, w) for w in (q, qu, qv, r_uu, r_uv, r_vv))
 
     def profile_angle(self, u) -> np.ndarray:

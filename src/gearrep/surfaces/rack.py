@@ -112,6 +112,7 @@ class RackCutter(Surface):
     def __init__(self, beta: float = 0.0):
         self.beta = _angle(beta, "beta (helix angle)", -np.pi / 2, np.pi / 2)
         sb, cb = np.sin(self.beta), np.cos(self.beta)
+        self._sb, self._cb = float(sb), float(cb)
         self.e_x = np.array([1.0, 0.0, 0.0])
         self.e_yb = np.array([0.0, cb, -sb])  # normal to the teeth, in the pitch plane
         self.t = np.array([0.0, sb, cb])  # tooth direction a-a
@@ -153,21 +154,48 @@ class RackCutter(Surface):
         r_uu = xuu[..., None] * self.e_x + yuu[..., None] * self.e_yb
         return SurfacePoint(r, r_u, r_t, r_uu, zero, zero.copy())
 
+    def evaluate_components(self, u, theta) -> tuple:
+        """:meth:`evaluate` by components (structure of arrays, no (..., 3) arrays; the same
+        values): with e_x = (1, 0, 0), e_yb = (0, cos b, -sin b) and t = (0, sin b, cos b),
+        r = (x, y cos b + theta sin b, -y sin b + theta cos b), r_u = (x', y' cos b, -y' sin b),
+        r_theta = t, r_uu = (x'', y'' cos b, -y'' sin b) and r_utheta = r_thetatheta = 0. Python
+        floats u, theta (one point) give floats."""
+        cb, sb = self._cb, self._sb
+        if type(u) is float and type(theta) is float:
+            zero, s_, c_ = 0.0, sb, cb
+        else:
+            u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
+            zero, s_, c_ = np.zeros(u.shape), np.full(u.shape, sb), np.full(u.shape, cb)
+        x, y, xu, yu, xuu, yuu = self.profile(u)
+        return (
+            (x, y * cb + theta * sb, y * -sb + theta * cb),
+            (xu, yu * cb, yu * -sb),
+            (zero, s_, c_),
+            (xuu, yuu * cb, yuu * -sb),
+            (zero, zero, zero),
+            (zero, zero, zero),
+        )
+
     def pitch_crossing(self, u):
         """Where the normal of the profile at u meets the pitch line x_b = 0, as y_b, and its first
         two derivatives in u: y_P = y_b + x_b x_b' / y_b' (the normal direction is (y_b', -x_b')).
         The rolling angle of the generating motion is linear in it
         (:meth:`gearrep.surfaces.novikov.RackGeneratedFlank.rolling_angle`). This base form takes
         the third derivatives of the profile as zero (straight and parabolic profiles);
-        :class:`CircularArcRackCutter` overrides it."""
-        u = np.asarray(u, float)
-        x, y, x1, y1, x2, y2 = self.profile(u)
+        :class:`CircularArcRackCutter` overrides it. A Python float u gives floats (a zero y_b'
+        then raises ZeroDivisionError; arrays give inf or NaN there)."""
+        if type(u) is float:
+            return self._pitch_crossing(*self.profile(u))
         with np.errstate(divide="ignore", invalid="ignore"):
-            P, P1, P2 = x * x1, x1 * x1 + x * x2, 3.0 * x1 * x2  # x_b x_b' and derivatives (x''' = 0)
-            Q, Q1 = y1, y2  # y_b' and its derivative (y''' = 0)
-            h = P / Q
-            h1 = (P1 * Q - P * Q1) / Q**2
-            h2 = (P2 * Q**2 - 2.0 * P1 * Q * Q1 + 2.0 * P * Q1**2) / Q**3
+            return self._pitch_crossing(*self.profile(np.asarray(u, float)))
+
+    @staticmethod
+    def _pitch_crossing(x, y, x1, y1, x2, y2):
+        P, P1, P2 = x * x1, x1 * x1 + x * x2, 3.0 * x1 * x2  # x_b x_b' and derivatives (x''' = 0)
+        Q, Q1 = y1, y2  # y_b' and its derivative (y''' = 0)
+        h = P / Q
+        h1 = (P1 * Q - P * Q1) / Q**2
+        h2 = (P2 * Q**2 - 2.0 * P1 * Q * Q1 + 2.0 * P * Q1**2) / Q**3
         return y + h, y1 + h1, y2 + h2
 
     def profile_curvature(self, u):
@@ -225,16 +253,22 @@ class ParabolicRackCutter(RackCutter):
         super().__init__(beta)
         self.a = _finite(a, "a (parabola coefficient)")
         self._place_q(alpha_n, l, y0, side)
+        # Q, the tangent and the normal at Q as float tuples (the profile on one point computes on floats)
+        self._qdm = tuple(tuple(float(c) for c in v) for v in (self.q_point, self.tangent_q, self.normal_q))
 
     def profile(self, u):
-        u = np.asarray(u, float)
-        Q, d, m = self.q_point, self.tangent_q, self.normal_q
-        x = Q[0] + u * d[0] + self.a * u**2 * m[0]
-        y = Q[1] + u * d[1] + self.a * u**2 * m[1]
-        xu = d[0] + 2 * self.a * u * m[0]
-        yu = d[1] + 2 * self.a * u * m[1]
-        z = np.zeros_like(u)
-        return x, y, xu, yu, z + 2 * self.a * m[0], z + 2 * self.a * m[1]
+        """(x, y, x', y', x'', y'') of the profile at u (a Python float gives floats)."""
+        one = type(u) is float
+        if not one:
+            u = np.asarray(u, float)
+        Q, d, m = self._qdm
+        a = self.a
+        x = Q[0] + u * d[0] + a * u**2 * m[0]
+        y = Q[1] + u * d[1] + a * u**2 * m[1]
+        xu = d[0] + 2 * a * u * m[0]
+        yu = d[1] + 2 * a * u * m[1]
+        z = 0.0 if one else np.zeros_like(u)
+        return x, y, xu, yu, z + 2 * a * m[0], z + 2 * a * m[1]
 
 
 class CircularArcRackCutter(RackCutter):

@@ -119,6 +119,7 @@ from ._starts import (
     guard_reduced_starts,
     line_of_action_start,
     line_of_action_starts,
+    offset_start,
     robust_start,
     seed_from_reduced,
     solve_conventional,
@@ -159,4 +160,5 @@ __all__ = [
     "line_of_action_start",
     "line_of_action_starts",
     "draw_starts",
+    "offset_start",
 ]

@@ -25,7 +25,7 @@ from ...surfaces.novikov import (
     pitch_radius,
 )
 from ...surfaces.rack import vertex_pitch_distance
-from ...tca import GearPair, solve_contact
+from ...tca import GearPair, offset_start, solve_contact
 from ...units import DEG
 from .design import design_beta
 
@@ -175,10 +175,13 @@ def make_pair(d, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=
 
 
 def contact(pair, phi1, s: dict, start=None):
-    """Conventional TCA at ``phi1`` (default start: :func:`aligned_start`); ``s``: the settings."""
+    """Conventional TCA at ``phi1``; ``s``: the settings. Default start: the aligned contact
+    (:func:`aligned_start`) moved by the misalignment's offset solved at one of the angles
+    (:func:`gearrep.tca.offset_start`; the same roots, 2-3 Newton iterations each instead of about
+    30 under a 3 arcmin crossing error)."""
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     if start is None:
-        start = aligned_start(pair, phi1)
+        start = offset_start(pair, phi1, aligned_start, tol=s["tol"], maxiter=s["maxiter"])
     return solve_contact(pair, phi1, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
 
 
