@@ -78,7 +78,9 @@ def assert_rounding_close(a, b, ulps: int = ROUNDING_ULPS, err_msg: str = "") ->
     ``math`` on floats against numpy's SIMD kernels, complex against real functions, one product
     of matrices against another order of it): equal within ``ulps`` units in the last place of the
     largest magnitude compared (a sum's rounding error scales with its largest term), at least 1."""
-    a, b = np.asarray(a, dtype=np.result_type(a, b, float)), np.asarray(b, dtype=np.result_type(a, b, float))
+    a, b = np.asarray(a), np.asarray(b)
+    kind = np.result_type(a, b, float)
+    a, b = a.astype(kind), b.astype(kind)
     scale = max(1.0, float(np.nanmax(np.abs(b))) if np.size(b) else 1.0)
     np.testing.assert_allclose(a, b, rtol=0, atol=ulps * EPS * scale, err_msg=err_msg)
 
