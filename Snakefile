@@ -8,11 +8,6 @@ min_version("8.0")
 configfile: "config/config.yaml"
 
 
-# common.smk puts the interpreter's own bin directory first on PATH (papermill for notebooks)
-envvars:
-    "PATH",
-
-
 # `snakemake --report results/snakemake_report.html` (after a run) collects figures and scorecard.
 report: "workflow/report/workflow.rst"
 
@@ -44,18 +39,6 @@ localrules:
     bench,
     bench_defaults,
     workflow_timing,
-
-
-# Snakemake selects jobs again on timers (threading.Timer, one max-jobs-per-timespan span after a
-# selection; profiles/default sets 60 s) that would keep the process alive after the run: cancel
-# them when it ends (workflow/lib/wftimers.py; `--no-hooks` skips this, the exit then waits for
-# at most one span).
-onsuccess:
-    cancel_pending_timers()
-
-
-onerror:
-    cancel_pending_timers()
 
 
 rule all:

@@ -212,7 +212,7 @@ def test_rendered_notebooks_hide_the_preamble_and_fold_the_code(run):
 
     for name in notebooks(run):
         text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
-        assert "gearrep-step-properties" not in text and "os.chdir" not in text, name
+        assert "gearrep-snakemake" not in text and "os.chdir" not in text and "pickle" not in text, name
         assert text.count('<details class="gearrep-code">') >= 3, name
         assert "design data" in text, name
         assert text.count("<img") >= len(load(name).FIGURES), f"{name}: fewer images than figure files"
@@ -226,7 +226,7 @@ def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):
 
     rules = {f"{key}_notebook" for key in REGISTRY}
     assert len(rules) == len(list((ROOT / "notebooks").glob("*.ipynb")))
-    goals = {r: f"results/notebooks/{r[: -len('_notebook')]}.executed" for r in sorted(rules)}
+    goals = {r: f"results/notebooks/{r[: -len('_notebook')]}.html" for r in sorted(rules)}
     force = ["--forcerun", *sorted(rules)]
     jobs = smk(run, "-n", *force, "--", *goals.values()).stdout
     saved = {}

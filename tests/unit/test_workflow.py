@@ -54,9 +54,18 @@ def test_bad_config_stops_before_any_job(wf, section, key, bad):
     assert not (wf / "results").exists(), "nothing may be written on a bad config"
 
 
+#: the one lint the workflow keeps on purpose: its software is the pinned environment of
+#: requirements.lock that `make setup` installs (README, Install), not a conda environment or a
+#: container per rule, which could not be built or tested where the project is developed
+SOFTWARE_LINT = "Specify a conda environment or container for each rule."
+
+
 def test_lint_is_clean(wf):
-    out = smk(wf, "--lint")
-    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    out = smk(wf, "--lint", "--workflow-profile", "none")
+    text = out.stdout + out.stderr
+    lints = [ln.strip() for ln in text.splitlines() if ln.startswith("    * ")]
+    assert lints, text[-3000:]  # the lint ran and found the rules
+    assert {ln.removeprefix("* ").removesuffix(":") for ln in lints} == {SOFTWARE_LINT}, text[-3000:]
 
 
 def test_quick_run_with_the_test_configuration_plans_every_study(wf):
@@ -91,27 +100,3 @@ def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
     out = smk(wf, "-n")
     assert out.returncode != 0
     assert message in out.stdout + out.stderr, (out.stdout + out.stderr)[-2000:]
-
-
-def test_the_run_ends_without_waiting_for_snakemakes_selection_timers(wf):
-    """Snakemake starts a selection timer of one max-jobs-per-timespan span after each selection
-    that leaves a job waiting (two jobs on one core here); the Snakefile's hooks cancel the timers
-    still pending at the end, so the process exits when the jobs are done instead of one span (600 s
-    here) later. The subprocess timeout is only the guard of that hang, far from the run's time."""
-    targets = ["results/tseng/curvature_table_4_2.csv", "results/tseng/curvature_table_4_5.csv"]
-    try:
-        out = smk(wf, "--cores", "1", "--max-jobs-per-timespan", "1000/600s", *targets, timeout=300)
-    except subprocess.TimeoutExpired as e:
-        raise AssertionError("Snakemake did not exit: a selection timer kept it alive") from e
-    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
-    assert all((wf / t).is_file() for t in targets)
-
-
-def test_both_end_hooks_cancel_the_selection_timers():
-    """A failed run (onerror) exits at once as well as a successful one (onsuccess)."""
-    from conftest import ROOT
-
-    text = (ROOT / "Snakefile").read_text()
-    for hook in ("onsuccess", "onerror"):
-        body = text.split(f"\n{hook}:\n", 1)[1].split("\n\n", 1)[0]
-        assert body.strip() == "cancel_pending_timers()", (hook, body)
