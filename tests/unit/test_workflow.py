@@ -29,28 +29,44 @@ def smk(cwd, *args, timeout=600):
     )
 
 
-# Every bad value of the issues is refused by the resolution itself (test_workflow_lib.py and the
-# robustness fuzzing call it directly); these run the real Snakemake for a value out of range, a
-# NaN and a misspelt section.
-@pytest.mark.parametrize(
-    "section, key, bad",
-    [
-        ("catt", "maxiter", 0),
-        ("thesis", "tol", float("nan")),
-        ("nasaa", "tol", 1e-9),
-    ],
-)
-def test_bad_config_stops_before_any_job(wf, section, key, bad):
+# Every bad value is refused by the resolution itself (test_workflow_lib.py and the robustness
+# fuzzing call it directly); these run the real Snakemake for an unknown section, an unknown key, a
+# wrong type, a value out of range and a NaN, given each of the three ways a user sets them.
+BAD_CONFIGS = [
+    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "config.yaml"),
+    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "--configfile"),
+    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "--config"),
+    ({"catt": {"maxitr": 5}}, "config.catt.maxitr: unknown setting (did you mean 'maxiter'?)", "--config"),
+    ({"catt": {"maxiter": "ten"}}, "config.catt.maxiter: got 'ten'; allowed: an integer in [1, 1000]", "config.yaml"),
+    ({"catt": {"maxiter": 0}}, "config.catt.maxiter: got 0; allowed: an integer in [1, 1000]", "--configfile"),
+    ({"thesis": {"tol": float("nan")}}, "config.thesis.tol: got", "--config"),
+]
+
+
+@pytest.mark.parametrize("bad, message, route", BAD_CONFIGS, ids=[f"{r}-{m.split(':')[0]}" for _, m, r in BAD_CONFIGS])
+def test_bad_config_stops_before_any_job_with_one_line(wf, bad, message, route):
+    """One line naming the key, the value and what is allowed (the closest name for an unknown
+    one), before any job and without a traceback or the schema, however the value is given."""
+    import json
+
     import yaml
 
-    f = wf / "config" / "config.yaml"
-    cfg = yaml.safe_load(f.read_text()) or {}
-    cfg.setdefault(section, {})[key] = bad
-    f.write_text(yaml.safe_dump(cfg))
-    out = smk(wf, "--cores", "1")
+    ((section, values),) = bad.items()
+    args = []
+    if route == "config.yaml":
+        (wf / "config" / "config.yaml").write_text(yaml.safe_dump(bad))
+    elif route == "--configfile":
+        (wf / "bad.yaml").write_text(yaml.safe_dump(bad))
+        args = ["--configfile", "bad.yaml"]
+    else:
+        args = ["--config", f"{section}={json.dumps(values).replace('NaN', '.nan')}"]
+    out = smk(wf, "--cores", "1", *args)
     assert out.returncode != 0
     text = out.stdout + out.stderr
-    assert key in text and section in text, text[-2000:]
+    errors = [ln for ln in text.splitlines() if "bad configuration" in ln]
+    assert len(errors) == 1 and message in errors[0], text[-2000:]
+    assert "allowed" in errors[0] or "declared" in errors[0], errors[0]
+    assert len(text.splitlines()) <= 4 and "Traceback" not in text and "File " not in text, text[-2000:]
     assert not (wf / "results").exists(), "nothing may be written on a bad config"
 
 

@@ -12,18 +12,25 @@ from gearrep import published as _published
 from gearrep.replications import REGISTRY
 from gearrep.replications import load as load_study
 from gearrep.replications._face import table_paths
+from gearrep.settings import SettingError
 
-# Every setting of every study resolved and checked (unknown keys, ranges, NaN, cross-field limits)
-# before any job runs; a bad value stops here, naming its key.
-RESOLVED = resolve_config(config, workflow.basedir)
+# Every setting of every study resolved and checked (unknown sections and keys, types, ranges,
+# NaN, cross-field limits with the design data) before any job runs, whether it comes from
+# config/config.yaml, --configfile or --config: a bad value stops the run with one line naming the
+# key, the value and what is allowed (the closest declared name for an unknown one), not a
+# traceback.
+try:
+    RESOLVED = resolve_config(config, workflow.basedir)
+    # Each study's cross-field limits with its design data (e.g. a design name that must exist).
+    validate_studies(RESOLVED, workflow.basedir)
+except SettingError as _e:
+    sys.exit(f"gearrep: bad configuration: {_e}")
 PUBLISHED_DIR = RESOLVED["published_dir"]
 SETTINGS = {key: RESOLVED[key] for key in REGISTRY}
 # The published data as committed (data/published/MANIFEST.csv: checksum, rows per seed of every
 # file): a missing, emptied, cut, altered or unlisted file stops here, naming the file.
 _published.verify_manifest(Path(workflow.basedir, PUBLISHED_DIR))
 _published.load_errata(Path(workflow.basedir, "data", "errata.csv"))
-# Each study's cross-field limits with its design data (e.g. a design name that must exist).
-validate_studies(RESOLVED, workflow.basedir)
 
 _GRAPH = ModuleGraph(Path(workflow.basedir, "src"), workflow.basedir)
 
