@@ -43,3 +43,17 @@ rule all:
         "results/scorecard.md",
         "results/report.html",
         FINAL_OUTPUTS,
+
+
+# The end of a run of the default target (a no-op one too): where the report is and the verdict of
+# each paper, read from the scorecard.
+onsuccess:
+    if not set(workflow.dag_settings.targets) - {"all"} and Path("results/report.html").is_file():
+        import pandas as pd
+        from gearrep.report import paper_verdicts
+
+        card = pd.read_csv("results/scorecard.csv", dtype={"seed": str}, keep_default_na=False, na_values=[""])
+        documents = {study.seed: study.document for study in REGISTRY.values()}
+        print("\nReport: results/report.html  (scorecard: results/scorecard.md)")
+        for seed, (verdict, why) in paper_verdicts(card).items():
+            print(f"  {seed} {documents[seed]}: {verdict.upper()} - {why}")

@@ -1,4 +1,4 @@
-"""Compute only what is asked (issue 10 item 4), checked on Snakemake's own dry-run plans.
+"""Compute only what is asked, checked on Snakemake's own dry-run plans.
 
 * Every rule declares as inputs exactly the gearrep modules its script or notebook imports,
   directly or through other gearrep modules (found independently here with the standard
@@ -36,8 +36,15 @@ def wf(tmp_path_factory):
 
 
 def smk(cwd, *args):
+    """Snakemake without the default profile (whose logger draws progress bars): its plain log lists
+    every planned job with its input and output, which :func:`plan` reads."""
     out = subprocess.run(
-        [sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(), text=True, timeout=300
+        [sys.executable, "-m", "snakemake", "--workflow-profile", "none", *args],
+        cwd=cwd,
+        capture_output=True,
+        env=tool_env(),
+        text=True,
+        timeout=300,
     )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     return out.stdout + out.stderr
@@ -279,7 +286,7 @@ def test_touching_one_module_reruns_exactly_its_users(wf, every_job):
 
 
 def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):
-    """Issue 15: asking for one KE table plans and runs that table's job alone."""
+    """Asking for one KE table plans and runs that table's job alone."""
     (tmp_path / "wf").mkdir()
     d = copy_workflow(tmp_path / "wf")
     target = "results/tseng/ke_table_5_4.csv"
