@@ -428,7 +428,7 @@ def test_performance_10000_aligned_spur_solves():
 @pytest.mark.bench
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_throughput_in_reference_kernel_elements(formulation):
-    """Issue 20 targets on the README pair (crowned 52/72 spur, 0.05 deg out-of-plane), in elements
+    """Throughput targets on the README pair (crowned 52/72 spur, 0.05 deg out-of-plane), in elements
     of the reference kernel timed in the same run (gearrep.benchmark): at most 6 (reduced) or 12
     (conventional) per vectorised solve and 1000 per single-point call; fails above 1.5 x target."""
     from gearrep import benchmark
@@ -483,7 +483,7 @@ def test_one_point_solve_gives_its_batch_row(formulation, fixed):
 
 @pytest.mark.parametrize("v_column", [True, False])
 def test_a_lazy_jacobian_of_the_kernels_equals_the_eager_one(v_column):
-    """The kernels' lazy Jacobians (issue 20: a row's last evaluation forms none) give bit for bit
+    """The kernels' lazy Jacobians (a row's last evaluation forms none) give bit for bit
     the eager Jacobians, for every row, a subset of rows and one point on floats, reduced and
     conventional, with the same residuals."""
     from gearrep.tca._kernels import _conventional_FJ3, _reduced_FJ3
@@ -528,7 +528,7 @@ def test_a_lazy_jacobian_of_the_kernels_equals_the_eager_one(v_column):
 
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_a_large_batch_solved_in_blocks_gives_the_same_points(formulation, monkeypatch):
-    """A batch above the block size is solved in equal blocks (issue 20: arrays that fit a core's
+    """A batch above the block size is solved in equal blocks (arrays that fit a core's
     cache) with every field equal bit for bit to one batch: random starts (several statuses), a
     fixed v1, an explicit dropped component."""
     import gearrep.tca._formulations as tf
@@ -554,7 +554,7 @@ def test_a_large_batch_solved_in_blocks_gives_the_same_points(formulation, monke
 
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_the_flank_evaluation_that_picks_the_dropped_component_is_the_first_iterates(formulation, monkeypatch):
-    """Member 1's flank evaluated at the starts to pick the dropped component (issue 20) serves the
+    """Member 1's flank evaluated at the starts to pick the dropped component serves the
     solve's first evaluation: a solve that picks it evaluates the flank as often as one given the
     same component, with every field equal bit for bit (free and fixed v1); the evaluation is
     handed out once, and only for exactly the starts' (u1, v1)."""

@@ -103,7 +103,7 @@ def test_quick_run_with_the_test_configuration_plans_every_study(wf):
     ],
 )
 def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
-    """Issue 16: `snakemake -n` stops, naming the file or key, for a deleted data file, a
+    """`snakemake -n` stops, naming the file or key, for a deleted data file, a
     header-only data file and a cross-field limit."""
     data = wf / "data" / "published"
     if mutation == "delete":

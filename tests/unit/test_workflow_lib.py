@@ -146,7 +146,7 @@ def test_bad_config_names_the_key(config, message):
     ],
 )
 def test_issue16_config_values_stop_before_any_job(config, message):
-    """Values the schema let through and that failed only inside a job (issue 16): refused by
+    """Values the schema let through and that failed only inside a job: refused by
     the parse-time resolution and the studies' cross-field validation."""
     with pytest.raises(S.SettingError, match=message):
         wfconfig.validate_studies(wfconfig.resolve_config(config, ROOT), ROOT)
