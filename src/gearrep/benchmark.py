@@ -150,7 +150,7 @@ def time_interleaved(
 
 
 #: throughput targets in reference-kernel elements per solve (vectorised) or per call (single
-#: point), for the crowned 52/72 spur pair of the README
+#: point), for the crowned 52/72 spur pair of docs/library.md
 THROUGHPUT_TARGETS = {"reduced": 6.0, "conventional": 12.0, "single": 1000.0}
 
 

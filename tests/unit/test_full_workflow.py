@@ -1,7 +1,7 @@
 """The whole default workflow, run once cold in a private copy of the repository.
 
 `snakemake --cores 2` with the shipped config (every replication is fast enough to run in full:
-see the README's performance section) must build the scorecard, every replication's checks and figures,
+see docs/performance.md) must build the scorecard, every replication's checks and figures,
 execute and render every notebook and write `results/report.html`; afterwards a dry run plans
 nothing and a no-op run is quick. The rendered report links every check row to a heading of its
 notebook, and a notebook fed a result without its columns fails with the traceback, not a blank
