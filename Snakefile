@@ -1,6 +1,6 @@
 # gearrep: every replication, its checks against the published numbers, and the scorecard.
 # Run `snakemake --cores 2`; see README.md for single targets.
-from snakemake.utils import min_version, validate
+from snakemake.utils import min_version
 
 min_version("8.0")
 
@@ -8,19 +8,9 @@ min_version("8.0")
 configfile: "config/config.yaml"
 
 
-# common.smk puts the interpreter's own bin directory first on PATH (papermill for notebooks)
-envvars:
-    "PATH",
-
-
 # `snakemake --report results/snakemake_report.html` (after a run) collects figures and scorecard.
 report: "workflow/report/workflow.rst"
 
-
-# The schema is generated from the settings declarations (JSON: read in a millisecond, where
-# Snakemake took 0.27 s to read it as YAML); common.smk then resolves every setting
-# (ranges, NaN, unknown keys, cross-field limits) before any job runs.
-validate(config, "config/schema.json")
 
 # The replication rules append their check files, final outputs, notebooks and report figures.
 CHECK_FILES = []
@@ -46,18 +36,6 @@ localrules:
     workflow_timing,
 
 
-# Snakemake selects jobs again on timers (threading.Timer, one max-jobs-per-timespan span after a
-# selection; profiles/default sets 60 s) that would keep the process alive after the run: cancel
-# them when it ends (workflow/lib/wftimers.py; `--no-hooks` skips this, the exit then waits for
-# at most one span).
-onsuccess:
-    cancel_pending_timers()
-
-
-onerror:
-    cancel_pending_timers()
-
-
 rule all:
     default_target: True
     input:
@@ -65,3 +43,17 @@ rule all:
         "results/scorecard.md",
         "results/report.html",
         FINAL_OUTPUTS,
+
+
+# The end of a run of the default target (a no-op one too): where the report is and the verdict of
+# each paper, read from the scorecard.
+onsuccess:
+    if not set(workflow.dag_settings.targets) - {"all"} and Path("results/report.html").is_file():
+        import pandas as pd
+        from gearrep.report import paper_verdicts
+
+        card = pd.read_csv("results/scorecard.csv", dtype={"seed": str}, keep_default_na=False, na_values=[""])
+        documents = {study.seed: study.document for study in REGISTRY.values()}
+        print("\nReport: results/report.html  (scorecard: results/scorecard.md)")
+        for seed, (verdict, why) in paper_verdicts(card).items():
+            print(f"  {seed} {documents[seed]}: {verdict.upper()} - {why}")

@@ -74,7 +74,7 @@ def copy_workflow(dest: Path) -> Path:
 def tool_env() -> dict:
     """Environment for running Snakemake from a test as a user with no activated venv: the
     interpreter's bin directory is taken OFF the PATH, so every workflow test also checks that the
-    rules find papermill and nbconvert through the interpreter running Snakemake (issue 16)."""
+    rules find papermill and nbconvert through the interpreter running Snakemake."""
     env = dict(os.environ)
     own = str(Path(sys.executable).parent)
     env["PATH"] = os.pathsep.join(p for p in env.get("PATH", "").split(os.pathsep) if p and p != own)

@@ -150,8 +150,8 @@ def time_interleaved(
     return {k: float(v) for k, v in best.items()}
 
 
-#: targets of issue 20 in reference-kernel elements per solve (vectorised) or per call (single
-#: point), for the crowned 52/72 spur pair of the README
+#: throughput targets in reference-kernel elements per solve (vectorised) or per call (single
+#: point), for the crowned 52/72 spur pair of docs/library.md
 THROUGHPUT_TARGETS = {"reduced": 6.0, "conventional": 12.0, "single": 1000.0}
 
 #: targets of every gear family in reference-kernel elements per vectorised solve and per

@@ -48,7 +48,7 @@ __all__ = [
     "elastic_ellipses",
 ]
 
-#: the interface columns of a KE table (issue 8), thesis frame and signs
+#: the interface columns of a KE table, thesis frame and signs
 KE_COLUMNS = ["phi1_deg", "phi2_deg", "l_p_mm", "Z_p_mm", "l_g_mm", "Z_g_mm", "KE_arcsec"]
 
 

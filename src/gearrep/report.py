@@ -282,6 +282,16 @@ def verdict(grp: pd.DataFrame) -> tuple[str, str]:
     return v, why
 
 
+def paper_verdicts(card: pd.DataFrame) -> dict[str, tuple[str, str]]:
+    """{seed: (verdict, one-line reason)} of every paper of the scorecard, in seed order ("no
+    results" for a paper without a row of a result status)."""
+    card = _checked_card(card)
+    return {
+        seed: verdict(grp) if grp["status"].isin(result_statuses()).any() else ("no results", "")
+        for seed, grp in card.groupby("seed", sort=True)
+    }
+
+
 def _group_notes(rows: pd.DataFrame, n: int = 2, width: int = 230) -> list[tuple[int, str]]:
     """The most frequent explanations among ``rows`` (grouped on the note's first 60 characters)."""
     notes = rows["note"].fillna("").astype(str).str.strip()
@@ -800,10 +810,7 @@ def render(
     notebooks = notebooks or {}
     errata = errata if errata is not None else pd.DataFrame(columns=["seed", "location"])
     papers = dict(list(card.groupby("seed", sort=True)))
-    verdicts = {
-        seed: verdict(grp) if grp["status"].isin(result_statuses()).any() else ("no results", "")
-        for seed, grp in papers.items()
-    }
+    verdicts = paper_verdicts(card)
     parts = _head(card, runtime_s) + _summary(papers, verdicts) + _legend() + _key_figures(figures)
     for seed, grp in papers.items():
         srcs = ordered_sources(grp, order)

@@ -20,6 +20,7 @@ from __future__ import annotations
 import copy
 import difflib
 import math
+import reprlib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -211,7 +212,9 @@ def resolve(decl: Mapping[str, Setting], *layers: Mapping | None, where: str = "
         for k, v in layer.items():
             key = f"{where}.{k}"
             if k not in decl:
-                raise SettingError(f"{key}: unknown setting{closest(k, decl)}; declared: {sorted(decl)}")
+                raise SettingError(
+                    f"{key}: unknown setting{closest(k, decl)}, got {reprlib.repr(v)}; declared: {sorted(decl)}"
+                )
             s = decl[k]
             if s.kind == "group":
                 if not isinstance(v, Mapping):

@@ -548,7 +548,7 @@ def test_thesis_frame_round_trips(design):
 
 
 def test_path_guess_and_common_angle_tables(tables):
-    """The two trend studies of issue 17: the sec 6.1 path study (offsets 0.03 -> 0.3 rad, both signs,
+    """The two trend studies: the sec 6.1 path study (offsets 0.03 -> 0.3 rad, both signs,
     aligned and misaligned) and the helical/spur shift at a common angle and crown."""
     from gearrep.replications.thesis.convergence import OUTCOMES
     from gearrep.replications.thesis.path_guess import OFFSET_FIRST_RAD, OFFSET_LAST_RAD

@@ -4,7 +4,7 @@ with the test settings (study_settings: declared values, config/config.yaml, con
 Every printed value of Tables 4.3/4.4 and every chapter-4 claim keeps the status on file in
 expected_tseng_curvature.csv (with its reason); a value dropping from reproduced fails. Our own
 numbers are pinned: the two curvature methods agree (acceptance 1e-7, actually ~1e-11), the four
-tables compute in < 2 s (issue 10), and regression values of the predicted Tables 4.2/4.5."""
+tables compute in < 2 s, and regression values of the predicted Tables 4.2/4.5."""
 
 from __future__ import annotations
 
@@ -131,7 +131,7 @@ def test_two_methods_agree(tables):
 
 @pytest.mark.bench
 def test_four_tables_fast(params):
-    """Issue 10 target: the four curvature tables in < 2 s (median of 3, loaded machine)."""
+    """Target: the four curvature tables in < 2 s (median of 3, loaded machine)."""
     p = params
     times = []
     for _ in range(3):

@@ -426,7 +426,7 @@ def test_design_from_published(cases):
 
 @pytest.mark.bench
 def test_one_ke_table_is_fast(gears, cases):
-    """Issue 10 target: one KE table (11 positions) in < 0.5 s (continuation included, the
+    """Target: one KE table (11 positions) in < 0.5 s (continuation included, the
     ideal start cached as in the workflow)."""
     import time
 

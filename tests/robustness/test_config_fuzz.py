@@ -1,4 +1,4 @@
-"""Property-based hostile configurations (issue 16, item 7): random mutations of
+"""Property-based hostile configurations: random mutations of
 config/config.yaml (unknown sections and keys, misspelt names, NaN, infinity, negative, huge and
 wrongly typed values) either resolve or stop with a SettingError naming the mutated key path,
 never with another exception."""

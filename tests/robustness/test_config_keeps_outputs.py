@@ -1,5 +1,5 @@
 """A bad configuration written after a successful build stops Snakemake before any job, names
-the key, and deletes none of the earlier outputs (issue 16: outputs used to be removed by the
+the key, and deletes none of the earlier outputs (outputs used to be removed by the
 failing job)."""
 
 import hashlib

@@ -1,4 +1,4 @@
-"""Property-based hostile design files (issue 19, item 6): random mutations of the example designs
+"""Property-based hostile design files: random mutations of the example designs
 (wrong types, NaN, infinity, negative and huge values, in-range values that make impossible
 geometry, missing, unknown and misspelt keys, another family) and random documents go through
 `gearrep check` (the command's main function, in-process): the exit code is 0 or 2, never a crash,

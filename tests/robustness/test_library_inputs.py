@@ -1,4 +1,4 @@
-"""Hostile inputs to the library (issue 16, item 5): inconsistent designs are refused with a
+"""Hostile inputs to the library: inconsistent designs are refused with a
 ValueError naming the key, the value and the allowed range, instead of confident numbers or
 numpy errors, and no numpy warning escapes the public calls."""
 
@@ -202,7 +202,7 @@ def test_a_non_finite_or_huge_start_is_reported_diverged_without_warnings(formul
 
 
 # ---------------------------------------------------------------------------------------------
-# secondary TCA entry points and the meshing cycle's grid size (issue 16 leftovers)
+# secondary TCA entry points and the meshing cycle's grid size
 # ---------------------------------------------------------------------------------------------
 STARTS_UV = [
     ("u1 2-D", np.zeros((2, 2)), np.zeros(2), r"u1 and v1 must be non-empty 1-D arrays .*shapes \(2, 2\) and \(2,\)"),

@@ -77,26 +77,21 @@ def test_makefile_installs_from_the_lock_and_rebuilds_when_it_changes():
 def test_default_workflow_profile_sets_valid_snakemake_options():
     snakemake_cli = pytest.importorskip("snakemake.cli")
     profile = yaml.safe_load((ROOT / "profiles" / "default" / "config.yaml").read_text())
-    assert profile == {
-        "cores": 2,
-        "rerun-incomplete": True,
-        "printshellcmds": True,
-        "scheduler": "greedy",
-        "max-jobs-per-timespan": "6000/60s",
-    }
+    assert profile == {"cores": 2, "rerun-incomplete": True, "logger": "rich"}
     args = []
     for key, value in profile.items():
         args += [f"--{key}"] if value is True else [f"--{key}", str(value)]
     parsed = snakemake_cli.get_argument_parser().parse_args(args)
-    assert (parsed.cores, parsed.rerun_incomplete, parsed.printshellcmds) == (2, True, True)
-    assert parsed.scheduler == "greedy"
-    # Snakemake's rate of 100 starts per second, which never binds on a workstation, over a span
-    # that re-selects every 60 s instead of every second
-    assert (parsed.max_jobs_per_timespan.max_jobs, parsed.max_jobs_per_timespan.timespan) == (6000, 60)
+    assert (parsed.cores, parsed.rerun_incomplete, parsed.logger) == (2, True, ["rich"])
+    # every key says why it is there
+    text = (ROOT / "profiles" / "default" / "config.yaml").read_text()
+    for key in profile:
+        before = text.split(f"\n{key}:", 1)[0].rstrip().splitlines()
+        assert before and before[-1].startswith("#"), f"profile key {key} without its reason"
 
 
 def test_readme_documents_the_seed_texts_and_keeps_snakemakes_report_under_results():
-    """Issue 16: the README names GEARREP_SEEDS (where the seed-text tests look), and its
+    """The README names GEARREP_SEEDS (where the seed-text tests look), and its
     `snakemake --report` command writes under results/ (git-ignored), not into the repository."""
     import re
 
@@ -104,3 +99,28 @@ def test_readme_documents_the_seed_texts_and_keeps_snakemakes_report_under_resul
     assert "GEARREP_SEEDS" in text
     reports = re.findall(r"snakemake --report (\S+)", text)
     assert reports and all(r.startswith("results/") for r in reports), reports
+
+
+#: how a file would speak of how the project was developed rather than of the project: a work
+#: session or an internal issue number (another project's tracker is cited by its link)
+DEVELOPMENT_WORDS = re.compile(
+    r"\bsessions? [0-9]|\b(first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|eleventh|twelfth|"
+    r"thirteenth|fourteenth|fifteenth|sixteenth|seventeenth|eighteenth|nineteenth|twentieth) session|\bissues? #?[0-9]+",
+    re.IGNORECASE,
+)
+PROJECT_FILES = ["README.md", "CHANGELOG.md", "docs", "src/gearrep", "workflow", "tests", "notebooks", "data", "config"]
+
+
+def test_project_files_speak_of_the_project_alone():
+    """No work sessions and no internal issue numbers in the project's files (a reason states the
+    reason itself); a line citing another project's tracker carries its github.com link."""
+    found = []
+    for name in PROJECT_FILES:
+        root = ROOT / name
+        for f in [root] if root.is_file() else sorted(p for p in root.rglob("*") if p.is_file()):
+            if "__pycache__" in f.parts or f.suffix in {".png", ".pyc", ".pdf", ".parquet"}:
+                continue
+            for i, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+                if DEVELOPMENT_WORDS.search(line) and "github.com/" not in line:
+                    found.append(f"{f.relative_to(ROOT)}:{i}: {line.strip()[:120]}")
+    assert not found, "\n".join(found[:30])

@@ -127,7 +127,7 @@ def test_unreadable_file_is_named(data):
 
 
 def test_duplicate_ids_name_their_files(tmp_path):
-    """Issue 16: every data error names the file: a repeated id names both files."""
+    """Every data error names the file: a repeated id names both files."""
     import shutil
 
     from gearrep import published

@@ -1,4 +1,4 @@
-"""Property-based hostile published data (issue 16, item 7): random mutations of a copy of
+"""Property-based hostile published data: random mutations of a copy of
 data/published (rows deleted, bytes changed, files truncated, values blanked) are caught by the
 manifest check naming the file, and the loader itself either loads the copy or raises a
 PublishedDataError naming the file, never another exception."""

@@ -1,4 +1,4 @@
-"""Numerical stress tests of the GENERATED gears (issue 10 item 3): the curvilinear-tooth gear
+"""Numerical stress tests of the GENERATED gears: the curvilinear-tooth gear
 cut by the ZA hob (two-parameter envelope, :mod:`gearrep.surfaces.hob`), the CATT gear
 (:mod:`gearrep.surfaces.catt`) and the 9-unknown TCA of seed 000 ch. 5
 (:mod:`gearrep.replications.tseng_tca`).

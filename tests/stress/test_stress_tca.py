@@ -1,4 +1,4 @@
-"""Numerical stress tests of the contact solver on involute pairs (issue 10 item 3).
+"""Numerical stress tests of the contact solver on involute pairs.
 
 For each case the solver must return either a converged point that is verified (residual below
 tolerance, finite, inside both flanks, equal to an independently obtained reference contact) or

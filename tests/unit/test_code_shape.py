@@ -1,4 +1,4 @@
-"""The shape issue 15 asks of the code, kept by tests: rotations defined only in ``gearrep.frames``,
+"""The shape of the code, kept by tests: rotations defined only in ``gearrep.frames``,
 and no import fallbacks (``except ImportError``) that would let a missing module pass silently.
 (Function and file sizes, test_code_size.py, and the layering of the core, test_core_layering.py,
 have their own tests.)"""

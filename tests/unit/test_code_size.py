@@ -1,4 +1,4 @@
-"""Size limits of the code (issue 15, Deliver 2): no function above 80 lines of code and no source
+"""Size limits of the code: no function above 80 lines of code and no source
 file above 900 lines, in the library (src/gearrep) and the workflow scripts (workflow/scripts).
 
 Lines of code of a function, as counted here: the lines from its ``def`` line (decorators not

@@ -1,4 +1,4 @@
-"""The core's shape (issue 15 item 6): every core module (src/gearrep/*.py and
+"""The core's shape: every core module (src/gearrep/*.py and
 src/gearrep/surfaces/*.py) declares its public names in ``__all__``, and the layers only import
 downwards: no core module imports from gearrep.replications, and no top-level core module imports
 from gearrep.surfaces (the surface protocol lives in gearrep.surface, below the families).

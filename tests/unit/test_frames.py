@@ -218,7 +218,7 @@ def test_rotation_about_axis_derivatives_match_finite_differences():
 
 
 def test_component_rotations_equal_the_matrix_products():
-    """rotate_z and matrix_applier (structure of arrays, issue 20) against rot_z / M @ v + t."""
+    """rotate_z and matrix_applier (structure of arrays) against rot_z / M @ v + t."""
     rng = np.random.default_rng(4)
     v = rng.normal(size=(50, 3))
     a = rng.uniform(-3, 3, 50)

@@ -1,7 +1,7 @@
-"""The whole default workflow, run once cold in a private copy of the repository (issue 9, issue 2).
+"""The whole default workflow, run once cold in a private copy of the repository.
 
 `snakemake --cores 2` with the shipped config (every replication is fast enough to run in full:
-see the README's performance section) must build the scorecard, every replication's checks and figures,
+see docs/performance.md) must build the scorecard, every replication's checks and figures,
 execute and render every notebook and write `results/report.html`; afterwards a dry run plans
 nothing and a no-op run is quick. The rendered report links every check row to a heading of its
 notebook, and a notebook fed a result without its columns fails with the traceback, not a blank
@@ -45,7 +45,23 @@ def run(tmp_path_factory):
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-4000:]
     # timings are printed, not asserted (no timed assertion in the default run; targets: make bench)
     print(f"\ncold default workflow: {elapsed:.1f} s")
+    (d / "run.log").write_text(out.stdout + out.stderr)
     return d
+
+
+def test_the_run_prints_a_short_log_ending_with_the_report_and_the_verdicts(run):
+    """What `make reproduce` shows (the default profile's logger): Snakemake's plan and progress,
+    not every job's files and command, and at the end where the report is and each paper's
+    verdict."""
+    from gearrep import report
+
+    lines = (run / "run.log").read_text().splitlines()
+    assert len(lines) <= 110, f"{len(lines)} lines"
+    at = [i for i, ln in enumerate(lines) if ln.startswith("Report: results/report.html")]
+    assert len(at) == 1, lines[-20:]
+    verdicts = [ln for ln in lines[at[0] + 1 :] if re.match(r"^  \d{3} ", ln)]
+    assert [ln.split()[0] for ln in verdicts] == ["000", "002", "003", "004"], lines[at[0] :][:8]
+    assert all(any(v.upper() in ln for v in report.VERDICTS) for ln in verdicts), verdicts
 
 
 @pytest.mark.numerics
@@ -151,7 +167,7 @@ def test_dry_run_after_full_run_plans_nothing(run):
 
 
 def test_real_report_in_headless_browser(run):
-    """The real report in a real browser (issue 21): a verdict per paper, one parity plot per table
+    """The real report in a real browser: a verdict per paper, one parity plot per table
     with computed numbers (image decoded), the design table of every paper, all laid out visibly,
     and every link (in-page anchors, notebooks and their headings) resolves."""
     spec = importlib.util.spec_from_file_location("screenshot", ROOT / "workflow" / "scripts" / "screenshot.py")
@@ -203,13 +219,13 @@ def test_no_rendered_file_shows_an_absolute_path(run):
 
 
 def test_rendered_notebooks_hide_the_preamble_and_fold_the_code(run):
-    """Issue 21: no preamble cell, code folded, the design data at the top and at least as
+    """No preamble cell, code folded, the design data at the top and at least as
     many embedded images as the study has figure files."""
     from gearrep.replications import load
 
     for name in notebooks(run):
         text = (run / "results" / "notebooks" / f"{name}.html").read_text(encoding="utf-8")
-        assert "gearrep-step-properties" not in text and "os.chdir" not in text, name
+        assert "gearrep-snakemake" not in text and "os.chdir" not in text and "pickle" not in text, name
         assert text.count('<details class="gearrep-code">') >= 3, name
         assert "design data" in text, name
         assert text.count("<img") >= len(load(name).FIGURES), f"{name}: fewer images than figure files"
@@ -223,9 +239,10 @@ def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):
 
     rules = {f"{key}_notebook" for key in REGISTRY}
     assert len(rules) == len(list((ROOT / "notebooks").glob("*.ipynb")))
-    goals = {r: f"results/notebooks/{r[: -len('_notebook')]}.executed" for r in sorted(rules)}
+    goals = {r: f"results/notebooks/{r[: -len('_notebook')]}.html" for r in sorted(rules)}
     force = ["--forcerun", *sorted(rules)]
-    jobs = smk(run, "-n", *force, "--", *goals.values()).stdout
+    plain = ["--workflow-profile", "none"]  # the plain log: every job's input, "Error in rule ..."
+    jobs = smk(run, *plain, "-n", *force, "--", *goals.values()).stdout
     saved = {}
     try:
         for rule in sorted(rules):
@@ -237,7 +254,7 @@ def test_notebook_fails_loudly_on_a_result_without_its_columns(run, tmp_path):
             assert target not in saved, f"{rule} shares its first CSV with another notebook"
             saved[target] = target.read_bytes()
             pd.read_csv(target).iloc[:, :1].to_csv(target, index=False)
-        out = smk(run, "--cores", "2", "--keep-going", *force, "--", *goals.values())
+        out = smk(run, *plain, "--cores", "2", "--keep-going", *force, "--", *goals.values())
         text = out.stdout + out.stderr
         assert out.returncode != 0
         ok = [r for r in rules if f"Error in rule {r}:" not in text]

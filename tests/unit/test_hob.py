@@ -93,7 +93,7 @@ def test_convex_and_concave_flanks():
 
 @pytest.mark.parametrize("name", ["R", "L"])
 def test_direct_geometry_agrees_with_envelope_relations(name):
-    """Curvatures two ways (issue 7 item 3): (a) differential geometry of the generated surface
+    """Curvatures two ways: (a) differential geometry of the generated surface
     r(l, psi); (b) K_2 = K_1 + C E^-1 C^T and the chapter's corrected eq 4.33-4.39 / 4.24-4.26."""
     g = GeneratedGear.flank(name)
     l = np.array([4.5, 7.0, 10.0, 6.0])

@@ -36,6 +36,6 @@ def test_notebook_is_stored_clean_and_wired(path):
     from gearrep.replications import REGISTRY
 
     assert path.stem in REGISTRY, f"{path.name}: no study {path.stem!r} in the registry, so no rule runs it"
-    assert re.search(r'notebook=f"notebooks/\{_key\}\.ipynb"', RULES) and "notebook_request(" in RULES
+    assert re.search(r'notebook=f"notebooks/\{_key\}\.ipynb"', RULES) and '"../scripts/notebook.py"' in RULES
     assert "NOTEBOOKS.append(_key)" in RULES
-    assert re.search(r'touch\(f"results/notebooks/\{_key\}\.executed"\)', RULES)
+    assert re.search(r'html=f"results/notebooks/\{_key\}\.html"', RULES)

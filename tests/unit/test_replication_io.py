@@ -12,7 +12,7 @@ import replication_io  # noqa: E402
 
 
 def test_a_failed_job_leaves_its_traceback_in_the_log(tmp_path):
-    """Issue 16: Snakemake points the user to the job's log, so the log holds the traceback."""
+    """Snakemake points the user to the job's log, so the log holds the traceback."""
     log = tmp_path / "logs" / "job.log"
     with pytest.raises(ZeroDivisionError):
         with replication_io.logged(str(log)):

@@ -1,5 +1,5 @@
 """The report page builds from a small results fixture and is self-contained; verdicts, findings,
-document order, parity plots, design tables and the status vocabulary (issue 21)."""
+document order, parity plots, design tables and the status vocabulary."""
 
 import io
 import re

@@ -1,4 +1,4 @@
-"""Compute only what is asked (issue 10 item 4), checked on Snakemake's own dry-run plans.
+"""Compute only what is asked, checked on Snakemake's own dry-run plans.
 
 * Every rule declares as inputs exactly the gearrep modules its script or notebook imports,
   directly or through other gearrep modules (found independently here with the standard
@@ -36,8 +36,15 @@ def wf(tmp_path_factory):
 
 
 def smk(cwd, *args):
+    """Snakemake without the default profile (whose logger draws progress bars): its plain log lists
+    every planned job with its input and output, which :func:`plan` reads."""
     out = subprocess.run(
-        [sys.executable, "-m", "snakemake", *args], cwd=cwd, capture_output=True, env=tool_env(), text=True, timeout=300
+        [sys.executable, "-m", "snakemake", "--workflow-profile", "none", *args],
+        cwd=cwd,
+        capture_output=True,
+        env=tool_env(),
+        text=True,
+        timeout=300,
     )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     return out.stdout + out.stderr
@@ -108,7 +115,7 @@ def plan(cwd, *args) -> list[dict]:
 
 def rule_sources() -> dict[str, tuple[Path, list[str]]]:
     """rule name -> (the script or notebook it runs, modules it imports dynamically); rules with
-    shell/run blocks are left out, but for those running a script through the step runner. The replication rules are generated from the registry."""
+    run blocks are left out. The replication rules are generated from the registry."""
     from gearrep.replications import REGISTRY, load
 
     out = {}
@@ -118,18 +125,15 @@ def rule_sources() -> dict[str, tuple[Path, list[str]]]:
             m = re.search(r"^\s+(?:script|notebook):\s*\n?\s*f?\"([^\"]+)\"", body, flags=re.M)
             if m:
                 out[name] = ((smk_file.parent / m.group(1)).resolve(), [])
-            # a script run by the step runner: its input named script (relative to the workflow)
-            m = re.search(r"^\s+script=\"([^\"]+)\",", body, flags=re.M)
-            if m:
-                out[name] = ((ROOT / m.group(1)).resolve(), [])
     scripts = ROOT / "workflow" / "scripts"
     for key in REGISTRY:
         dynamic = [f"gearrep.replications.{key}"]
         for job in load(key).JOBS:
-            out[f"{key}_{job}"] = (scripts / "run_study_step.py", dynamic)
-        out[f"{key}_checks"] = (scripts / "run_study_step.py", dynamic)
+            out[f"{key}_{job}"] = (scripts / "run_job.py", dynamic)
+        out[f"{key}_checks"] = (scripts / "run_checks.py", dynamic)
         out[f"{key}_figures"] = (scripts / f"{key}_figures.py", [])
-        out[f"{key}_notebook"] = (ROOT / "notebooks" / f"{key}.ipynb", [])
+        # the notebook and the script that executes and renders it
+        out[f"{key}_notebook"] = ((ROOT / "notebooks" / f"{key}.ipynb", scripts / "notebook.py"), [])
     return out
 
 
@@ -198,11 +202,11 @@ def test_every_rule_declares_exactly_the_library_it_imports(every_job):
         declared = {p for p in job["input"] if p.startswith("src/gearrep/")}
         key = (src, tuple(dynamic))  # many jobs run the same source (the study steps)
         if key not in found:
-            found[key] = gearrep_files(src, dynamic)
+            found[key] = set().union(*(gearrep_files(s, dynamic) for s in (src if isinstance(src, tuple) else [src])))
         wanted = found[key]
         if declared != wanted:
             wrong.append(
-                f"rule {job['rule']} ({src.name}): declared but not imported {sorted(declared - wanted)}; "
+                f"rule {job['rule']} ({src}): declared but not imported {sorted(declared - wanted)}; "
                 f"imported but not declared {sorted(wanted - declared)}"
             )
         checked.add(job["rule"])
@@ -282,7 +286,7 @@ def test_touching_one_module_reruns_exactly_its_users(wf, every_job):
 
 
 def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):
-    """Issue 15: asking for one KE table plans and runs that table's job alone."""
+    """Asking for one KE table plans and runs that table's job alone."""
     (tmp_path / "wf").mkdir()
     d = copy_workflow(tmp_path / "wf")
     target = "results/tseng/ke_table_5_4.csv"

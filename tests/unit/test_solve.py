@@ -154,7 +154,7 @@ def _cubic_sine_rows(p):
 
 
 def test_residual_and_jacobian_in_one_call_give_the_same_solves():
-    """newton(fun_jac=...) (issue 20): the same iterates and records as fun + jac, with fewer calls."""
+    """newton(fun_jac=...): the same iterates and records as fun + jac, with fewer calls."""
     rng = np.random.default_rng(3)
     p = rng.uniform(0.5, 2.0, (40, 2))
     calls = {"fj": 0}
@@ -175,7 +175,7 @@ def test_residual_and_jacobian_in_one_call_give_the_same_solves():
 
 
 def test_a_lazy_jacobian_gives_the_same_solves_and_is_formed_only_for_rows_that_step_again():
-    """newton(fun_jac=...) whose J is a function of the rows (issue 20): the same records as an
+    """newton(fun_jac=...) whose J is a function of the rows: the same records as an
     eager J, bit for bit (damped and plain, rows converging at different steps, a batch of one);
     J is called at most once per evaluation, only for rows that are not done after it, and never
     for the evaluation at which every row has converged."""

@@ -96,7 +96,7 @@ def test_rotated_surface_moves_points_keeps_curvatures_and_passes_attributes():
 
 
 def test_evaluate_components_equal_evaluate():
-    """Structure-of-arrays evaluation (issue 20): the default (from evaluate), the involute flank's
+    """Structure-of-arrays evaluation: the default (from evaluate), the involute flank's
     own (arrays and one point on floats) and a rotated surface give evaluate's numbers."""
     from gearrep.frames import rot_x
     from gearrep.surface import RotatedSurface, SurfacePoint, cross3, dot3

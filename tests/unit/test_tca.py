@@ -433,7 +433,7 @@ def test_performance_10000_aligned_spur_solves():
 @pytest.mark.bench
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_throughput_in_reference_kernel_elements(formulation):
-    """Issue 20 targets on the README pair (crowned 52/72 spur, 0.05 deg out-of-plane), in elements
+    """Throughput targets on the README pair (crowned 52/72 spur, 0.05 deg out-of-plane), in elements
     of the reference kernel timed in the same run (gearrep.benchmark): at most 6 (reduced) or 12
     (conventional) per vectorised solve and 1000 per single-point call; fails above 1.5 x target."""
     from gearrep import benchmark
@@ -563,7 +563,7 @@ def test_a_large_batch_solved_in_blocks_gives_the_same_points(formulation, monke
 
 @pytest.mark.parametrize("formulation", ["reduced", "conventional"])
 def test_the_flank_evaluation_that_picks_the_dropped_component_is_the_first_iterates(formulation, monkeypatch):
-    """Member 1's flank evaluated at the starts to pick the dropped component (issue 20) serves the
+    """Member 1's flank evaluated at the starts to pick the dropped component serves the
     solve's first evaluation: a solve that picks it evaluates the flank as often as one given the
     same component, with every field equal bit for bit (free and fixed v1); the evaluation is
     handed out once, and only for exactly the starts' (u1, v1)."""

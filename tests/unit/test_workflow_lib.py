@@ -146,7 +146,7 @@ def test_bad_config_names_the_key(config, message):
     ],
 )
 def test_issue16_config_values_stop_before_any_job(config, message):
-    """Values the schema let through and that failed only inside a job (issue 16): refused by
+    """Values the schema let through and that failed only inside a job: refused by
     the parse-time resolution and the studies' cross-field validation."""
     with pytest.raises(S.SettingError, match=message):
         wfconfig.validate_studies(wfconfig.resolve_config(config, ROOT), ROOT)
@@ -167,17 +167,3 @@ def test_config_yaml_holds_only_overrides_with_reasons():
         return d[k]
 
     walk(decl, cfg, "config")
-
-
-# -- Snakemake's selection timers ------------------------------------------------------------
-def test_cancel_pending_timers_stops_a_timer_before_it_fires():
-    import threading
-
-    import wftimers
-
-    fired = []
-    timer = threading.Timer(600, fired.append, args=[1])
-    timer.start()
-    assert wftimers.cancel_pending_timers() >= 1
-    timer.join(timeout=30)  # a cancelled timer's thread ends at once; 600 s if it were not
-    assert not timer.is_alive() and fired == []

@@ -127,7 +127,7 @@ class ModuleGraph:
 
     def source_files(self, path: Path | str) -> list[Path]:
         """The script or notebook ``path`` and the scripts beside it that it imports, in turn (e.g.
-        ``workflow/scripts/replication_io.py``: importable because the step runner puts the
+        ``workflow/scripts/replication_io.py``: importable because Snakemake puts the
         scripts' directory on ``sys.path``)."""
         path = Path(path)
         seen, todo = [], [path]

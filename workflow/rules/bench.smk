@@ -1,4 +1,4 @@
-# Run time against error and throughput (issue 10): `snakemake --cores 2 bench`.
+# Run time against error and throughput: `snakemake --cores 2 bench`.
 # Not part of the default target; timings are medians of repeated runs with the machine load
 # recorded. A study joins by defining `bench_cases(settings, design)` in its package and being
 # listed in config `bench: replications`.
@@ -16,8 +16,6 @@ rule bench_core:
         figure=figure(f"{BENCH_DIR}/figures/core_tca_time_vs_error.png", "bench"),
     log:
         "results/logs/bench_core.log",
-    conda:
-        "../envs/gearrep.yaml"
     params:
         n_vectorised=RESOLVED["bench"]["n_vectorised"],
         n_single=RESOLVED["bench"]["n_single"],
@@ -44,8 +42,6 @@ rule bench_replication:
         "results/logs/bench_{name}.log",
     wildcard_constraints:
         name="|".join(RESOLVED["bench"]["replications"]) or "no-replication",
-    conda:
-        "../envs/gearrep.yaml"
     params:
         settings=lambda wc: SETTINGS[wc.name],
         repeats=RESOLVED["bench"]["repeats"],
@@ -87,15 +83,11 @@ rule bench_defaults:
 # `snakemake --cores 2 results/bench/workflow_jobs.csv` after (or as) a full run.
 rule workflow_timing:
     input:
-        benchmarks=BENCHMARKS
-        + expand("results/benchmarks/render_{name}.tsv", name=NOTEBOOKS)
-        + ["results/benchmarks/scorecard.tsv", "results/benchmarks/report.tsv"],
+        benchmarks=BENCHMARKS + ["results/benchmarks/scorecard.tsv", "results/benchmarks/report.tsv"],
         code=script_lib("workflow/scripts/workflow_timing.py"),
     output:
         f"{BENCH_DIR}/workflow_jobs.csv",
     log:
         "results/logs/workflow_timing.log",
-    conda:
-        "../envs/gearrep.yaml"
     script:
         "../scripts/workflow_timing.py"

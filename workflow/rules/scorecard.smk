@@ -4,8 +4,6 @@
 
 rule scorecard:
     input:
-        runner=STEP_RUNNER,
-        script="workflow/scripts/scorecard.py",
         checks=CHECK_FILES,
         published=published_files(),
         manifest=f"{PUBLISHED_DIR}/MANIFEST.csv",
@@ -13,24 +11,9 @@ rule scorecard:
     output:
         csv=report("results/scorecard.csv", caption="../report/scorecard.rst", category="scorecard"),
         md="results/scorecard.md",
-        job_timing="results/benchmarks/scorecard.tsv",
     log:
         "results/logs/scorecard.log",
-    conda:
-        "../envs/gearrep.yaml"
-    params:
-        python=PYTHON,
-        # run by the step runner's warm process (the script reads snakemake.input.<name>)
-        request=script_request(
-            "workflow/scripts/scorecard.py",
-            input={
-                "checks": CHECK_FILES,
-                "published": published_files(),
-                "manifest": f"{PUBLISHED_DIR}/MANIFEST.csv",
-            },
-            output={"csv": "results/scorecard.csv", "md": "results/scorecard.md"},
-            log="results/logs/scorecard.log",
-            timing="results/benchmarks/scorecard.tsv",
-        ),
-    shell:
-        "{params.python:q} -S {input.runner:q} {params.request:q}"
+    benchmark:
+        "results/benchmarks/scorecard.tsv"
+    script:
+        "../scripts/scorecard.py"

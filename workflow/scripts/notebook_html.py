@@ -1,4 +1,4 @@
-"""JupyterLab's HTML export of a notebook without its BeautifulSoup pass (rule render_notebook).
+"""JupyterLab's HTML export of a notebook without its BeautifulSoup pass (the notebook rules' script, notebook.py).
 
 nbconvert's ``HTMLExporter`` renders the page from its templates and then parses the whole page
 (1-2.3 MB here, the figures inline) with BeautifulSoup only to add two attributes, and

@@ -3,8 +3,6 @@ scripts' directory on sys.path): write a run's tables to the rule's outputs, rea
 write a validated check table. The numerics stay in gearrep.replications.<name>."""
 
 import contextlib
-import os
-import resource
 import time
 import traceback
 from pathlib import Path
@@ -25,40 +23,6 @@ def logged(log: str):
         with open(log, "a") as f:
             f.write(traceback.format_exc())
         raise
-
-
-_IMPORTED = time.time()
-
-
-def _process_wall_seconds() -> float:
-    """Wall seconds since this process started (Linux: /proc; elsewhere: since this module was
-    imported, which leaves out the interpreter start)."""
-    try:
-        start_ticks = int(Path("/proc/self/stat").read_text().rsplit(")", 1)[1].split()[19])
-        uptime = float(Path("/proc/uptime").read_text().split()[0])
-        return uptime - start_ticks / os.sysconf("SC_CLK_TCK")
-    except (OSError, ValueError, IndexError):
-        return time.time() - _IMPORTED
-
-
-def write_timing(path: str, compute_s: float) -> None:
-    """The job's own timing, in the columns of a Snakemake benchmark file plus ``compute_s``: ``s``
-    (wall seconds of the whole process), ``cpu_time`` (user + system seconds of the process and of
-    its ended child processes),
-    ``max_rss`` (peak resident memory, MB) and ``compute_s`` (the computation alone; the rest is what
-    the job pays to exist: interpreter, imports, reading and writing). Written by the job itself:
-    Snakemake's ``benchmark:`` polls every job's process tree twice a second from the scheduling
-    process, which cost about a quarter of a second of that process's CPU per job."""
-    ru = resource.getrusage(resource.RUSAGE_SELF)
-    kids = resource.getrusage(resource.RUSAGE_CHILDREN)  # e.g. a notebook's kernel, once it has ended
-    row = {
-        "s": _process_wall_seconds(),
-        "cpu_time": ru.ru_utime + ru.ru_stime + kids.ru_utime + kids.ru_stime,
-        "max_rss": ru.ru_maxrss / 1024.0,  # kB on Linux
-        "compute_s": compute_s,
-    }
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    Path(path).write_text("\t".join(row) + "\n" + "\t".join(f"{v:.4f}" for v in row.values()) + "\n")
 
 
 def save_figure(fig, path) -> None:

@@ -245,6 +245,9 @@ def run_cli(args) -> int:
     )
     cmd = [sys.executable, "-m", "snakemake", "--snakefile", str(SNAKEFILE), "--directory", str(out)]
     cmd += ["--config", f"spec={spec_path}", "--cores", str(args.cores)]
+    # the sweep's own settings wherever the command runs: not the workflow profile (profiles/default)
+    # that Snakemake would otherwise pick up from the current directory
+    cmd += ["--workflow-profile", "none"]
     if args.profile:  # a path is taken relative to where the command runs, not to DIR
         prof = Path(args.profile)
         cmd += ["--profile", str(prof.resolve()) if prof.exists() else args.profile]

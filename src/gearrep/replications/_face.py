@@ -108,10 +108,6 @@ FACE = (
 )
 
 
-#: output names the generic rules give to every job (its own timing file), not usable for tables
-RESERVED_OUTPUT_NAMES = ("job_timing",)
-
-
 def check_face(module: ModuleType) -> None:
     """Raise if ``module`` lacks a name of :data:`FACE` (or leaves one out of its ``__all__``, which
     each package starts with ``*FACE``) or a name has the wrong kind."""
@@ -128,8 +124,4 @@ def check_face(module: ModuleType) -> None:
         raise TypeError(f"{module.__name__}.JOBS must map names to Job")
     if next(iter(module.CHECK_OUTPUTS)) != "checks":
         raise TypeError(f"{module.__name__}.CHECK_OUTPUTS must start with 'checks'")
-    reserved = [n for j in module.JOBS.values() for n in j.tables if n in RESERVED_OUTPUT_NAMES]
-    reserved += [n for n in module.CHECK_OUTPUTS if n in RESERVED_OUTPUT_NAMES]
-    if reserved:
-        raise TypeError(f"{module.__name__}: output names {reserved} are reserved by the workflow rules")
     table_paths(module.JOBS)

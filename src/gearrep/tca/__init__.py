@@ -85,7 +85,7 @@ All solves go through :func:`gearrep.solve.newton`. Per-row data (phi1, a fixed 
 component) are carried as extra unknowns frozen by identity rows with zero residual, because
 ``newton`` hands ``fun`` only the rows still iterating.
 
-Speed (issue 20; measured by ``make bench``, :func:`gearrep.benchmark.tca_throughput`): the
+Speed (measured by ``make bench``, :func:`gearrep.benchmark.tca_throughput`): the
 systems are evaluated by components (structure of arrays: surfaces' ``evaluate_components``,
 :func:`gearrep.frames.rotate_z` and :func:`gearrep.frames.matrix_applier` for the fixed
 mountings, no (n, 3, 3) stacks), residual and Jacobian in one evaluation per Newton step

@@ -487,7 +487,7 @@ def _expand(x, free, v1):
 #: the most rows :func:`solve_contact` solves in one batch; a larger one is solved in equal blocks
 #: (the rows are independent: the same results bit for bit). An array of 20 000 rows holds 160 kB,
 #: so an operation's operands stay within a core's L2 cache (512 kB on the reference machine):
-#: README pair, reduced, one batch of 80 000 rows cost 9.6-10 reference elements per solve against
+#: library example pair (docs/library.md), reduced, one batch of 80 000 rows cost 9.6-10 reference elements per solve against
 #: 6.9-7.5 in batches of 13 000-20 000 (below about 5 000 rows numpy's per-call cost grows)
 _BLOCK_ROWS = 20_000
 

@@ -245,7 +245,7 @@ def checks(tables: dict, published) -> dict:
 
 
 def bench_cases(settings: dict, design: Design) -> dict:
-    """Run time against error (issue 10; contract in workflow/scripts/bench_replication.py).
+    """Run time against error (contract in workflow/scripts/bench_replication.py).
 
     * ``four_tables``: the meshing-solve tolerance of the four tables; error = max |change of
       k_s, k_q| (1/mm) against tol = 1e-13; target a tenth of the tightest printed half-unit (k_s
