@@ -582,6 +582,26 @@ def _asymmetry(phi, te, lead):
     return float(resid), float(off)
 
 
+def _pitch_columns(pair: BevelPair, res: dict, p0: np.ndarray, material) -> dict:
+    """Summary columns at the pitch point (contact on gear 1's pitch cone, solved) and at phi1 = 0."""
+    from ...units import ARCSEC
+
+    phi = res["phi1"]
+    i0 = int(np.argmin(np.abs(phi)))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        phi_p, cp = pitch_cone_contact(pair, phi, res["contact"])
+    found = cp is not None
+    return dict(
+        phi1_pitch_rad=phi_p,
+        p0_pitch_MPa=float(contact_pressure(pair, cp, *material)[0]) if found else np.nan,
+        v1_pitch=float(cp.v1[0]) if found else np.nan,
+        te_pitch_arcsec=float(cp.te[0]) / ARCSEC if found else np.nan,
+        p0_at_phi1_0_MPa=float(p0[i0]),
+        v1_at_phi1_0=float(res["v1"][i0]),
+        u1_at_phi1_0_rad=float(res["u1"][i0]),
+    )
+
+
 def _material(d: dict, case: str):
     """Normal load [N], E [N/mm^2], nu: Table 5 (straight, mm), or sec 5.2's non-dimensional load
     F = P / (E m b) (eq 56) with m = 1 mm, so that lengths in module units are mm."""
@@ -633,12 +653,8 @@ def contact_study(
     p0 = (
         contact_pressure(pair, res["contact"], load, E, nu) if res["contact"] is not None else np.full(len(phi), np.nan)
     )
-    i0 = int(np.argmin(np.abs(phi)))
     resid, off = _asymmetry(phi, te, lead)
     pl = p0[lead & np.isfinite(p0)]
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        phi_p, cp = pitch_cone_contact(pair, phi, res["contact"])
-    p0_p = contact_pressure(pair, cp, load, E, nu)[0] if cp is not None else np.nan
     row = dict(
         study=label,
         case=case,
@@ -664,21 +680,22 @@ def contact_study(
         te_quadratic_residual_pct=resid,
         te_max_offset_pct=off,
         p0_max_MPa=float(pl.max()) if len(pl) else np.nan,
-        phi1_pitch_rad=phi_p,
-        p0_pitch_MPa=float(p0_p),
-        v1_pitch=float(cp.v1[0]) if cp is not None else np.nan,
-        te_pitch_arcsec=float(cp.te[0]) / ARCSEC if cp is not None else np.nan,
-        p0_at_phi1_0_MPa=float(p0[i0]),
-        v1_at_phi1_0=float(res["v1"][i0]),
-        u1_at_phi1_0_rad=float(res["u1"][i0]),
+        **_pitch_columns(pair, res, p0, (load, E, nu)),
         load_N=load,
     )
+    return row, _curve_rows(label, case, res, lead, p0)
+
+
+def _curve_rows(label: str, case: str, res: dict, lead: np.ndarray, p0: np.ndarray) -> pd.DataFrame:
+    """Rows of bevel_*_curves.csv: one pair's path, TE and p0 on the grid, then the cycle's TE."""
+    from ...units import ARCSEC
+
     curves = pd.DataFrame(
         dict(
             study=label,
             case=case,
-            phi1_rad=phi,
-            te_arcsec=te / ARCSEC,
+            phi1_rad=res["phi1"],
+            te_arcsec=res["te"] / ARCSEC,
             leading=lead,
             u1_rad=res["u1"],
             v1=res["v1"],
@@ -688,7 +705,7 @@ def contact_study(
     cyc = pd.DataFrame(
         dict(study=label, case=case, phi1_rad=res["cycle_phi1"], cycle_te_arcsec=res["cycle_te"] / ARCSEC)
     )
-    return row, pd.concat([curves, cyc], ignore_index=True)
+    return pd.concat([curves, cyc], ignore_index=True)
 
 
 def _equal_drop(g: BevelGearData, c1: float, a2: float) -> dict:
