@@ -126,12 +126,28 @@ def test_rack_heights(tables):
     tooth and a wider top land; the 'required' rows give back the printed h_d P_n. Versions 1-2
     (circular arcs): the arc centred on the pitch line limits the addendum at the line (h_a = 0),
     version 2's convex tip arc is not undercut before its lowest point; the printed h_d of
-    versions 1-2 and 3 need disjoint rack tooth thicknesses (no one assumption fits all)."""
+    versions 1-2 and 3 need disjoint rack tooth thicknesses (no one reading fits all). The tooth
+    thickness follows from P on the pinion tooth's axis (fig. 1.6): the arcs of versions 1-2 are
+    centred on P, so half the pinion tooth at the pitch line is their radius; the tooth = space
+    reading gives back the heights computed with it."""
     h = tables["heights"]
     h3 = h[h["version"] == 3]
     assert h3["ha_Pn"][h3["N1"] == 17].nunique() == 1
-    assert h3.loc[h3["kind"] == "design", "ha_Pn"].iloc[0] == pytest.approx(0.54423, abs=1e-4)
-    assert h3.loc[h3["kind"] == "design", "hd_Pn"].iloc[0] == pytest.approx(1.01470, abs=1e-4)
+    d3 = h3[h3["kind"] == "design"].iloc[0]
+    assert d3["tooth_axis"] == "pinion_tooth"
+    assert d3["ha_Pn"] == pytest.approx(0.54423, abs=1e-4)
+    assert d3["hd_Pn"] == pytest.approx(1.24428, abs=1e-4)
+    rd = h[h["kind"] == "reading"].set_index(["version", "tooth_axis"])
+    for v, w in ((1, 0.200), (2, 0.230)):  # arc radius [in] x P_n = 5
+        assert rd.loc[(v, "pinion_tooth"), "half_width_Pn"] == pytest.approx(5 * w, abs=1e-9)
+    for v, hd in ((3, 1.01470), (1, 0.9273), (2, 1.0151)):
+        assert rd.loc[(v, "half_pitch"), "hd_Pn"] == pytest.approx(hd, abs=1e-4)
+    for v in (1, 2, 3):  # P on the rack tooth's axis: the thinnest pinion tooth, the lowest h_d
+        assert (
+            rd.loc[(v, "rack_tooth"), "hd_Pn"]
+            < rd.loc[(v, "half_pitch"), "hd_Pn"]
+            < rd.loc[(v, "pinion_tooth"), "hd_Pn"]
+        )
     for v, hd in ((1, 0.87), (2, 0.90), (3, 1.25)):
         hv = h[h["version"] == v]
         sw = hv[hv["kind"] == "sweep"]
@@ -148,7 +164,7 @@ def test_rack_heights(tables):
     d = h[h["kind"] == "design"].set_index("version")
     assert abs(d.loc[1, "ha_Pn"]) < 1e-12 and d.loc[1, "ha_limit"] == "zero_pressure_angle"
     assert d.loc[2, "ha_limit"] == "profile_end" and d.loc[2, "ha_Pn"] == pytest.approx(1.2264, abs=1e-4)
-    assert d.loc[1, "hd_Pn"] == pytest.approx(0.9273, abs=1e-4) and d.loc[2, "hd_Pn"] == pytest.approx(1.0151, abs=1e-4)
+    assert d.loc[1, "hd_Pn"] == pytest.approx(0.9899, abs=1e-4) and d.loc[2, "hd_Pn"] == pytest.approx(1.1411, abs=1e-4)
     req = h[h["kind"] == "required"].groupby("version")["rack_tooth_over_pitch"]
     assert req.max()[3] < min(req.min()[1], req.min()[2])
 

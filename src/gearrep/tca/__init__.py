@@ -15,7 +15,11 @@ So phi2 > 0 turns member 2 about w2 = -A2 z (the sense in which an external memb
 phi1 > 0 drives it), and for an aligned conjugate pair phi2 = (N1/N2) phi1. ``phase2`` defaults to
 pi - side pi/N2: for involute flanks (tooth of each gear centred on its x axis) this places the
 tooth space of member 2 on the centre line, so that the zero-backlash standard pair is in
-conjugate mesh at phi1 = phi2 = 0 with contact at the pitch point.
+conjugate mesh at phi1 = phi2 = 0. That position is not the pitch-point contact: tooth 1 is then
+centred on the centre line, so its flank meets the line of action off the pitch point (0.26 mm
+outside the pitch circle for the thesis's spur 52/72 pair). The contact passes the pitch point when
+the flank's pitch-circle point reaches the centre line, half the tooth's angular thickness away
+(phi1 = -side pi/(2 N1) for a standard tooth); solve for it where the pitch point is wanted.
 Misalignment (all applied to member 2; the angular ones pivot about O2, i.e. the mid-face point of
 its axis): d_gamma_in = rotation about y_f, in the plane of the axes (axes intersect);
 d_gamma_out = rotation about x_f, the centre line (axes cross); dE = centre-distance change;

@@ -11,7 +11,11 @@ so its axis A2 z lies in the x_f z_f plane at the shaft angle Sigma_o = Sigma - 
 centred on its own x axis, the pitch line of the aligned pair lies in the x_f z_f plane between the
 axes, at azimuth 0 of member 1 and azimuth pi of member 2 (the same layout as the cylindrical pair,
 whose centre line is x_f), so the default ``phase2 = pi - side pi / N2`` of GearPair applies and the
-aligned standard pair is in conjugate mesh at phi1 = phi2 = 0. phi2 > 0 turns member 2 about
+aligned standard pair is in conjugate mesh at phi1 = phi2 = 0. As for parallel axes, phi1 = 0 is not
+the pitch-point contact: with tooth 1 centred on the pitch line its flank touches off the pitch cone
+(0.59 deg of polar angle for the thesis's straight 39/32 pair, 1.30 deg for the spiral 17/17 pair);
+the contact lies on the pitch cone half a tooth angle away, phi1 = -side pi/(2 N1) for these standard
+teeth. phi2 > 0 turns member 2 about
 w2 = -A2 z (the driven sense), so TE (eq 14) keeps its meaning.
 
 Misalignment (eq 47: a_12 = (dA, dE, dG)), all as a displacement of member 2's apex:

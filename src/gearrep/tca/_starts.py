@@ -347,9 +347,11 @@ def _involute_gear(pair: GearPair):
 def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     """(u1, v1) start at a fixed phi1: the contact of the aligned pair on mid-face to first order.
 
-    The aligned pair is in conjugate mesh at phi1 = 0 with contact at the pitch point; turning
-    member 1 by phi1 moves the contact along the line of action by r_b1 phi1 (direction by trial
-    solve: the one that converges in fewer iterations). Falls back to (r_p1, 0)."""
+    The start takes the pitch point as the aligned pair's contact at phi1 = 0 (it is reached half a
+    tooth angle away, pi/(2 N1) for a standard tooth: see the package docstring) and moves it along
+    the line of action by r_b1 phi1 (direction by trial solve: the one that converges in fewer
+    iterations); the Newton solve absorbs that offset of a few tenths of a module. Falls back to
+    (r_p1, 0)."""
     a = np.asarray(phi1, dtype=float)
     if a.ndim != 0 or not np.isfinite(a):
         raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")

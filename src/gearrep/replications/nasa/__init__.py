@@ -106,14 +106,23 @@ SETTINGS = _s.declare(
     heights_rack_tooth_over_pitch=_s.number(
         0.5,
         "1",
-        "assumed rack tooth thickness at the pitch line / normal pitch (not printed; 0.5: rack tooth and space equal)",
+        "rack tooth thickness at the pitch line / normal pitch of the disk-ground pinion's tooth space (sec. 5.5; not "
+        "printed; 0.5: rack tooth and space equal)",
         gt=0.2,
         lt=0.6,
+    ),
+    heights_tooth_axis=_s.choice(
+        "pinion_tooth",
+        ("pinion_tooth", "rack_tooth", "half_pitch"),
+        "where P (the profile normal at Q meets the pitch line) sits, which sets the pinion's tooth thickness at the "
+        "pitch line in the Table 6.2.2 heights: on the pinion tooth's axis of symmetry (fig. 1.6's caption; its tooth "
+        "carries the top land and the fillet, so it is the generated one), on the rack tooth's, or tooth = space",
     ),
     heights_top_land_times_Pn=_s.number(
         0.3,
         "1",
-        "assumed minimal top land of the pinion (transverse) times P_n (not printed for sec. 2; sec. 3.3 uses 0.3/P_n)",
+        "minimal top land of the pinion times P_n, transverse: sec. 3.3's rule (tooth thickness 0.3/P_n on the "
+        "addendum circle); sec. 2 says only that a minimal top land was provided",
         ge=0.0,
         le=0.6,
     ),

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .records import NOT_COMPUTED_SEC3, Rule, one
+from .studies import TOOTH_AXIS_READINGS
 
 __all__ = ["CLAIMS"]
 
@@ -379,7 +380,9 @@ def undercut_working_height(t):
     return (
         rises and (inside | (hv > 1.9)).mean() > 0.5,
         f"beta = 20 deg, alpha_n = 25 deg, the sec. 2 rack coefficient (fig. 2.4.2's is not printed), rack tooth "
-        f"{g['rack_tooth_over_pitch'].iloc[0]:.2f} pitch, top land {g['top_land_times_Pn'].iloc[0]:.2f}/P_n (assumed): "
+        f"{g['rack_tooth_over_pitch'].iloc[0]:.2f} pitch ({TOOTH_AXIS_READINGS[g['tooth_axis'].iloc[0]].split(':')[0]}), "
+        "top land "
+        f"{g['top_land_times_Pn'].iloc[0]:.2f}/P_n (sec. 3.3's rule): "
         + ", ".join(f"N1={n}: h_a {a:.3f} + h_d {b:.3f} = {c:.3f}" for n, a, b, c in zip(N, g["ha_Pn"], g["hd_Pn"], hv))
         + f" (x 1/P_n); within [1.5, 1.9] for {inside.sum()} of {len(hv)} tooth numbers, h_a (undercutting) falls with N1",
     )

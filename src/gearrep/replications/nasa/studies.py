@@ -426,12 +426,50 @@ def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
     )
 
 
+#: readings of the pinion's tooth thickness at the pitch line (job heights, ``heights_tooth_axis``):
+#: where P, the point where the profile normal at Q meets the pitch line, sits
+TOOTH_AXIS_READINGS = {
+    "pinion_tooth": "P on the axis of symmetry of the generated (pinion) tooth, i.e. of the rack's space (fig. 1.6 "
+    "caption; the tooth of that figure carries the top land S_a and the fillet): pinion tooth 2 w at the pitch line",
+    "rack_tooth": "P on the axis of symmetry of the rack-cutter tooth: rack tooth 2 w, pinion tooth pitch - 2 w",
+    "half_pitch": "tooth and space equal at the pitch line (not from the text)",
+}
+
+
+def rack_tooth_fraction(reading: str, half_width_Pn: float, P_n: float) -> float:
+    """Rack tooth thickness at the pitch line / normal pitch for a reading of
+    :data:`TOOTH_AXIS_READINGS`, with w = ``half_width_Pn`` / P_n the distance along the pitch line
+    from P to the working profile's crossing."""
+    p_n = np.pi / P_n
+    w = half_width_Pn / P_n
+    return {"pinion_tooth": 1.0 - 2.0 * w / p_n, "rack_tooth": 2.0 * w / p_n, "half_pitch": 0.5}[reading]
+
+
+def _pitch_line_half_width(f) -> float:
+    """Distance along the rack pitch line (normal section) from P = (0, y0) to where the working
+    profile through Q crosses the line (the crossing nearest Q)."""
+    from scipy.optimize import brentq
+
+    rack = f.rack
+
+    def x_b(u):
+        return float(rack.profile(np.array([u]))[0][0])
+
+    us = np.linspace(-4.0, 4.0, 4001) * max(abs(rack.l), 1e-3)
+    xs = np.array([x_b(u) for u in us])
+    i = np.nonzero(np.sign(xs[1:]) != np.sign(xs[:-1]))[0]
+    if not len(i):
+        return np.nan
+    u_p = min((brentq(x_b, us[k], us[k + 1], xtol=1e-15) for k in i), key=abs)
+    return abs(float(rack.profile(np.array([u_p]))[1][0]) - float(getattr(rack, "y0", 0.0)))
+
+
 def _rack_heights(N, a, alpha_n, l, P_n, beta, profile="parabola", addendum=None):
     """h_a P_n and the kind of limit of the rack that generates an N-tooth member on the side
     x_c < 0 (:func:`gearrep.surfaces.novikov.addendum_limit`: Litvin's limiting line, a zero
-    pressure angle or the end of the profile), and h_d(rack tooth / pitch, top land P_n) ->
-    (h_d P_n, tip radius) (pointing). ``addendum`` = (a, l) of a separate arc for the rack
-    addendum (version 2's convex tip arc); lengths in inches."""
+    pressure angle or the end of the profile), h_d(rack tooth / pitch, top land P_n) ->
+    (h_d P_n, tip radius) (pointing), and w P_n (:func:`_pitch_line_half_width`). ``addendum`` =
+    (a, l) of a separate arc for the rack addendum (version 2's convex tip arc); lengths in inches."""
     r_p = pitch_radius(N, P_n, beta)
     f = RackGeneratedFlank(a, alpha_n, l, beta, r_p, -1, profile=profile)
     if addendum is None:
@@ -449,7 +487,8 @@ def _rack_heights(N, a, alpha_n, l, P_n, beta, profile="parabola", addendum=None
         _, x_p, r_tip = pointing_limit(f, p_n, rack_tooth_over_pitch * p_n, top_land_Pn / P_n, u_top)
         return x_p * P_n, r_tip
 
-    return max(-x_u * P_n, 0.0) + 0.0, kind, hd  # 0: no working addendum (a limit at the pitch line, to rounding)
+    # h_a: 0 when there is no working addendum (a limit at the pitch line, to rounding)
+    return max(-x_u * P_n, 0.0) + 0.0, kind, hd, _pitch_line_half_width(f) * P_n
 
 
 def _required_rack_tooth(hd_of, hd_printed, t):
@@ -471,22 +510,26 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
     3 the parabolic rack of sec. 2, 1 and 2 the circular arcs of sec. 6.2. h_a P_n is the
     addendum limit (:func:`gearrep.surfaces.novikov.addendum_limit`, column ``ha_limit``: Litvin's
     limiting line, a zero pressure angle, or the end of the arc; no assumption needed) and h_d P_n
-    comes from pointing, which needs two inputs the report does not print: the rack tooth thickness
-    at the pitch line (``heights_rack_tooth_over_pitch``, a fraction of the normal pitch) and the
-    minimal top land (``heights_top_land_times_Pn``; sec. 3.3 states 0.3/P_n for its gear), the same
-    for every version. Arc placement (sec. 6.2: the arcs that generate convex addenda are centred
+    comes from pointing, which needs the tooth thickness at the pitch line and the minimal top land.
+    The thickness follows from where P sits (``heights_tooth_axis``, :data:`TOOTH_AXIS_READINGS`;
+    fig. 1.6's caption puts P on the tooth's axis of symmetry, the tooth of that figure being the
+    generated one): with w the distance along the pitch line from P to the working profile's
+    crossing (``half_width_Pn`` = w P_n), the pinion tooth is 2 w. The top land
+    (``heights_top_land_times_Pn``) is sec. 3.3's rule, t_a = 0.3/P_n on the addendum circle
+    (transverse); the same rules for every version. Arc placement (sec. 6.2: the arcs that generate convex addenda are centred
     on the pitch line): the arc through Q at alpha_n = 27 deg centred on the pitch point, |QP| =
     rho; version 2's convex rack tip (rho = 0.258, pinion dedendum) touches the gear rack's arc
     (0.230, centred on the pitch line) at the mirror point Q' below the line, so its centre lies on
-    the common normal 0.028 in beyond the pitch point. Rows: ``design`` (the stated assumption),
-    ``sweep`` (each assumption varied alone), ``required`` (the rack tooth thickness that gives the
+    the common normal 0.028 in beyond the pitch point. Rows: ``design`` (the stated reading),
+    ``reading`` (each reading of :data:`TOOTH_AXIS_READINGS` at the design top land), ``sweep`` (the
+    rack tooth and the top land varied alone), ``required`` (the rack tooth thickness that gives the
     printed h_d for each swept top land), and ``fig2.4.2`` (version 3, h over 10 <= N1 <= 30 for
     beta = 20 deg: the sec. 2.4 claim)."""
     Pn, an, beta, l3 = basics(d)
     a_c = Pn / (2 * d["rho_c_times_Pn"])
     an12 = d["alpha_n_v12_deg"] * DEG
     N1 = d["N1"]
-    sr0, t0 = s["heights_rack_tooth_over_pitch"], s["heights_top_land_times_Pn"]
+    axis, t0 = s["heights_tooth_axis"], s["heights_top_land_times_Pn"]
     rho1, rho2a, rho2d, rho2g = d["rho_v1"][0], d["rho_v2_add"][0], d["rho_v2_ded"][0], d["rho_v2_ded"][1]
     racks = {
         3: dict(a=a_c, alpha_n=an, l=l3, profile="parabola"),
@@ -497,10 +540,15 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
     rows = []
     limits = {}
 
-    def row(kind, version, N, b, sr, t):
+    def limit(version, N, b):
         if (version, N, b) not in limits:
             limits[version, N, b] = _rack_heights(N, P_n=Pn, beta=b, **racks[version])
-        ha, ha_kind, hd_of = limits[version, N, b]
+        return limits[version, N, b]
+
+    def row(kind, version, N, b, sr, t, reading=None):
+        ha, ha_kind, hd_of, w = limit(version, N, b)
+        if reading is not None:
+            sr = rack_tooth_fraction(reading, w, Pn)
         hd, rt = hd_of(sr, t) if np.isfinite(sr) else (np.nan, np.nan)
         rows.append(
             dict(
@@ -508,6 +556,8 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
                 version=version,
                 N1=N,
                 beta_deg=np.degrees(b),
+                tooth_axis=reading or "",
+                half_width_Pn=w,
                 rack_tooth_over_pitch=sr,
                 top_land_times_Pn=t,
                 ha_Pn=ha,
@@ -519,16 +569,18 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
         )
 
     for v in (3, 1, 2):
-        row("design", v, N1, beta, sr0, t0)
+        row("design", v, N1, beta, np.nan, t0, axis)
+        for reading in TOOTH_AXIS_READINGS:
+            row("reading", v, N1, beta, np.nan, t0, reading)
         for sr in s["heights_sweep_rack_tooth_over_pitch"]:
             row("sweep", v, N1, beta, sr, t0)
         for t in s["heights_sweep_top_land_times_Pn"]:
-            row("sweep", v, N1, beta, sr0, t)
-        hd_of = limits[v, N1, beta][2]
+            row("sweep", v, N1, beta, np.nan, t, axis)
+        hd_of = limit(v, N1, beta)[2]
         for t in s["heights_sweep_top_land_times_Pn"]:
             row("required", v, N1, beta, _required_rack_tooth(hd_of, d["hd_Pn"][v], t), t)
     for N in range(10, 31, 2):
-        row("fig2.4.2", 3, N, 20 * DEG, sr0, t0)
+        row("fig2.4.2", 3, N, 20 * DEG, np.nan, t0, axis)
     return pd.DataFrame(rows)
 
 

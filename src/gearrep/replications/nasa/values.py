@@ -204,6 +204,26 @@ def _dependence_text(sw) -> str:
     )
 
 
+def _thickness_text(r, hv) -> str:
+    """How h_d's tooth thickness and top land are read (design row ``r``), and h_d under the other
+    readings of the tooth's axis (``hv``: the version's rows)."""
+    rd = hv[hv["kind"] == "reading"].set_index("tooth_axis")
+    other = {
+        "pinion_tooth": "P on the pinion tooth's axis",
+        "rack_tooth": "P on the rack tooth's axis",
+        "half_pitch": "tooth = space (no text behind it)",
+    }
+    return (
+        f"h_d from pointing: P (where the profile normal at Q meets the pitch line) lies on the tooth's axis of "
+        f"symmetry (fig. 1.6's caption; that figure's tooth carries the top land S_a and the fillet, so it is the "
+        f"generated one), so the pinion tooth at the pitch line is 2 w, w = {r['half_width_Pn']:.4f}/P_n from P to "
+        f"where the rack profile crosses the line (rack tooth {r['rack_tooth_over_pitch']:.3f} x normal pitch); top "
+        f"land {r['top_land_times_Pn']:.2f}/P_n on the addendum circle (sec. 3.3's rule; sec. 2 gives no value): "
+        f"h_d P_n = {r['hd_Pn']:.4f} (reading {r['tooth_axis']}). The other readings: "
+        + ", ".join(f"{other[k]} {rd.loc[k, 'hd_Pn']:.4f}" for k in other if k in rd.index and k != r["tooth_axis"])
+    )
+
+
 def _height(col, t):
     """Table 6.2.2 version 3 (and sec. 3.3's 1.8 for the convex pinion): the design row of the
     heights table, with the assumption dependence in the note."""
@@ -215,19 +235,16 @@ def _height(col, t):
     note = (
         f"pinion rack of sec. 2 (a_c = 1/(2 x 5.88/P_n), alpha_n = 25 deg, beta = {r['beta_deg']:.3f} deg, N1 = 17): "
         f"h_a P_n = {r['ha_Pn']:.4f} from undercutting (Litvin's limiting line, gearrep.surfaces.novikov.undercut_limit; "
-        "no assumption). h_d from pointing needs two unprinted inputs; assumed: rack tooth thickness at the pitch line "
-        f"{r['rack_tooth_over_pitch']:.2f} x normal pitch, minimal (transverse) top land {r['top_land_times_Pn']:.2f}/P_n "
-        f"(sec. 3.3's value): h_d P_n = {r['hd_Pn']:.4f}. Dependence: h_d P_n = "
+        "no assumption). "
+        + _thickness_text(r, h)
+        + ". Dependence: h_d P_n = "
         + _dependence_text(sw)
         + ". The printed h_d P_n = 1.25 needs a rack tooth of "
         + ", ".join(f"{a:.3f}" for a in req["rack_tooth_over_pitch"])
         + " pitches for top lands "
         + ", ".join(f"{b:.2f}" for b in req["top_land_times_Pn"])
-        + "/P_n (a pinion tooth thicker than half the pitch; with equal tooth and space even a pointed tooth gives "
-        f"{sw.loc[sw['top_land_times_Pn'] == 0, 'hd_Pn'].max():.3f}); then h P_n = {req['h_Pn'].iloc[0]:.3f}. One "
-        "assumption fits this rack's one assumption-dependent printed height (h_d, and h with it) along that curve, "
-        "but not those of the circular-arc racks (versions 1-2, same analysis): rack tooth / pitch giving each "
-        "version's printed h_d over top lands 0-0.4/P_n: " + _required_text(t["heights"])
+        + f"/P_n; then h P_n = {req['h_Pn'].iloc[0]:.3f}. Rack tooth / pitch giving each version's printed h_d over "
+        "top lands 0-0.4/P_n: " + _required_text(t["heights"])
     )
     return r[col], note
 
@@ -281,13 +298,12 @@ def _height_arc(version, col, t):
         "gearrep.surfaces.rack.CircularArcRackCutter). "
         f"h_a P_n = {abs(r['ha_Pn']):.4f}, limited by {_HA_LIMIT[r['ha_limit']]}; no thickness or top-land "
         "assumption. "
-        "h_d from pointing with the assumption of version 3 (rack tooth at the pitch line "
-        f"{r['rack_tooth_over_pitch']:.2f} x normal pitch, minimal transverse top land {r['top_land_times_Pn']:.2f}/P_n): "
-        f"h_d P_n = {r['hd_Pn']:.4f}. Dependence: h_d P_n = "
+        + _thickness_text(r, hv)
+        + " (the same rules as version 3). Dependence: h_d P_n = "
         + _dependence_text(sw)
         + ". Rack tooth / pitch that gives each version's printed h_d over top lands 0-0.4/P_n: "
         + _required_text(h)
-        + ": no one assumption reproduces the printed h_d of all three versions (versions 1-2 need a rack tooth "
+        + ": no one reading reproduces the printed h_d of all three versions (versions 1-2 need a rack tooth "
         "thicker than half the pitch, version 3 a thinner one)"
     )
     return (abs(r[col]) if col == "ha_Pn" else r[col]), note

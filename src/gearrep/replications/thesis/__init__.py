@@ -160,9 +160,11 @@ SETTINGS = st.declare(
         min_items=0,
     ),
     bevel_te_n_points=st.integer(
-        31,
+        121,
         "1",
-        "bevel TE grid points per mesh cycle (sec 5.1-5.2 studies; 4 n + 1 angles per tooth pair)",
+        "bevel TE grid points per mesh cycle (sec 5.1-5.2 studies; 4 n + 1 angles per tooth pair; the TE extremes "
+        "read from the envelope at 64 n + 1 angles): the spiral rows' TE peak-to-peak moves by <= 0.01 arcsec from "
+        "121 to 481",
         ge=5,
         le=2001,
     ),

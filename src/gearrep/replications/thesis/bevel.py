@@ -18,8 +18,12 @@ smallest c_1 = 0.002); the straight pair's crown and relief amounts of sec 5.1 (
 reading of sec 5.2's z-axis error dH as member 2's axial displacement dG (Fig 31 d); the relief
 length L_t in module units along the profile at the mean cone distance, starting L_t below the
 tip (:func:`gearrep.surfaces.bevel.relief_from_length`); the relief amount c_t and the lead crown
-c_1 in module units (non-dimensional, eq 52). Member 1 is gear 1 (the crowned member, N1 teeth)
-and drives (phi1 given); the thesis calls the crowned member "driven" in sec 5.1.
+c_1 in module units (non-dimensional, eq 52); the spiral pair's flank pair (gear 1's lengthwise
+convex flank against gear 2's concave one, :data:`FLANK_PAIRS`; the other pair is run beside).
+Member 1 is gear 1 (the crowned member, N1 teeth) and drives (phi1 given); the thesis calls the
+crowned member "driven" in sec 5.1. A TE amplitude is the peak-to-peak of the transmitted TE (the
+thesis counts a constant offset as no TE, sec 5.2); pitch-point quantities are taken where the
+contact lies on gear 1's pitch cone (:func:`pitch_cone_contact`), not at phi1 = 0.
 """
 
 from __future__ import annotations
@@ -45,6 +49,14 @@ READINGS = {
     "phi1_rad": 0.0,
     "dH_is_dG": True,
 }
+#: the two flank pairs of the spiral pair: gear 1's spiral hand in gearrep.surfaces.bevel (gear 2 has
+#: the opposite one) for gear 1's lengthwise convex (``convex1``) or concave (``concave1``) flank
+#: meshing; the straight pair has no lengthwise curvature and uses ``convex1``
+FLANK_PAIRS = {"convex1": 1, "concave1": -1}
+#: the transmitted TE's extremes are read at this many times the cycle's angles (bevel_te_study):
+#: the spiral TE rows' peak-to-peak then moves by <= 0.01 arcsec from 121 to 481 contact angles
+#: per cycle, where the cycle's own angles miss the hand-over dips by up to 2.5 arcsec at 31
+CYCLE_REFINE = 64
 #: the random stream of each bevel convergence study (default_rng([seed, stream]); 1-12 are the
 #: cylindrical studies' in :data:`.convergence.STREAMS`)
 BEVEL_STREAMS = {"straight_bevel_39_32": 21, "spiral_bevel_17_17": 22}
@@ -121,14 +133,14 @@ def lead_crown(g: BevelGearData, kind: str, amount: float, log_a2: float = 0.9):
     raise ValueError(f"kind must be 'parabolic', 'circular' or 'logarithmic', got {kind!r}")
 
 
-def active_profile_start(design, case: str) -> float:
+def active_profile_start(design, case: str, hand1: int = 1) -> float:
     """Polar angle on gear 1 where the contact of the aligned unmodified pair begins at the mean
     cone distance (the tip of gear 2 reaches it): the start of gear 1's active profile. The root
     relief of sec 5.2 ("tip/root relief") starts its length L above this point (our reading: a
     relief below it would never be in contact)."""
     d = design.pairs[case]
     g1, g2 = bevel_gears(d)
-    f1, f2 = mating_bevel_flanks(g1, g2)
+    f1, f2 = mating_bevel_flanks(g1, g2, hand1=hand1)
     pair = BevelPair(f1, f2, d["n1"], d["n2"], shaft_angle=d["shaft_angle_deg"] * DEG)
     p1 = 2 * np.pi / d["n1"]
     phi = np.linspace(-1.5 * p1, 0.0, 121)
@@ -143,10 +155,22 @@ def active_profile_start(design, case: str) -> float:
 
 
 def bevel_pair(
-    design, case: str, *, crown_kind="parabolic", crown=0.0, tip=None, root=None, misalignment=None, log_a2=0.9
+    design,
+    case: str,
+    *,
+    crown_kind="parabolic",
+    crown=0.0,
+    tip=None,
+    root=None,
+    misalignment=None,
+    log_a2=0.9,
+    flank_pair="convex1",
 ) -> BevelPair:
     """The bevel pair ``case`` with a lead crown and tip/root relief (L, c) on gear 1 (lengths in the
-    pair's units: mm for the straight pair, module units for the spiral one)."""
+    pair's units: mm for the straight pair, module units for the spiral one). ``flank_pair``
+    (:data:`FLANK_PAIRS`) picks which flanks of the spiral pair mesh: ``convex1`` (gear 1's
+    lengthwise convex flank against gear 2's concave one) or ``concave1`` (the other flank pair)."""
+    hand1 = FLANK_PAIRS[flank_pair]
     d = design.pairs[case]
     g1, g2 = bevel_gears(d)
     relief = []
@@ -154,8 +178,10 @@ def bevel_pair(
         relief.append(relief_from_length(g1, tip[0], tip[1]))
     if root is not None and root[1] > 0:
         w = root[0] / g1.mean_cone_distance
-        relief.append(RootRelief(active_profile_start(design, case) + w, w, root[1]))
-    f1, f2 = mating_bevel_flanks(g1, g2, crowning1=lead_crown(g1, crown_kind, crown, log_a2), relief1=relief)
+        relief.append(RootRelief(active_profile_start(design, case, hand1) + w, w, root[1]))
+    f1, f2 = mating_bevel_flanks(
+        g1, g2, hand1=hand1, crowning1=lead_crown(g1, crown_kind, crown, log_a2), relief1=relief
+    )
     return BevelPair(f1, f2, d["n1"], d["n2"], shaft_angle=d["shaft_angle_deg"] * DEG, misalignment=misalignment)
 
 
@@ -221,6 +247,7 @@ def bevel_convergence(s: dict, design) -> dict:
         rows += r.rows
         if case.startswith("spiral"):
             rows += _crown_sensitivity_rows(s, design, case, ref, st, w0)
+            rows += _other_flank_rows(s, design, case, ref, st, w0)
         acc += _accuracy_rows(case, r, ref)
         timing += [loop_timing(s, pair, ref, r.rows, st, lab) for lab in ("plain", "reduced")]
     accuracy = pd.DataFrame(acc).merge(
@@ -247,26 +274,51 @@ def _reference_row(case: str, ref: Reference) -> dict:
     )
 
 
+def _same_starts_rows(s, design, case, ref, st, w0, c1, flank_pair, label, study, start_rule) -> list:
+    """The Table 12 starts (phi2 moved with the root) on the spiral pair with crown ``c1`` meshing
+    ``flank_pair``: rows of plain, reduced and reduced_robust."""
+    pc = bevel_pair(design, case, crown=float(c1), flank_pair=flank_pair)
+    rc = bevel_reference(pc, READINGS["phi1_rad"], s)
+    stc = st.copy()
+    stc[:, 4] += rc.x[4] - ref.x[4]
+    return convergence_study(
+        label, pc, rc, stc, ("plain", "reduced", "reduced_robust"), s, window=w0, study=study, start_rule=start_rule
+    ).rows
+
+
 def _crown_sensitivity_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
-    """Crown sensitivity of the Table 12 study: the same starts (phi2 moved with the root) on the
-    pair with each crown c_1 of the settings."""
+    """Crown sensitivity of the Table 12 study: the same starts on the pair with each crown c_1 of
+    the settings."""
     rows = []
     for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
-        pc = bevel_pair(design, case, crown=float(c1))
-        rc = bevel_reference(pc, READINGS["phi1_rad"], s)
-        stc = st.copy()
-        stc[:, 4] += rc.x[4] - ref.x[4]
-        rows += convergence_study(
-            f"{case}_c1_{float(c1):g}",
-            pc,
-            rc,
-            stc,
-            ("plain", "reduced", "reduced_robust"),
+        rule = f"as Table 12 with c_1 = {float(c1):g}"
+        rows += _same_starts_rows(
             s,
-            window=w0,
-            study="Table 12 (crown sensitivity)",
-            start_rule=f"as Table 12 with c_1 = {float(c1):g}",
-        ).rows
+            design,
+            case,
+            ref,
+            st,
+            w0,
+            c1,
+            "convex1",
+            f"{case}_c1_{float(c1):g}",
+            "Table 12 (crown sensitivity)",
+            rule,
+        )
+    return rows
+
+
+def _other_flank_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
+    """The Table 12 study on the spiral pair's other flank pair (``concave1``: gear 1's lengthwise
+    concave flank drives), at the Table 12 crown and at each crown of the sensitivity rows, from the
+    same starts."""
+    rows = []
+    for c1 in [s["bevel_conv_crown_spiral"], *s["bevel_conv_crown_spiral_sensitivity"]]:
+        tag = "" if float(c1) == float(s["bevel_conv_crown_spiral"]) else f"_c1_{float(c1):g}"
+        rule = f"as Table 12 on the other flank pair (gear 1 concave) with c_1 = {float(c1):g}"
+        rows += _same_starts_rows(
+            s, design, case, ref, st, w0, c1, "concave1", f"{case}_concave1{tag}", "Table 12 (other flank pair)", rule
+        )
     return rows
 
 
@@ -301,7 +353,8 @@ def rng_bevel(s: dict, case: str) -> np.random.Generator:
 def _solve_grid(pair: BevelPair, phi: np.ndarray, tol: float, rounds: int = 30):
     """Contact points of ``pair`` at every angle of the sorted grid ``phi`` (vectorised): a verified
     start at the grid angle nearest 0 (several starts along the profile), then every angle from a
-    linear predictor in phi1 and from a 4 x 3 grid of starts on flank 1, then repair rounds that
+    linear predictor in phi1 and from a 4 x 3 grid of starts on flank 1 (of the roots found at one
+    angle, the one of largest TE: the tangency member 2 is pushed to), then repair rounds that
     restart the failed angles next to a converged one from that neighbour's solution (the rounds
     stop when no angle is gained). None if no start converges."""
     i0 = int(np.argmin(np.abs(phi)))
@@ -329,7 +382,11 @@ def _solve_grid(pair: BevelPair, phi: np.ndarray, tol: float, rounds: int = 30):
     starts = np.concatenate([x[:, None, :], np.broadcast_to(grid, (len(phi), len(grid), 2))], axis=1).reshape(-1, 2)
     call = solve_contact(pair, np.repeat(phi, k), starts, tol=tol, damped=False, maxiter=30)
     okm = call.converged.reshape(len(phi), k)
-    first = np.where(okm.any(axis=1), np.argmax(okm, axis=1), 0)
+    # where starts reach different tangencies at one angle, member 2 (driven) is pushed to the most
+    # advanced one: the contact that carries the load is the root of largest TE (the others would
+    # need the flanks to pass through each other)
+    te_k = np.where(okm, call.te.reshape(len(phi), k), -np.inf)
+    first = np.where(okm.any(axis=1), np.argmax(te_k, axis=1), 0)
     c = call.take(np.arange(len(phi)) * k + first)
     idx = np.arange(len(phi))
     tried = c.converged.copy()
@@ -352,13 +409,49 @@ def _solve_grid(pair: BevelPair, phi: np.ndarray, tol: float, rounds: int = 30):
         parts = [c.take(idx[~take]), cr.take(pos[take])]
         order = np.argsort(np.concatenate([idx[~take], idx[take]]))
         c = type(c).concatenate(parts).take(order)
+    return _upper_tangency(pair, phi, c, tol, rounds)
+
+
+def _upper_tangency(pair: BevelPair, phi: np.ndarray, c, tol: float, rounds: int):
+    """Every angle restarted from its neighbours' solutions; where that reaches a tangency of larger
+    TE, it replaces the one found (a start grid can miss the loaded contact at an isolated angle
+    and stop at a second tangency the flanks pass through). Rounds stop when nothing changes."""
+    n = len(phi)
+    for _ in range(rounds):
+        conv = c.converged
+        x = c.unknowns()
+        src = np.concatenate([np.arange(1, n), np.arange(0, n - 1)])
+        dst = np.concatenate([np.arange(0, n - 1), np.arange(1, n)])
+        keep = conv[src]
+        src, dst = src[keep], dst[keep]
+        if not len(dst):
+            break
+        cr = solve_contact(pair, phi[dst], x[src], tol=tol, damped=False, maxiter=30)
+        te_now = np.where(conv, c.te, -np.inf)
+        gain = cr.converged & (cr.te > te_now[dst] + max(1e3 * tol, 1e-9))
+        if not gain.any():
+            break
+        best = np.full(n, -1)
+        te_best = te_now.copy()
+        for j in np.flatnonzero(gain):  # the largest gain per angle
+            if cr.te[j] > te_best[dst[j]]:
+                te_best[dst[j]] = cr.te[j]
+                best[dst[j]] = j
+        take = best >= 0
+        idx = np.arange(n)
+        pos = np.full(n, -1)
+        pos[take] = best[take]
+        parts = [c.take(idx[~take]), cr.take(pos[take])]
+        order = np.argsort(np.concatenate([idx[~take], idx[take]]))
+        c = type(c).concatenate(parts).take(order)
     return c
 
 
 def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
     """TE (eq 14, library sign: > 0 = member 2 leads), path of contact of one tooth pair over
     +-1.25 angular pitches, and the TE transmitted over one cycle (upper envelope of the pairs
-    k = -2..2). A grid point counts only if the contact lies inside both flanks (edge contact is
+    k = -2..2; its peak-to-peak ``env_pp``, largest value ``te_top`` and largest magnitude
+    ``te_extreme`` from the envelope at CYCLE_REFINE n_points + 1 angles). A grid point counts only if the contact lies inside both flanks (edge contact is
     not modelled: a gap in the envelope, i.e. a discontinuous TE). The hand-over test is
     :func:`gearrep.meshing.handover_gap` (a crossing between grid points is continuous)."""
     p1 = 2 * np.pi / pair.n1
@@ -375,6 +468,9 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
         te = np.where(ok, c.te, np.nan)
         c_fields = dict(u1=c.u1, v1=c.v1, u2=c.u2, v2=c.v2)
     cycle = sampled_cycle(phi, te, p1, int(n_points), PAIRS, handover="gap")
+    # the extremes of the transmitted TE lie at hand-over crossings and relief dips between cycle
+    # angles: read them from the same pair curves at CYCLE_REFINE times as many angles
+    fine = sampled_cycle(phi, te, p1, CYCLE_REFINE * int(n_points) + 1, PAIRS, handover="gap")
     return dict(
         phi1=phi,
         te=te,
@@ -383,13 +479,63 @@ def bevel_te_study(pair: BevelPair, n_points: int, tol: float = 1e-12) -> dict:
         cycle_phi1=cycle.phi1,
         cycle_te=cycle.te,
         continuous=cycle.continuous(JUMP_TOL_ARCSEC),
-        te_extreme=cycle.te_extreme,
-        env_pp=cycle.te_peak_to_peak,
+        te_extreme=fine.te_extreme,
+        te_top=float(np.nanmax(fine.te)) if np.isfinite(fine.te).any() else np.nan,
+        env_pp=fine.te_peak_to_peak,
         jump_arcsec=cycle.jump_arcsec,
         te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
         engagement=(float(phi[ok].min()), float(phi[ok].max())) if ok.any() else (np.nan, np.nan),
         **c_fields,
     )
+
+
+def polar_angle1(contact) -> np.ndarray:
+    """Polar angle [rad] of each contact point from member 1's axis z_f, seen from its apex (the
+    origin of S_f): the cone through the point. On member 1's pitch cone it equals delta_1."""
+    p = np.asarray(contact.position, float)
+    return np.arctan2(np.hypot(p[:, 0], p[:, 1]), p[:, 2])
+
+
+def pitch_cone_contact(pair: BevelPair, phi: np.ndarray, contact, tol: float = 1e-12):
+    """The mesh position where one tooth pair's contact lies on member 1's pitch cone (polar angle
+    delta_1 from its axis): the pitch point of the pair, solved, not assumed. ``phi``/``contact``: the
+    pair's sampled path (:func:`bevel_te_study`); the crossing of the polar angle through delta_1
+    nearest phi1 = 0 is bracketed on the grid and refined by Brent's method, each angle solved from
+    the converged neighbour. Returns (phi1 [rad], ContactPoints of one row), or (NaN, None) when the
+    path does not cross the pitch cone or a solve fails."""
+    from scipy.optimize import brentq
+
+    if contact is None:
+        return np.nan, None
+    delta1 = pair.flank1.gear.pitch_cone_angle
+    ok = np.flatnonzero(contact.converged)
+    if len(ok) < 2:
+        return np.nan, None
+    g = polar_angle1(contact.take(ok)) - delta1
+    # a crossing between neighbouring grid angles (no failed angle between them)
+    i = np.flatnonzero((np.sign(g[1:]) != np.sign(g[:-1])) & (np.diff(ok) == 1))
+    if not len(i):
+        return np.nan, None
+    j = i[np.argmin(np.abs(phi[ok[i]]))]
+    a, b = ok[j], ok[j + 1]
+    xa, xb = contact.unknowns()[a], contact.unknowns()[b]
+
+    def solve(q):
+        w = (q - phi[a]) / (phi[b] - phi[a])
+        return solve_contact(pair, q, ((1 - w) * xa + w * xb)[None, :], tol=tol, damped=False, maxiter=50)
+
+    def f(q):
+        c = solve(q)
+        if not c.converged[0]:
+            raise ValueError("no contact")
+        return float(polar_angle1(c)[0] - delta1)
+
+    try:
+        q = brentq(f, phi[a], phi[b], xtol=1e-13, rtol=1e-13)
+    except ValueError:
+        return np.nan, None
+    c = solve(q)
+    return (float(q), c) if c.converged[0] else (np.nan, None)
 
 
 def contact_pressure(pair: BevelPair, contact, load: float, E: float, nu: float) -> np.ndarray:
@@ -436,6 +582,26 @@ def _asymmetry(phi, te, lead):
     return float(resid), float(off)
 
 
+def _pitch_columns(pair: BevelPair, res: dict, p0: np.ndarray, material) -> dict:
+    """Summary columns at the pitch point (contact on gear 1's pitch cone, solved) and at phi1 = 0."""
+    from ...units import ARCSEC
+
+    phi = res["phi1"]
+    i0 = int(np.argmin(np.abs(phi)))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        phi_p, cp = pitch_cone_contact(pair, phi, res["contact"])
+    found = cp is not None
+    return dict(
+        phi1_pitch_rad=phi_p,
+        p0_pitch_MPa=float(contact_pressure(pair, cp, *material)[0]) if found else np.nan,
+        v1_pitch=float(cp.v1[0]) if found else np.nan,
+        te_pitch_arcsec=float(cp.te[0]) / ARCSEC if found else np.nan,
+        p0_at_phi1_0_MPa=float(p0[i0]),
+        v1_at_phi1_0=float(res["v1"][i0]),
+        u1_at_phi1_0_rad=float(res["u1"][i0]),
+    )
+
+
 def _material(d: dict, case: str):
     """Normal load [N], E [N/mm^2], nu: Table 5 (straight, mm), or sec 5.2's non-dimensional load
     F = P / (E m b) (eq 56) with m = 1 mm, so that lengths in module units are mm."""
@@ -445,14 +611,38 @@ def _material(d: dict, case: str):
 
 
 def contact_study(
-    s: dict, design, label: str, case: str, *, claim: str, kind="parabolic", crown=0.0, tip=None, root=None, mis=None
+    s: dict,
+    design,
+    label: str,
+    case: str,
+    *,
+    claim: str,
+    kind="parabolic",
+    crown=0.0,
+    tip=None,
+    root=None,
+    mis=None,
+    flank_pair="convex1",
 ):
-    """One TE / path / pressure study -> (summary row, curve rows)."""
+    """One TE / path / pressure study -> (summary row, curve rows). TE: ``te_pp_arcsec`` is the
+    peak-to-peak of the TE transmitted over a cycle (the TE amplitude), ``te_constant_offset_arcsec``
+    its largest value (the constant a change of backlash adds; the TE less this offset peaks at 0
+    and reaches -te_pp). Pitch point: the mesh position whose contact lies on gear 1's pitch cone
+    (:func:`pitch_cone_contact`, solved), with its p0, cone distance v1 and TE; ``*_at_phi1_0``
+    columns are taken at phi1 = 0, which is not the pitch point."""
     from ...units import ARCSEC
 
     mis = mis or BevelMisalignment()
     pair = bevel_pair(
-        design, case, crown_kind=kind, crown=crown, tip=tip, root=root, misalignment=mis, log_a2=s["crowning_log_a2"]
+        design,
+        case,
+        crown_kind=kind,
+        crown=crown,
+        tip=tip,
+        root=root,
+        misalignment=mis,
+        log_a2=s["crowning_log_a2"],
+        flank_pair=flank_pair,
     )
     res = bevel_te_study(pair, int(s["bevel_te_n_points"]), tol=1e-12)
     d = design.pairs[case]
@@ -463,13 +653,13 @@ def contact_study(
     p0 = (
         contact_pressure(pair, res["contact"], load, E, nu) if res["contact"] is not None else np.full(len(phi), np.nan)
     )
-    i0 = int(np.argmin(np.abs(phi)))
     resid, off = _asymmetry(phi, te, lead)
     pl = p0[lead & np.isfinite(p0)]
     row = dict(
         study=label,
         case=case,
         claim=claim,
+        flank_pair=flank_pair,
         crown_kind=kind,
         crown=crown,
         tip_length=tip[0] if tip else 0.0,
@@ -483,24 +673,29 @@ def contact_study(
         n_contacts=int(res["ok"].sum()),
         continuous=res["continuous"],
         handover_gap_arcsec=res["jump_arcsec"],
-        te_max_abs_arcsec=abs(res["te_extreme"]) / ARCSEC,
         te_pp_arcsec=res["env_pp"] / ARCSEC,
+        te_constant_offset_arcsec=res["te_top"] / ARCSEC,
         te_pair_min_arcsec=res["te_pair_range"][0] / ARCSEC,
         te_pair_max_arcsec=res["te_pair_range"][1] / ARCSEC,
         te_quadratic_residual_pct=resid,
         te_max_offset_pct=off,
         p0_max_MPa=float(pl.max()) if len(pl) else np.nan,
-        p0_pitch_MPa=float(p0[i0]),
-        v1_pitch=float(res["v1"][i0]),
-        u1_pitch_rad=float(res["u1"][i0]),
+        **_pitch_columns(pair, res, p0, (load, E, nu)),
         load_N=load,
     )
+    return row, _curve_rows(label, case, res, lead, p0)
+
+
+def _curve_rows(label: str, case: str, res: dict, lead: np.ndarray, p0: np.ndarray) -> pd.DataFrame:
+    """Rows of bevel_*_curves.csv: one pair's path, TE and p0 on the grid, then the cycle's TE."""
+    from ...units import ARCSEC
+
     curves = pd.DataFrame(
         dict(
             study=label,
             case=case,
-            phi1_rad=phi,
-            te_arcsec=te / ARCSEC,
+            phi1_rad=res["phi1"],
+            te_arcsec=res["te"] / ARCSEC,
             leading=lead,
             u1_rad=res["u1"],
             v1=res["v1"],
@@ -510,7 +705,7 @@ def contact_study(
     cyc = pd.DataFrame(
         dict(study=label, case=case, phi1_rad=res["cycle_phi1"], cycle_te_arcsec=res["cycle_te"] / ARCSEC)
     )
-    return row, pd.concat([curves, cyc], ignore_index=True)
+    return pd.concat([curves, cyc], ignore_index=True)
 
 
 def _equal_drop(g: BevelGearData, c1: float, a2: float) -> dict:
@@ -568,7 +763,9 @@ def spiral_contact_tables(s: dict, design) -> dict:
     """Job ``bevel_spiral``: sec 5.2 on the 17/17 pair: angular errors with c_1 = 0.002 and no
     relief (Figs 42-43), dE and dH (= dG) = 0.04 with c_1 = 0.02, c_t = 0.08, L_t = 0.16 (Figs 45, 48),
     combined errors (Figs 50-52), the stress along the path at dE or dH = 0.08 with c_1 = 0.005,
-    c_t = 0.04 (Figs 46, 49) and the dE/dH sweep with c_1 = 0.005 (Fig 53)."""
+    c_t = 0.04 (Figs 46, 49) and the dE/dH sweep with c_1 = 0.005 (Fig 53). Gear 1's lengthwise convex
+    flank drives (``convex1``); the three TE studies of Figs 45, 48 and 51 are repeated on the
+    other flank pair (``*_concave1``)."""
     case = "spiral_bevel_17_17"
     rows, curves = [], []
 
@@ -586,6 +783,13 @@ def spiral_contact_tables(s: dict, design) -> dict:
     add("dE_0.04", case, claim="te_amplitude", crown=0.02, mis=mis(dE=0.04), **rel)
     add("dH_0.04", case, claim="te_amplitude", crown=0.02, mis=mis(dH=0.04), **rel)
     add("dE_dH_0.04", case, claim="te_amplitude", crown=0.005, mis=mis(0.04, 0.04), **rel)
+    # the same three on the other flank pair (gear 1's concave flank drives)
+    for lab, c1, m in (
+        ("dE_0.04", 0.02, mis(dE=0.04)),
+        ("dH_0.04", 0.02, mis(dH=0.04)),
+        ("dE_dH_0.04", 0.005, mis(0.04, 0.04)),
+    ):
+        add(f"{lab}_concave1", case, claim="te_amplitude_other_flanks", crown=c1, mis=m, flank_pair="concave1", **rel)
     for c1 in (0.005, 0.02):
         add(f"dE_dH_0.08_c1_{c1:g}", case, claim="stress_ratio_increase", crown=c1, mis=mis(0.08, 0.08), **rel)
     rel4 = dict(tip=(0.16, 0.04), root=(0.16, 0.04))
@@ -607,7 +811,8 @@ def bevel_protocol_items(p: dict) -> list:
             "spherical involutes (gearrep.surfaces.bevel, eq 48-51), base cones sin a_b = sin delta_p cos alpha "
             "(Table 5's 'base cones' are the root cones), depth tapering to the apex (addendum m, dedendum 1.25 m at "
             "R_e); spiral pair: spiral angle 35 deg on the base cone, opposite hands, pressure angle 20 deg (not "
-            "printed); gear 1 crowned, gear 2 unmodified",
+            "printed), gear 1's lengthwise convex flank against gear 2's concave one (not printed; the other flank "
+            "pair is run beside: rows *_concave1); gear 1 crowned, gear 2 unmodified",
         ),
         (
             "bevel convergence (Tables 11-12)",
@@ -627,7 +832,10 @@ def bevel_protocol_items(p: dict) -> list:
         (
             "bevel TE and pressure",
             f"{p['bevel_te_n_points']} points per cycle, +-1.25 angular pitches per tooth pair, upper envelope of pairs "
-            "-2..2, hand-over steps by gearrep.meshing.handover_gap; Hertz p0 (gearrep.ellipse) with Table 5's 1.5 kN, "
+            f"-2..2 (where starts reach two tangencies at one angle, the one of larger TE), TE amplitude = its "
+            f"peak-to-peak with the extremes read at {CYCLE_REFINE} n + 1 angles, the constant offset (its largest "
+            "value) reported apart, hand-over steps by gearrep.meshing.handover_gap; pitch-point quantities at the "
+            "mesh position whose contact lies on gear 1's pitch cone (solved); Hertz p0 (gearrep.ellipse) with Table 5's 1.5 kN, "
             "206 GPa, 0.3 (straight) and F = 55.5e-6 (eq 56, m = 1 mm, 210 GPa, 0.3; spiral); relief: tip relief from "
             "L below the face cone and root relief from L above the start of the active profile, L along the profile "
             "at the mean cone distance",

@@ -12,6 +12,8 @@ import numpy as np
 import pandas as pd
 
 #: case of the convergence rows for each published case label
+from .bevel import CYCLE_REFINE
+
 _CONV_CASE = {"straight_bevel": "straight_bevel_39_32", "spiral_bevel": "spiral_bevel_17_17"}
 _METHOD = {"conventional": "plain", "reduced": "reduced"}
 
@@ -61,6 +63,7 @@ def _convergence_facts(tables: dict, f: dict) -> None:
     acc = tables.get("bevel_accuracy")
     if conv is None or acc is None:
         return
+    other = conv[conv["study"] == "Table 12 (other flank pair)"]
     conv = conv[conv["study"].isin(["Table 11", "Table 12"])]
     for label, case in _CONV_CASE.items():
         d = conv[conv["case"] == case]
@@ -68,12 +71,17 @@ def _convergence_facts(tables: dict, f: dict) -> None:
             continue
         a = acc[acc["case"] == case].set_index("variant")
         for method, variant in _METHOD.items():
-            f.update(_method_facts(f"bev_{label}_{method}", tables, d, a, variant))
+            f.update(
+                _method_facts(
+                    f"bev_{label}_{method}", tables, d, a, variant, other[other["case"] == f"{case}_concave1"]
+                )
+            )
 
 
-def _method_facts(key: str, tables: dict, d, a, variant: str) -> dict:
+def _method_facts(key: str, tables: dict, d, a, variant: str, other=None) -> dict:
     """Facts of one formulation of one bevel convergence study: rate, iterations, times, error
-    (``d``: the study's rows of convergence_detail; ``a``: its bevel_accuracy rows by variant)."""
+    (``d``: the study's rows of convergence_detail; ``a``: its bevel_accuracy rows by variant;
+    ``other``: the same study on the other flank pair, if run)."""
     r = d[d["variant"] == variant].iloc[0]
     n = int(r["n_starts"])
     base = (
@@ -89,7 +97,9 @@ def _method_facts(key: str, tables: dict, d, a, variant: str) -> dict:
             n_pub=1000,
             note=(
                 f"{base}; outcomes: wrong root {r['wrong_root_pct']:.1f} %, not converged "
-                f"{r['not_converged_pct']:.1f} %, diverged {r['diverged_pct']:.1f} %; " + _rate_detail(d, r, variant)
+                f"{r['not_converged_pct']:.1f} %, diverged {r['diverged_pct']:.1f} %; "
+                + _rate_detail(d, r, variant)
+                + _other_flank_text(other, variant)
             ),
         ),
         f"{key}_mean_iterations": dict(
@@ -114,6 +124,17 @@ def _method_facts(key: str, tables: dict, d, a, variant: str) -> dict:
     }
 
 
+def _other_flank_text(other, variant: str) -> str:
+    """The rate of the same starts on the spiral pair's other flank pair (gear 1 concave)."""
+    if other is None or not len(other) or variant not in set(other["variant"]):
+        return ""
+    x = float(other.loc[other["variant"] == variant, "correct_pct"].iloc[0])
+    return (
+        f"; gear 1's lengthwise convex flank drives here (the thesis does not say which flank pair meshes): on the "
+        f"other flank pair (gear 1 concave) the same starts converge for {x:.1f} %"
+    )
+
+
 def _rate_detail(d, r, variant: str) -> str:
     """What the convergence rate's note adds: the seeded start's rate (plain), or why starts fail and
     the robust start's rate (reduced)."""
@@ -125,8 +146,8 @@ def _rate_detail(d, r, variant: str) -> str:
     if r["correct_pct"] < 99:
         return (
             "the failing starts leave the face in their first Newton step along the contact line "
-            "(a light crown makes the relative curvature along the face small), where member 2 has "
-            "no point; the robust start reaches "
+            "(a light crown, and the convex-concave flank pair, make the relative curvature along the face small), "
+            "where member 2 has no point; the robust start reaches "
             f"{float(d.loc[d['variant'] == 'reduced_robust', 'correct_pct'].iloc[0]):.1f} %"
         )
     return "every start converges to the reference contact"
@@ -170,7 +191,9 @@ def _contact_facts(tables: dict, f: dict) -> None:
         f["bev_straight_pressure_increase"] = dict(
             value=100.0 * (large["p0_pitch_MPa"] / small["p0_pitch_MPa"] - 1.0),
             note=(
-                f"Hertz p0 at the mid-path contact (phi1 = 0), centre-distance error dE = {small['d_E']:g} mm, tip and "
+                f"Hertz p0 at the pitch point (the mesh position whose contact lies on gear 1's pitch cone, solved: "
+                f"phi1 = {small['phi1_pitch_rad']:.5f} / {large['phi1_pitch_rad']:.5f} rad), centre-distance error "
+                f"dE = {small['d_E']:g} mm, tip and "
                 f"root relief, lead crown {large['crown']:g} vs {small['crown']:g} 1/mm (our reading of 'large' and "
                 f"'small': Table 7's c_1 range 0.02 / 0.002 scaled to m = 2.5 mm; the thesis prints no amounts): "
                 f"{large['p0_pitch_MPa']:.0f} vs {small['p0_pitch_MPa']:.0f} MPa at 1.5 kN; the largest p0 along the "
@@ -184,15 +207,28 @@ def _contact_facts(tables: dict, f: dict) -> None:
             if study not in sp.index:
                 continue
             r = sp.loc[study]
+            o = sp.loc[f"{study}_concave1"] if f"{study}_concave1" in sp.index else None
+            other = (
+                f"; on the other flank pair (gear 1 concave) {o['te_pp_arcsec']:.1f} arcsec, offset "
+                f"{o['te_constant_offset_arcsec']:.0f} arcsec"
+                if o is not None
+                else ""
+            )
+            off = r["te_constant_offset_arcsec"]
+            largest = max(abs(off), abs(off - r["te_pp_arcsec"]))  # the TE spans [offset - pp, offset]
+            cv = tables.get("bevel_spiral_curves")
+            n_cyc = int(cv.loc[cv["study"] == study, "cycle_te_arcsec"].notna().sum()) if cv is not None else 0
             f[f"bev_spiral_te_{key}"] = dict(
-                value=float(r["te_max_abs_arcsec"]),
+                value=float(r["te_pp_arcsec"]),
                 note=(
-                    f"largest |TE| transmitted over a cycle (as for Tables 3-4), c_1 = {r['crown']:g}, c_t = "
-                    f"{r['tip_amount']:g}, L_t = {r['tip_length']:g} (tip and root relief, module units), dE = "
-                    f"{r['d_E']:g}, dH = {r['d_G']:g} (read as member 2's axial error); TE variation over the cycle "
-                    f"{r['te_pp_arcsec']:.0f} arcsec, one pair's TE {r['te_pair_min_arcsec']:.0f}..{r['te_pair_max_arcsec']:.0f} "
-                    f"arcsec; {'continuous' if r['continuous'] else 'discontinuous'}; the thesis does not say how its "
-                    "amplitude is read or where its TE is zeroed, nor the spiral pair's pressure angle (20 deg here)"
+                    f"peak-to-peak of the TE transmitted over a cycle (the upper envelope of the tooth pairs from {n_cyc} "
+                    f"angles per cycle, settings bevel_te_n_points, its extremes read at {CYCLE_REFINE * n_cyc + 1}), "
+                    "gear 1's lengthwise convex flank "
+                    f"driving, c_1 = {r['crown']:g}, c_t = {r['tip_amount']:g}, L_t = {r['tip_length']:g} (tip and root "
+                    f"relief, module units), dE = {r['d_E']:g}, dH = {r['d_G']:g} (read as member 2's axial error); the "
+                    f"constant offset, a backlash change and not a transmission error, is "
+                    f"{r['te_constant_offset_arcsec']:.0f} arcsec (largest |TE| {largest:.0f} arcsec){other}; {'continuous' if r['continuous'] else 'discontinuous'}; the thesis does not say "
+                    "how its amplitude is read or where its TE is zeroed, nor the spiral pair's pressure angle (20 deg here)"
                 ),
             )
         sr = _stress_ratios(tables)
@@ -272,13 +308,19 @@ def _t12(c):
         for k in c.conv["case"].unique()
         if str(k).startswith("spiral_bevel_17_17_c1_")
     )
+    other = ", ".join(
+        f"{k}: {float(c.conv.loc[(c.conv['case'] == k) & (c.conv['variant'] == 'reduced'), 'correct_pct'].iloc[0]):.1f} %"
+        for k in c.conv["case"].unique()
+        if str(k).startswith("spiral_bevel_17_17_concave1")
+    )
     return _verdict(
         confirm,
         refute,
         f"spiral bevel 17/17, 1000 starts: reduced {red['correct_pct']:.1f} % in {red['mean_iterations']:.2f} "
         f"iterations vs plain conventional {con['correct_pct']:.1f} % in {con['mean_iterations']:.2f}; time per "
         f"correct point {t_red:.2e} vs {t_con:.2e} s; mean absolute error {e_red:.1e} vs {e_con:.1e}; reduced robust "
-        f"{d.loc['reduced_robust', 'correct_pct']:.1f} %; other crowns, reduced: {extra}",
+        f"{d.loc['reduced_robust', 'correct_pct']:.1f} %; other crowns, reduced: {extra}; other flank pair (gear 1 "
+        f"concave), reduced: {other}",
     )
 
 
@@ -360,10 +402,11 @@ def _angular(c):
         pp > 1.0,
         f"spiral bevel 17/17, c_1 = 0.002, no relief, shaft-angle errors up to {ang['d_gamma_deg'].max():g} deg: the TE "
         f"does not vary over the cycle (largest variation {pp:.2e} arcsec); it is offset by a constant up to "
-        f"{ang['te_max_abs_arcsec'].max():.0f} arcsec (a backlash change: spherical involutes stay conjugate under a "
-        "shaft-angle change, as involute spur gears under a centre-distance change), which is not a transmission "
-        "error of the function the thesis plots; contact at mid-path moves "
-        f"{abs(ang['u1_pitch_rad'].max() - ang['u1_pitch_rad'].min()):.4f} rad along the profile",
+        f"{ang['te_constant_offset_arcsec'].abs().max():.0f} arcsec (a backlash change: spherical involutes stay conjugate "
+        "under a shaft-angle change, as involute spur gears under a centre-distance change), which is not a "
+        "transmission error of the function the thesis plots; the contact at phi1 = 0 moves "
+        f"{abs(ang['u1_at_phi1_0_rad'].max() - ang['u1_at_phi1_0_rad'].min()):.4f} rad along the profile, the pitch "
+        f"point {abs(ang['v1_pitch'].max() - ang['v1_pitch'].min()):.4f} along the face",
     )
 
 
@@ -406,8 +449,9 @@ def _dE_vs_dH(c):
     return _verdict(
         stress_E and dev_E and top_ok,
         stress_H and dev_H,
-        "spiral bevel 17/17, c_1 = 0.005, c_t = 0.08, L_t = 0.16; stress ratio sigma = Hertz p0 at the central contact "
-        "(phi1 = 0) over the aligned pair's, pitch-point deviation delta = v1 - v0 there (module units): "
+        "spiral bevel 17/17, c_1 = 0.005, c_t = 0.08, L_t = 0.16; at the pitch point (the mesh position whose contact "
+        "lies on gear 1's pitch cone, solved for each pair): stress ratio sigma = Hertz p0 over the aligned pair's, "
+        "pitch-point deviation delta = v1 - v0 of its cone distance (module units): "
         + listing
         + f"; largest sigma at {top}",
     )

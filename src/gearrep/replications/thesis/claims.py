@@ -497,7 +497,7 @@ def _helical_shift_vs_spur(c: Context):
     return verdict(
         bool((r >= 5).all()),
         bool((r < 2).all()),
-        "contact shift at the pitch-point position, both pairs under the same misalignment with the same parabolic "
+        "contact shift at phi1 = 0, both pairs under the same misalignment with the same parabolic "
         "crown (Table 3-4 row-1 c1 of each angle): helical/spur |shift| = "
         + ", ".join(f"{x.plane} {abs(x.misalignment_deg):g} deg {x.ratio_helical_to_spur:.3f}" for x in sc.itertuples())
         + own,

@@ -390,8 +390,8 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
             note=(
                 f"Hertz p_max along the path {r.p_max_MPa:.0f} MPa ({r.crown_kind} crown {r.crown_amount:g} from "
                 f"{r.amount_source}, log a2 {r.log_a2:g}; out-of-plane {r.misalignment_deg:g} deg; 200 N on one contact, "
-                f"E 206 GPa, nu 0.3; at the pitch point {r.p_pitch_MPa:.0f} MPa, semi-axes {r.a_pitch_mm:.3f} x "
-                f"{r.b_pitch_mm:.4f} mm) over p_o = {r.p0_line_MPa:.1f} MPa, our reading of the aligned unmodified "
+                f"E 206 GPa, nu 0.3; at phi1 = 0 {r.p_at_phi1_0_MPa:.0f} MPa, semi-axes {r.a_at_phi1_0_mm:.3f} x "
+                f"{r.b_at_phi1_0_mm:.4f} mm) over p_o = {r.p0_line_MPa:.1f} MPa, our reading of the aligned unmodified "
                 f"contact: a line, so the Hertz line pressure with the load over its {r.line_length_mm:.2f} mm contact "
                 "line (the thesis does not say how it gets a finite p_o from eq 22-24 for a line contact)"
                 + implied

@@ -14,13 +14,13 @@ Choices the thesis does not print (stated in every check note):
 * the reference p_o of eq 25 ("aligned and unmodified" contact). That contact is a line, for which
   eq 22-24 give no finite ellipse (one relative curvature vanishes); we take the Hertz line-contact
   pressure (:func:`gearrep.ellipse.hertz_line_max_pressure_MPa`) of the aligned, unmodified pair at
-  the pitch-point position with the load spread over its contact line (the part inside both flanks);
+  phi1 = 0 (tooth 1 centred on the centre line) with the load spread over its contact line (the part inside both flanks);
 * the crowning amounts: Fig 29 does not restate them. At 0.05, 0.1 and 0.2 deg we use the printed
   amounts of Table 4 (each row of ``crowning_rows``; the checks quote row 1); at 0.01 and 0.02 deg,
   for which no amount is printed, the row-1 amounts of 0.05 deg (the smallest printed angle);
 * the logarithmic crown's a2 (eq 12, setting ``crowning_log_a2``);
-* "SR at an angle" read as the largest pressure along the path of contact (the pitch-point value
-  is in the table too).
+* "SR at an angle" read as the largest pressure along the path of contact (the value at
+  phi1 = 0 is in the table too).
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ from .te import engagement_contacts
 #: out-of-plane angles of the stress-ratio study (Fig 29; sec 4.2 text names 0.01, 0.02, 0.05, 0.1, 0.2)
 FIG29_ANGLES_DEG = (0.01, 0.02, 0.05, 0.1, 0.2)
 KINDS = ("circular", "parabolic", "logarithmic")
-#: points along the aligned pair's contact line (pitch-point position) for its length inside the
+#: points along the aligned pair's contact line (at phi1 = 0) for its length inside the
 #: flanks: the ends are found to b / (LINE_POINTS - 1) = 0.05 mm, p_o (~ length^-1/2) to ~0.2 %
 LINE_POINTS = 401
 
@@ -57,7 +57,7 @@ def crown_amounts(angle_deg: float) -> tuple[dict, str]:
 
 def reference_pressure(design: Design, tol: float = 1e-12) -> dict:
     """p_o of eq 25: the aligned, unmodified 40/37 pair touches along a line; Hertz line-contact
-    pressure at the pitch-point position (phi1 = 0) with the load over the contact line.
+    pressure at phi1 = 0 (not the pitch-point position) with the load over the contact line.
 
     The contact line is traced at LINE_POINTS face positions v1 (line-contact solve, v1 fixed); its
     relative curvature across the line is the larger principal relative curvature (the other is ~0);
@@ -78,7 +78,7 @@ def reference_pressure(design: Design, tol: float = 1e-12) -> dict:
         )
     ok = c.status == Status.CONVERGED
     if not ok[LINE_POINTS // 2]:
-        raise ValueError("no line contact of the aligned 40/37 pair at the pitch point")
+        raise ValueError("no line contact of the aligned 40/37 pair at phi1 = 0")
     mid = c.take([LINE_POINTS // 2])
     rel = relative_curvature(*contact_curvatures(pair, mid))
     k_across = float(max(abs(rel.k1[0]), abs(rel.k2[0])))
@@ -99,22 +99,22 @@ def reference_pressure(design: Design, tol: float = 1e-12) -> dict:
 
 def path_pressure(pair, n_points: int, load_N: float, E_MPa: float, nu: float, tol: float = 1e-12) -> dict:
     """Hertz contact along one pair's engagement: the largest p_max and where, and the values at the
-    contact nearest the pitch-point position."""
+    contact nearest phi1 = 0."""
     phi, c = engagement_contacts(pair, n_points, tol)
     h = contact_hertz(pair, c, load_N, E_MPa, nu)
     good = h.status == Status.CONVERGED
     if not good.any():
-        return dict(p_max_MPa=np.nan, p_pitch_MPa=np.nan, n_points=0)
+        return dict(p_max_MPa=np.nan, p_at_phi1_0_MPa=np.nan, n_points=0)
     i = int(np.nanargmax(np.where(good, h.p0, -np.inf)))
     j = int(np.argmin(np.where(good, np.abs(phi), np.inf)))
     return dict(
         p_max_MPa=float(h.p0[i]),
         phi1_at_p_max_rad=float(phi[i]),
         v1_at_p_max_mm=float(c.v1[i]),
-        p_pitch_MPa=float(h.p0[j]),
-        v1_pitch_mm=float(c.v1[j]),
-        a_pitch_mm=float(h.a[j]),
-        b_pitch_mm=float(h.b[j]),
+        p_at_phi1_0_MPa=float(h.p0[j]),
+        v1_at_phi1_0_mm=float(c.v1[j]),
+        a_at_phi1_0_mm=float(h.a[j]),
+        b_at_phi1_0_mm=float(h.b[j]),
         p_min_path_MPa=float(np.nanmin(np.where(good, h.p0, np.inf))),
         n_points=int(good.sum()),
     )
@@ -149,7 +149,7 @@ def stress_table(s: dict, design: Design) -> dict:
                         log_a2=a2,
                         **r,
                         stress_ratio=r["p_max_MPa"] / ref["p0_line_MPa"],
-                        stress_ratio_pitch=r["p_pitch_MPa"] / ref["p0_line_MPa"],
+                        stress_ratio_at_phi1_0=r["p_at_phi1_0_MPa"] / ref["p0_line_MPa"],
                         load_N=d["load_N"],
                         young_modulus_MPa=d["young_modulus_MPa"],
                         poisson_ratio=d["poisson_ratio"],

@@ -26,7 +26,7 @@ PAIRS = range(-2, 3)
 
 def engagement_contacts(pair: GearPair, n_points: int, tol: float = 1e-12):
     """(phi1 grid, :class:`gearrep.tca.ContactPoints`) of one tooth pair over +-1.25 angular pitches
-    around the pitch-point position (4 n_points + 1 angles), each angle solved by the reduced
+    around phi1 = 0 (4 n_points + 1 angles), each angle solved by the reduced
     formulation from its own robust start; rows outside the flanks are not CONVERGED."""
     p1 = 2 * np.pi / pair.n1
     phi = np.linspace(-1.25 * p1, 1.25 * p1, 4 * int(n_points) + 1)
@@ -41,7 +41,7 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     """TE (eq 14, library sign: > 0 = member 2 leads) and path of contact of one tooth pair over
     its engagement, and the TE transmitted over one cycle (upper envelope of the pairs k = -2..2).
 
-    The grid spans +-1.25 angular pitches around the pitch-point position; a grid point counts
+    The grid spans +-1.25 angular pitches around phi1 = 0; a grid point counts
     only if the contact lies inside both flanks (edge contact is not modelled: the envelope then
     has a gap, i.e. the TE is discontinuous).
     """
@@ -50,7 +50,7 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
     ok = c.status == Status.CONVERGED
     te = np.where(ok, c.te, np.nan)
     cycle = sampled_cycle(phi, te, p1, int(n_points), PAIRS, handover="jump")
-    i0 = int(np.argmin(np.where(ok, np.abs(phi), np.inf))) if ok.any() else None  # nearest the pitch point
+    i0 = int(np.argmin(np.where(ok, np.abs(phi), np.inf))) if ok.any() else None  # nearest phi1 = 0
     if ok.sum() >= 3:
         c2, c1, _ = np.polyfit(phi[ok], te[ok], 2)
         lin_slope, parab = float(c1), float(abs(c2) * (0.5 * p1) ** 2)
@@ -71,8 +71,8 @@ def te_study(pair: GearPair, n_points: int, tol: float = 1e-12) -> dict:
         area=float(np.trapezoid(cycle.te, cycle.phi1)) if np.isfinite(cycle.te).all() else np.nan,
         jump_arcsec=cycle.jump_arcsec,
         te_pair_range=(float(np.nanmin(te)), float(np.nanmax(te))) if ok.any() else (np.nan, np.nan),
-        v1_at_pitch=float(c.v1[i0]) if i0 is not None else np.nan,
-        te_at_pitch=float(te[i0]) if i0 is not None else np.nan,
+        v1_at_phi1_0=float(c.v1[i0]) if i0 is not None else np.nan,
+        te_at_phi1_0=float(te[i0]) if i0 is not None else np.nan,
         env_pp=cycle.te_peak_to_peak,
         te_linear_slope=lin_slope,
         te_parabolic_part=parab,
@@ -126,13 +126,13 @@ def _te_rows(label, kind, amount, plane, angle_deg, pair, res, fo, frame):
         te_pair_min_arcsec=res["te_pair_range"][0] / ARCSEC,
         te_pair_max_arcsec=res["te_pair_range"][1] / ARCSEC,
         te_area_arcsec_rad=res["area"] / ARCSEC if np.isfinite(res["area"]) else np.nan,
-        v1_shift_mm=res["v1_at_pitch"],
+        v1_shift_mm=res["v1_at_phi1_0"],
         first_order_te_arcsec=fo["te"] / ARCSEC if fo else np.nan,
         first_order_v_shift_mm=fo["v_shift"] if fo else np.nan,
         lead_error_rad=fo["lead_error"] if fo else np.nan,
         engagement_begin_rad=res["engagement"][0],
         engagement_end_rad=res["engagement"][1],
-        te_at_pitch_arcsec=res["te_at_pitch"] / ARCSEC,
+        te_at_phi1_0_arcsec=res["te_at_phi1_0"] / ARCSEC,
         te_cycle_pp_arcsec=res["env_pp"] / ARCSEC,
         te_linear_slope_arcsec_per_rad=res["te_linear_slope"] / ARCSEC,
         te_parabolic_part_arcsec=res["te_parabolic_part"] / ARCSEC,
@@ -180,7 +180,8 @@ TE_READINGS = {
     "times half a period pi/N1, pitch-point pivot [arcsec]",
     "parabolic_part_arcsec": "parabolic part only: |c2| (T/2)^2 of the same quadratic, T = 2 pi/N1 [arcsec]",
     "crown_first_order_arcsec": "crown term alone, first order e^2/(4 c r_b2 cos^2 beta_b) [arcsec]",
-    "pair_at_pitch_arcsec": "TE of one pair at the pitch-point position, pitch-point pivot [arcsec]",
+    "pair_at_phi1_0_arcsec": "TE of one pair at phi1 = 0 (tooth 1 centred on the centre line; the pitch point is "
+    "pi/(2 N1) away), pitch-point pivot [arcsec]",
     "axis_pivot_rigid_arcsec": "rigid-body TE of the member-2 axis pivot (mid-face on its axis): in-plane the axial "
     "shift r_p2 sin(angle) times tan(beta)/r_p2; out-of-plane none [arcsec]",
     "face_end_rigid_arcsec": "rigid-body TE of a pivot at a face end (lever b/2), member 2 turned, gear angle (eq 14): "
@@ -196,8 +197,9 @@ TE_READINGS = {
 }
 
 
-def contact_at_pitch_position(pair: GearPair, tol: float = 1e-12):
-    """Contact of one pair at phi1 = 0 (pitch-point position): reduced solve from (r_p1, v1 = 0),
+def contact_at_phi1_0(pair: GearPair, tol: float = 1e-12):
+    """Contact of one pair at phi1 = 0 (tooth 1 centred on the centre line, not the pitch-point
+    position, which is pi/(2 N1) away): reduced solve from (r_p1, v1 = 0),
     then from the robust start (:class:`gearrep.tca.ContactPoints` of one row; its status says
     whether either converged)."""
     phi = np.zeros(1)
@@ -210,9 +212,9 @@ def contact_at_pitch_position(pair: GearPair, tol: float = 1e-12):
     return c
 
 
-def _te_at_pitch_position(pair: GearPair, tol: float = 1e-12) -> float:
-    """TE [rad] of one pair at the pitch-point position; NaN (reported, not guessed) if no contact."""
-    c = contact_at_pitch_position(pair, tol)
+def _te_at_phi1_0(pair: GearPair, tol: float = 1e-12) -> float:
+    """TE [rad] of one pair at phi1 = 0; NaN (reported, not guessed) if no contact."""
+    c = contact_at_phi1_0(pair, tol)
     return float(c.te[0]) if c.status[0] == Status.CONVERGED else np.nan
 
 
@@ -250,14 +252,14 @@ def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFra
                     d_gamma_out=m.d_gamma_out, d_H=m.d_H + hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a))
                 )
             )
-            tca[name] = _te_at_pitch_position(pair_40_37(design, crown, m), tol=float(s["tol"]))
+            tca[name] = _te_at_phi1_0(pair_40_37(design, crown, m), tol=float(s["tol"]))
         vals = {
             "env_max_arcsec": abs(r.te_max_arcsec),
             "cycle_pp_arcsec": r.te_cycle_pp_arcsec,
             "pair_linear_half_period_arcsec": abs(r.te_linear_slope_arcsec_per_rad) * 0.5 * p1,
             "parabolic_part_arcsec": r.te_parabolic_part_arcsec,
             "crown_first_order_arcsec": abs(r.first_order_te_arcsec),
-            "pair_at_pitch_arcsec": abs(r.te_at_pitch_arcsec),
+            "pair_at_phi1_0_arcsec": abs(r.te_at_phi1_0_arcsec),
             "axis_pivot_rigid_arcsec": (np.sin(ang) * tan_b if r.plane == "in" else 0.0) / ARCSEC,
             "face_end_rigid_arcsec": half_b * np.sin(ang) * lever / g2.r_p / ARCSEC,
             "face_end_tca_plus_arcsec": abs(tca["plus"]) / ARCSEC,
@@ -419,7 +421,7 @@ def crowning_areas_table(s: dict, design: Design) -> dict:
 
 def shift_common_angle_table(s: dict, design: Design) -> dict:
     """Job ``shift_common_angle`` (claim 003-C6-helical_shift_much_larger_than_spur): the contact
-    shift from mid-face at the pitch-point position of the helical 40/37 pair and of the spur 25/25
+    shift from mid-face at phi1 = 0 of the helical 40/37 pair and of the spur 25/25
     (m = 1) pair at the SAME misalignment (each angle and plane of Tables 3-4) with the SAME crown:
     the parabolic row-1 amount c1 of that angle on the pinion of both pairs (pivot ``te_pivot``)."""
     rows = []
@@ -431,9 +433,7 @@ def shift_common_angle_table(s: dict, design: Design) -> dict:
             ("helical_40_37", lambda m: pair_40_37(design, ParabolicCrowning(c1), m), hel0),
             ("spur_25_25_m1", lambda m: pair_spur_m1(design, c1, m), spur0),
         ):
-            c = contact_at_pitch_position(
-                make(misalignment(plane, ang_deg * DEG, base, s["te_pivot"])), float(s["tol"])
-            )
+            c = contact_at_phi1_0(make(misalignment(plane, ang_deg * DEG, base, s["te_pivot"])), float(s["tol"]))
             shift[label] = float(c.v1[0]) if c.status[0] == Status.CONVERGED else np.nan
         rows.append(
             dict(
