@@ -1,0 +1,148 @@
+"""The contact problem of the load distribution, solved by a primal active-set method.
+
+Problem (Conry & Seireg, "A mathematical programming technique for the evaluation of load
+distribution and optimal modifications for gear systems", J. Eng. Ind. 95 (1973) 1115-1122): at
+the candidate contact points j, with initial separations s_j >= 0 [mm], a symmetric positive
+definite compliance matrix C [mm/N], moment arms h_j > 0 [mm] of the normal loads about the driving
+axis and the applied moment M [N mm], find loads F_j and the rigid rotation theta of the driving
+member such that
+
+    gap_j = s_j + (C F)_j - theta h_j >= 0,   F_j >= 0,   F_j gap_j = 0,   sum_j h_j F_j = M.
+
+These are the KKT conditions of the convex quadratic programme
+min 1/2 F^T C F + s^T F subject to F >= 0 and h^T F = M (theta is the multiplier of the equality),
+which has one solution for C positive definite. The solver is the primal active-set method of
+Nocedal & Wright, "Numerical Optimization", 2nd ed., Algorithm 16.3, started from the whole load
+on the point of smallest s_j / h_j (a feasible point): each iteration solves the
+equality-constrained problem on the working set, steps back to feasibility where a load would turn
+negative (dropping that point), and adds the point with the most negative gap once the loads are
+positive; it ends when every gap is >= -tol_gap and every load >= 0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..solve import Status, check_positive
+
+__all__ = ["ContactLoads", "solve_contact_loads"]
+
+
+@dataclass(frozen=True)
+class ContactLoads:
+    """Solution of the contact problem.
+
+    loads_N : (n,) loads F_j >= 0 [N]; rotation : theta (driving member's rotation that closes the
+    gaps) [rad]; gaps_mm : (n,) deformed gaps (0 where loaded); moment_residual : |h.F - M| / M;
+    complementarity : max_j F_j gap_j / (M max h) (relative; 0 at the exact solution);
+    iterations, status : :class:`gearrep.solve.Status` (NOT_CONVERGED at the iteration limit,
+    SINGULAR if a working-set system could not be solved)
+    """
+
+    loads_N: np.ndarray
+    rotation: float
+    gaps_mm: np.ndarray
+    moment_residual: float
+    complementarity: float
+    iterations: int
+    status: int
+
+
+def _check(C, s, h, moment):
+    s = np.asarray(s, dtype=float)
+    h = np.asarray(h, dtype=float)
+    C = np.asarray(C, dtype=float)
+    n = s.size
+    if s.ndim != 1 or n == 0:
+        raise ValueError(f"separations must be a non-empty 1-D array [mm], got shape {s.shape}")
+    if h.shape != s.shape or C.shape != (n, n):
+        raise ValueError(f"arms must have shape {s.shape} and C shape {(n, n)}, got {h.shape} and {C.shape}")
+    if not (np.all(np.isfinite(s)) and np.all(np.isfinite(C)) and np.all(np.isfinite(h))):
+        raise ValueError("separations, arms and compliance must be finite")
+    if np.any(h <= 0):
+        raise ValueError(f"moment arms must be > 0 [mm], got min {h.min()!r}")
+    check_positive("moment", moment)
+    return C, s, h
+
+
+def _working_set_solve(C, s, h, moment, P):
+    """Loads on the working set P and theta from [C_PP -h_P; h_P^T 0] [F_P; theta] = [-s_P; M]."""
+    k = P.size
+    A = np.zeros((k + 1, k + 1))
+    A[:k, :k] = C[np.ix_(P, P)]
+    A[:k, k] = -h[P]
+    A[k, :k] = h[P]
+    rhs = np.concatenate([-s[P], [moment]])
+    x = np.linalg.solve(A, rhs)
+    return x[:k], float(x[k])
+
+
+def solve_contact_loads(
+    C, s, h, moment, *, tol: float = 1e-12, maxiter: int | None = None, working=None
+) -> ContactLoads:
+    """Loads of the contact problem of the module docstring (units: mm, N, N mm).
+
+    ``tol`` scales the gap test (a gap >= -tol max(s, |C| F scale) counts as open) and the load test;
+    ``maxiter`` defaults to 3 n + 10 working-set changes; ``working`` an optional initial guess of the
+    loaded points (indices), used only if it gives non-negative loads (else the feasible default start).
+    """
+    C, s, h = _check(C, s, h, moment)
+    n = s.size
+    maxiter = 3 * n + 10 if maxiter is None else int(maxiter)
+    F = np.zeros(n)
+    start = None
+    if working is not None and len(working):
+        P0 = np.unique(np.asarray(working, dtype=int))
+        try:
+            FP, _ = _working_set_solve(C, s, h, moment, P0)
+        except np.linalg.LinAlgError:
+            FP = None
+        if FP is not None and np.all(FP >= 0):
+            start = P0
+            F[P0] = FP
+    if start is None:
+        j = int(np.argmin(s / h))
+        start = np.array([j])
+        F[j] = moment / h[j]
+    P = list(start)
+    theta = np.nan
+    scale = max(float(np.max(np.abs(s))), float(np.max(np.diag(C))) * moment / float(np.min(h)))
+    status = int(Status.NOT_CONVERGED)
+    it = 0
+    for it in range(1, maxiter + 1):
+        Pa = np.array(sorted(P))
+        try:
+            FP, theta = _working_set_solve(C, s, h, moment, Pa)
+        except np.linalg.LinAlgError:
+            status = int(Status.SINGULAR)
+            break
+        if np.all(FP >= 0):
+            F[:] = 0.0
+            F[Pa] = FP
+            gaps = s + C @ F - theta * h
+            gaps[Pa] = np.maximum(gaps[Pa], 0.0)
+            free = np.setdiff1d(np.arange(n), Pa)
+            if free.size == 0 or np.min(gaps[free]) >= -tol * scale:
+                status = int(Status.CONVERGED)
+                break
+            P.append(int(free[np.argmin(gaps[free])]))
+            continue
+        # step from the feasible F toward FP until the first load reaches zero; drop it
+        cur = F[Pa]
+        neg = FP < 0
+        alpha = np.min(cur[neg] / (cur[neg] - FP[neg]))
+        F[:] = 0.0
+        F[Pa] = cur + alpha * (FP - cur)
+        F[F <= tol * moment / float(np.max(h))] = 0.0
+        P = [j for j in Pa if F[j] > 0.0]
+        if not P:  # numerical corner: restart from the smallest separation
+            j = int(np.argmin(s / h))
+            P, F[j] = [j], moment / h[j]
+    gaps = s + C @ F - theta * h
+    mres = abs(float(h @ F) - moment) / moment
+    comp = float(np.max(np.abs(F * gaps))) / (moment / float(np.min(h)) * scale) if n else 0.0
+    if status == int(Status.CONVERGED) and not np.isfinite(theta):
+        status = int(Status.DIVERGED)
+    return ContactLoads(F, float(theta), gaps, mres, comp, it, status)
