@@ -11,8 +11,8 @@ import numpy as np
 from ..ellipse import effective_modulus
 from ..solve import Status, check_finite, check_integer
 from ..tca import GearPair
-from ._compliance import STEEL, Material, ToothCompliance, contact_half_width_mm, line_contact_pressure_MPa
-from ._compliance import weber_contact_approach_mm
+from . import _compliance as compliance
+from ._compliance import STEEL, Material
 from ._distribution import solve_contact_loads
 from ._separation import Separations, initial_separations
 
@@ -169,8 +169,8 @@ class _Strips:
     def __init__(self, pair, sep: Separations, materials, bore_radius_mm):
         c = sep.contacts
         ok = sep.in_contact.ravel()
-        t1 = ToothCompliance(pair.flank1, materials[0], bore_radius_mm[0])
-        t2 = ToothCompliance(pair.flank2, materials[1], bore_radius_mm[1])
+        t1 = compliance.ToothCompliance(pair.flank1, materials[0], bore_radius_mm[0])
+        t2 = compliance.ToothCompliance(pair.flank2, materials[1], bore_radius_mm[1])
         beta_b = float(pair.flank1.gear.beta_b)
         self.length_mm = sep.slice_width_mm / np.cos(beta_b)  # contact-line length of a strip
         n = ok.size
@@ -190,7 +190,7 @@ class _Strips:
     def compliance(self, rows, F):
         """Secant compliance [mm/N] of strips ``rows`` at loads F [N] (tooth + Weber approach)."""
         L = self.length_mm
-        dH = weber_contact_approach_mm(F / L, self.k[rows], self.h1[rows], self.h2[rows], *self.materials)
+        dH = compliance.weber_contact_approach_mm(F / L, self.k[rows], self.h1[rows], self.h2[rows], *self.materials)
         return self.lam[rows] / L + dH / F
 
 
@@ -283,11 +283,13 @@ def _record(pair, T, driving, sep, strips: _Strips, loads, out, its, status) -> 
     k = sep.k_rel_per_mm
     p0 = np.where(
         sep.in_contact,
-        line_contact_pressure_MPa(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar),
+        compliance.line_contact_pressure_MPa(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar),
         np.nan,
     )
     b = np.where(
-        sep.in_contact, contact_half_width_mm(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar), np.nan
+        sep.in_contact,
+        compliance.contact_half_width_mm(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar),
+        np.nan,
     )
     p0 = np.where(ok[:, None, None], p0, np.nan)
     b = np.where(ok[:, None, None], b, np.nan)

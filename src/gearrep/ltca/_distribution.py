@@ -85,15 +85,18 @@ def solve_contact_loads(
     """Loads of the contact problem of the module docstring (units: mm, N, N mm).
 
     ``tol`` scales the gap test (a gap >= -tol max(s, |C| F scale) counts as open) and the load test;
-    ``maxiter`` defaults to 3 n + 10 working-set changes; ``working`` an optional initial guess of the
-    loaded points (indices), used only if it gives non-negative loads (else the feasible default start).
+    ``maxiter`` defaults to 3 n + 10 working-set changes; ``working`` an initial guess of the loaded
+    points (indices; default those of smallest s/h), used only if it gives non-negative loads (else
+    the whole load on the point of smallest s/h, a feasible start).
     """
     C, s, h = _check(C, s, h, moment)
     n = s.size
     maxiter = 3 * n + 10 if maxiter is None else int(maxiter)
     F = np.zeros(n)
     start = None
-    if working is not None and len(working):
+    if working is None:  # the points of smallest separation (all of them for line contact)
+        working = np.flatnonzero(s / h <= np.min(s / h) + tol * max(float(np.max(np.abs(s))), 1e-300) / np.max(h))
+    if len(working):
         P0 = np.unique(np.asarray(working, dtype=int))
         try:
             FP, _ = _working_set_solve(C, s, h, moment, P0)
@@ -106,13 +109,14 @@ def solve_contact_loads(
         j = int(np.argmin(s / h))
         start = np.array([j])
         F[j] = moment / h[j]
-    P = list(start)
+    inP = np.zeros(n, dtype=bool)
+    inP[start] = True
     theta = np.nan
     scale = max(float(np.max(np.abs(s))), float(np.max(np.diag(C))) * moment / float(np.min(h)))
     status = int(Status.NOT_CONVERGED)
     it = 0
-    for it in range(1, maxiter + 1):
-        Pa = np.array(sorted(P))
+    for it in range(1, maxiter + 1):  # noqa: B007 (the count is reported)
+        Pa = np.flatnonzero(inP)
         try:
             FP, theta = _working_set_solve(C, s, h, moment, Pa)
         except np.linalg.LinAlgError:
@@ -121,13 +125,13 @@ def solve_contact_loads(
         if np.all(FP >= 0):
             F[:] = 0.0
             F[Pa] = FP
-            gaps = s + C @ F - theta * h
-            gaps[Pa] = np.maximum(gaps[Pa], 0.0)
-            free = np.setdiff1d(np.arange(n), Pa)
-            if free.size == 0 or np.min(gaps[free]) >= -tol * scale:
+            gaps = s + C[:, Pa] @ FP - theta * h
+            gaps[inP] = np.inf
+            j = int(np.argmin(gaps))
+            if gaps[j] >= -tol * scale:
                 status = int(Status.CONVERGED)
                 break
-            P.append(int(free[np.argmin(gaps[free])]))
+            inP[j] = True
             continue
         # step from the feasible F toward FP until the first load reaches zero; drop it
         cur = F[Pa]
@@ -136,10 +140,10 @@ def solve_contact_loads(
         F[:] = 0.0
         F[Pa] = cur + alpha * (FP - cur)
         F[F <= tol * moment / float(np.max(h))] = 0.0
-        P = [j for j in Pa if F[j] > 0.0]
-        if not P:  # numerical corner: restart from the smallest separation
+        inP = F > 0.0
+        if not np.any(inP):  # numerical corner: restart from the smallest separation
             j = int(np.argmin(s / h))
-            P, F[j] = [j], moment / h[j]
+            inP[j], F[j] = True, moment / h[j]
     gaps = s + C @ F - theta * h
     mres = abs(float(h @ F) - moment) / moment
     comp = float(np.max(np.abs(F * gaps))) / (moment / float(np.min(h)) * scale) if n else 0.0

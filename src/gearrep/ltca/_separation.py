@@ -32,9 +32,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..curvature import euler_normal_curvature
 from ..solve import Status, newton
 from ..tca import ContactPoints, GearPair, contact_curvatures
-from ..curvature import euler_normal_curvature
 
 __all__ = ["Separations", "face_slices", "section_contacts", "initial_separations"]
 
