@@ -194,17 +194,18 @@ class _Strips:
         return self.lam[rows] / L + dH / F
 
 
-def _one_position(strips: _Strips, rows, gap, arm, moment, tol, maxiter):
-    """Loads of one position by fixed-point iteration on the secant compliance; returns
-    (ContactLoads, iterations, status)."""
-    F_ref = moment / float(np.sum(arm))  # an even share as the first linearisation point
-    F = np.full(rows.size, F_ref)
-    working = None
+def _one_position(strips: _Strips, rows, gap, arm, moment, tol, maxiter, guess=None):
+    """Loads of one position by fixed-point iteration on the secant compliance, from the loads
+    ``guess`` (e.g. the previous position's; default an even share); returns (ContactLoads,
+    iterations, status)."""
+    F_ref = moment / float(np.sum(arm))  # an even share: the linearisation point of unloaded strips
+    F = np.full(rows.size, F_ref) if guess is None else guess
+    working = None if guess is None or not np.any(guess > 0) else np.flatnonzero(guess > 0)
     status = int(Status.NOT_CONVERGED)
     sol = None
     for it in range(1, maxiter + 1):
         c = strips.compliance(rows, np.where(F > 0, F, F_ref))
-        sol = solve_contact_loads(np.diag(c), gap, arm, moment, working=working)
+        sol = solve_contact_loads(c, gap, arm, moment, working=working)
         if sol.status != Status.CONVERGED:
             return sol, it, sol.status
         change = float(np.max(np.abs(sol.loads_N - F)))
@@ -262,8 +263,9 @@ def loaded_contact(
             status[i] = int(Status.NOT_CONVERGED)  # a section expected on the flanks was not found
             continue
         rows = i * cand.size + rows_local
+        guess = loads[i - 1, rows_local] if i and status[i - 1] == Status.CONVERGED else None
         sol, its[i], status[i] = _one_position(
-            strips, rows, sep.gap_mm[i].ravel()[rows_local], arm_all[i, rows_local], moment, tol, maxiter
+            strips, rows, sep.gap_mm[i].ravel()[rows_local], arm_all[i, rows_local], moment, tol, maxiter, guess
         )
         if status[i] != Status.CONVERGED:
             continue

@@ -57,18 +57,26 @@ def _check(C, s, h, moment):
     n = s.size
     if s.ndim != 1 or n == 0:
         raise ValueError(f"separations must be a non-empty 1-D array [mm], got shape {s.shape}")
-    if h.shape != s.shape or C.shape != (n, n):
-        raise ValueError(f"arms must have shape {s.shape} and C shape {(n, n)}, got {h.shape} and {C.shape}")
+    if h.shape != s.shape or C.shape not in ((n, n), (n,)):
+        raise ValueError(f"arms must have shape {s.shape} and C shape {(n, n)} or {(n,)}, got {h.shape} and {C.shape}")
     if not (np.all(np.isfinite(s)) and np.all(np.isfinite(C)) and np.all(np.isfinite(h))):
         raise ValueError("separations, arms and compliance must be finite")
     if np.any(h <= 0):
         raise ValueError(f"moment arms must be > 0 [mm], got min {h.min()!r}")
+    if C.ndim == 1 and np.any(C <= 0):
+        raise ValueError(f"a diagonal compliance must be > 0 [mm/N], got min {C.min()!r}")
     check_positive("moment", moment)
     return C, s, h
 
 
 def _working_set_solve(C, s, h, moment, P):
-    """Loads on the working set P and theta from [C_PP -h_P; h_P^T 0] [F_P; theta] = [-s_P; M]."""
+    """Loads on the working set P and theta from [C_PP -h_P; h_P^T 0] [F_P; theta] = [-s_P; M]; for a
+    diagonal C (given as its diagonal) in closed form: F_P = (theta h_P - s_P) / c_P with
+    theta = (M + sum h s / c) / sum h^2 / c."""
+    if C.ndim == 1:
+        c, hP, sP = C[P], h[P], s[P]
+        theta = (moment + float(np.sum(hP * sP / c))) / float(np.sum(hP * hP / c))
+        return (theta * hP - sP) / c, theta
     k = P.size
     A = np.zeros((k + 1, k + 1))
     A[:k, :k] = C[np.ix_(P, P)]
@@ -79,11 +87,19 @@ def _working_set_solve(C, s, h, moment, P):
     return x[:k], float(x[k])
 
 
+def _apply(C, F, P=None):
+    """C F (or the columns P of C times F[P]) for a full or diagonal C."""
+    if C.ndim == 1:
+        return C * F
+    return C @ F if P is None else C[:, P] @ F[P]
+
+
 def solve_contact_loads(
     C, s, h, moment, *, tol: float = 1e-12, maxiter: int | None = None, working=None
 ) -> ContactLoads:
     """Loads of the contact problem of the module docstring (units: mm, N, N mm).
 
+    ``C`` is the (n, n) compliance matrix or, for independent points, its diagonal (n,).
     ``tol`` scales the gap test (a gap >= -tol max(s, |C| F scale) counts as open) and the load test;
     ``maxiter`` defaults to 3 n + 10 working-set changes; ``working`` an initial guess of the loaded
     points (indices; default those of smallest s/h), used only if it gives non-negative loads (else
@@ -112,7 +128,8 @@ def solve_contact_loads(
     inP = np.zeros(n, dtype=bool)
     inP[start] = True
     theta = np.nan
-    scale = max(float(np.max(np.abs(s))), float(np.max(np.diag(C))) * moment / float(np.min(h)))
+    cmax = float(np.max(C)) if C.ndim == 1 else float(np.max(np.diag(C)))
+    scale = max(float(np.max(np.abs(s))), cmax * moment / float(np.min(h)))
     status = int(Status.NOT_CONVERGED)
     it = 0
     for it in range(1, maxiter + 1):  # noqa: B007 (the count is reported)
@@ -125,7 +142,7 @@ def solve_contact_loads(
         if np.all(FP >= 0):
             F[:] = 0.0
             F[Pa] = FP
-            gaps = s + C[:, Pa] @ FP - theta * h
+            gaps = s + _apply(C, F, Pa) - theta * h
             gaps[inP] = np.inf
             j = int(np.argmin(gaps))
             if gaps[j] >= -tol * scale:
@@ -144,7 +161,7 @@ def solve_contact_loads(
         if not np.any(inP):  # numerical corner: restart from the smallest separation
             j = int(np.argmin(s / h))
             inP[j], F[j] = True, moment / h[j]
-    gaps = s + C @ F - theta * h
+    gaps = s + _apply(C, F) - theta * h
     mres = abs(float(h @ F) - moment) / moment
     comp = float(np.max(np.abs(F * gaps))) / (moment / float(np.min(h)) * scale) if n else 0.0
     if status == int(Status.CONVERGED) and not np.isfinite(theta):

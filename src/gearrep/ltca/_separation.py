@@ -111,6 +111,7 @@ def section_contacts(pair: GearPair, phi1, v1, start=None, *, tol: float = 1e-10
                 lower=lo,
                 upper=hi,
                 rows=True,
+                inverse_square=True,
             )
         x[idx], res[idx], its[idx], status[idx] = sr.x, sr.residual, sr.iterations, sr.status
     return _points(pair, phi1, v1, x, res, its, status)
