@@ -5,7 +5,7 @@ import itertools
 
 import numpy as np
 import pytest
-from test_tca import C1, spur_pair
+from test_tca import C1, helical_pair, spur_pair
 
 from gearrep.ltca import (
     STEEL,
@@ -295,3 +295,18 @@ def test_diagonal_compliance_path_agrees_with_the_dense_one():
         assert a.status == b.status == Status.CONVERGED
         assert np.allclose(a.loads_N, b.loads_N, rtol=1e-10, atol=1e-12 * 3.0 / h.min())
         assert a.rotation == pytest.approx(b.rotation, rel=1e-10)
+
+
+def test_helical_pair_balance_and_driving_member():
+    """Helical pair: the moment arm of the normal load is r_b1 cos(beta_b), so the loads sum to
+    T / (r_b1 cos(beta_b)) (1e-9 relative). Driving from the gear with the torque T N2/N1 loads the
+    same flanks with the same loads and loaded TE (involute arms are in the ratio r_b2 / r_b1)."""
+    pair, g1, _ = helical_pair()
+    r = loaded_contact(pair, 30.0, cycle_positions(pair, 9))
+    assert np.all(r.converged) and np.all(r.pairs_loaded >= 2)
+    assert np.allclose(r.normal_load_N, 30e3 / (g1.r_b * np.cos(g1.beta_b)), rtol=1e-9, atol=0)
+    pair, _, _ = spur_pair()
+    phi = np.linspace(-0.08, 0.0, 5)
+    a, b = loaded_contact(pair, 50.0, phi), loaded_contact(pair, 50.0 * 72 / 52, phi, driving="gear")
+    assert np.allclose(a.pair_load_N, b.pair_load_N, rtol=1e-9, atol=1e-9 * np.max(a.pair_load_N))
+    assert np.allclose(a.lte_urad, b.lte_urad, rtol=1e-9, atol=1e-9 * np.max(np.abs(a.lte_urad)))
