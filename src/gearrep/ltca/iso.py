@@ -4,16 +4,17 @@ Sources
 -------
 * ISO 6336-2:2019, "Calculation of load capacity of spur and helical gears - Part 2: Calculation of
   surface durability (pitting)": nominal contact stress at the pitch point
-  sigma_H0 = Z_H Z_E Z_eps Z_beta sqrt(F_t / (d_1 b) (u + 1) / u) (clause 5, eq (3)); zone factor
-  Z_H = sqrt(2 cos(beta_b) cos(alpha_wt) / (cos^2(alpha_t) sin(alpha_wt))) (clause 6);
-  elasticity factor Z_E = sqrt(1 / (pi ((1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2))) (clause 7).
+  sigma_H0 = Z_H Z_E Z_eps Z_beta sqrt(F_t / (d_1 b) (u + 1) / u); zone factor
+  Z_H = sqrt(2 cos(beta_b) cos(alpha_wt) / (cos^2(alpha_t) sin(alpha_wt)));
+  elasticity factor Z_E = sqrt(1 / (pi ((1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2))) (189.8 sqrt(MPa)
+  for steel on steel).
   With Z_eps = Z_beta = 1 (one tooth pair carrying the whole load of a spur pair) this is the Hertz
   line-contact pressure at the pitch point with the load spread evenly over the face width.
-* ISO 6336-1:2019, "Part 1: Basic principles, introduction and general influence factors",
-  clause 9 (tooth stiffness parameters c' and c_gamma, method B): the theoretical single stiffness
+* ISO 6336-1:2019, "Part 1: Basic principles, introduction and general influence factors", tooth
+  stiffness parameters c' and c_gamma (method B): the theoretical single stiffness
   c'_th = 1 / q' of solid disc gears with the standard basic rack, with
   q' = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2 + C8 x1^2 + C9 x2^2
-  [mm um / N] (Table 9 coefficients below), and the mesh stiffness (mean of the total stiffness in
+  [mm um / N] (coefficients below), and the mesh stiffness (mean of the total stiffness in
   the transverse plane) c_gamma_alpha = c' (0.75 eps_alpha + 0.25). The q' formula is an empirical
   fit to theoretical stiffness computations, not a model: a computed stiffness is compared with it
   within a band, never equated to it.
@@ -37,7 +38,7 @@ __all__ = [
     "mesh_stiffness_c_gamma_alpha",
 ]
 
-#: ISO 6336-1 Table 9: C1 ... C9 of the q' formula [mm um / N]
+#: ISO 6336-1: C1 ... C9 of the q' formula [mm um / N]
 Q_PRIME_COEFFICIENTS = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
 
@@ -68,7 +69,7 @@ def pitch_point_stress_MPa(F_t_N: float, d1_mm: float, b_mm: float, u: float, Z_
 
 
 def q_prime(z_n1: float, z_n2: float, x1: float = 0.0, x2: float = 0.0) -> float:
-    """ISO 6336-1 minimum tooth flexibility q' [mm um / N] of a tooth pair (Table 9 coefficients);
+    """ISO 6336-1 minimum tooth flexibility q' [mm um / N] of a tooth pair (:data:`Q_PRIME_COEFFICIENTS`);
     ``z_n`` the virtual tooth numbers (z / cos^3(beta) for helical gears), ``x`` profile shifts."""
     z1, z2 = check_positive("z_n1", z_n1), check_positive("z_n2", z_n2)
     x1, x2 = check_finite("x1", x1), check_finite("x2", x2)
