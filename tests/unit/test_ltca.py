@@ -19,8 +19,8 @@ from gearrep.ltca import (
 )
 from gearrep.meshing import contact_ratio_closed_form
 from gearrep.solve import Status
-from gearrep.surfaces.involute import ParabolicCrowning
-from gearrep.tca import Misalignment, solve_contact
+from gearrep.surfaces.involute import ParabolicCrowning, mating_flanks, standard_centre_distance
+from gearrep.tca import GearPair, Misalignment, solve_contact
 
 
 def crowned_misaligned_pair():
@@ -311,3 +311,21 @@ def test_helical_pair_balance_and_driving_member():
     a, b = loaded_contact(pair, 50.0, phi), loaded_contact(pair, 50.0 * 72 / 52, phi, driving="gear")
     assert np.allclose(a.pair_load_N, b.pair_load_N, rtol=1e-9, atol=1e-9 * np.max(a.pair_load_N))
     assert np.allclose(a.lte_urad, b.lte_urad, rtol=1e-9, atol=1e-9 * np.max(np.abs(a.lte_urad)))
+
+
+def test_flanks_driven_by_decreasing_angle_mirror_the_other_side():
+    """``side=-1`` flanks are the mirror image (y -> -y) of ``side=+1`` ones: member 1 drives them
+    turning by decreasing phi1, the position phi1 mirrors -phi1, the loads and pressures are equal
+    and the loaded TE changes sign (to the solves' tolerance)."""
+    a_pair, g1, g2 = spur_pair()
+    f1, f2 = mating_flanks(g1, g2, side=-1)
+    b_pair = GearPair(f1, f2, 52, 72, standard_centre_distance(g1, g2))
+    a = loaded_contact(a_pair, 50.0, cycle_positions(a_pair, 9))
+    b = loaded_contact(b_pair, 50.0, cycle_positions(b_pair, 9))
+    assert b.separations.sense == -1 and a.separations.sense == 1
+    assert np.allclose(b.phi1_rad, -a.phi1_rad[::-1], rtol=0, atol=1e-15)
+    assert np.allclose(b.max_pressure_MPa, a.max_pressure_MPa[::-1], rtol=1e-9)
+    assert np.allclose(np.sort(b.pair_load_N, axis=1), np.sort(a.pair_load_N[::-1], axis=1), rtol=1e-9, atol=1e-9)
+    scale = np.max(np.abs(a.lte_urad))
+    assert np.allclose(b.lte_urad, -a.lte_urad[::-1], rtol=1e-9, atol=1e-9 * scale)
+    assert np.allclose(b.mesh_stiffness_N_per_um, a.mesh_stiffness_N_per_um[::-1], rtol=1e-9)

@@ -240,6 +240,10 @@ def loaded_contact(
     Needs involute flanks for the tooth compliance (ValueError otherwise).
     """
     T, materials = _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter)
+    if np.ndim(bore_radius_mm) != 1 or len(bore_radius_mm) != 2:
+        raise ValueError(
+            f"bore_radius_mm must be a pair (member 1, member 2) of radii [mm] or None, got {bore_radius_mm!r}"
+        )
     phi1 = cycle_positions(pair) if phi1 is None else phi1
     sep = initial_separations(pair, phi1, n_slices=n_slices, pairs=pairs)
     strips = _Strips(pair, sep, materials, tuple(bore_radius_mm))
@@ -247,8 +251,8 @@ def loaded_contact(
     n_pos = shape[0]
     moment = 1000.0 * T  # N mm
     g1, g2 = pair.flank1.gear, pair.flank2.gear
-    arm_all = (sep.arm1_mm if driving == "pinion" else sep.arm2_mm).reshape(n_pos, -1)
-    te_factor = pair.ratio if driving == "pinion" else 1.0
+    arm_all = sep.sense * (sep.arm1_mm if driving == "pinion" else sep.arm2_mm).reshape(n_pos, -1)
+    te_factor = sep.sense * (pair.ratio if driving == "pinion" else 1.0)
     F_bt = moment / float(g1.r_b if driving == "pinion" else g2.r_b)
     out = {k: np.full(n_pos, np.nan) for k in ("te_loaded", "residual", "k_mesh", "pmax")}
     loads = np.zeros((n_pos, shape[1] * shape[2]))
@@ -259,7 +263,7 @@ def loaded_contact(
         rows_local = np.flatnonzero(cand)
         if rows_local.size == 0:
             continue
-        if np.any(sep.expected[i] & ~sep.in_contact[i]) or np.any(arm_all[i, rows_local] <= 0):
+        if np.any(sep.expected[i] & ~sep.in_contact[i]):
             status[i] = int(Status.NOT_CONVERGED)  # a section expected on the flanks was not found
             continue
         rows = i * cand.size + rows_local
@@ -272,7 +276,7 @@ def loaded_contact(
         loads[i, rows_local] = sol.loads_N
         out["te_loaded"][i] = sep.te_rigid_rad[i] - te_factor * sol.rotation
         out["residual"][i] = sol.moment_residual
-        approach = (sep.te_rigid_rad[i] - out["te_loaded"][i]) * float(g2.r_b) * 1000.0  # um
+        approach = sep.sense * (sep.te_rigid_rad[i] - out["te_loaded"][i]) * float(g2.r_b) * 1000.0  # um
         out["k_mesh"][i] = F_bt / approach
     return _record(pair, T, driving, sep, strips, loads, out, its, status)
 

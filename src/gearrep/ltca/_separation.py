@@ -17,7 +17,8 @@ line contact (where n1 and n2 are collinear, so n2 . t1 = 0 too) and for localiz
 the section curve only touches flank 2 at the angle phi2_j that brings that section in contact).
 
 Section j of pair k then needs member 2 at TE_kj = phi2 - (N1/N2)(phi1 - k p1). Member 2 rests where
-the first section touches (the unloaded TCA): TE_0 = max_kj TE_kj, and every other section is open
+the first section touches (the unloaded TCA): TE_0 = max_kj TE_kj (min for flanks driven by
+decreasing phi1, see ``Separations.sense``), and every other section is open
 by the initial separation s_kj = (TE_0 - TE_kj) h2_kj along its normal, h2 = n2 . (w2 x (p - O2))
 the moment arm of the normal about member 2's axis (first order in TE_0 - TE_kj; exact for
 involute flanks, whose normal distance changes by r_b cos(beta_b) per radian of turn).
@@ -138,9 +139,12 @@ class Separations:
     in_contact : candidate contact (section contact converged on both flanks)
     expected : the involute line-of-action start lies inside both flanks with a margin (a section
         that should be found; a failure there makes the position NOT_CONVERGED)
-    te_rad : TE at which the section touches; te_rigid_rad : (n_pos,) unloaded TE (max over candidates)
-    gap_mm : initial separation (NaN where not a candidate); arm1_mm, arm2_mm : moment arms of the
-    normal about member 1's and member 2's axes; k_rel_per_mm : relative curvature across the contact line
+    sense : +1 if member 1 drives these flanks turning by increasing phi1 (the loads' moment arms
+        about both axes positive), -1 if by decreasing phi1 (both negative: e.g. ``side=-1`` flanks)
+    te_rad : TE at which the section touches; te_rigid_rad : (n_pos,) unloaded TE (the first touch:
+        max over candidates, min for sense -1)
+    gap_mm : initial separation (NaN where not a candidate); arm1_mm, arm2_mm : signed moment arms of
+    the normal about member 1's and member 2's axes; k_rel_per_mm : relative curvature across the contact line
     """
 
     phi1_rad: np.ndarray
@@ -150,6 +154,7 @@ class Separations:
     contacts: ContactPoints
     in_contact: np.ndarray
     expected: np.ndarray
+    sense: int
     te_rad: np.ndarray
     te_rigid_rad: np.ndarray
     gap_mm: np.ndarray
@@ -169,6 +174,20 @@ def _across_curvature(pair: GearPair, c: ContactPoints) -> np.ndarray:
     pc1, pc2 = contact_curvatures(pair, c)
     d = np.where((np.abs(pc1.k1) >= np.abs(pc1.k2))[:, None], pc1.e1, pc1.e2)
     return euler_normal_curvature(pc2, d) - euler_normal_curvature(pc1, d)
+
+
+def _drive_sense(arm1, arm2) -> int:
+    """+1 or -1: the common sign of the candidates' moment arms (ValueError if they disagree, i.e. the
+    flanks would push the members apart in one place and together in another)."""
+    if arm1.size == 0:
+        return 1
+    signs = np.concatenate([np.sign(arm1), np.sign(arm2)])
+    if not (np.all(signs > 0) or np.all(signs < 0)):
+        raise ValueError(
+            "the contact normals' moment arms about the two axes have mixed signs: the flanks do not transmit "
+            "torque in one sense of rotation (check the flank sides and the mounting)"
+        )
+    return int(signs[0])
 
 
 def initial_separations(
@@ -200,14 +219,15 @@ def initial_separations(
     c = section_contacts(pair, phi_eff, V.ravel(), start, tol=tol)
     shape = P.shape
     ok = c.status == Status.CONVERGED
-    te = np.where(ok, c.te, np.nan).reshape(shape)
-    with np.errstate(invalid="ignore"):
-        te_rigid = np.nanmax(np.where(ok.reshape(shape), te, -np.inf), axis=(1, 2))
-    te_rigid = np.where(np.isfinite(te_rigid), te_rigid, np.nan)
     n1 = c.normal
     z_cross_p = np.column_stack([-c.position[:, 1], c.position[:, 0], np.zeros(len(c))])
     arm1 = np.sum(n1 * z_cross_p, axis=1)
     arm2 = np.sum(n1 * np.cross(pair.w2, c.position - pair.O2), axis=1)
+    sense = _drive_sense(arm1[ok], arm2[ok])
+    te = np.where(ok, c.te, np.nan).reshape(shape)
+    with np.errstate(invalid="ignore"):
+        te_rigid = sense * np.nanmax(np.where(ok.reshape(shape), sense * te, -np.inf), axis=(1, 2))
+    te_rigid = np.where(np.isfinite(te_rigid), te_rigid, np.nan)
     gap = (te_rigid[:, None, None] - te) * arm2.reshape(shape)
     k_rel = np.full(len(c), np.nan)
     if np.any(ok):
@@ -220,6 +240,7 @@ def initial_separations(
         contacts=c,
         in_contact=ok.reshape(shape),
         expected=expected.reshape(shape),
+        sense=sense,
         te_rad=te,
         te_rigid_rad=te_rigid,
         gap_mm=gap,
