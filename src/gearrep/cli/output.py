@@ -23,7 +23,7 @@ import pandas as pd
 from .. import __version__
 from .design import canonical_hash, split_settings
 
-__all__ = ["atomic_dir", "commit", "provenance", "Writer", "stl_text", "exact"]
+__all__ = ["atomic_dir", "commit", "provenance", "Writer", "stl_text", "exact", "SUMMARY_FIELDS"]
 
 
 @contextlib.contextmanager
@@ -158,6 +158,36 @@ class Writer:
         return base64.b64encode(buf.getvalue()).decode()
 
 
+#: one line on each field of ``summary.csv`` (shown beside the value in ``summary.html``)
+SUMMARY_FIELDS = {
+    "design": "the design's name",
+    "family": "the tooth-surface family of the design file",
+    "line_contact": "True: the flanks touch along a line (aligned, unmodified pair); no contact ellipse then",
+    "contact_ratio": "TCA contact ratio: (phi1 at which one tooth pair leaves mesh - phi1 at which it enters) / "
+    "pinion angular pitch, under the design's modifications and misalignment",
+    "contact_ratio_method": "how the engagement limits of the contact ratio were found",
+    "transverse_contact_ratio_iso": "ISO transverse contact ratio eps_alpha of the nominal involute pair: path "
+    "of contact in the transverse section / transverse base pitch (NaN: not an involute pair)",
+    "overlap_ratio_iso": "ISO overlap ratio eps_beta = b sin(beta) / (pi m_n) of the nominal involute pair",
+    "total_contact_ratio_iso": "ISO total contact ratio eps_gamma = eps_alpha + eps_beta (nominal pair, no crowning "
+    "or misalignment; the TCA contact ratio is the one under them)",
+    "phi1_begin_rad": "pinion angle at which one tooth pair enters mesh",
+    "phi1_end_rad": "pinion angle at which that tooth pair leaves mesh",
+    "te_peak_to_peak_arcsec": "peak-to-peak transmission error of the driven gear over a meshing cycle",
+    "drive_sense": "max: the driven gear is pushed to the most advanced position the tooth pairs in mesh demand "
+    "(the pinion drives); min: to the least advanced",
+    "te_zero": "the angle at which the TE (kinematic error) is zero",
+    "solves": "contact solves of the analysis",
+    "points_converged": "rows of contact_path.csv whose solve converged inside both flanks",
+    "points_total": "rows of contact_path.csv",
+    "max_residual_mm": "largest residual of the converged contact solves",
+    "max_ellipse_semi_major_mm": "largest contact-ellipse semi-major axis along the path (elastic approach "
+    "analysis.elastic_approach_mm)",
+    "transfer_kind": "how the load passes from one tooth pair to the next: crossing (TE curves cross), "
+    "at_engagement, at_exit, indeterminate (conjugate action), or envelope of sampled pairs",
+}
+
+
 def _table_html(df: pd.DataFrame) -> str:
     return df.to_html(index=False, float_format=lambda x: f"{x:.6g}", border=0, classes="t")
 
@@ -171,6 +201,7 @@ def summary_html(title: str, design_yaml: str, summary: pd.DataFrame, figures: d
     )
     rows = summary.T.reset_index()
     rows.columns = ["quantity", "value"]
+    rows["meaning"] = [SUMMARY_FIELDS.get(k, "") for k in rows["quantity"]]
     prov_rows = pd.DataFrame({"field": list(prov), "value": [str(v) for v in prov.values()]})
     return f"""<!doctype html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>body{{font-family:sans-serif;max-width:1100px;margin:1em auto}}table.t{{border-collapse:collapse}}

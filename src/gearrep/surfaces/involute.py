@@ -417,6 +417,23 @@ class InvoluteGearData:
         """Transverse base pitch 2 pi r_b / N."""
         return 2.0 * np.pi * self.r_b / self.n_teeth
 
+    def half_angle(self, r) -> float:
+        """Half the angle the tooth subtends at radius ``r`` >= r_b [mm], rad: s/(2 r_p) + inv(alpha_t)
+        - inv(alpha_r) (the flank's polar angle from the tooth's centre plane)."""
+        return float(
+            self.tooth_thickness / (2.0 * self.r_p)
+            + involute_polar_angle(self.r_p, self.r_b)
+            - involute_polar_angle(float(r), self.r_b)
+        )
+
+    def max_flank_removal(self, r) -> float:
+        """The largest material removal normal to one flank at radius ``r`` [mm] that leaves the
+        tooth any thickness there, mm: an offset of an involute helicoid along its normal by d is
+        a turn about the axis by d / (r_b cos(beta_b)), and the flank reaches the tooth's centre
+        plane when that turn equals :meth:`half_angle` (both flanks removed alike: the tooth
+        ends in a point)."""
+        return float(self.r_b * np.cos(self.beta_b) * self.half_angle(r))
+
 
 def _flank_components(u, v, c, s, pu, pv, puu, pvv):
     """r, r_u, r_v, r_uu, r_uv, r_vv of eq (A) by components from cos/sin of psi and its partials
