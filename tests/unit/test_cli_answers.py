@@ -266,3 +266,73 @@ def test_crown_limit_is_the_tooth_half_thickness_at_the_tip():
 
     with pytest.raises(SettingError, match="crown_mm: got"):
         check(spur(**{"pinion.crowning.crown_mm": 1.01 * most}), contact=False)
+
+
+# ----------------------------------------------------------------------------------------------
+# output folders
+# ----------------------------------------------------------------------------------------------
+def _siblings(tmp_path, name):
+    return sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(f".{name}"))
+
+
+def test_an_unwritable_output_folder_is_refused_before_any_work(tmp_path, monkeypatch):
+    import tempfile
+
+    from gearrep.cli import analysis
+
+    def no_work(*a, **k):
+        raise AssertionError("the analysis ran")
+
+    def denied(*a, **k):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(analysis, "curvature_table", no_work)
+    monkeypatch.setattr(tempfile, "mkdtemp", denied)
+    rc, _, err = run("curvature", write(tmp_path, "d.yaml", SPUR), "-o", tmp_path / "out")
+    assert rc == 2 and f"-o {tmp_path / 'out'}: cannot write in {tmp_path}" in err and "Permission denied" in err
+    assert not (tmp_path / "out").exists() and not _siblings(tmp_path, "out")
+
+
+def test_a_result_that_cannot_be_put_in_place_names_the_folder_and_leaves_nothing(tmp_path, monkeypatch):
+    import os
+
+    real = os.replace
+
+    def busy(a, b):
+        if Path(b).name == "out":
+            raise OSError(16, "Device or resource busy")
+        return real(a, b)
+
+    monkeypatch.setattr(os, "replace", busy)
+    rc, _, err = run("curvature", write(tmp_path, "d.yaml", SPUR), "-o", tmp_path / "out")
+    assert rc == 1 and f"-o {tmp_path / 'out'}: the result could not be put in place" in err
+    assert "Device or resource busy" in err
+    assert not (tmp_path / "out").exists() and not _siblings(tmp_path, "out")
+
+
+def test_an_existing_empty_folder_receives_the_result_in_place(tmp_path):
+    (tmp_path / "out").mkdir()
+    inode = (tmp_path / "out").stat().st_ino  # e.g. a mount point: the folder itself is kept
+    rc, _, err = run("curvature", write(tmp_path, "d.yaml", SPUR), "-o", tmp_path / "out")
+    assert rc == 0, err
+    assert (tmp_path / "out" / "curvatures.csv").is_file() and (tmp_path / "out").stat().st_ino == inode
+    assert not [p for p in (tmp_path / "out").iterdir() if p.name.startswith(".")] and not _siblings(tmp_path, "out")
+
+
+def test_overwrite_replaces_a_previous_result_only_when_the_new_one_is_complete(tmp_path, monkeypatch):
+    from gearrep.cli import analysis
+
+    d = write(tmp_path, "d.yaml", SPUR)
+    assert run("curvature", d, "-o", tmp_path / "out")[0] == 0
+    before = (tmp_path / "out" / "curvatures.csv").read_bytes()
+    rc, _, err = run("curvature", d, "-o", tmp_path / "out")
+    assert rc == 2 and "--overwrite" in err
+    real = analysis.curvature_table
+    monkeypatch.setattr(analysis, "curvature_table", lambda *a: 1 / 0)
+    rc, _, err = run("curvature", d, "-o", tmp_path / "out", "--overwrite")
+    assert rc == 1 and (tmp_path / "out" / "curvatures.csv").read_bytes() == before
+    monkeypatch.setattr(analysis, "curvature_table", lambda dd: real(dd).assign(k1_per_mm=0.0))
+    rc, _, err = run("curvature", d, "-o", tmp_path / "out", "--overwrite")
+    assert rc == 0, err
+    after = pd.read_csv(tmp_path / "out" / "curvatures.csv")
+    assert (after["k1_per_mm"] == 0.0).all() and not _siblings(tmp_path, "out")

@@ -116,10 +116,10 @@ def _design(path, contact=True):
 
 
 def _out_dir(args):
-    out = Path(args.output)
-    if out.exists() and (not out.is_dir() or any(out.iterdir())):
-        raise Refusal(f"-o {out}: exists and is not an empty directory; allowed: a new or empty directory")
-    return out
+    """The output directory of ``-o``, checked before any work (:func:`gearrep.cli.output.check_output`)."""
+    from .output import check_output
+
+    return check_output(args.output, overwrite=args.overwrite)
 
 
 def _cmd_check(args) -> int:
@@ -148,7 +148,7 @@ def _cmd_tca(args) -> int:
     prog = _Progress(args.progress, "tca")
     tables = analysis.tca_tables(d, progress=prog)
     prov = provenance(d.values, "tca")
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, prov, parquet=args.parquet)
         for name, df in tables.items():
             w.table(name, df)
@@ -174,7 +174,7 @@ def _cmd_curvature(args) -> int:
     _parquet_ok(args)
     d = _design(args.design, contact=False)
     table = analysis.curvature_table(d)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, provenance(d.values, "curvature"), parquet=args.parquet)
         w.table("curvatures", table)
         w.text("design.yaml", _yaml_text(d.values))
@@ -240,7 +240,12 @@ def _parser() -> argparse.ArgumentParser:
     ):
         q = sub.add_parser(name, help=what)
         q.add_argument("design", help="design file (YAML)")
-        q.add_argument("-o", "--output", required=True, help="output directory (must not exist, or be empty)")
+        q.add_argument("-o", "--output", required=True, help="output directory (new or empty, or see --overwrite)")
+        q.add_argument(
+            "--overwrite",
+            action="store_true",
+            help="replace a previous result in the output directory (only once the new one is complete)",
+        )
         q.add_argument("--parquet", action="store_true", help="also write Parquet tables (needs pyarrow)")
         progress(q)
         q.set_defaults(func=func)
