@@ -1,4 +1,5 @@
-"""Meshing cycle: engagement limits, contact ratio and transmission error over the real cycle.
+"""Meshing cycle: engagement limits, contact ratio and transmission error over the real cycle
+(angles and TE in rad, lengths in the unit of the design data, mm in the examples).
 
 Sources: seed 000 (curvilinear-tooth gear dissertation) eq (5.12)-(5.13); Temirkhan thesis
 (seed 003) eq (14); Litvin & Fuentes, "Gear Geometry and Applied Theory", 2nd ed., ch. 9
@@ -368,7 +369,8 @@ def meshing_cycle(
     pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, n_points: int = 81, tol: float = 1e-12
 ) -> MeshingCycle:
     """Engagement limits, contact ratio (eq 5.13 corrected), transfer points and the TE over the
-    real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring).
+    real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring). Angles
+    and TE in rad (member 2's angle for the TE), the contact ratio dimensionless.
 
     ``phi1_start``/``start``: a position with contact inside the flanks; ``v1``: fixed face-width
     coordinate for line contact (None for point contact); ``n_points``: grid size of the path and

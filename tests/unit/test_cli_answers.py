@@ -336,3 +336,121 @@ def test_overwrite_replaces_a_previous_result_only_when_the_new_one_is_complete(
     assert rc == 0, err
     after = pd.read_csv(tmp_path / "out" / "curvatures.csv")
     assert (after["k1_per_mm"] == 0.0).all() and not _siblings(tmp_path, "out")
+
+
+# ----------------------------------------------------------------------------------------------
+# figures an engineer reads; discoverable
+# ----------------------------------------------------------------------------------------------
+def test_te_scales_are_the_driven_gears_radians_and_its_base_circle():
+    from gearrep.cli.figures import te_scales
+    from gearrep.units import ARCSEC
+
+    urad, um = te_scales(check(spur(), contact=False))
+    assert urad == pytest.approx(ARCSEC * 1e6, rel=1e-15)
+    assert um == pytest.approx(ARCSEC * 61.5 * np.cos(np.radians(20)) * 1e3, rel=1e-14)
+
+
+def test_te_figure_labels_a_sub_nanometre_te_as_numerically_zero_and_shows_three_cycles():
+    import matplotlib.pyplot as plt
+
+    from gearrep.cli.figures import CYCLES_SHOWN, _te_figure, te_scales
+
+    d = check(spur(), contact=False)
+    phi = np.linspace(-0.1, 0.1, 21)
+    ripple = pd.DataFrame({"phi1_rad": phi, "te_arcsec": 1e-4 * np.sin(40 * phi) + 0.66})  # 0.66 arcsec offset
+    _, um = te_scales(d)
+    assert 2e-4 * um < 1e-3  # below 1 nm along the line of action
+    fig = _te_figure(d, ripple, plt)
+    ax = fig.axes[0]
+    texts = " ".join(t.get_text() for t in ax.texts)
+    assert "numerically zero" in texts and ax.get_ylim() == (-1.0, 1.0)
+    line = ax.lines[0]
+    assert len(line.get_xdata()) == CYCLES_SHOWN * 21 and np.all(line.get_ydata() == 0.0)
+    plt.close(fig)
+    big = ripple.assign(te_arcsec=2.0 * np.sin(40 * phi) + 0.66)
+    fig = _te_figure(d, big, plt)
+    y = fig.axes[0].lines[0].get_ydata()
+    assert abs(np.mean(y)) < 1e-9 * np.ptp(y)  # mean removed (0.66 arcsec offset gone), micro-radians
+    assert np.ptp(y) == pytest.approx(np.ptp(big["te_arcsec"]) * te_scales(d)[0], rel=1e-12)
+    plt.close(fig)
+
+
+def test_curvature_covers_the_active_profile_and_draws_it(tmp_path):
+    """The pinion's grid starts where the gear tip meets it (the start of the engagement the TCA
+    solves), not at the base-circle cusp, and the command writes a figure."""
+    from gearrep.meshing import engagement_limits
+
+    rc, _, err = run("curvature", write(tmp_path, "d.yaml", SPUR), "-o", tmp_path / "k")
+    assert rc == 0, err
+    t = pd.read_csv(tmp_path / "k" / "curvatures.csv")
+    pin = t[t["member"] == "pinion"]
+    b, _ = engagement_limits(check(spur()).pair)
+    assert pin["radius_mm"].min() == pytest.approx(b.contact.u1[0], abs=1e-9)
+    r_b = 34.5 * np.cos(np.radians(20))
+    k_involute = -1.0 / np.sqrt(pin["radius_mm"] ** 2 - r_b**2)  # concave-negative convention of the table
+    assert np.allclose(pin["k2_per_mm"], k_involute, rtol=1e-3)  # a light crown: within 1e-3
+    assert (tmp_path / "k" / "figures" / "curvatures.png").is_file()
+
+
+@pytest.mark.parametrize("command", [None, "check", "tca", "curvature", "sweep", "replicate", "schema"])
+def test_every_help_has_a_description_and_an_example(command):
+    rc, out, _ = run(*([command] if command else []), "--help")
+    assert rc == 0
+    usage, _, rest = out.partition("\n\n")
+    assert len(rest.split("\n\n")[0].split()) >= 8  # a description paragraph after the usage
+    assert "example:\n  gearrep " in out
+
+
+# ----------------------------------------------------------------------------------------------
+# edges are results
+# ----------------------------------------------------------------------------------------------
+def test_an_ellipse_longer_than_the_face_is_cut_at_the_face_edges(tmp_path):
+    """elastic_approach_mm 1.0 on the 25 mm face: the Hertz ellipse is far longer than the face; on the
+    flank it ends at the face edges (the major axis lies along the face of a crowned spur pair)."""
+    rc, _, err = run(
+        "tca", write(tmp_path, "d.yaml", spur(**{"analysis.elastic_approach_mm": 1.0})), "-o", tmp_path / "o"
+    )
+    assert rc == 0, err
+    t = pd.read_csv(tmp_path / "o" / "contact_path.csv", keep_default_na=False, na_values=[""])
+    s = pd.read_csv(tmp_path / "o" / "summary.csv").iloc[0]
+    ok = t["status"] == "converged"
+    assert (t.loc[ok, "ellipse_semi_major_mm"] > 12.5).all()
+    assert t.loc[ok, "edge_contact"].str.contains("pinion_face").all()
+    inner = t[ok].iloc[1:-1]  # (the first and last contacts are on a tip circle, which cuts the axis at them)
+    z, mz = inner["z_mm"], inner["ellipse_major_z"]
+    ends = np.sort(np.column_stack([z + inner["ellipse_major_from_mm"] * mz, z + inner["ellipse_major_to_mm"] * mz]))
+    np.testing.assert_allclose(ends, np.tile([-12.5, 12.5], (len(inner), 1)), atol=1e-9)
+    assert (t.loc[ok, "ellipse_area_on_flank_mm2"] < t.loc[ok, "ellipse_area_mm2"]).all()
+    assert s["edge_contact_positions"] == ok.sum()
+
+
+def test_contact_on_a_tip_keeps_half_the_ellipse_and_inside_nothing_is_cut():
+    """At the engagement limits the contact is on a tip circle: the tip plane through the contact
+    point halves the ellipse (area to the polygon's resolution, the clipped share of pi a b); in the
+    middle of the path the ellipse of the example's small elastic approach is whole."""
+    from gearrep.cli.analysis import tca_tables
+
+    t = tca_tables(check(spur()))["contact_path"]
+    first, last, mid = t.iloc[0], t.iloc[-1], t.iloc[len(t) // 2]
+    assert first["edge_contact"] == "gear_tip" and last["edge_contact"] == "pinion_tip"
+    for row in (first, last):
+        assert row["ellipse_area_on_flank_mm2"] == pytest.approx(0.5 * row["ellipse_area_mm2"], rel=0.02)
+    assert mid["edge_contact"] == "" and mid["ellipse_area_on_flank_mm2"] == pytest.approx(mid["ellipse_area_mm2"])
+    assert mid["ellipse_major_from_mm"] == -mid["ellipse_semi_major_mm"]
+
+
+def test_import_gearrep_exposes_the_names_a_library_user_needs_with_units():
+    import subprocess
+    import sys
+
+    code = "import gearrep, sys; assert 'gearrep.tca' not in sys.modules; print(sorted(gearrep.__all__))"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr  # importing gearrep stays light: the names load on first use
+    import gearrep
+
+    for name in ("GearPair", "InvoluteGearData", "meshing_cycle", "principal_curvatures", "tca", "curvature"):
+        assert name in gearrep.__all__
+    for name in gearrep.__all__[1:]:
+        doc = getattr(gearrep, name).__doc__ or ""
+        assert any(u in doc for u in ("rad", "mm", "1/length", "[length")), name
+    assert gearrep.GearPair is __import__("gearrep.tca", fromlist=["GearPair"]).GearPair

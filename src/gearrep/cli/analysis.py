@@ -51,7 +51,7 @@ def failed_rows_nan(path: pd.DataFrame) -> pd.DataFrame:
     out = path.copy()
     for col in out.columns:
         if col not in SOLVE_COLUMNS:
-            out[col] = np.where(bad, np.nan, out[col].to_numpy(dtype=float))
+            out[col] = out[col].where(~bad)
     return out
 
 
@@ -257,6 +257,9 @@ def _path_table(d, c, delta) -> pd.DataFrame:
         area=np.where(ell, el.area, np.nan),
         major_axis=np.where(ell[:, None], el.major_axis, np.nan),
     )
+    from .edges import cut_at_edges
+
+    cut = cut_at_edges(d.pair, d.values["face_width_mm"], c.position, c.normal, el.major_axis, el.a, el.b)
     return pd.DataFrame(
         {
             "phi1_rad": c.phi1,
@@ -282,6 +285,10 @@ def _path_table(d, c, delta) -> pd.DataFrame:
             "ellipse_major_x": el.major_axis[:, 0],
             "ellipse_major_y": el.major_axis[:, 1],
             "ellipse_major_z": el.major_axis[:, 2],
+            "ellipse_major_from_mm": cut.lo,
+            "ellipse_major_to_mm": cut.hi,
+            "ellipse_area_on_flank_mm2": cut.area,
+            "edge_contact": cut.edge,
         }
     )
 
@@ -333,6 +340,9 @@ def tca_tables(d, progress=None) -> dict:
         if path["ellipse_semi_major_mm"].notna().any()
         else float("nan"),
         "transfer_kind": getattr(locals().get("cyc"), "transfer_kind", "envelope of sampled pairs"),
+        "edge_contact_positions": int((path["edge_contact"].fillna("") != "").sum())
+        if "edge_contact" in path
+        else float("nan"),
     }
     return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary]), **extra}
 
@@ -343,8 +353,8 @@ def flank_grid(d, member: int, n_u: int, n_v: int):
     pair = d.pair
     lo, hi = (pair.lower1, pair.upper1) if member == 1 else (pair.lower2, pair.upper2)
     flank = pair.flank1 if member == 1 else pair.flank2
-    if d.family == "involute":
-        lo = lo + np.array([1e-6 * (hi[0] - lo[0]), 0.0])  # the involute has a cusp on the base circle
+    if d.family == "involute":  # the active profile: from where the mating tip reaches (not the base-circle cusp)
+        lo = np.array([_active_profile_start(d)[member - 1], lo[1]])
     u, v = np.meshgrid(np.linspace(lo[0], hi[0], n_u), np.linspace(lo[1], hi[1], n_v), indexing="ij")
     u, v = u.ravel(), v.ravel()
     if d.family == "catt":
@@ -353,6 +363,22 @@ def flank_grid(d, member: int, n_u: int, n_v: int):
     elif d.family == "novikov":
         u, v = u * (1.0 / 1.2) * 0.95, v * (1.0 / 1.5)  # the active height and the face width
     return flank, u, v
+
+
+def _active_profile_start(d) -> tuple[float, float]:
+    """Radii [mm] at which the active profiles of an involute pair begin (pinion, gear): where the
+    mating member's tip circle cuts the line of action, sqrt(r_b^2 + (sqrt(a^2 - (r_b1 + r_b2)^2)
+    - sqrt(r_a'^2 - r_b'^2))^2) (a: the operating centre distance), and not below the start of the
+    involute flank."""
+    pair, m = d.pair, d.values["misalignment"]
+    g1, g2 = pair.flank1.gear, pair.flank2.gear
+    a = float(np.hypot(g1.r_p + g2.r_p + m["d_E_mm"], m["d_H_mm"]))
+    loa = np.sqrt(max(a**2 - (g1.r_b + g2.r_b) ** 2, 0.0))
+    out = []
+    for g, other, lo in ((g1, g2, pair.lower1[0]), (g2, g1, pair.lower2[0])):
+        t = max(loa - np.sqrt(other.r_a**2 - other.r_b**2), 0.0)
+        out.append(max(float(np.hypot(g.r_b, t)), float(lo)))
+    return out[0], out[1]
 
 
 def curvature_frame(member: str, names, u, v, points, pc) -> pd.DataFrame:

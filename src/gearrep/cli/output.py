@@ -249,6 +249,8 @@ SUMMARY_FIELDS = {
     "max_residual_mm": "largest residual of the converged contact solves",
     "max_ellipse_semi_major_mm": "largest contact-ellipse semi-major axis along the path (elastic approach "
     "analysis.elastic_approach_mm)",
+    "edge_contact_positions": "positions whose contact ellipse reaches a face edge or a tip circle (cut there: "
+    "contact_path.csv's edge_contact names the edges; NaN: not evaluated for this family)",
     "transfer_kind": "how the load passes from one tooth pair to the next: crossing (TE curves cross), "
     "at_engagement, at_exit, indeterminate (conjugate action), or envelope of sampled pairs",
 }

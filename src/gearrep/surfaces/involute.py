@@ -308,6 +308,8 @@ def _flank_options(side, hand, crowning, relief):
 class InvoluteGearData:
     """Size of an involute spur/helical gear (thesis Table 1, tip diameter corrected: d_a = d_p + 2m).
 
+    Units: ``module`` and ``face_width`` [length, mm in the examples; every radius and pitch of the
+    gear data is in the same unit], ``pressure_angle`` and ``helix_angle`` [rad].
     ``module`` and ``pressure_angle`` are normal values (for spur gears normal = transverse);
     ``helix_angle`` beta at the pitch cylinder. Profile shift ``x`` (coefficient), addendum and
     dedendum coefficients ``h_a``, ``h_f``, and ``thinning`` (transverse arc tooth-thickness
@@ -681,7 +683,8 @@ def mating_flanks(
     relief2=(),
     helix_form: str = "true",
 ):
-    """The two drive flanks of an external involute pair: same ``side``, opposite hands.
+    """The two drive flanks of an external involute pair: same ``side``, opposite hands. Their
+    parameters are u = radius and v = axial coordinate [length of the gear data, mm in the examples].
 
     Checks that the pair can mesh (same normal module, pressure angle and helix angle).
     """
