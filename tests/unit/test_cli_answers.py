@@ -454,3 +454,27 @@ def test_import_gearrep_exposes_the_names_a_library_user_needs_with_units():
         doc = getattr(gearrep, name).__doc__ or ""
         assert any(u in doc for u in ("rad", "mm", "1/length", "[length")), name
     assert gearrep.GearPair is __import__("gearrep.tca", fromlist=["GearPair"]).GearPair
+
+
+def test_a_pointed_tooth_names_the_profile_shift_with_the_library_limit():
+    from gearrep.settings import SettingError
+    from gearrep.surfaces.involute import InvoluteGearData
+
+    with pytest.raises(SettingError, match=r"design\.pinion\.profile_shift: got 1\.5; allowed: below 1\.351 ") as e:
+        check(spur(**{"pinion.profile_shift": 1.5}), contact=False)
+    limit = float(str(e.value).split("below ")[1].split()[0])
+    InvoluteGearData(23, 3.0, np.radians(20), 25.0, x=limit - 1e-3)  # the library builds it
+    with pytest.raises(ValueError, match="pointed"):
+        InvoluteGearData(23, 3.0, np.radians(20), 25.0, x=limit + 1e-3)
+
+
+def test_profile_shifts_that_need_another_centre_distance_name_d_e_with_its_range():
+    """The design's centre distance is r_p1 + r_p2; a positive shift raises the pinion's root above
+    where the gear tip reaches: the refusal gives the d_E_mm range that meshes."""
+    from gearrep.settings import SettingError
+
+    with pytest.raises(SettingError, match=r"design\.misalignment\.d_E_mm: got 0\.0; allowed: 2\.68 < d_E_mm < ") as e:
+        check(spur(**{"pinion.profile_shift": 1.2}))
+    assert "tip interference" in str(e.value)
+    lo = float(str(e.value).split("allowed: ")[1].split(" <")[0])
+    check(spur(**{"pinion.profile_shift": 1.2, "misalignment.d_E_mm": lo + 0.05}))

@@ -407,6 +407,36 @@ def _crowning(c, face_width):
     return LogarithmicCrowning(c["crown_mm"] / math.log(1.0 / (1.0 - c["log_shape"])), c["log_shape"], h)
 
 
+def _check_pointed(v, member):
+    """Refuse a profile shift that leaves ``member``'s tooth pointed below its tip circle (the tooth's
+    half angle at the tip, s/(2 r_p) + inv(alpha_t) - inv(alpha_a), falls to zero as x grows: the
+    tip circle grows by x m while the flanks lean in), naming the largest shift allowed."""
+    from scipy.optimize import brentq
+
+    from ..surfaces.involute import involute_polar_angle
+
+    m, z = v["module_mm"], v[member]["teeth"]
+    a_n, beta = math.radians(v["pressure_angle_deg"]), math.radians(v["helix_angle_deg"])
+    m_t = m / math.cos(beta)
+    a_t = math.atan(math.tan(a_n) / math.cos(beta))
+    r_p = 0.5 * z * m_t
+    r_b = r_p * math.cos(a_t)
+
+    def half_angle(x):
+        s = m_t * (0.5 * math.pi + 2.0 * x * math.tan(a_n))
+        r_a = r_p + (v["addendum"] + x) * m
+        return s / (2 * r_p) + float(involute_polar_angle(r_p, r_b)) - float(involute_polar_angle(max(r_a, r_b), r_b))
+
+    x = v[member]["profile_shift"]
+    if half_angle(x) > 0:
+        return
+    limit = brentq(half_angle, -1.5, x) if half_angle(-1.5) > 0 else float("nan")
+    raise SettingError(
+        f"design.{member}.profile_shift: got {x!r}; allowed: below {limit:.4g} for {z} teeth (a larger shift leaves "
+        "the tooth pointed below its tip circle)"
+    )
+
+
 def _check_removal(v, member, g, u_lo, u_hi):
     """Refuse a crown or relief that removes more than the tooth holds: the crown alone at the tip
     circle, and at the face edge the crown plus the tip relief at the tip circle and plus the root
@@ -435,6 +465,7 @@ def _involute(v) -> Design:
     gears, flanks = [], []
     for i, member in enumerate(("pinion", "gear")):
         mv = v[member]
+        _check_pointed(v, member)
         g = InvoluteGearData(
             mv["teeth"],
             v["module_mm"],
@@ -672,7 +703,7 @@ def _involute_mesh(d: Design) -> None:
             f"total contact ratio {ratio:.3g} < 1 at a centre distance of {a:.6g} mm: a gap in the "
             f"meshing (the next tooth pair engages after the last one left) above {lim['a_max']:.6g} mm"
         )
-    if d_e != 0.0 or d_h != 0.0:
+    if lo < hi:  # the centre distance is the design's knob (profile shifts leave it at r_p1 + r_p2)
         raise SettingError(
             f"design.misalignment.d_E_mm: got {d_e!r}; allowed: {lo:.4g} < d_E_mm < {hi:.4g} mm for this pair"
             f"{f' with d_H_mm = {d_h!r}' if d_h else ''} ({why})"
