@@ -5,15 +5,16 @@ replications. Library code is pure: it never reads files or the workflow config.
 Angles are radians and lengths are in the unit of the design data inside the library (mm in the
 examples and the ``gearrep`` command); conversions happen at the edges with :mod:`gearrep.units`.
 
-The names a library user needs first are here (each loaded when first used)::
+The names a library user needs first are here (each loaded when first used):
 
-    import gearrep
-    g1 = gearrep.InvoluteGearData(23, 3.0, math.radians(20), 25.0)   # teeth, module mm, rad, face mm
-    g2 = gearrep.InvoluteGearData(41, 3.0, math.radians(20), 25.0)
-    f1, f2 = gearrep.mating_flanks(g1, g2, crowning1=gearrep.ParabolicCrowning(1e-4))
-    pair = gearrep.GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=gearrep.Misalignment(d_E=0.01))
-    cycle = gearrep.meshing_cycle(pair)                                # contact ratio, TE [rad]
-    k = gearrep.principal_curvatures(f1.evaluate(33.0, 0.0))           # k1, k2 [1/length]
+>>> import math, gearrep
+>>> g1 = gearrep.InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+>>> g2 = gearrep.InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+>>> f1, f2 = gearrep.mating_flanks(g1, g2, crowning1=gearrep.ParabolicCrowning(1e-4))
+>>> pair = gearrep.GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=gearrep.Misalignment(d_E=0.01))
+>>> round(gearrep.meshing_cycle(pair).contact_ratio, 4)  # TE and angles in rad
+1.6517
+>>> k = gearrep.principal_curvatures(f1.evaluate(33.0, 0.0))  # k1, k2 [1/mm]
 
 ``tca``, ``meshing``, ``curvature`` and ``surfaces`` are the modules behind them.
 """
