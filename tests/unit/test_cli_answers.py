@@ -478,3 +478,13 @@ def test_profile_shifts_that_need_another_centre_distance_name_d_e_with_its_rang
     assert "tip interference" in str(e.value)
     lo = float(str(e.value).split("allowed: ")[1].split(" <")[0])
     check(spur(**{"pinion.profile_shift": 1.2, "misalignment.d_E_mm": lo + 0.05}))
+
+
+def test_the_sweep_benchmark_is_a_1000_design_sweep_of_the_example_kind():
+    from gearrep.cli.bench import GRID
+    from gearrep.cli.sweep import resolve_sweep
+
+    raw = yaml.safe_load((EXAMPLES / "sweep_crowned_spur.yaml").read_text())
+    spec = resolve_sweep({**raw, "grid": GRID}, load_yaml(EXAMPLES / raw["design"]))
+    assert spec["n_points"] == 1000 and spec["phi1_points"] == 1001
+    assert "gearrep.cli.bench" in (ROOT / "Makefile").read_text().split("\nbench:")[1].split("\n\n")[0]
