@@ -86,6 +86,7 @@ stress: bytecode
 # Run time against error and throughput (results/bench/).
 bench: bytecode
 	$(BIN)/snakemake --cores $(CORES) bench
+	CORES=$(CORES) $(BIN)/python -m gearrep.cli.bench results/bench/sweep_throughput.csv
 
 # Screenshot of the report in headless Chromium (needs the Debian package `chromium`).
 screenshot: bytecode

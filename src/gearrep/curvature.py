@@ -220,7 +220,8 @@ def second_form_in_basis(p: SurfacePoint, n, e1, e2) -> np.ndarray:
 
 
 def principal_curvatures(p: SurfacePoint, umbilic_tol: float = DEFAULT_UMBILIC_TOL) -> PrincipalCurvatures:
-    """Principal curvatures k1 >= k2 and unit principal directions e1, e2 (e1 x e2 = n).
+    """Principal curvatures k1 >= k2 [1/length of the surface data, 1/mm in the examples] and unit
+    principal directions e1, e2 (e1 x e2 = n).
 
     Eigenvalues/eigenvectors of the Weingarten map (Litvin ch. 7; k = H +- sqrt(H^2 - K),
     corrected seed 004 eq (14)-(16)), computed from the symmetric shape matrix in the

@@ -1,4 +1,5 @@
-"""Meshing cycle: engagement limits, contact ratio and transmission error over the real cycle.
+"""Meshing cycle: engagement limits, contact ratio and transmission error over the real cycle
+(angles and TE in rad, lengths in the unit of the design data, mm in the examples).
 
 Sources: seed 000 (curvilinear-tooth gear dissertation) eq (5.12)-(5.13); Temirkhan thesis
 (seed 003) eq (14); Litvin & Fuentes, "Gear Geometry and Applied Theory", 2nd ed., ch. 9
@@ -43,6 +44,7 @@ from .units import ARCSEC
 __all__ = [
     "contact_ratio",
     "contact_ratio_closed_form",
+    "centre_distance_limits",
     "EngagementLimit",
     "engagement_limits",
     "MeshingCycle",
@@ -97,6 +99,36 @@ def contact_ratio_closed_form(r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitc
     return ratio
 
 
+def centre_distance_limits(r_a1, r_b1, r_lo1, r_a2, r_b2, r_lo2, base_pitch, overlap_ratio=0.0) -> dict:
+    """The range of operating centre distances [mm] over which an external involute pair meshes
+    without interference and without a gap (transverse section; radii in mm).
+
+    The line of action runs between the points T1, T2 where it touches the base circles,
+    |T1 T2| = sqrt(a^2 - (r_b1 + r_b2)^2). Member 2's tip circle cuts it at sqrt(r_a2^2 - r_b2^2)
+    from T2; that point lies on member 1's involute flank only if it is at least
+    sqrt(r_lo1^2 - r_b1^2) from T1 (``r_lo1``: the radius where member 1's involute flank begins,
+    max(base, root) radius). Closer, member 2's tip meets member 1 below its involute: tip
+    interference (and the same with the members exchanged). The contact ratio
+    (:func:`contact_ratio_closed_form`) plus ``overlap_ratio`` falls below 1 as |T1 T2| grows: the
+    next tooth pair engages after the last one left, a gap in the meshing. Returns a dict: ``a_min``
+    (the larger of ``a_min_tip2`` and ``a_min_tip1``, the centre distance at which member 2's or
+    member 1's tip reaches the other member's lowest involute point) and ``a_max`` (total contact
+    ratio 1)."""
+    R = float(r_b1) + float(r_b2)
+    g1 = float(np.sqrt(r_a1**2 - r_b1**2))
+    g2 = float(np.sqrt(r_a2**2 - r_b2**2))
+    s1 = float(np.sqrt(max(r_lo1**2 - r_b1**2, 0.0)))
+    s2 = float(np.sqrt(max(r_lo2**2 - r_b2**2, 0.0)))
+    tip2, tip1 = float(np.hypot(g2 + s1, R)), float(np.hypot(g1 + s2, R))
+    path_max = g1 + g2 - float(base_pitch) * max(1.0 - float(overlap_ratio), 0.0)
+    return {
+        "a_min": max(tip1, tip2),
+        "a_min_tip2": tip2,
+        "a_min_tip1": tip1,
+        "a_max": float(np.hypot(path_max, R)) if path_max > 0 else float("nan"),
+    }
+
+
 # ----------------------------------------------------------------------------------------------
 # engagement limits
 # ----------------------------------------------------------------------------------------------
@@ -124,6 +156,10 @@ class EngagementLimit:
     solve: SolveResult
 
 
+#: halvings of the last continuation step when the first position beyond the flanks has no root
+#: (2^-30 of a tenth of the angular pitch: below 1e-10 rad for any tooth number)
+_BISECTIONS = 30
+
 _BNAMES = ["u1_min", "u1_max", "v1_min", "v1_max", "u2_min", "u2_max", "v2_min", "v2_max"]
 
 
@@ -149,14 +185,14 @@ def _boundary_solve(pair, contact: ContactPoints, j: int, v1_fixed, tol=1e-12, m
     res = newton_rows(F, None, np.array([x0]), np.array([params]), jacobian="numeric", tol=tol, maxiter=maxiter)
     phi1 = float(res.x[0, -1])
     v1 = float(v1_fixed) if fixed else float(res.x[0, 1])
-    c = solve_contact(pair, phi1, np.array([[res.x[0, 0], v1]]), v1=v1_fixed)
+    c = solve_contact(pair, phi1, np.array([[res.x[0, 0], v1]]), v1=v1_fixed, keep_failed=True)
     # the point is on the boundary: CONVERGED or OFF_FLANK by rounding; keep the boundary-solve status
     st = c.status.copy()
     if res.status[0] == Status.CONVERGED and st[0] in (Status.CONVERGED, Status.OFF_FLANK):
         st[0] = Status.CONVERGED
     else:
         st[0] = res.status[0] if res.status[0] != Status.CONVERGED else st[0]
-    c = ContactPoints(**{**c.__dict__, "status": st})
+    c = ContactPoints(**{**c.__dict__, "status": st}).failed_as_nan()
     return phi1, c, res
 
 
@@ -223,13 +259,27 @@ def engagement_limits(
             guess = last.unknowns("reduced")
             if prev is not None:
                 guess = guess + (guess - prev.unknowns("reduced"))
-            c = solve_contact(pair, phi, guess, v1=v1, tol=tol)
+            c = solve_contact(pair, phi, guess, v1=v1, tol=tol, keep_failed=True)  # OFF_FLANK: which boundary
+            if c.status[0] not in (Status.CONVERGED, Status.OFF_FLANK) and prev is not None:
+                # the extrapolated start can fall outside the surface (inside the base circle): the last root
+                c = solve_contact(pair, phi, last.unknowns("reduced"), v1=v1, tol=tol, keep_failed=True)
             if c.status[0] != Status.CONVERGED:
                 first_out = c
                 break
             prev, last = last, c
         if first_out is None:
             raise ValueError(f"contact did not leave the flanks within {max_steps} steps of {h!r} rad")
+        # no root computed outside (e.g. beyond the base circle, where the involute ends): bisect the
+        # last step until the first position out is a root beyond the boundary or next to it
+        for _ in range(_BISECTIONS):
+            if first_out.status[0] == Status.OFF_FLANK:
+                break
+            phi = 0.5 * (last.phi1[0] + first_out.phi1[0])
+            c = solve_contact(pair, phi, last.unknowns("reduced"), v1=v1, tol=tol, keep_failed=True)
+            if c.status[0] == Status.CONVERGED:
+                last = c
+            else:
+                first_out = c
         if first_out.status[0] == Status.OFF_FLANK:
             m, _, _ = _margins(pair, _values(first_out))
             j = int(np.argmin(m[0]))
@@ -307,7 +357,7 @@ class _TEFunction:
         if np.any(inside):
             p = np.clip(phi1[inside], self.lo, self.hi)
             start = np.column_stack([np.interp(p, self.phi, self.x[:, 0]), np.interp(p, self.phi, self.x[:, 1])])
-            c = solve_contact(self.pair, p, start, v1=self.v1, tol=self.tol)
+            c = solve_contact(self.pair, p, start, v1=self.v1, tol=self.tol, keep_failed=True)
             # inside the engagement interval an OFF_FLANK status can only be rounding at its ends
             ok = (c.status == Status.CONVERGED) | (c.status == Status.OFF_FLANK)
             t = np.where(ok, c.te, np.nan)
@@ -319,7 +369,8 @@ def meshing_cycle(
     pair: GearPair, phi1_start: float = 0.0, start=None, *, v1=None, n_points: int = 81, tol: float = 1e-12
 ) -> MeshingCycle:
     """Engagement limits, contact ratio (eq 5.13 corrected), transfer points and the TE over the
-    real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring).
+    real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring). Angles
+    and TE in rad (member 2's angle for the TE), the contact ratio dimensionless.
 
     ``phi1_start``/``start``: a position with contact inside the flanks; ``v1``: fixed face-width
     coordinate for line contact (None for point contact); ``n_points``: grid size of the path and

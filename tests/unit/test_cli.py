@@ -288,7 +288,7 @@ def _small_sweep(tmp_path, **kw):
         "design": str(EXAMPLES / "crowned_spur.yaml"),
         "grid": {"misalignment.d_gamma_out_deg": [0.0, 0.05, 3.0], "pinion.crowning.crown_mm": [0.05, 0.1]},
         "phi1_points": 41,
-        "solves_per_shard": 164,  # 82 solves per point (window + path): 2 points per shard
+        "solves_per_shard": 162,  # 81 solves per point (engagement limits + path): 2 points per shard
         **kw,
     }
     return write(tmp_path, "sweep.yaml", doc)
@@ -300,7 +300,7 @@ def test_sweep_shards_give_the_same_numbers_however_the_grid_is_split(tmp_path):
 
     raw = load_yaml(_small_sweep(tmp_path))
     tables = []
-    for per_shard in (164, 10**6):
+    for per_shard in (162, 10**6):
         spec = resolve_sweep({**raw, "solves_per_shard": per_shard}, load_yaml(raw["design"]))
         sp = tmp_path / f"spec{per_shard}.json"
         sp.write_text(json.dumps(spec))
@@ -309,16 +309,16 @@ def test_sweep_shards_give_the_same_numbers_however_the_grid_is_split(tmp_path):
             run_shard(sp, i, p)
         aggregate(sp, shards, tmp_path / f"sweep{per_shard}.csv")
         tables.append((tmp_path / f"sweep{per_shard}.csv").read_bytes())
-        assert spec["n_shards"] == (3 if per_shard == 164 else 1)
+        assert spec["n_shards"] == (3 if per_shard == 162 else 1)
     assert tables[0] == tables[1]
-    t = pd.read_csv(tmp_path / "sweep164.csv")
+    t = pd.read_csv(tmp_path / "sweep162.csv")
     assert len(t) == 6 and list(t["point"]) == list(range(6))
     refused = t[t["misalignment__d_gamma_out_deg"] == 3.0]
     assert (refused["status"] == "refused").all()
     assert refused["message"].str.contains("design.misalignment.d_gamma_out_deg").all()
     ok = t[t["status"] == "ok"]
-    assert (ok["solves"] == 82).all() and ok["contact_ratio"].between(1.5, 2.0).all()
-    prov = json.loads((tmp_path / "sweep164.csv.prov.json").read_text())
+    assert (ok["solves"] == 81).all() and ok["contact_ratio"].between(1.5, 2.0).all()
+    prov = json.loads((tmp_path / "sweep162.csv.prov.json").read_text())
     assert {"gearrep_version", "commit", "design_sha256", "settings_sha256", "sweep_sha256", "created_utc"} <= set(prov)
 
 

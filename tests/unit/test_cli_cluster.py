@@ -58,7 +58,7 @@ def test_sweep_on_the_cluster_generic_executor_equals_the_local_run(tmp_path, mo
                 "design": str(ROOT / "examples" / "crowned_spur.yaml"),
                 "grid": {"misalignment.d_gamma_out_deg": [0.0, 0.05], "pinion.crowning.crown_mm": [0.05, 0.1, 0.2]},
                 "phi1_points": 41,
-                "solves_per_shard": 164,  # 82 solves per point: 2 points per shard, 3 shards
+                "solves_per_shard": 162,  # 81 solves per point: 2 points per shard, 3 shards
                 "resources": {"threads": 1, "mem_mb": 500, "runtime_min": 5},
             }
         )

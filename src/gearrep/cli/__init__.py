@@ -116,10 +116,10 @@ def _design(path, contact=True):
 
 
 def _out_dir(args):
-    out = Path(args.output)
-    if out.exists() and (not out.is_dir() or any(out.iterdir())):
-        raise Refusal(f"-o {out}: exists and is not an empty directory; allowed: a new or empty directory")
-    return out
+    """The output directory of ``-o``, checked before any work (:func:`gearrep.cli.output.check_output`)."""
+    from .output import check_output
+
+    return check_output(args.output, overwrite=args.overwrite)
 
 
 def _cmd_check(args) -> int:
@@ -148,7 +148,7 @@ def _cmd_tca(args) -> int:
     prog = _Progress(args.progress, "tca")
     tables = analysis.tca_tables(d, progress=prog)
     prov = provenance(d.values, "tca")
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, prov, parquet=args.parquet)
         for name, df in tables.items():
             w.table(name, df)
@@ -167,16 +167,17 @@ def _cmd_tca(args) -> int:
 
 
 def _cmd_curvature(args) -> int:
-    from . import analysis
+    from . import analysis, figures
     from .output import Writer, atomic_dir, provenance
 
     out = _out_dir(args)
     _parquet_ok(args)
     d = _design(args.design, contact=False)
     table = analysis.curvature_table(d)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, provenance(d.values, "curvature"), parquet=args.parquet)
         w.table("curvatures", table)
+        w.figure("curvatures", figures.curvature_figure(d, table))
         w.text("design.yaml", _yaml_text(d.values))
     print(f"wrote {out}/curvatures.csv ({len(table)} points)")
     return 0
@@ -214,10 +215,66 @@ def _cmd_replicate(args) -> int:
     return subprocess.run(cmd, cwd=root).returncode
 
 
+_DESCRIPTIONS = {
+    None: "Tooth contact analysis of your own gear pair: check a design file, run the TCA over the meshing "
+    "cycle, the flank curvatures, a sweep of designs, or the replications of the published studies.",
+    "check": "Validate a design file without analysing it: types, ranges, unknown or missing keys, undercut, "
+    "interference and contact ratio at the operating centre distance, crown and relief against the tooth "
+    "thickness, contact at the pitch position under the misalignment. Exit 0: valid; 2: refused, with one "
+    "line naming the key, its value and the allowed range.",
+    "tca": "Tooth contact analysis over the meshing cycle of the design's pair: the path of contact, "
+    "transmission error (one tooth pair and the meshing cycle), contact ellipses, the contact ratio (with "
+    "the ISO transverse, overlap and total ratios), flank point clouds and STL, figures and a one-page "
+    "summary.html. The design is checked first; results are written to -o DIR only when complete.",
+    "curvature": "Principal curvatures k1 >= k2 [1/mm] and principal directions of both flanks on the grid "
+    "analysis.curvature_grid over their active profile (from the lowest point that meets the mating tip to "
+    "the tip), with a figure.",
+    "sweep": "Run a grid of designs (dotted design keys with lists of values or start/stop/num) as a "
+    "Snakemake workflow in shards; one row per design in DIR/sweep.csv with the contact ratio and TE of "
+    "gearrep tca. A re-run in the same DIR resumes.",
+    "replicate": "Run the replications of the published studies (the repository's Snakefile), from the "
+    "root of a gearrep checkout.",
+    "schema": "Print the JSON schema of design files: every key with its unit, range and default.",
+}
+
+_EXAMPLES = {
+    None: "example:\n  gearrep check examples/crowned_spur.yaml\n  gearrep tca examples/crowned_spur.yaml -o results/my/spur"
+    "\n  gearrep COMMAND --help   (each command's options and an example)",
+    "check": "example:\n  gearrep check examples/crowned_spur.yaml",
+    "tca": "example:\n  gearrep tca examples/crowned_spur.yaml -o results/my/spur   # then open results/my/spur/summary.html",
+    "curvature": "example:\n  gearrep curvature examples/helical.yaml -o results/my/helical_k",
+    "sweep": "example:\n  gearrep sweep examples/sweep_crowned_spur.yaml -o results/my/sweep --cores 2",
+    "replicate": "example:\n  gearrep replicate results/scorecard.md --cores 2",
+    "schema": "example:\n  gearrep schema --write design.schema.json",
+}
+
+
+def _wrap(text: str) -> str:
+    import textwrap
+
+    return textwrap.fill(text, 90)
+
+
+def _command(sub, name: str, help: str, note: str = ""):
+    """A subcommand's parser with its description and example (and ``note`` before the example)."""
+    return sub.add_parser(
+        name,
+        help=help,
+        description=_wrap(_DESCRIPTIONS[name]),
+        epilog=(note + "\n\n" if note else "") + _EXAMPLES[name],
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+
+
 def _parser() -> argparse.ArgumentParser:
     from .. import __version__
 
-    p = argparse.ArgumentParser(prog="gearrep", description="Tooth contact analysis of your own gear pair.")
+    p = argparse.ArgumentParser(
+        prog="gearrep",
+        description=_wrap(_DESCRIPTIONS[None]),
+        epilog=_EXAMPLES[None],
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     p.add_argument("--version", action="version", version=f"gearrep {__version__}")
     p.add_argument("--debug", action="store_true", help="show the traceback of an unexpected error")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
@@ -230,7 +287,7 @@ def _parser() -> argparse.ArgumentParser:
             help="status line on stderr (default: when stderr is a terminal)",
         )
 
-    q = sub.add_parser("check", help="validate a design file (exit 0: valid, 2: refused)")
+    q = _command(sub, "check", "validate a design file (exit 0: valid, 2: refused)")
     q.add_argument("design", help="design file (YAML)")
     q.set_defaults(func=_cmd_check)
 
@@ -238,17 +295,23 @@ def _parser() -> argparse.ArgumentParser:
         ("tca", _cmd_tca, "TCA over the meshing cycle: TE, contact path, ellipses, contact ratio, figures, HTML"),
         ("curvature", _cmd_curvature, "principal curvatures and directions of both flanks on a grid"),
     ):
-        q = sub.add_parser(name, help=what)
+        q = _command(sub, name, what)
         q.add_argument("design", help="design file (YAML)")
-        q.add_argument("-o", "--output", required=True, help="output directory (must not exist, or be empty)")
+        q.add_argument("-o", "--output", required=True, help="output directory (new or empty, or see --overwrite)")
+        q.add_argument(
+            "--overwrite",
+            action="store_true",
+            help="replace a previous result in the output directory (only once the new one is complete)",
+        )
         q.add_argument("--parquet", action="store_true", help="also write Parquet tables (needs pyarrow)")
         progress(q)
         q.set_defaults(func=func)
 
-    q = sub.add_parser(
+    q = _command(
+        sub,
         "sweep",
-        help="a grid of designs run as a Snakemake workflow, split into shards",
-        epilog="Snakemake options and targets go after --, e.g. -- --executor slurm --jobs 100",
+        "a grid of designs run as a Snakemake workflow, split into shards",
+        "Snakemake options and targets go after --, e.g. -- --executor slurm --jobs 100",
     )
     q.add_argument("sweep", help="sweep file (YAML)")
     q.add_argument("-o", "--output", required=True, help="output directory (created; a re-run resumes it)")
@@ -257,17 +320,18 @@ def _parser() -> argparse.ArgumentParser:
     q.add_argument("--dry-run", action="store_true", help="list the jobs only")
     q.set_defaults(func=_cmd_sweep, passthrough=True)
 
-    q = sub.add_parser(
+    q = _command(
+        sub,
         "replicate",
-        help="the replications (runs the repository's Snakefile)",
-        epilog="Snakemake options go after --, e.g. -- --configfile config/test.yaml",
+        "the replications (runs the repository's Snakefile)",
+        "Snakemake options go after --, e.g. -- --configfile config/test.yaml",
     )
     q.add_argument("target", nargs="?", help="a target, e.g. results/scorecard.md (default: everything)")
     q.add_argument("--cores", type=int, default=2)
     q.add_argument("--directory", default=".", help="the gearrep repository root (default: .)")
     q.set_defaults(func=_cmd_replicate, passthrough=True)
 
-    q = sub.add_parser("schema", help="print the JSON schema of design files")
+    q = _command(sub, "schema", "print the JSON schema of design files")
     q.add_argument("--write", help="write it to this file instead")
     q.set_defaults(func=_cmd_schema)
     return p

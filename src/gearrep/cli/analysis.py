@@ -32,7 +32,28 @@ __all__ = [
     "sweep_point",
     "solves_per_point",
     "PARAM_NAMES",
+    "SOLVE_COLUMNS",
+    "failed_rows_nan",
 ]
+
+#: the columns of a contact-path table that describe the solve, not the contact: kept in a row
+#: whose status is not converged (every other column is NaN there, :func:`failed_rows_nan`)
+SOLVE_COLUMNS = ("phi1_rad", "status", "residual", "iterations", "tangencies_found", "jacobian_cond")
+
+
+def failed_rows_nan(path: pd.DataFrame) -> pd.DataFrame:
+    """``path`` (a contact-path table) with every column but :data:`SOLVE_COLUMNS` NaN in the rows
+    whose status is not ``converged``: a failed solve's last iterate is not a contact, nor is
+    anything derived from it."""
+    bad = (path["status"] != "converged").to_numpy()
+    if not bad.any():
+        return path
+    out = path.copy()
+    for col in out.columns:
+        if col not in SOLVE_COLUMNS:
+            out[col] = out[col].where(~bad)
+    return out
+
 
 #: names (with units) of the two flank parameters of each family
 PARAM_NAMES = {
@@ -50,7 +71,7 @@ def _novikov_mask(d, c):
     z = np.where(c.converged, c.position[:, 2], np.nan)
     st = c.status.copy()
     st[c.converged & ~(np.abs(z) <= half)] = Status.OFF_FLANK
-    return type(c)(**{**c.__dict__, "status": st})
+    return type(c)(**{**c.__dict__, "status": st}).failed_as_nan()
 
 
 def _catt_mask(d, c):
@@ -64,7 +85,7 @@ def _catt_mask(d, c):
         )
     st = c.status.copy()
     st[ok & ~inside] = Status.OFF_FLANK
-    return type(c)(**{**c.__dict__, "status": st})
+    return type(c)(**{**c.__dict__, "status": st}).failed_as_nan()
 
 
 def contact_at(d, phi1, quick: bool = False, face: bool = True):
@@ -113,24 +134,16 @@ def _drive_sign(pair, c) -> float:
     return 1.0 if (-p[1] * n[0] + p[0] * n[1]) >= 0 else -1.0
 
 
-def _window(d):
-    """Pinion-angle window holding one tooth pair's engagement, and the engagement limits if known."""
+def _engagement(d) -> tuple[float, float]:
+    """Engagement limits (phi_1B, phi_1E) [rad] of one tooth pair of a non-hobbed design."""
     p1 = 2.0 * np.pi / d.pair.n1
     if d.family == "catt":
         from ..surfaces.catt import path_limits
 
         lim = path_limits(d.mesh)
-        return (lim["phi1_lo"], lim["phi1_hi"]), (lim["phi1_lo"], lim["phi1_hi"])
+        return lim["phi1_lo"], lim["phi1_hi"]
     if d.family == "involute":
-        # the pitch position lies inside the engagement interval, whose length is at most
-        # (eps_alpha + eps_beta) angular pitches (closed form of the transverse and overlap ratios)
-        from ..meshing import contact_ratio_closed_form
-
-        g1, g2 = d.pair.flank1.gear, d.pair.flank2.gear
-        eps_a = contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, d.pair.centre_distance, g1.base_pitch)
-        eps_b = g1.face_width * np.tan(g1.helix_angle) / (np.pi * g1.module)
-        half = 1.05 * (float(eps_a) + eps_b) * p1
-        return (-half, half), None
+        return involute_limits(d)
     # Novikov: the contact runs along the helix, z(phi1) linear; probed near phi1 = 0 on the
     # extended surface, the engagement is where z crosses the face edges
     probe = np.array([-0.25, 0.0, 0.25]) * p1
@@ -140,8 +153,36 @@ def _window(d):
         raise ValueError("fewer than two contact points near phi1 = 0: no path of contact to follow")
     k, z0 = np.polyfit(c.phi1[ok], c.position[ok, 2], 1)
     half = 0.5 * d.values["face_width_mm"]
-    lim = tuple(sorted(((-half - z0) / k, (half - z0) / k)))
-    return lim, lim
+    return tuple(sorted(((-half - z0) / k, (half - z0) / k)))
+
+
+def involute_limits(d) -> tuple[float, float]:
+    """Engagement limits (phi_1B, phi_1E) [rad] of an involute design: the angles at which the
+    contact reaches a flank boundary, solved exactly (:func:`gearrep.meshing.engagement_limits`,
+    the same solve as ``gearrep tca``'s :func:`gearrep.meshing.meshing_cycle`); the contact ratio
+    is then :func:`gearrep.meshing.contact_ratio` of these, whatever the number of points."""
+    from ..meshing import engagement_limits
+
+    with np.errstate(all="ignore"):
+        b, e = engagement_limits(d.pair, v1=0.0 if d.line_contact else None, tol=d.analysis["tol"])
+    return b.phi1, e.phi1
+
+
+def iso_contact_ratios(d) -> dict:
+    """The ISO-style contact ratios of the nominal involute pair (ISO 21771 / ISO 6336-1 definitions,
+    no modification or misalignment): transverse eps_alpha = (length of the path of contact in the
+    transverse section) / (transverse base pitch), overlap eps_beta = b sin(beta) / (pi m_n) and total
+    eps_gamma = eps_alpha + eps_beta; NaN for families whose flanks are not involute helicoids."""
+    names = ("transverse_contact_ratio_iso", "overlap_ratio_iso", "total_contact_ratio_iso")
+    g1 = getattr(getattr(d.pair, "flank1", None), "gear", None)
+    g2 = getattr(getattr(d.pair, "flank2", None), "gear", None)
+    if g1 is None or g2 is None or not hasattr(g1, "base_pitch"):
+        return dict.fromkeys(names, float("nan"))
+    from ..meshing import contact_ratio_closed_form
+
+    eps_a = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, d.pair.centre_distance, g1.base_pitch))
+    eps_b = float(g1.face_width * abs(np.sin(g1.helix_angle)) / (np.pi * g1.module))
+    return dict(zip(names, (eps_a, eps_b, eps_a + eps_b)))
 
 
 def te_envelope(phi, te, drive, pitch, begin, n):
@@ -174,24 +215,18 @@ def cycle_summary(begin, end, env, drive) -> dict:
 
 def te_metrics(d, n_phi: int):
     """(path ContactPoints on the engagement interval, TE envelope table, summary dict) of a
-    non-involute pair; the path has ``n_phi`` positions."""
+    non-hobbed pair (``gearrep sweep``; ``gearrep tca`` of Novikov and CATT pairs); the path has
+    ``n_phi`` positions. The engagement limits and the contact ratio are those of ``gearrep tca``."""
     p1 = 2.0 * np.pi / d.pair.n1
-    (lo, hi), known = _window(d)
+    b, e = _engagement(d)
     solves = solves_per_point(d.family, int(n_phi))
-    if known is None:  # involute (sweeps): grid-resolved, the first and last converged points of one pair
-        phi = np.linspace(lo, hi, int(n_phi))
-        c, _ = contact_at(d, phi)
-        ok = np.flatnonzero(c.converged)
-        if len(ok) < 2:
-            raise ValueError("fewer than two contact points inside the flanks: no meshing cycle")
-        b, e = float(phi[ok.min()]), float(phi[ok.max()])
-    else:
-        b, e = known
     phi = np.linspace(b, e, int(n_phi))
     c, _ = contact_at(d, phi)
     te = np.where(c.converged & (phi >= b - 1e-12) & (phi <= e + 1e-12), c.te, np.nan)
     drive = _drive_sign(d.pair, c)
-    mc = (e - b) / p1
+    from ..meshing import contact_ratio
+
+    mc = float(contact_ratio(b, e, d.pair.n1))
     at, env, lead = te_envelope(phi, te, drive, p1, b, n_phi)
     table = pd.DataFrame({"phi1_rad": at, "te_arcsec": env / ARCSEC, "tooth_pair": lead})
     summary = {
@@ -199,7 +234,7 @@ def te_metrics(d, n_phi: int):
         "contact_ratio_method": {
             "catt": "middle-section closed form",
             "novikov": "face crossings of the path",
-            "involute": "grid of converged points",
+            "involute": "engagement limits solved on the flank boundaries",
         }[d.family],
         **cycle_summary(b, e, env, drive),
         "solves": solves,
@@ -222,6 +257,9 @@ def _path_table(d, c, delta) -> pd.DataFrame:
         area=np.where(ell, el.area, np.nan),
         major_axis=np.where(ell[:, None], el.major_axis, np.nan),
     )
+    from .edges import cut_at_edges
+
+    cut = cut_at_edges(d.pair, d.values["face_width_mm"], c.position, c.normal, el.major_axis, el.a, el.b)
     return pd.DataFrame(
         {
             "phi1_rad": c.phi1,
@@ -247,6 +285,10 @@ def _path_table(d, c, delta) -> pd.DataFrame:
             "ellipse_major_x": el.major_axis[:, 0],
             "ellipse_major_y": el.major_axis[:, 1],
             "ellipse_major_z": el.major_axis[:, 2],
+            "ellipse_major_from_mm": cut.lo,
+            "ellipse_major_to_mm": cut.hi,
+            "ellipse_area_on_flank_mm2": cut.area,
+            "edge_contact": cut.edge,
         }
     )
 
@@ -283,12 +325,14 @@ def tca_tables(d, progress=None) -> dict:
         progress("contact ellipses", 0.6)
     if d.family != "hobbed_curvilinear":
         path, extra = _path_table(d, c, s["elastic_approach_mm"]), {}
+    path = failed_rows_nan(path)
     ok = path["status"] == "converged"
     summary = {
         "design": d.name,
         "family": d.family,
         "line_contact": d.line_contact,
         **summary,
+        **iso_contact_ratios(d),
         "points_converged": int(ok.sum()),
         "points_total": len(path),
         "max_residual_mm": float(path.loc[ok, "residual"].max()) if ok.any() else float("nan"),
@@ -296,6 +340,9 @@ def tca_tables(d, progress=None) -> dict:
         if path["ellipse_semi_major_mm"].notna().any()
         else float("nan"),
         "transfer_kind": getattr(locals().get("cyc"), "transfer_kind", "envelope of sampled pairs"),
+        "edge_contact_positions": int((path["edge_contact"].fillna("") != "").sum())
+        if "edge_contact" in path
+        else float("nan"),
     }
     return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary]), **extra}
 
@@ -306,8 +353,8 @@ def flank_grid(d, member: int, n_u: int, n_v: int):
     pair = d.pair
     lo, hi = (pair.lower1, pair.upper1) if member == 1 else (pair.lower2, pair.upper2)
     flank = pair.flank1 if member == 1 else pair.flank2
-    if d.family == "involute":
-        lo = lo + np.array([1e-6 * (hi[0] - lo[0]), 0.0])  # the involute has a cusp on the base circle
+    if d.family == "involute":  # the active profile: from where the mating tip reaches (not the base-circle cusp)
+        lo = np.array([_active_profile_start(d)[member - 1], lo[1]])
     u, v = np.meshgrid(np.linspace(lo[0], hi[0], n_u), np.linspace(lo[1], hi[1], n_v), indexing="ij")
     u, v = u.ravel(), v.ravel()
     if d.family == "catt":
@@ -316,6 +363,22 @@ def flank_grid(d, member: int, n_u: int, n_v: int):
     elif d.family == "novikov":
         u, v = u * (1.0 / 1.2) * 0.95, v * (1.0 / 1.5)  # the active height and the face width
     return flank, u, v
+
+
+def _active_profile_start(d) -> tuple[float, float]:
+    """Radii [mm] at which the active profiles of an involute pair begin (pinion, gear): where the
+    mating member's tip circle cuts the line of action, sqrt(r_b^2 + (sqrt(a^2 - (r_b1 + r_b2)^2)
+    - sqrt(r_a'^2 - r_b'^2))^2) (a: the operating centre distance), and not below the start of the
+    involute flank."""
+    pair, m = d.pair, d.values["misalignment"]
+    g1, g2 = pair.flank1.gear, pair.flank2.gear
+    a = float(np.hypot(g1.r_p + g2.r_p + m["d_E_mm"], m["d_H_mm"]))
+    loa = np.sqrt(max(a**2 - (g1.r_b + g2.r_b) ** 2, 0.0))
+    out = []
+    for g, other, lo in ((g1, g2, pair.lower1[0]), (g2, g1, pair.lower2[0])):
+        t = max(loa - np.sqrt(other.r_a**2 - other.r_b**2), 0.0)
+        out.append(max(float(np.hypot(g.r_b, t)), float(lo)))
+    return out[0], out[1]
 
 
 def curvature_frame(member: str, names, u, v, points, pc) -> pd.DataFrame:
@@ -401,15 +464,16 @@ def cloud(names, u, v, points, normals, keep, n_u: int, n_v: int):
 
 
 def solves_per_point(family: str, n_phi: int) -> int:
-    """Contact solves of one sweep point (:func:`te_metrics`): involute pairs solve a window and then
-    the engagement interval (2 n_phi), the others the engagement interval (n_phi; Novikov 3 more to
-    find it); hobbed_curvilinear pairs: an upper bound of the 9 x 9 solves of the window and the
+    """Contact solves of one sweep point (:func:`te_metrics`): the engagement interval (n_phi) and
+    the solves that find it (involute: about 40, the walk of :func:`gearrep.meshing.engagement_limits`
+    in steps of a tenth of the angular pitch through a contact ratio up to about 3 and the boundary
+    solves; Novikov: 3; CATT: none, closed form); hobbed_curvilinear pairs: an upper bound of the 9 x 9 solves of the window and the
     path (:func:`gearrep.cli.hobbed.path_solves`)."""
     if family == "hobbed_curvilinear":  # the largest window (60 deg each side, 4 teeth or fewer)
         from .hobbed import path_solves
 
         return path_solves(4, n_phi)
-    return {"involute": 2 * n_phi, "novikov": n_phi + 3, "catt": n_phi}[family]
+    return {"involute": n_phi + 40, "novikov": n_phi + 3, "catt": n_phi}[family]
 
 
 def sweep_point(d, n_phi: int) -> dict:

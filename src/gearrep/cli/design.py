@@ -407,6 +407,57 @@ def _crowning(c, face_width):
     return LogarithmicCrowning(c["crown_mm"] / math.log(1.0 / (1.0 - c["log_shape"])), c["log_shape"], h)
 
 
+def _check_pointed(v, member):
+    """Refuse a profile shift that leaves ``member``'s tooth pointed below its tip circle (the tooth's
+    half angle at the tip, s/(2 r_p) + inv(alpha_t) - inv(alpha_a), falls to zero as x grows: the
+    tip circle grows by x m while the flanks lean in), naming the largest shift allowed."""
+    from scipy.optimize import brentq
+
+    from ..surfaces.involute import involute_polar_angle
+
+    m, z = v["module_mm"], v[member]["teeth"]
+    a_n, beta = math.radians(v["pressure_angle_deg"]), math.radians(v["helix_angle_deg"])
+    m_t = m / math.cos(beta)
+    a_t = math.atan(math.tan(a_n) / math.cos(beta))
+    r_p = 0.5 * z * m_t
+    r_b = r_p * math.cos(a_t)
+
+    def half_angle(x):
+        s = m_t * (0.5 * math.pi + 2.0 * x * math.tan(a_n))
+        r_a = r_p + (v["addendum"] + x) * m
+        return s / (2 * r_p) + float(involute_polar_angle(r_p, r_b)) - float(involute_polar_angle(max(r_a, r_b), r_b))
+
+    x = v[member]["profile_shift"]
+    if half_angle(x) > 0:
+        return
+    limit = brentq(half_angle, -1.5, x) if half_angle(-1.5) > 0 else float("nan")
+    raise SettingError(
+        f"design.{member}.profile_shift: got {x!r}; allowed: below {limit:.4g} for {z} teeth (a larger shift leaves "
+        "the tooth pointed below its tip circle)"
+    )
+
+
+def _check_removal(v, member, g, u_lo, u_hi):
+    """Refuse a crown or relief that removes more than the tooth holds: the crown alone at the tip
+    circle, and at the face edge the crown plus the tip relief at the tip circle and plus the root
+    relief at the start of the involute; where the removal reaches :meth:`InvoluteGearData.max_flank_removal` the flank
+    crosses the tooth's centre plane (no material left)."""
+    mv = v[member]
+    crown = mv["crowning"]["crown_mm"] if mv["crowning"]["kind"] != "none" else 0.0
+    for key, amount, r, where in (
+        ("crowning.crown_mm", crown, u_hi, "the tip circle"),
+        ("tip_relief.amount_mm", mv["tip_relief"]["amount_mm"], u_hi, "the tip circle"),
+        ("root_relief.amount_mm", mv["root_relief"]["amount_mm"], u_lo, "the start of the involute"),
+    ):
+        most = g.max_flank_removal(r) - (crown if key != "crowning.crown_mm" else 0.0)
+        if amount > 0 and not amount < most:
+            raise SettingError(
+                f"design.{member}.{key}: got {amount!r}; allowed: below {most:.4g} mm (more removes the whole "
+                f"tooth thickness at {where}, r = {r:.4g} mm, at the face edge: the flank would cross the tooth's "
+                "centre plane)"
+            )
+
+
 def _involute(v) -> Design:
     from ..surfaces.involute import InvoluteFlank, InvoluteGearData, RootRelief, TipRelief, undercut_limit
     from ..tca import GearPair
@@ -414,6 +465,7 @@ def _involute(v) -> Design:
     gears, flanks = [], []
     for i, member in enumerate(("pinion", "gear")):
         mv = v[member]
+        _check_pointed(v, member)
         g = InvoluteGearData(
             mv["teeth"],
             v["module_mm"],
@@ -448,6 +500,7 @@ def _involute(v) -> Design:
                 "(or kind: none)"
             )
         u_lo, u_hi = max(g.r_b, g.r_f), g.r_a
+        _check_removal(v, member, g, u_lo, u_hi)
         relief = []
         for kind, cls in (("tip_relief", TipRelief), ("root_relief", RootRelief)):
             r = mv[kind]
@@ -612,6 +665,60 @@ def _largest_with_contact(values: dict, name: str, x: float, steps: int = 6) -> 
     return hi
 
 
+def _involute_mesh(d: Design) -> None:
+    """Refuse an involute design whose operating centre distance (the nominal one changed by the
+    misalignment d_E and d_H) leaves the range of :func:`gearrep.meshing.centre_distance_limits`:
+    below it a tip meets the other member below its involute (tip interference: no engagement
+    limit on the flanks), above it the total contact ratio is below 1 (a gap in the meshing)."""
+    from ..meshing import centre_distance_limits
+
+    pair, v = d.pair, d.values
+    g1, g2 = pair.flank1.gear, pair.flank2.gear
+    eps_b = float(g1.face_width * abs(np.sin(g1.helix_angle)) / (np.pi * g1.module))
+    lim = centre_distance_limits(
+        g1.r_a, g1.r_b, float(pair.lower1[0]), g2.r_a, g2.r_b, float(pair.lower2[0]), g1.base_pitch, eps_b
+    )
+    a0 = g1.r_p + g2.r_p
+    m = v["misalignment"]
+    d_e, d_h = m["d_E_mm"], m["d_H_mm"]
+    a = math.hypot(a0 + d_e, d_h)
+    lo = math.sqrt(max(lim["a_min"] ** 2 - d_h**2, 0.0)) - a0
+    hi = math.sqrt(lim["a_max"] ** 2 - d_h**2) - a0 if lim["a_max"] > abs(d_h) else float("nan")
+    if lim["a_min"] < a < lim["a_max"]:
+        return
+    tip = "gear" if lim["a_min_tip2"] >= lim["a_min_tip1"] else "pinion"
+    root = "pinion" if tip == "gear" else "gear"
+    if a <= lim["a_min"]:
+        why = (
+            f"tip interference: at a centre distance below {lim['a_min']:.6g} mm the {tip}'s tip meets the {root} "
+            f"below the start of its involute (r = {float((pair.lower1 if root == 'pinion' else pair.lower2)[0]):.5g} mm)"
+        )
+    else:
+        ratio = (
+            math.sqrt(g1.r_a**2 - g1.r_b**2)
+            + math.sqrt(g2.r_a**2 - g2.r_b**2)
+            - math.sqrt(a**2 - (g1.r_b + g2.r_b) ** 2)
+        ) / g1.base_pitch + eps_b
+        why = (
+            f"total contact ratio {ratio:.3g} < 1 at a centre distance of {a:.6g} mm: a gap in the "
+            f"meshing (the next tooth pair engages after the last one left) above {lim['a_max']:.6g} mm"
+        )
+    if lo < hi:  # the centre distance is the design's knob (profile shifts leave it at r_p1 + r_p2)
+        raise SettingError(
+            f"design.misalignment.d_E_mm: got {d_e!r}; allowed: {lo:.4g} < d_E_mm < {hi:.4g} mm for this pair"
+            f"{f' with d_H_mm = {d_h!r}' if d_h else ''} ({why})"
+        )
+    key, got = (f"{tip}.profile_shift", v[tip]["profile_shift"]) if a <= lim["a_min"] else ("addendum", v["addendum"])
+    raise SettingError(
+        f"design.{key}: got {got!r}; allowed: a value with which the pair meshes at its centre distance {a0:.6g} mm "
+        f"({why})"
+    )
+
+
+#: the checks of each family's meshing that need no contact solve (run before the solve at phi1 = 0)
+_MESH_CHECKS = {"involute": _involute_mesh}
+
+
 def check(raw, *, contact: bool = True) -> Design:
     """Resolve and build ``raw``; with ``contact``, also solve the contact at phi1 = 0 (the pitch
     point) and refuse a misalignment that moves it off the flanks. Raises SettingError naming the key."""
@@ -624,6 +731,8 @@ def check(raw, *, contact: bool = True) -> Design:
 
         hobbed.check_contact(d)
     elif contact:
+        if d.family in _MESH_CHECKS:
+            _MESH_CHECKS[d.family](d)
         c, line = contact_at(d, np.array([0.0]), face=False)  # Novikov: anywhere along the helix
         d.line_contact = line
         if not c.converged[0]:

@@ -23,19 +23,61 @@ import pandas as pd
 from .. import __version__
 from .design import canonical_hash, split_settings
 
-__all__ = ["atomic_dir", "commit", "provenance", "Writer", "stl_text", "exact"]
+__all__ = ["atomic_dir", "check_output", "commit", "provenance", "Writer", "stl_text", "exact", "SUMMARY_FIELDS"]
+
+
+def _refuse_target(target: Path, overwrite: bool) -> None:
+    """Raise FileExistsError (a refusal) if ``target`` cannot take a result."""
+    if target.exists() or target.is_symlink():
+        if not target.is_dir():
+            raise FileExistsError(f"-o {target}: exists and is not a directory; allowed: a new or empty directory")
+        if not overwrite and any(target.iterdir()):
+            raise FileExistsError(
+                f"-o {target}: exists and is not empty; allowed: a new or empty directory, or --overwrite to replace it"
+            )
+
+
+def _stage_in(target: Path) -> Path:
+    """Where the result is written before it becomes ``target``: inside an existing empty
+    directory (which may be a mount point that cannot be replaced), else beside ``target``."""
+    if target.is_dir() and not any(target.iterdir()):
+        return target
+    return target.parent
+
+
+def check_output(target, overwrite: bool = False) -> Path:
+    """Check before any work that ``target`` can take a result: a new directory, an empty one, or
+    (``overwrite``) a previous result; and that a directory can be written where the result is
+    staged (one is created and removed). Raises FileExistsError naming ``target`` otherwise."""
+    target = Path(target)
+    _refuse_target(target, overwrite)
+    parent = target.parent
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    where = _stage_in(target) if target.exists() else parent
+    try:
+        probe = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=where))
+        probe.rmdir()
+    except OSError as e:
+        raise FileExistsError(
+            f"-o {target}: cannot write in {where} ({e.strerror or e}); allowed: a directory you can write"
+        ) from None
+    return target
 
 
 @contextlib.contextmanager
-def atomic_dir(target: Path):
-    """A temporary directory beside ``target``, renamed to ``target`` when the block succeeds and
-    removed when it fails (so a failed run leaves no output directory). ``target`` must not exist
-    or be an empty directory."""
+def atomic_dir(target: Path, overwrite: bool = False):
+    """A staging directory that becomes ``target`` when the block succeeds and is removed when it
+    fails (a failed run leaves no output directory and nothing beside it). ``target`` must not
+    exist, or be an empty directory (the result is staged inside it and moved up), or with
+    ``overwrite`` hold a previous result, which is replaced only when the new one is complete (it is
+    renamed aside, the new one renamed in, then it is removed; restored if the swap fails). An
+    error naming ``target`` is raised when the result cannot be put in place."""
     target = Path(target)
-    if target.exists() and (not target.is_dir() or any(target.iterdir())):
-        raise FileExistsError(f"-o {target}: exists and is not an empty directory; allowed: a new directory")
+    _refuse_target(target, overwrite)
     target.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+    inside = target.is_dir() and not any(target.iterdir())
+    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target if inside else target.parent))
     umask = os.umask(0)
     os.umask(umask)
     os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private; the result is an ordinary directory
@@ -44,9 +86,33 @@ def atomic_dir(target: Path):
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    if target.exists():
-        target.rmdir()
-    os.replace(tmp, target)
+    moved = []
+    try:
+        if inside:
+            for entry in os.listdir(tmp):
+                os.replace(tmp / entry, target / entry)
+                moved.append(target / entry)
+            tmp.rmdir()
+        elif target.exists():  # overwrite: swap
+            old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old.", dir=target.parent))
+            try:
+                os.replace(target, old / "previous")
+                try:
+                    os.replace(tmp, target)
+                except OSError:
+                    os.replace(old / "previous", target)
+                    raise
+            finally:
+                shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(tmp, target)
+    except OSError as e:
+        shutil.rmtree(tmp, ignore_errors=True)
+        for p in moved:
+            shutil.rmtree(p, ignore_errors=True) if p.is_dir() else p.unlink(missing_ok=True)
+        raise OSError(
+            f"-o {target}: the result could not be put in place ({e.strerror or e}); nothing written"
+        ) from None
 
 
 def commit() -> str:
@@ -158,6 +224,38 @@ class Writer:
         return base64.b64encode(buf.getvalue()).decode()
 
 
+#: one line on each field of ``summary.csv`` (shown beside the value in ``summary.html``)
+SUMMARY_FIELDS = {
+    "design": "the design's name",
+    "family": "the tooth-surface family of the design file",
+    "line_contact": "True: the flanks touch along a line (aligned, unmodified pair); no contact ellipse then",
+    "contact_ratio": "TCA contact ratio: (phi1 at which one tooth pair leaves mesh - phi1 at which it enters) / "
+    "pinion angular pitch, under the design's modifications and misalignment",
+    "contact_ratio_method": "how the engagement limits of the contact ratio were found",
+    "transverse_contact_ratio_iso": "ISO transverse contact ratio eps_alpha of the nominal involute pair: path "
+    "of contact in the transverse section / transverse base pitch (NaN: not an involute pair)",
+    "overlap_ratio_iso": "ISO overlap ratio eps_beta = b sin(beta) / (pi m_n) of the nominal involute pair",
+    "total_contact_ratio_iso": "ISO total contact ratio eps_gamma = eps_alpha + eps_beta (nominal pair, no crowning "
+    "or misalignment; the TCA contact ratio is the one under them)",
+    "phi1_begin_rad": "pinion angle at which one tooth pair enters mesh",
+    "phi1_end_rad": "pinion angle at which that tooth pair leaves mesh",
+    "te_peak_to_peak_arcsec": "peak-to-peak transmission error of the driven gear over a meshing cycle",
+    "drive_sense": "max: the driven gear is pushed to the most advanced position the tooth pairs in mesh demand "
+    "(the pinion drives); min: to the least advanced",
+    "te_zero": "the angle at which the TE (kinematic error) is zero",
+    "solves": "contact solves of the analysis",
+    "points_converged": "rows of contact_path.csv whose solve converged inside both flanks",
+    "points_total": "rows of contact_path.csv",
+    "max_residual_mm": "largest residual of the converged contact solves",
+    "max_ellipse_semi_major_mm": "largest contact-ellipse semi-major axis along the path (elastic approach "
+    "analysis.elastic_approach_mm)",
+    "edge_contact_positions": "positions whose contact ellipse reaches a face edge or a tip circle (cut there: "
+    "contact_path.csv's edge_contact names the edges; NaN: not evaluated for this family)",
+    "transfer_kind": "how the load passes from one tooth pair to the next: crossing (TE curves cross), "
+    "at_engagement, at_exit, indeterminate (conjugate action), or envelope of sampled pairs",
+}
+
+
 def _table_html(df: pd.DataFrame) -> str:
     return df.to_html(index=False, float_format=lambda x: f"{x:.6g}", border=0, classes="t")
 
@@ -171,6 +269,7 @@ def summary_html(title: str, design_yaml: str, summary: pd.DataFrame, figures: d
     )
     rows = summary.T.reset_index()
     rows.columns = ["quantity", "value"]
+    rows["meaning"] = [SUMMARY_FIELDS.get(k, "") for k in rows["quantity"]]
     prov_rows = pd.DataFrame({"field": list(prov), "value": [str(v) for v in prov.values()]})
     return f"""<!doctype html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>body{{font-family:sans-serif;max-width:1100px;margin:1em auto}}table.t{{border-collapse:collapse}}

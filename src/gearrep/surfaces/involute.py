@@ -308,6 +308,8 @@ def _flank_options(side, hand, crowning, relief):
 class InvoluteGearData:
     """Size of an involute spur/helical gear (thesis Table 1, tip diameter corrected: d_a = d_p + 2m).
 
+    Units: ``module`` and ``face_width`` [length, mm in the examples; every radius and pitch of the
+    gear data is in the same unit], ``pressure_angle`` and ``helix_angle`` [rad].
     ``module`` and ``pressure_angle`` are normal values (for spur gears normal = transverse);
     ``helix_angle`` beta at the pitch cylinder. Profile shift ``x`` (coefficient), addendum and
     dedendum coefficients ``h_a``, ``h_f``, and ``thinning`` (transverse arc tooth-thickness
@@ -416,6 +418,23 @@ class InvoluteGearData:
     def base_pitch(self) -> float:
         """Transverse base pitch 2 pi r_b / N."""
         return 2.0 * np.pi * self.r_b / self.n_teeth
+
+    def half_angle(self, r) -> float:
+        """Half the angle the tooth subtends at radius ``r`` >= r_b [mm], rad: s/(2 r_p) + inv(alpha_t)
+        - inv(alpha_r) (the flank's polar angle from the tooth's centre plane)."""
+        return float(
+            self.tooth_thickness / (2.0 * self.r_p)
+            + involute_polar_angle(self.r_p, self.r_b)
+            - involute_polar_angle(float(r), self.r_b)
+        )
+
+    def max_flank_removal(self, r) -> float:
+        """The largest material removal normal to one flank at radius ``r`` [mm] that leaves the
+        tooth any thickness there, mm: an offset of an involute helicoid along its normal by d is
+        a turn about the axis by d / (r_b cos(beta_b)), and the flank reaches the tooth's centre
+        plane when that turn equals :meth:`half_angle` (both flanks removed alike: the tooth
+        ends in a point)."""
+        return float(self.r_b * np.cos(self.beta_b) * self.half_angle(r))
 
 
 def _flank_components(u, v, c, s, pu, pv, puu, pvv):
@@ -664,7 +683,8 @@ def mating_flanks(
     relief2=(),
     helix_form: str = "true",
 ):
-    """The two drive flanks of an external involute pair: same ``side``, opposite hands.
+    """The two drive flanks of an external involute pair: same ``side``, opposite hands. Their
+    parameters are u = radius and v = axial coordinate [length of the gear data, mm in the examples].
 
     Checks that the pair can mesh (same normal module, pressure angle and helix angle).
     """

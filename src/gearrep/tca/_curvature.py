@@ -68,7 +68,8 @@ def _per_point(name: str, value, contact: ContactPoints, ok):
 def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
     """Litvin's elastic-approach contact ellipse at the contact points (seed 002 eq 2.6.1-2.6.6 =
     seed 000 eq 5.14-5.17 = seed 004 eq 21-26) for an elastic approach ``delta`` (length unit of
-    the design data): semi-axes a >= b, area, major/minor axis unit vectors in S_f. Rows whose
+    the design data, mm in the examples): semi-axes a >= b [length], area [length^2], major/minor
+    axis unit vectors in S_f. Rows whose
     status is not CONVERGED are NaN; a contact whose relative curvature is not definite (line
     contact) has ``elliptic`` False."""
     from ..ellipse import elastic_ellipse_at

@@ -506,6 +506,7 @@ def solve_contact(
     phi10: float = 0.0,
     phi20: float = 0.0,
     drop=None,
+    keep_failed: bool = False,
 ) -> ContactPoints:
     """Contact points of ``pair`` at member-1 angles ``phi1`` (vectorised over starts and angles).
 
@@ -522,6 +523,10 @@ def solve_contact(
     drop : None (default: the component j = argmax |n_f1,j| at the start, per row) or 0, 1, 2 - the
         component of n_f1 + n_f2 (conventional) or n_f1 x n_f2 (reduced) left out of the system.
         Other choices than the default can make the Jacobian singular (see module docstring).
+    keep_failed : False (default): a row whose status is not CONVERGED has NaN flank parameters,
+        phi2, position, normal and TE (:meth:`ContactPoints.failed_as_nan`); True keeps the
+        solver's last iterate there (a root beyond the flank, OFF_FLANK, tells which boundary the
+        path of contact crossed; continuation and boundary searches use it).
 
     Returns
     -------
@@ -535,7 +540,7 @@ def solve_contact(
     if n > _BLOCK_ROWS:  # equal blocks of at most _BLOCK_ROWS rows, each solved as a batch
         edges = np.linspace(0, n, -(-n // _BLOCK_ROWS) + 1).round().astype(int)
         kw = dict(formulation=formulation, jacobian=jacobian, tol=tol, maxiter=maxiter, damped=damped)
-        kw.update(phi10=phi10, phi20=phi20, drop=drop)
+        kw.update(phi10=phi10, phi20=phi20, drop=drop, keep_failed=keep_failed)
         return ContactPoints.concatenate(
             solve_contact(pair, phi1[a:b], start[a:b], v1=start[a:b, 1] if fixed else None, **kw)
             for a, b in zip(edges[:-1], edges[1:])
@@ -573,11 +578,12 @@ def solve_contact(
             floats=floats,
         )
     sol = _expand(res.x, free, data.cols["v1"])
+    out = None
     if n == 1:  # one point: on floats where the last evaluation was at the solution
         out = _finish_one(pair, formulation, sol, phi1, res, phi10, phi20, record)
-        if out is not None:
-            return out
-    return _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
+    if out is None:
+        out = _finish(pair, formulation, sol, phi1, res, phi10, phi20, record.at(res.x))
+    return out if keep_failed else out.failed_as_nan()
 
 
 def _finish(pair, formulation, sol, phi1, res, phi10, phi20, recorded=None) -> ContactPoints:

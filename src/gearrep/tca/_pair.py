@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import ClassVar
 
@@ -290,6 +290,23 @@ class ContactPoints:
     @property
     def status_name(self) -> np.ndarray:
         return status_names(self.status)
+
+    #: the fields that describe the contact (NaN in a row that did not converge, see :meth:`failed_as_nan`)
+    CONTACT: ClassVar[tuple[str, ...]] = ("u1", "v1", "u2", "v2", "phi2", "position", "normal", "te")
+
+    def failed_as_nan(self) -> ContactPoints:
+        """This record with every contact field (:attr:`CONTACT`: flank parameters, phi2, position,
+        normal, TE) NaN in the rows whose status is not CONVERGED: a failed solve's last iterate is
+        not a contact. phi1 (the given angle), residual, iterations, status and condition stay."""
+        bad = ~self.converged
+        if not bad.any():
+            return self
+        kw = {}
+        for f in self.CONTACT:
+            a = np.array(getattr(self, f), dtype=float, copy=True)
+            a[bad] = np.nan
+            kw[f] = a
+        return replace(self, **kw)
 
     def take(self, idx) -> ContactPoints:
         """Subset by index or boolean mask."""

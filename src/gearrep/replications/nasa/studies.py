@@ -280,7 +280,7 @@ def _sensitivity_tca(s, d, version, step, dE, r1, r2, an, l, beta, h) -> dict:
         delta_1=abs(arc) / h if ok else np.nan,
         status=c.status_name[0],
         u1_in=u,
-        alpha_sign=int(np.sign(u)),
+        alpha_sign=float(np.sign(u)),  # NaN where the solve failed (u1 is NaN there)
     )
 
 
