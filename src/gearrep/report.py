@@ -46,6 +46,7 @@ __all__ = [
     "findings",
     "highlight",
     "ordered_sources",
+    "paper_verdicts",
     "parity_png",
     "parity_pngs",
     "parity_rows",
