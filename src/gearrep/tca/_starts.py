@@ -14,6 +14,8 @@ instantaneous contact line by a 1-D solve (:func:`transverse_stage`).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from ..solve import SolveResult, Status, _real, check_integer, check_positive, newton
@@ -43,6 +45,9 @@ __all__ = [
     "line_of_action_starts",
     "draw_starts",
     "offset_start",
+    "FALLBACK_GRID",
+    "project_starts",
+    "robust_contact",
 ]
 
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
@@ -417,3 +422,115 @@ def draw_starts(
         a, b = phi2_window
         phi2 = rng.uniform(a, b, n)
     return np.column_stack([u1, v1, u2, v2, phi2])
+
+
+#: fractions (along the profile, along the face) of flank 1's box where :func:`robust_contact`
+#: restarts a row whose own start failed: a 4 x 3 grid spanning the flank
+FALLBACK_GRID = tuple((fu, fv) for fv in (0.5, 0.2, 0.8) for fu in (0.4, 0.1, 0.7, 0.95))
+
+
+def _explicit2(pair: GearPair) -> bool:
+    """Whether member 2 has the explicit form the reduced formulation reads."""
+    return bool(getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False))
+
+
+def project_starts(pair: GearPair, phi1, u1, v1):
+    """(u1, v1) starts projected into the domain where member 2's explicit surface is defined:
+    clipped onto flank 1's box, then moved down flank 1's profile until the explicit u2 (eq 40)
+    lies on flank 2 (:func:`guard_reduced_starts`; member 2 in explicit form only). ``phi1`` one
+    angle or one per start. Returns (u1, v1)."""
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    lo, hi = pair.lower1, pair.upper1
+    u1 = np.clip(np.where(np.isfinite(u1), u1, 0.5 * (lo[0] + hi[0])), lo[0], hi[0])
+    v1 = np.clip(np.where(np.isfinite(v1), v1, 0.5 * (lo[1] + hi[1])), lo[1], hi[1])
+    if _explicit2(pair):
+        u1, _ = _guard(pair, ph, u1.copy(), v1, 40)
+    return u1, v1
+
+
+def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal):
+    """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback)."""
+    u1, v1 = project_starts(pair, ph, u1, v1)
+    if _explicit2(pair):
+        c = solve_contact(pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter)
+        if formulation == "reduced":
+            return c
+        x0 = seed_from_reduced(pair, ph, c.u1, c.v1)
+        bad = ~np.all(np.isfinite(x0), axis=1)
+        if bad.any():  # the reduced solve left member 2's domain: seed from the projected start
+            x0[bad] = seed_from_reduced(pair, ph[bad], u1[bad], v1[bad])
+        it = c.iterations
+    else:
+        x0 = np.array(nominal(pair, ph), dtype=float)
+        x0[:, 0], x0[:, 1] = u1, v1
+        it = 0
+    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter)
+    return replace(out, iterations=out.iterations + it)
+
+
+def robust_contact(
+    pair: GearPair,
+    phi1,
+    u1,
+    v1,
+    *,
+    formulation: str = "reduced",
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    nominal=None,
+    grid=FALLBACK_GRID,
+):
+    """Contact points at member-1 angles ``phi1`` from (u1, v1) starts anywhere on flank 1 (one
+    angle, or one per start): the start strategy whose correct-root rate from starts uniform over
+    the flank the robustness table measures.
+
+    1. Each start is projected into the domain where member 2's explicit surface is defined
+       (:func:`project_starts`).
+    2. Member 2 in explicit form (cylindrical or spherical flank): the reduced solve (damped
+       Newton, eq 33-44) from it; for ``formulation="conventional"`` the conventional solve
+       seeded with the u2, v2, phi2 that the reduced relations give at the reduced result
+       (:func:`seed_from_reduced`). Otherwise the conventional solve from the family's nominal
+       start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
+    3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) is
+       restarted from the points ``grid`` of flank 1 (fractions of its box, in order); of the
+       grid's verified roots at the row's angle the one of largest TE is kept (member 2 is pushed
+       to the most advanced tangency: the contact that carries the load).
+
+    Returns :class:`ContactPoints` (iterations: those of every pass a row took, the fallback's
+    summed over its grid)."""
+    check_formulation(formulation)
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    if formulation == "reduced" and not _explicit2(pair):
+        raise ValueError("the reduced formulation needs member 2 in explicit (cylindrical or spherical) form")
+    if not _explicit2(pair) and nominal is None:
+        raise ValueError("a pair whose member 2 has no explicit form needs nominal(pair, phi1) -> (n, 5) starts")
+    check_positive("tol", tol)
+    check_integer("maxiter", maxiter)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        c = _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal)
+        bad = np.flatnonzero(~c.converged)
+        if not len(bad) or not len(grid):
+            return c
+        lo, hi = pair.lower1, pair.upper1
+        g = lo + np.asarray(grid, float) * (hi - lo)
+        k = len(g)
+        phk = np.repeat(ph[bad], k)
+        cg = _solve_projected(
+            pair, phk, np.tile(g[:, 0], len(bad)), np.tile(g[:, 1], len(bad)), formulation, tol, maxiter, nominal
+        )
+        ok = cg.converged.reshape(len(bad), k)
+        te = np.where(ok, cg.te.reshape(len(bad), k), -np.inf)
+        pick = np.argmax(te, axis=1)
+        found = ok.any(axis=1)
+        spent = cg.iterations.reshape(len(bad), k).sum(axis=1)
+        chosen = cg.take(np.arange(len(bad)) * k + pick)
+        parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+        rows = bad[found]
+        for f in parts:
+            parts[f][rows] = getattr(chosen, f)[found]
+        parts["iterations"][bad] = c.iterations[bad] + spent
+        cond = None
+        if c.condition is not None and chosen.condition is not None:
+            cond = np.array(c.condition, dtype=float)
+            cond[rows] = chosen.condition[found]
+        return type(c)(formulation=c.formulation, condition=cond, **parts)

@@ -1,0 +1,77 @@
+"""Start robustness of the library's TCA (Snakemake script of the `bench` target; not in the
+default run): robustness.csv, one row per gear family, formulation and assembly (aligned or
+misaligned): starts (u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
+gearrep.tca.robust_contact, classified against the reference contact traced by continuation from
+the family's nominal start and verified (gearrep.tca.reference_contacts); correct, wrong-root and
+not-converged percentages, mean Newton iterations and the cost per solve (wall seconds of the
+batch, and in elements of the fixed reference kernel timed in the same run, which holds on a
+loaded machine)."""
+
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from gearrep import benchmark, published
+from gearrep.replications import load as load_study
+from gearrep.settings import defaults
+from gearrep.tca import default_start, reference_contacts, robust_contact, start_robustness
+
+smk = snakemake  # noqa: F821  (provided by Snakemake)
+N_PER_ANGLE = int(smk.params.n_per_angle)
+PUBLISHED = Path(smk.input.published_dir)
+
+
+def study(name):
+    """Default settings and design data of a replication (as its jobs get them)."""
+    mod = load_study(name)
+    design = mod.params_from_published(published.load(PUBLISHED, [str(PUBLISHED / f) for f in mod.DESIGN_DATA]))
+    return defaults(mod.SETTINGS), design
+
+
+def element_seconds() -> float:
+    """Seconds per element of the reference kernel (gearrep.benchmark.reference_kernel), now."""
+    n = 200_000
+    t0 = time.perf_counter()
+    benchmark.reference_kernel(n)
+    return (time.perf_counter() - t0) / n
+
+
+s, d = study("thesis")
+from gearrep.replications.thesis.bench import robustness_cases  # noqa: E402
+
+rng = np.random.default_rng([int(s["seed"]), 31])
+rows = []
+for case in robustness_cases(s, d):
+    pair, phi = case["pair"], case["phi1"]
+    for form in ("reduced", "conventional"):
+        row = dict(family=case["family"], formulation=form, misalignment=case["misalignment"])
+        try:
+            ref = reference_contacts(pair, phi, default_start(pair, phi[2:3], form)[0], formulation=form, tol=s["tol"])
+        except ValueError as err:  # a failed row is NaN, with the reason
+            rows.append(row | {"reference": str(err)})
+            continue
+
+        def solve(p, ph, u1, v1, form=form):
+            return robust_contact(p, ph, u1, v1, formulation=form, tol=s["tol"], maxiter=int(s["maxiter"]))
+
+        el_before = element_seconds()
+        r = start_robustness(pair, ref, N_PER_ANGLE, rng, solve)
+        el = 0.5 * (el_before + element_seconds())
+        rows.append(
+            row
+            | r
+            | dict(
+                elements_per_solve=r["seconds_per_solve"] / el,
+                phi1_min_rad=float(phi.min()),
+                phi1_max_rad=float(phi.max()),
+                reference="traced by continuation from the nominal start; verified",
+                load_average=benchmark.load_average(),
+            )
+        )
+        print(row["family"], form, row["misalignment"], f"{r['correct_pct']:.1f} %", flush=True)
+out = Path(smk.output[0])
+out.parent.mkdir(parents=True, exist_ok=True)
+pd.DataFrame(rows).to_csv(out, index=False)
+Path(smk.log[0]).write_text(f"robustness rows {len(rows)}, {N_PER_ANGLE} starts per angle, at {time.ctime()}\n")
