@@ -25,41 +25,57 @@ from gearrep.tca import (
 
 @pytest.fixture(scope="module")
 def cases(published):
-    from gearrep.replications.thesis.bench import robustness_cases
+    """(settings, case) of every row of the robustness table: the thesis's involute and bevel
+    pairs, the Novikov-Wildhaber and the CATT pair, aligned and misaligned."""
+    from importlib import import_module
 
-    mod = load("thesis")
-    s = defaults(mod.SETTINGS)
-    return s, robustness_cases(s, mod.params_from_published(published))
+    out = []
+    for name in ("thesis", "nasa", "catt"):
+        mod = load(name)
+        s = defaults(mod.SETTINGS)
+        design = mod.params_from_published(published)
+        out += [(s, c) for c in import_module(f"gearrep.replications.{name}.bench").robustness_cases(s, design)]
+    return out
 
 
-def _case_ids():
-    return [f"{i}" for i in range(10)]
+#: rows of the robustness table: 10 thesis pairs, 2 Novikov-Wildhaber, 2 CATT
+N_CASES = 14
 
 
-@pytest.mark.parametrize("i", range(10), ids=_case_ids())
-@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
-def test_all_starts_reach_the_reference(cases, i, formulation):
-    s, cs = cases
-    c = cs[i]
-    pair, phi = c["pair"], c["phi1"]
-    ref = reference_contacts(pair, phi, default_start(pair, phi[2:3], formulation)[0], formulation=formulation)
-    row = start_robustness(
-        pair,
-        ref,
-        10,
-        np.random.default_rng([int(s["seed"]), 41, i]),
-        lambda p, ph, u1, v1: robust_contact(p, ph, u1, v1, formulation=formulation, tol=s["tol"]),
-    )
-    assert set(row) == set(ROBUSTNESS_COLUMNS)
-    assert row["n_starts"] == 50
-    assert row["correct_pct"] == 100.0, (c["family"], c["misalignment"], row)
+def test_every_family_is_in_the_table(cases):
+    assert len(cases) == N_CASES
+    families = " ".join(c["family"] for _, c in cases)
+    for word in ("spur", "helical", "straight bevel", "convex1", "concave1", "Novikov", "CATT"):
+        assert word in families
+    assert {c["misalignment"] == "aligned" for _, c in cases} == {True, False}
+
+
+@pytest.mark.parametrize("i", range(N_CASES))
+def test_all_starts_reach_the_reference(cases, i):
+    s, c = cases[i]
+    pair, phi, nominal = c["pair"], c["phi1"], c.get("nominal")
+    tol, maxiter = c.get("tol", s["tol"]), c.get("maxiter", int(s["maxiter"]))
+    for formulation in c.get("formulations", ("reduced", "conventional")):
+        start = (default_start(pair, phi[2:3], formulation) if nominal is None else nominal(pair, phi[2:3]))[0]
+        ref = reference_contacts(pair, phi, start, formulation=formulation, nominal=nominal, tol=tol)
+        row = start_robustness(
+            pair,
+            ref,
+            10,
+            np.random.default_rng([41, i]),
+            lambda p, ph, u1, v1, f=formulation: robust_contact(
+                p, ph, u1, v1, formulation=f, tol=tol, maxiter=maxiter, nominal=nominal
+            ),
+        )
+        assert set(row) == set(ROBUSTNESS_COLUMNS)
+        assert row["n_starts"] == 50
+        assert row["correct_pct"] == 100.0, (c["family"], c["misalignment"], formulation, row)
 
 
 def test_the_spiral_pair_needs_the_strategy(cases):
     """Plain reduced Newton from the same kind of starts misses the spiral pair's contact often
     (the reason for the strategy): the classification sees those as not converged, not correct."""
-    s, cs = cases
-    c = next(c for c in cs if "convex1" in c["family"] and c["misalignment"] == "aligned")
+    s, c = next((s, c) for s, c in cases if "convex1" in c["family"] and c["misalignment"] == "aligned")
     pair, phi = c["pair"], c["phi1"]
     ref = reference_contacts(pair, phi, default_start(pair, phi[2:3], "reduced")[0], formulation="reduced")
     rng = np.random.default_rng(5)
@@ -77,8 +93,7 @@ def test_the_spiral_pair_needs_the_strategy(cases):
 
 
 def test_projection_stays_on_flank_1(cases):
-    _, cs = cases
-    pair = cs[-1]["pair"]
+    pair = next(c for _, c in cases if "concave1" in c["family"])["pair"]
     u1 = np.array([-1.0, 0.5 * (pair.lower1[0] + pair.upper1[0]), 10.0, np.nan])
     v1 = np.array([0.0, 1e3, -1e3, np.nan])
     pu, pv = project_starts(pair, 0.0, u1, v1)
@@ -87,8 +102,7 @@ def test_projection_stays_on_flank_1(cases):
 
 
 def test_bad_input_is_refused_before_work(cases):
-    _, cs = cases
-    pair = cs[0]["pair"]
+    pair = cases[0][1]["pair"]
     with pytest.raises(ValueError, match="formulation"):
         robust_contact(pair, 0.0, [1.0], [0.0], formulation="other")
     with pytest.raises(ValueError, match="same length"):
@@ -102,7 +116,7 @@ def test_robustness_table_full_size(tmp_path_factory):
     """results/bench/robustness.csv: every family, formulation and assembly row 100 % correct from
     at least 1000 starts, the spiral pair on both flank pairs."""
     t = pd.read_csv(run_target(tmp_path_factory.mktemp("robust"), "results/bench/robustness.csv"))
-    assert len(t) >= 20
+    assert len(t) >= 24
     assert (t["n_starts"] >= 1000).all()
     assert (t["correct_pct"] == 100.0).all(), t[t["correct_pct"] != 100.0]
     assert t["family"].str.contains("concave1").any() and t["family"].str.contains("convex1").any()

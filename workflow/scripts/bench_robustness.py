@@ -1,6 +1,7 @@
 """Start robustness of the library's TCA (Snakemake script of the `bench` target; not in the
 default run): robustness.csv, one row per gear family, formulation and assembly (aligned or
-misaligned): starts (u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
+misaligned; the involute, bevel, Novikov-Wildhaber and CATT pairs of the replications): starts
+(u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
 gearrep.tca.robust_contact, classified against the reference contact traced by continuation from
 the family's nominal start and verified (gearrep.tca.reference_contacts); correct, wrong-root and
 not-converged percentages, mean Newton iterations and the cost per solve (wall seconds of the
@@ -8,6 +9,7 @@ batch, and in elements of the fixed reference kernel timed in the same run, whic
 loaded machine)."""
 
 import time
+from importlib import import_module
 from pathlib import Path
 
 import numpy as np
@@ -38,23 +40,30 @@ def element_seconds() -> float:
     return (time.perf_counter() - t0) / n
 
 
-s, d = study("thesis")
-from gearrep.replications.thesis.bench import robustness_cases  # noqa: E402
+def cases():
+    """Every family's robustness cases with the settings of its study."""
+    for name in ("thesis", "nasa", "catt"):
+        s, d = study(name)
+        for case in import_module(f"gearrep.replications.{name}.bench").robustness_cases(s, d):
+            yield s, case
 
-rng = np.random.default_rng([int(s["seed"]), 31])
+
 rows = []
-for case in robustness_cases(s, d):
-    pair, phi = case["pair"], case["phi1"]
-    for form in ("reduced", "conventional"):
+for s, case in cases():
+    pair, phi, nominal = case["pair"], case["phi1"], case.get("nominal")
+    tol, maxiter = case.get("tol", s["tol"]), case.get("maxiter", int(s["maxiter"]))
+    rng = np.random.default_rng([int(s.get("seed", 0)), 31, len(rows)])
+    for form in case.get("formulations", ("reduced", "conventional")):
         row = dict(family=case["family"], formulation=form, misalignment=case["misalignment"])
+        start = (default_start(pair, phi[2:3], form) if nominal is None else nominal(pair, phi[2:3]))[0]
         try:
-            ref = reference_contacts(pair, phi, default_start(pair, phi[2:3], form)[0], formulation=form, tol=s["tol"])
+            ref = reference_contacts(pair, phi, start, formulation=form, nominal=nominal, tol=tol)
         except ValueError as err:  # a failed row is NaN, with the reason
             rows.append(row | {"reference": str(err)})
             continue
 
         def solve(p, ph, u1, v1, form=form):
-            return robust_contact(p, ph, u1, v1, formulation=form, tol=s["tol"], maxiter=int(s["maxiter"]))
+            return robust_contact(p, ph, u1, v1, formulation=form, tol=tol, maxiter=maxiter, nominal=nominal)
 
         el_before = element_seconds()
         r = start_robustness(pair, ref, N_PER_ANGLE, rng, solve)

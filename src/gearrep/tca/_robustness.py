@@ -4,9 +4,9 @@ flank 1 (see :func:`gearrep.tca.robust_contact`).
 
 The reference is the contact traced by continuation (:func:`trace_path`) from the family's
 nominal start at the middle angle outwards, and it is verified at every angle: converged with
-opposite outward normals and inside both flanks (status CONVERGED), and the loaded tangency: no
-verified root reached from a grid of starts over flank 1 at that angle has a larger transmission
-error (member 2, pushed forward by the load, rests against the most advanced tangency).
+opposite outward normals and inside both flanks (status CONVERGED), a tangency that meshes, and
+the loaded tangency: no meshing root reached from a grid of starts over flank 1 at that angle is
+more advanced in the sense the load pushes member 2 (:func:`gearrep.tca.meshing_sense`).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import numpy as np
 from ..solve import Status, check_integer
 from ._formulations import check_formulation, trace_path
 from ._pair import ContactPoints, GearPair, _wrap
-from ._starts import _solve_projected
+from ._starts import _solve_projected, flank_sense, meshing_sense
 
 __all__ = ["ROBUSTNESS_COLUMNS", "reference_contacts", "classify_contacts", "start_robustness"]
 
@@ -76,13 +76,21 @@ def reference_contacts(
         c = _solve_projected(
             pair, np.repeat(phi1, k), np.tile(g[:, 0], n), np.tile(g[:, 1], n), formulation, tol, maxiter, nominal
         )
-    te = np.where(c.converged, c.te, -np.inf).reshape(n, k).max(axis=1)
-    ahead = np.flatnonzero(te > ref.te + te_slack_rad)
+    r1, r2 = meshing_sense(pair, ref)
+    bad = np.flatnonzero((r1 != r2) | (r1 != flank_sense(pair, ref.phi1)))
+    if len(bad):
+        raise ValueError(
+            f"the traced contact at phi1 = {phi1[bad[0]]!r} rad does not mesh in the sense flank 1 faces (meshing_sense, flank_sense)"
+        )
+    s1, s2 = meshing_sense(pair, c)
+    same = c.converged & (s1 == s2) & (s2 == np.repeat(r2, k))  # meshing as the reference does
+    te = np.where(same, s2 * c.te, -np.inf).reshape(n, k).max(axis=1)
+    ahead = np.flatnonzero(te > r2 * ref.te + te_slack_rad)
     if len(ahead):
         i = ahead[0]
         raise ValueError(
-            f"the traced contact at phi1 = {phi1[i]!r} rad is not the loaded tangency: a root "
-            f"{te[i] - ref.te[i]:.3g} rad ahead of it"
+            f"the traced contact at phi1 = {phi1[i]!r} rad is not the loaded tangency: a meshing root "
+            f"{te[i] - r2[i] * ref.te[i]:.3g} rad ahead of it"
         )
     return ref
 

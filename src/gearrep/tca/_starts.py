@@ -48,6 +48,8 @@ __all__ = [
     "FALLBACK_GRID",
     "project_starts",
     "robust_contact",
+    "meshing_sense",
+    "flank_sense",
 ]
 
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
@@ -468,6 +470,72 @@ def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal):
     return replace(out, iterations=out.iterations + it)
 
 
+def _non_meshing_wrong(pair, c):
+    """``c`` with the CONVERGED rows that do not mesh in the sense flank 1 faces (:func:`flank_sense`)
+    set to WRONG_ROOT."""
+    wrong = c.converged & ~_meshes(pair, c)
+    if not wrong.any():
+        return c
+    return replace(c, status=np.where(wrong, int(Status.WRONG_ROOT), c.status))
+
+
+def _nominal_pass(pair, ph, c, tol, maxiter, nominal):
+    """The rows of ``c`` that are not CONVERGED solved again from the family's nominal start at
+    their angle (conventional); the rows that converge replace theirs (iterations summed)."""
+    bad = np.flatnonzero(~c.converged)
+    cn = solve_contact(
+        pair,
+        ph[bad],
+        np.array(nominal(pair, ph[bad]), dtype=float),
+        formulation="conventional",
+        tol=tol,
+        maxiter=maxiter,
+    )
+    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+    ok = cn.converged
+    for f in parts:
+        parts[f][bad[ok]] = getattr(cn, f)[ok]
+    parts["iterations"][bad] = c.iterations[bad] + cn.iterations
+    cond = None
+    if c.condition is not None and cn.condition is not None:
+        cond = np.array(c.condition, dtype=float)
+        cond[bad[ok]] = cn.condition[ok]
+    return type(c)(formulation=c.formulation, condition=cond, **parts)
+
+
+def meshing_sense(pair: GearPair, c):
+    """(s1, s2) per contact of ``c`` (:class:`ContactPoints`): the signs of the velocity of member 1's
+    point (turning about z_f by phi1 > 0) and of member 2's (about w2 by phi2 > 0) along member 1's
+    outward normal. A tangency that meshes has s1 = s2 (the equation of meshing: both surfaces move
+    alike along the common normal); one with s1 != s2 touches from the side that turning separates
+    at once (not a contact of the flank pair that transmits the motion). Where member 2 turning
+    forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
+    smallest: the loaded tangency maximises s2 TE."""
+    r, n = c.position, c.normal
+    v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
+    v2 = np.cross(pair.w2, r - pair.O2)
+    with np.errstate(invalid="ignore"):
+        return np.sign(np.sum(v1 * n, axis=1)), np.sign(np.sum(v2 * n, axis=1))
+
+
+def flank_sense(pair: GearPair, phi1) -> np.ndarray:
+    """The side flank 1 faces at each angle ``phi1``: the sign of its point's velocity (member 1
+    turning by phi1 > 0) along its outward normal at the middle of its box. A contact of the flank
+    pair meshes with s1 = s2 = this sign (:func:`meshing_sense`); a root where flank 1 faces the
+    other way lies on a part of the parametric surface folded back over the tooth."""
+    ph = np.atleast_1d(np.asarray(phi1, dtype=float))
+    mid = 0.5 * (pair.lower1 + pair.upper1)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        r, n = pair.member1(np.full(len(ph), mid[0]), np.full(len(ph), mid[1]), ph)
+    return np.sign(r[:, 0] * n[:, 1] - r[:, 1] * n[:, 0])
+
+
+def _meshes(pair, c) -> np.ndarray:
+    """Rows of ``c`` whose tangency meshes in the sense flank 1 faces (:func:`flank_sense`)."""
+    s1, s2 = meshing_sense(pair, c)
+    return (s1 == s2) & (s1 == flank_sense(pair, c.phi1))
+
+
 def robust_contact(
     pair: GearPair,
     phi1,
@@ -491,10 +559,14 @@ def robust_contact(
        seeded with the u2, v2, phi2 that the reduced relations give at the reduced result
        (:func:`seed_from_reduced`). Otherwise the conventional solve from the family's nominal
        start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
-    3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) is
-       restarted from the points ``grid`` of flank 1 (fractions of its box, in order); of the
-       grid's verified roots at the row's angle the one of largest TE is kept (member 2 is pushed
-       to the most advanced tangency: the contact that carries the load).
+    3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) or
+       whose root does not mesh in the sense flank 1 faces (:func:`meshing_sense`,
+       :func:`flank_sense`; such a row is WRONG_ROOT) is
+       restarted, for a member 2 without explicit form, from the nominal start itself; then from
+       the points ``grid`` of flank 1 (fractions of its box, in order); of the
+       grid's verified roots at the row's angle that mesh, the loaded tangency is kept (the load
+       pushes member 2 to the most advanced tangency in the sense its flank moves away:
+       :func:`meshing_sense`).
 
     Returns :class:`ContactPoints` (iterations: those of every pass a row took, the fallback's
     summed over its grid)."""
@@ -507,7 +579,9 @@ def robust_contact(
     check_positive("tol", tol)
     check_integer("maxiter", maxiter)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal)
+        c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
+        if nominal is not None and not _explicit2(pair) and not c.converged.all():
+            c = _non_meshing_wrong(pair, _nominal_pass(pair, ph, c, tol, maxiter, nominal))
         bad = np.flatnonzero(~c.converged)
         if not len(bad) or not len(grid):
             return c
@@ -518,8 +592,9 @@ def robust_contact(
         cg = _solve_projected(
             pair, phk, np.tile(g[:, 0], len(bad)), np.tile(g[:, 1], len(bad)), formulation, tol, maxiter, nominal
         )
-        ok = cg.converged.reshape(len(bad), k)
-        te = np.where(ok, cg.te.reshape(len(bad), k), -np.inf)
+        s1, s2 = meshing_sense(pair, cg)
+        ok = (cg.converged & _meshes(pair, cg)).reshape(len(bad), k)
+        te = np.where(ok, (s2 * cg.te).reshape(len(bad), k), -np.inf)
         pick = np.argmax(te, axis=1)
         found = ok.any(axis=1)
         spent = cg.iterations.reshape(len(bad), k).sum(axis=1)
