@@ -1,7 +1,7 @@
-"""The robust start strategy (gearrep.tca.robust_contact) against the reference contact traced by
-continuation and verified (gearrep.tca.reference_contacts): 100 % correct roots from starts
-uniform over flank 1 for every pair of the robustness table, aligned and misaligned, both
-formulations; a small sample here, the full table (results/bench/robustness.csv, >= 1000 starts
+"""The robust start strategy (gearrep.tca.robust_contact; gearrep.tca_envelope.robust_points for
+the hob-cut pair) against the reference contact traced by continuation and verified
+(gearrep.tca.reference_contacts): 100 % correct roots from starts uniform over flank 1 for every
+pair of the robustness table, aligned and misaligned, each formulation; a small sample here, the full table (results/bench/robustness.csv, >= 1000 starts
 per row) under the ``bench`` marker."""
 
 import numpy as np
@@ -72,6 +72,39 @@ def test_all_starts_reach_the_reference(cases, i):
         assert row["correct_pct"] == 100.0, (c["family"], c["misalignment"], formulation, row)
 
 
+@pytest.fixture(scope="module")
+def envelope_cases(published):
+    """(settings, case) of the hob-cut pair's rows (9-unknown envelope TCA)."""
+    from gearrep.replications.tseng_tca.bench import robustness_cases
+
+    mod = load("tseng_tca")
+    s = defaults(mod.SETTINGS)
+    return [(s, c) for c in robustness_cases(s, mod.params_from_published(published))]
+
+
+@pytest.mark.parametrize("i", range(2))
+def test_hob_cut_starts_reach_the_reference(envelope_cases, i):
+    """The hob-cut pair, aligned and with the Table 5.4 example's errors: starts uniform over the
+    pinion flank's box reach the physical contact traced by continuation."""
+    from gearrep import hobbed, tca_envelope
+
+    s, c = envelope_cases[i]
+    pair, phi, tol = c["pair"], c["phi1"], c["tol"]
+    ref = hobbed.physical_contact(pair, tca_envelope.trace_path(pair, c["start"], phi, tol=tol), tol=tol)
+    assert ref.converged.all()
+    row = start_robustness(
+        pair,
+        ref,
+        10,
+        np.random.default_rng([43, i]),
+        lambda p, ph, l_p, psi_p: tca_envelope.robust_points(p, ph, l_p, psi_p, c["nominal"], tol=tol),
+        box=c["box"],
+        classify=tca_envelope.classify_points,
+    )
+    assert row["n_starts"] == 50
+    assert row["correct_pct"] == 100.0, (c["misalignment"], row)
+
+
 def test_the_spiral_pair_needs_the_strategy(cases):
     """Plain reduced Newton from the same kind of starts misses the spiral pair's contact often
     (the reason for the strategy): the classification sees those as not converged, not correct."""
@@ -116,7 +149,7 @@ def test_robustness_table_full_size(tmp_path_factory):
     """results/bench/robustness.csv: every family, formulation and assembly row 100 % correct from
     at least 1000 starts, the spiral pair on both flank pairs."""
     t = pd.read_csv(run_target(tmp_path_factory.mktemp("robust"), "results/bench/robustness.csv"))
-    assert len(t) >= 24
+    assert len(t) == 26
     assert (t["n_starts"] >= 1000).all()
     assert (t["correct_pct"] == 100.0).all(), t[t["correct_pct"] != 100.0]
     assert t["family"].str.contains("concave1").any() and t["family"].str.contains("convex1").any()

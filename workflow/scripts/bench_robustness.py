@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from gearrep import benchmark, published
+from gearrep import benchmark, hobbed, published, tca_envelope
 from gearrep.replications import load as load_study
 from gearrep.settings import defaults
 from gearrep.tca import default_start, reference_contacts, robust_contact, start_robustness
@@ -42,17 +42,53 @@ def element_seconds() -> float:
 
 def cases():
     """Every family's robustness cases with the settings of its study."""
-    for name in ("thesis", "nasa", "catt"):
+    for name in ("thesis", "nasa", "catt", "tseng_tca"):
         s, d = study(name)
         for case in import_module(f"gearrep.replications.{name}.bench").robustness_cases(s, d):
             yield s, case
 
 
+def envelope_row(s, case, row, rng):
+    """The row of a pair of generated envelopes (9-unknown TCA): reference by continuation from the
+    solved start and the physical tangency (gearrep.hobbed.physical_contact), starts (l_p, psi_p)
+    uniform over the case's pinion box solved by gearrep.tca_envelope.robust_points."""
+    pair, phi, tol, nominal = case["pair"], case["phi1"], case["tol"], case["nominal"]
+    ref = hobbed.physical_contact(pair, tca_envelope.trace_path(pair, case["start"], phi, tol=tol), tol=tol)
+    if not ref.converged.all():
+        return row | {"reference": f"no verified reference contact (status {list(ref.status_name)})"}
+
+    def solve(p, ph, u1, v1):
+        return tca_envelope.robust_points(p, ph, u1, v1, nominal, tol=tol)
+
+    return row | start_robustness(
+        pair, ref, N_PER_ANGLE, rng, solve, box=case["box"], classify=tca_envelope.classify_points
+    )
+
+
 rows = []
 for s, case in cases():
     pair, phi, nominal = case["pair"], case["phi1"], case.get("nominal")
-    tol, maxiter = case.get("tol", s["tol"]), case.get("maxiter", int(s["maxiter"]))
+    tol, maxiter = case.get("tol", s.get("tol")), case.get("maxiter", s.get("maxiter"))
     rng = np.random.default_rng([int(s.get("seed", 0)), 31, len(rows)])
+    if "start" in case:  # generated envelopes: the 9-unknown TCA
+        el_before = element_seconds()
+        r = envelope_row(
+            s,
+            case,
+            dict(family=case["family"], formulation="envelope pair (9 unknowns)", misalignment=case["misalignment"]),
+            rng,
+        )
+        el = 0.5 * (el_before + element_seconds())
+        r |= dict(
+            elements_per_solve=r.get("seconds_per_solve", np.nan) / el,
+            phi1_min_rad=float(phi.min()),
+            phi1_max_rad=float(phi.max()),
+            reference=r.get("reference", "traced by continuation from the solved start; physical tangency"),
+            load_average=benchmark.load_average(),
+        )
+        rows.append(r)
+        print(r["family"], r["misalignment"], f"{r.get('correct_pct', np.nan):.1f} %", flush=True)
+        continue
     for form in case.get("formulations", ("reduced", "conventional")):
         row = dict(family=case["family"], formulation=form, misalignment=case["misalignment"])
         start = (default_start(pair, phi[2:3], form) if nominal is None else nominal(pair, phi[2:3]))[0]

@@ -116,29 +116,37 @@ def start_robustness(
     n_per_angle: int,
     rng: np.random.Generator,
     solve,
+    *,
+    box=None,
+    classify=None,
 ) -> dict:
-    """One robustness row: ``n_per_angle`` starts (u1, v1) drawn uniformly over flank 1 at every
-    angle of the reference ``ref`` (:func:`reference_contacts`), solved as one batch by
-    ``solve(pair, phi1, u1, v1)`` -> :class:`ContactPoints` (e.g. :func:`gearrep.tca.robust_contact`
-    with its options) and classified (:func:`classify_contacts`). Returns the
+    """One robustness row: ``n_per_angle`` starts (u1, v1) drawn uniformly over flank 1 (``box`` =
+    (lower, upper), default the pair's ``lower1``, ``upper1``) at every angle of the reference
+    ``ref`` (:func:`reference_contacts`; any record with ``phi1`` and ``take``), solved as one
+    batch by ``solve(pair, phi1, u1, v1)`` (e.g. :func:`gearrep.tca.robust_contact` with its
+    options) and classified by ``classify(result, reference rows)`` -> (outcomes, iterations)
+    (default :func:`classify_contacts` of :class:`ContactPoints`). Returns the
     :data:`ROBUSTNESS_COLUMNS` (percentages of the starts; mean iterations over all solves; wall
     seconds per solve of the batch)."""
     check_integer("n_per_angle", n_per_angle)
-    n = n_per_angle * len(ref)
-    idx = np.repeat(np.arange(len(ref)), n_per_angle)
-    lo, hi = pair.lower1, pair.upper1
+    n = n_per_angle * len(ref.phi1)
+    idx = np.repeat(np.arange(len(ref.phi1)), n_per_angle)
+    lo, hi = (pair.lower1, pair.upper1) if box is None else box
     u1 = rng.uniform(lo[0], hi[0], n)
     v1 = rng.uniform(lo[1], hi[1], n)
     t0 = time.perf_counter()
     c = solve(pair, ref.phi1[idx], u1, v1)
     sec = time.perf_counter() - t0
-    out = classify_contacts(c, ref.take(idx))
+    if classify is None:
+        out, iterations = classify_contacts(c, ref.take(idx)), c.iterations
+    else:
+        out, iterations = classify(c, ref.take(idx))
     return dict(
         n_starts=n,
-        n_angles=len(ref),
+        n_angles=len(ref.phi1),
         correct_pct=100.0 * np.mean(out == "correct"),
         wrong_root_pct=100.0 * np.mean(out == "wrong_root"),
         not_converged_pct=100.0 * np.mean(out == "not_converged"),
-        mean_iterations=float(np.mean(c.iterations)),
+        mean_iterations=float(np.mean(iterations)),
         seconds_per_solve=sec / n,
     )

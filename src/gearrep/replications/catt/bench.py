@@ -12,7 +12,7 @@ from .contact import contact_geometry
 from .design import Design
 from .design import prm as _prm
 
-__all__ = ["bench_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
+__all__ = ["bench_cases", "robustness_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
 
 #: the benchmarked pair: the 3D-model pair of seed 004 sec. 4 (z1 = 19, z2 = 31, m = 8 mm, B = 80 mm,
 #: R_T = 500 mm)

@@ -9,7 +9,7 @@ from ...units import ARCMIN
 from .geometry import basics, make_pair
 from .te_studies import face_width, te_cycle, worm
 
-__all__ = ["BENCH_TE_TOL_ARCSEC", "bench_cases"]
+__all__ = ["BENCH_TE_TOL_ARCSEC", "bench_cases", "crowned_pair", "robustness_cases"]
 
 #: tightest printed tolerance of the TE maxima (sec. 5.5, 2 decimals): +-0.005 arcsec
 BENCH_TE_TOL_ARCSEC = 0.005
