@@ -514,7 +514,9 @@ def _replace_rows(sol: ContactPath, rows, new: ContactPath, ok) -> None:
     sol.solve.iterations[rows] += spent
 
 
-def robust_points(pair, phi1, l_p, psi_p, nominal, *, tol: float = 1e-11, maxiter: int = 30) -> ContactPath:
+def robust_points(
+    pair, phi1, l_p, psi_p, nominal, *, tol: float = 1e-11, maxiter: int = 30, fallback: bool = True
+) -> ContactPath:
     """Contact points at pinion angles ``phi1`` (n,) [rad] from starts (l_p, psi_p) (n,) anywhere
     on the pinion flank: the start strategy of :func:`gearrep.tca.robust_contact` for the
     9-unknown system. Each start is projected onto the pinion's generated flank (its own envelope
@@ -522,7 +524,7 @@ def robust_points(pair, phi1, l_p, psi_p, nominal, *, tol: float = 1e-11, maxite
     family's nominal start ``nominal(phi1)`` -> (n, 9) (e.g. :func:`predict` off a solved point);
     a row that does not converge, whose root is not a tangency or lies on another branch of a
     member's equation of meshing (WRONG_ROOT), or off either tooth (past its outside radius or the
-    face: OFF_FLANK) is solved again from the nominal start itself. Where several tangencies meet at one angle (an almost-line
+    face: OFF_FLANK) is solved again from the nominal start itself (unless ``fallback`` is False). Where several tangencies meet at one angle (an almost-line
     contact) :func:`physical_contact` picks the physical one."""
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     l_p, psi_p = (np.broadcast_to(np.asarray(a, float), phi1.shape) for a in (l_p, psi_p))
@@ -536,7 +538,7 @@ def robust_points(pair, phi1, l_p, psi_p, nominal, *, tol: float = 1e-11, maxite
         x0[on, 0:4] = rec.params[on]
         sol = _off_teeth(pair, solve_points(pair, phi1, x0, tol=tol, maxiter=maxiter))
         bad = np.flatnonzero(~sol.converged)
-        if len(bad):
+        if len(bad) and fallback:
             again = _off_teeth(pair, solve_points(pair, phi1[bad], x_nom[bad], tol=tol, maxiter=maxiter))
             _replace_rows(sol, bad, again, again.converged)
     return sol

@@ -1,10 +1,11 @@
 """Start robustness of the library's TCA (Snakemake script of the `bench` target; not in the
 default run): robustness.csv, one row per gear family, formulation and assembly (aligned or
-misaligned; the involute, bevel, Novikov-Wildhaber and CATT pairs of the replications): starts
-(u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
-gearrep.tca.robust_contact, classified against the reference contact traced by continuation from
+misaligned; the involute, bevel, Novikov-Wildhaber, CATT and hob-cut pairs of the replications):
+starts (u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
+gearrep.tca.robust_contact (the hob-cut pair: gearrep.tca_envelope.robust_points), classified against the reference contact traced by continuation from
 the family's nominal start and verified (gearrep.tca.reference_contacts); correct, wrong-root and
-not-converged percentages, mean Newton iterations and the cost per solve (wall seconds of the
+not-converged percentages (and the correct percentage of the same starts without the strategy's
+restarts: start_alone_correct_pct), mean Newton iterations and the cost per solve (wall seconds of the
 batch, and in elements of the fixed reference kernel timed in the same run, which holds on a
 loaded machine)."""
 
@@ -57,12 +58,16 @@ def envelope_row(s, case, row, rng):
     if not ref.converged.all():
         return row | {"reference": f"no verified reference contact (status {list(ref.status_name)})"}
 
-    def solve(p, ph, u1, v1):
-        return tca_envelope.robust_points(p, ph, u1, v1, nominal, tol=tol)
+    def solve(p, ph, u1, v1, fallback=True):
+        return tca_envelope.robust_points(p, ph, u1, v1, nominal, tol=tol, fallback=fallback)
 
-    return row | start_robustness(
-        pair, ref, N_PER_ANGLE, rng, solve, box=case["box"], classify=tca_envelope.classify_points
+    kw = dict(box=case["box"], classify=tca_envelope.classify_points)
+    seed = rng.integers(2**32)
+    r = start_robustness(pair, ref, N_PER_ANGLE, np.random.default_rng(seed), solve, **kw)
+    alone = start_robustness(
+        pair, ref, N_PER_ANGLE, np.random.default_rng(seed), lambda *a: solve(*a, fallback=False), **kw
     )
+    return row | r | {"start_alone_correct_pct": alone["correct_pct"]}
 
 
 rows = []
@@ -98,12 +103,18 @@ for s, case in cases():
             rows.append(row | {"reference": str(err)})
             continue
 
-        def solve(p, ph, u1, v1, form=form):
-            return robust_contact(p, ph, u1, v1, formulation=form, tol=tol, maxiter=maxiter, nominal=nominal)
+        def solve(p, ph, u1, v1, form=form, fallback=True):
+            kw = dict(formulation=form, tol=tol, maxiter=maxiter, nominal=nominal, fallback=fallback)
+            return robust_contact(p, ph, u1, v1, **kw)
 
+        seed = rng.integers(2**32)
         el_before = element_seconds()
-        r = start_robustness(pair, ref, N_PER_ANGLE, rng, solve)
+        r = start_robustness(pair, ref, N_PER_ANGLE, np.random.default_rng(seed), solve)
         el = 0.5 * (el_before + element_seconds())
+        alone = start_robustness(
+            pair, ref, N_PER_ANGLE, np.random.default_rng(seed), lambda *a: solve(*a, fallback=False)
+        )
+        r["start_alone_correct_pct"] = alone["correct_pct"]
         rows.append(
             row
             | r

@@ -547,6 +547,7 @@ def robust_contact(
     maxiter: int = 50,
     nominal=None,
     grid=FALLBACK_GRID,
+    fallback: bool = True,
 ):
     """Contact points at member-1 angles ``phi1`` from (u1, v1) starts anywhere on flank 1 (one
     angle, or one per start): the start strategy whose correct-root rate from starts uniform over
@@ -568,6 +569,8 @@ def robust_contact(
        pushes member 2 to the most advanced tangency in the sense its flank moves away:
        :func:`meshing_sense`).
 
+    ``fallback=False`` stops after step 2 (how far the start alone leads).
+
     Returns :class:`ContactPoints` (iterations: those of every pass a row took, the fallback's
     summed over its grid)."""
     check_formulation(formulation)
@@ -580,6 +583,8 @@ def robust_contact(
     check_integer("maxiter", maxiter)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
+        if not fallback:
+            return c
         if nominal is not None and not _explicit2(pair) and not c.converged.all():
             c = _non_meshing_wrong(pair, _nominal_pass(pair, ph, c, tol, maxiter, nominal))
         bad = np.flatnonzero(~c.converged)
