@@ -450,11 +450,17 @@ def project_starts(pair: GearPair, phi1, u1, v1):
     return u1, v1
 
 
-def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal):
-    """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback)."""
+def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False):
+    """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback);
+    ``transverse``: the projected starts moved onto the contact line first
+    (:func:`transverse_stage`, its iterations counted)."""
     u1, v1 = project_starts(pair, ph, u1, v1)
+    it = 0
+    if transverse:
+        u1, it = _transverse(pair, ph, u1, v1, 1e-10, 50)
     if _explicit2(pair):
         c = solve_contact(pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter)
+        c = replace(c, iterations=c.iterations + it)
         if formulation == "reduced":
             return c
         x0 = seed_from_reduced(pair, ph, c.u1, c.v1)
@@ -465,9 +471,30 @@ def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal):
     else:
         x0 = np.array(nominal(pair, ph), dtype=float)
         x0[:, 0], x0[:, 1] = u1, v1
-        it = 0
     out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter)
     return replace(out, iterations=out.iterations + it)
+
+
+def _transverse_applies(pair) -> bool:
+    """Whether the transverse stage means anything for ``pair``: parallel axes and member 2 an
+    explicit cylindrical flank (the axial component of n1 x n2 is the transverse mismatch)."""
+    return not pair._INTERSECTING_AXES and bool(getattr(pair.flank2, "cylindrical", False))
+
+
+def _retry(pair, c, new, bad):
+    """``c`` with its rows ``bad`` replaced by the rows of ``new`` (one per row of ``bad``) that are
+    CONVERGED and mesh; the iterations of every row of ``bad`` add those of ``new``."""
+    new = _non_meshing_wrong(pair, new)
+    ok = new.converged
+    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+    for f in parts:
+        parts[f][bad[ok]] = getattr(new, f)[ok]
+    parts["iterations"][bad] = c.iterations[bad] + new.iterations
+    cond = None
+    if c.condition is not None and new.condition is not None:
+        cond = np.array(c.condition, dtype=float)
+        cond[bad[ok]] = new.condition[ok]
+    return type(c)(formulation=c.formulation, condition=cond, **parts)
 
 
 def _non_meshing_wrong(pair, c):
@@ -481,26 +508,10 @@ def _non_meshing_wrong(pair, c):
 
 def _nominal_pass(pair, ph, c, tol, maxiter, nominal):
     """The rows of ``c`` that are not CONVERGED solved again from the family's nominal start at
-    their angle (conventional); the rows that converge replace theirs (iterations summed)."""
+    their angle (conventional): :func:`_retry`."""
     bad = np.flatnonzero(~c.converged)
-    cn = solve_contact(
-        pair,
-        ph[bad],
-        np.array(nominal(pair, ph[bad]), dtype=float),
-        formulation="conventional",
-        tol=tol,
-        maxiter=maxiter,
-    )
-    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
-    ok = cn.converged
-    for f in parts:
-        parts[f][bad[ok]] = getattr(cn, f)[ok]
-    parts["iterations"][bad] = c.iterations[bad] + cn.iterations
-    cond = None
-    if c.condition is not None and cn.condition is not None:
-        cond = np.array(c.condition, dtype=float)
-        cond[bad[ok]] = cn.condition[ok]
-    return type(c)(formulation=c.formulation, condition=cond, **parts)
+    x0 = np.array(nominal(pair, ph[bad]), dtype=float)
+    return _retry(pair, c, solve_contact(pair, ph[bad], x0, formulation="conventional", tol=tol, maxiter=maxiter), bad)
 
 
 def meshing_sense(pair: GearPair, c):
@@ -562,9 +573,11 @@ def robust_contact(
        start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
     3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) or
        whose root does not mesh in the sense flank 1 faces (:func:`meshing_sense`,
-       :func:`flank_sense`; such a row is WRONG_ROOT) is
-       restarted, for a member 2 without explicit form, from the nominal start itself; then from
-       the points ``grid`` of flank 1 (fractions of its box, in order); of the
+       :func:`flank_sense`; such a row is WRONG_ROOT) is restarted: on parallel axes with member 2
+       cylindrical from its projected start moved onto the contact line
+       (:func:`transverse_stage`; a helical pair's start far along the face otherwise lands on
+       the flat valley of the residual); for a member 2 without explicit form from the nominal
+       start itself; then from the points ``grid`` of flank 1 (fractions of its box, in order); of the
        grid's verified roots at the row's angle that mesh, the loaded tangency is kept (the load
        pushes member 2 to the most advanced tangency in the sense its flank moves away:
        :func:`meshing_sense`).
@@ -585,8 +598,12 @@ def robust_contact(
         c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
         if not fallback:
             return c
+        if _transverse_applies(pair) and not c.converged.all():
+            bad = np.flatnonzero(~c.converged)
+            new = _solve_projected(pair, ph[bad], u1[bad], v1[bad], formulation, tol, maxiter, nominal, transverse=True)
+            c = _retry(pair, c, new, bad)
         if nominal is not None and not _explicit2(pair) and not c.converged.all():
-            c = _non_meshing_wrong(pair, _nominal_pass(pair, ph, c, tol, maxiter, nominal))
+            c = _nominal_pass(pair, ph, c, tol, maxiter, nominal)
         bad = np.flatnonzero(~c.converged)
         if not len(bad) or not len(grid):
             return c
