@@ -71,6 +71,25 @@ def copy_workflow(dest: Path) -> Path:
     return dest
 
 
+def run_target(dest: Path, target: str) -> Path:
+    """Make ``target`` (a path) with Snakemake in a fresh copy of the workflow under ``dest``
+    (:func:`copy_workflow`, :func:`tool_env`); the path of the made file (assertion with the end of
+    Snakemake's error output if the run fails)."""
+    import subprocess
+
+    wf = copy_workflow(dest)
+    run = subprocess.run(
+        [sys.executable, "-m", "snakemake", "--cores", "2", target],
+        cwd=wf,
+        capture_output=True,
+        env=tool_env(),
+        text=True,
+        timeout=3600,
+    )
+    assert run.returncode == 0, run.stderr[-3000:]
+    return wf / target
+
+
 def tool_env() -> dict:
     """Environment for running Snakemake from a test as a user with no activated venv: the
     interpreter's bin directory is taken OFF the PATH, so every workflow test also checks that the

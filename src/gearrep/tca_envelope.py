@@ -49,6 +49,8 @@ __all__ = [
     "pinion_outward",
     "tangency_near",
     "turn_gap",
+    "robust_points",
+    "classify_points",
 ]
 
 
@@ -500,3 +502,93 @@ def _copy_row(out: ContactPath, i: int, src: ContactPath, j: int) -> None:
         getattr(out, f)[i] = getattr(src, f)[j]
     for f in ("x", "residual", "iterations", "status"):
         getattr(out.solve, f)[i] = getattr(src.solve, f)[j]
+
+
+def _replace_rows(sol: ContactPath, rows, new: ContactPath, ok) -> None:
+    """Rows ``rows[ok]`` of ``sol`` replaced by the rows ``ok`` of ``new`` (in place); the
+    iterations of every row of ``rows`` add those of ``new``."""
+    spent = new.solve.iterations.copy()
+    for i, j in zip(rows[ok], np.flatnonzero(ok)):
+        _copy_row(sol, int(i), new, int(j))
+        sol.solve.iterations[i] = 0
+    sol.solve.iterations[rows] += spent
+
+
+def robust_points(
+    pair, phi1, l_p, psi_p, nominal, *, tol: float = 1e-11, maxiter: int = 30, fallback: bool = True
+) -> ContactPath:
+    """Contact points at pinion angles ``phi1`` (n,) [rad] from starts (l_p, psi_p) (n,) anywhere
+    on the pinion flank: the start strategy of :func:`gearrep.tca.robust_contact` for the
+    9-unknown system. Each start is projected onto the pinion's generated flank (its own envelope
+    solve gives (phi_p, theta_p) at (l_p, psi_p)); the gear's unknowns and phi2' come from the
+    family's nominal start ``nominal(phi1)`` -> (n, 9) (e.g. :func:`predict` off a solved point);
+    a row that does not converge, whose root is not a tangency or lies on another branch of a
+    member's equation of meshing (WRONG_ROOT), or off either tooth (past its outside radius or the
+    face: OFF_FLANK) is solved again from the nominal start itself (unless ``fallback`` is False). Where several tangencies meet at one angle (an almost-line
+    contact) :func:`physical_contact` picks the physical one."""
+    phi1 = np.atleast_1d(np.asarray(phi1, float))
+    l_p, psi_p = (np.broadcast_to(np.asarray(a, float), phi1.shape) for a in (l_p, psi_p))
+    if not (np.all(np.isfinite(l_p)) and np.all(np.isfinite(psi_p))):
+        raise ValueError("l_p and psi_p (the starts on the pinion flank) must be finite")
+    x_nom = np.array(nominal(phi1), dtype=float).reshape(len(phi1), 9)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        rec = pair.pinion.gear.solve(l_p, psi_p)
+        x0 = x_nom.copy()
+        on = rec.converged & np.all(np.isfinite(rec.params), axis=1)
+        x0[on, 0:4] = rec.params[on]
+        sol = _off_teeth(pair, solve_points(pair, phi1, x0, tol=tol, maxiter=maxiter))
+        bad = np.flatnonzero(~sol.converged)
+        if len(bad) and fallback:
+            again = _off_teeth(pair, solve_points(pair, phi1[bad], x_nom[bad], tol=tol, maxiter=maxiter))
+            _replace_rows(sol, bad, again, again.converged)
+    return sol
+
+
+#: largest distance [mm] between a root's point on a member and the member's generated flank
+#: point at the same (l, psi) for the root to lie on that flank (the envelope solves hold 1e-11)
+_ON_FLANK_MM = 1e-6
+
+
+def _off_teeth(pair, sol: ContactPath) -> ContactPath:
+    """``sol`` with the CONVERGED rows that are no contact of the two teeth marked (in place):
+    WRONG_ROOT where a member's (phi, theta) are another branch of its equation of meshing (its
+    point differs from the member's generated flank at the same (l, psi), the branch that
+    ``GeneratedGear.solve`` verifies), OFF_FLANK where the point lies past either member's outside
+    radius or outside the face (``pair.face_width_mm``, where the pair has one)."""
+    ok = sol.converged.copy()
+    for flank, cols in ((pair.pinion, slice(0, 4)), (pair.gear, slice(4, 8))):
+        i = np.flatnonzero(ok)
+        if not len(i):
+            break
+        q = sol.x[i, cols]
+        own = flank.gear.solve(q[:, 0], q[:, 3])
+        r_root = member_geometry(flank, q)[0]
+        r_own = np.full_like(r_root, np.nan)
+        good = own.converged
+        if good.any():
+            r_own[good] = member_geometry(flank, own.params[good])[0]
+        with np.errstate(invalid="ignore"):
+            other = ~(np.linalg.norm(r_root - r_own, axis=1) <= _ON_FLANK_MM)
+        sol.solve.status[i[other]] = int(Status.WRONG_ROOT)
+        ok[i[other]] = False
+    on = (sol.radius_p <= pair.pinion.r_outside_mm) & (sol.radius_g <= pair.gear.r_outside_mm)
+    B = getattr(pair, "face_width_mm", None)
+    if B is not None:
+        on &= (np.abs(sol.Z_p) <= 0.5 * B) & (np.abs(sol.Z_g) <= 0.5 * B)
+    sol.solve.status[ok & ~on] = int(Status.OFF_FLANK)
+    return sol
+
+
+def classify_points(sol: ContactPath, ref: ContactPath, *, tol: float = 1e-6):
+    """(outcomes, iterations) of the solves ``sol`` against the reference ``ref`` (same rows), as
+    :func:`gearrep.tca.classify_contacts` names them: ``"correct"`` (CONVERGED and every unknown
+    within ``tol`` [mm, rad] of the reference), ``"wrong_root"`` (a root elsewhere, or not a
+    tangency), ``"not_converged"``."""
+    with np.errstate(invalid="ignore"):
+        same = np.all(np.abs(sol.x - ref.x) < tol, axis=1)
+    st = sol.solve.status
+    solved = np.isin(st, [Status.CONVERGED, Status.OFF_FLANK, Status.WRONG_ROOT])
+    out = np.full(len(st), "not_converged", dtype=object)
+    out[solved] = "wrong_root"
+    out[solved & same & (st == Status.CONVERGED)] = "correct"
+    return out, sol.solve.iterations

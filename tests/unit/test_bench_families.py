@@ -4,12 +4,9 @@ a private copy of the workflow, timing every family against the reference kernel
 each family fails above 1.5 times its targets (gearrep.benchmark.FAMILY_TARGETS: reference-kernel
 elements per vectorised solve and per single-point call, by the kind of tooth surface)."""
 
-import subprocess
-import sys
-
 import pandas as pd
 import pytest
-from conftest import copy_workflow, tool_env
+from conftest import run_target
 
 #: (a word of the family's label in throughput.csv, formulation, reason where the target is not met yet)
 FAMILIES = [
@@ -31,18 +28,7 @@ FAMILIES = [
 
 @pytest.fixture(scope="module")
 def throughput(tmp_path_factory):
-    wf = copy_workflow(tmp_path_factory.mktemp("bench"))
-    out = "results/bench/throughput.csv"
-    run = subprocess.run(
-        [sys.executable, "-m", "snakemake", "--cores", "2", out],
-        cwd=wf,
-        capture_output=True,
-        env=tool_env(),
-        text=True,
-        timeout=3600,
-    )
-    assert run.returncode == 0, run.stderr[-3000:]
-    return pd.read_csv(wf / out)
+    return pd.read_csv(run_target(tmp_path_factory.mktemp("bench"), "results/bench/throughput.csv"))
 
 
 @pytest.mark.bench

@@ -261,7 +261,9 @@ def test_job_counts_of_framework_targets(every_job):
 
     # one bench_replication job per configured replication (every_job configures all of them)
     bench = sorted(j["rule"] for j in needed(every_job, "bench"))
-    assert bench == sorted(["bench", "bench_core", "bench_defaults"] + ["bench_replication"] * len(REGISTRY))
+    assert bench == sorted(
+        ["bench", "bench_core", "bench_defaults", "bench_robustness"] + ["bench_replication"] * len(REGISTRY)
+    )
     default = {j["rule"] for j in needed(every_job, "all")}
     assert not {r for r in default if r.startswith("bench")} and "report_screenshot" not in default
     assert {"scorecard", "report", "all"} <= default

@@ -24,9 +24,26 @@ rule bench_core:
         "../scripts/bench_core.py"
 
 
+# Start robustness: correct-root rate of gearrep.tca.robust_contact from starts uniform over
+# the flank, per family, formulation and assembly.
+rule bench_robustness:
+    input:
+        published_dir=PUBLISHED_DIR,
+        code=script_lib("workflow/scripts/bench_robustness.py"),
+    output:
+        f"{BENCH_DIR}/robustness.csv",
+    log:
+        "results/logs/bench_robustness.log",
+    params:
+        n_per_angle=200,
+    script:
+        "../scripts/bench_robustness.py"
+
+
 rule bench:
     input:
         rules.bench_core.output,
+        rules.bench_robustness.output,
         f"{BENCH_DIR}/defaults.csv",
 
 

@@ -79,28 +79,18 @@ def novikov_case(rng, n, pinion="rack"):
     and the disk-ground pinion moved by the offset solved at one angle, gearrep.tca.offset_start,
     whose reference solve is in the row's start cost) and with its solver settings."""
     from gearrep.replications.nasa import geometry as ng
+    from gearrep.replications.nasa.bench import crowned_pair
     from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import offset_start
 
     s, d = study("nasa")
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
-    Pn, an, beta, lead = ng.basics(d)
     if pinion == "worm":
         pair = ng.make_worm_pair(d, s, misalignment=mis)
     elif pinion == "disk":
         pair = ng.make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
     else:
-        pair = ng.make_pair(
-            d,
-            d["rho_c_times_Pn"] / Pn,
-            d["rho_t_times_Pn"] / Pn,
-            an,
-            lead,
-            beta,
-            tol=s["tol"],
-            hand=s["pinion_hand"],
-            misalignment=mis,
-        )
+        pair = crowned_pair(s, d, mis)
     per = 2 * np.pi / pair.n1
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}

@@ -83,7 +83,11 @@ spherical form of member 2 used by the reduced formulation); every solve here ac
 
 Start strategies and solver variants (plain / damped / domain-kept / seeded / robust Newton for
 the conventional formulation, plain / damped / robust for the reduced one, random and
-line-of-action starts) are in this package too (private module ``_starts``).
+line-of-action starts) are in this package too (private module ``_starts``). The library's start
+strategy for any start on the flank is :func:`robust_contact` (projection into member 2's explicit
+domain, reduced solve, conventional seeded from it, a grid fallback keeping the loaded tangency);
+:func:`reference_contacts` and :func:`start_robustness` (private module ``_robustness``) measure a
+strategy against the contact traced by continuation and verified.
 
 All solves go through :func:`gearrep.solve.newton`. Per-row data (phi1, a fixed v1, the dropped
 component) are carried as extra unknowns frozen by identity rows with zero residual, because
@@ -115,15 +119,21 @@ from ._formulations import (
 )
 from ._kernels import normal_derivatives
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
+from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
 from ._starts import (
     CONVENTIONAL_VARIANTS,
+    FALLBACK_GRID,
     REDUCED_VARIANTS,
     draw_starts,
     flank_boxes,
+    flank_sense,
     guard_reduced_starts,
     line_of_action_start,
     line_of_action_starts,
+    meshing_sense,
     offset_start,
+    project_starts,
+    robust_contact,
     robust_start,
     seed_from_reduced,
     solve_conventional,
@@ -165,4 +175,13 @@ __all__ = [
     "line_of_action_starts",
     "draw_starts",
     "offset_start",
+    "FALLBACK_GRID",
+    "project_starts",
+    "robust_contact",
+    "meshing_sense",
+    "flank_sense",
+    "ROBUSTNESS_COLUMNS",
+    "reference_contacts",
+    "classify_contacts",
+    "start_robustness",
 ]

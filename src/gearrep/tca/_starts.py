@@ -14,6 +14,8 @@ instantaneous contact line by a 1-D solve (:func:`transverse_stage`).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from ..solve import SolveResult, Status, _real, check_integer, check_positive, newton
@@ -43,6 +45,11 @@ __all__ = [
     "line_of_action_starts",
     "draw_starts",
     "offset_start",
+    "FALLBACK_GRID",
+    "project_starts",
+    "robust_contact",
+    "meshing_sense",
+    "flank_sense",
 ]
 
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
@@ -417,3 +424,210 @@ def draw_starts(
         a, b = phi2_window
         phi2 = rng.uniform(a, b, n)
     return np.column_stack([u1, v1, u2, v2, phi2])
+
+
+#: fractions (along the profile, along the face) of flank 1's box where :func:`robust_contact`
+#: restarts a row whose own start failed: a 4 x 3 grid spanning the flank
+FALLBACK_GRID = tuple((fu, fv) for fv in (0.5, 0.2, 0.8) for fu in (0.4, 0.1, 0.7, 0.95))
+
+
+def _explicit2(pair: GearPair) -> bool:
+    """Whether member 2 has the explicit form the reduced formulation reads."""
+    return bool(getattr(pair.flank2, "cylindrical", False) or getattr(pair.flank2, "spherical", False))
+
+
+def project_starts(pair: GearPair, phi1, u1, v1):
+    """(u1, v1) starts projected into the domain where member 2's explicit surface is defined:
+    clipped onto flank 1's box, then moved down flank 1's profile until the explicit u2 (eq 40)
+    lies on flank 2 (:func:`guard_reduced_starts`; member 2 in explicit form only). ``phi1`` one
+    angle or one per start. Returns (u1, v1)."""
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    lo, hi = pair.lower1, pair.upper1
+    u1 = np.clip(np.where(np.isfinite(u1), u1, 0.5 * (lo[0] + hi[0])), lo[0], hi[0])
+    v1 = np.clip(np.where(np.isfinite(v1), v1, 0.5 * (lo[1] + hi[1])), lo[1], hi[1])
+    if _explicit2(pair):
+        u1, _ = _guard(pair, ph, u1.copy(), v1, 40)
+    return u1, v1
+
+
+def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False):
+    """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback);
+    ``transverse``: the projected starts moved onto the contact line first
+    (:func:`transverse_stage`, its iterations counted)."""
+    u1, v1 = project_starts(pair, ph, u1, v1)
+    it = 0
+    if transverse:
+        u1, it = _transverse(pair, ph, u1, v1, 1e-10, 50)
+    if _explicit2(pair):
+        c = solve_contact(pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter)
+        c = replace(c, iterations=c.iterations + it)
+        if formulation == "reduced":
+            return c
+        x0 = seed_from_reduced(pair, ph, c.u1, c.v1)
+        bad = ~np.all(np.isfinite(x0), axis=1)
+        if bad.any():  # the reduced solve left member 2's domain: seed from the projected start
+            x0[bad] = seed_from_reduced(pair, ph[bad], u1[bad], v1[bad])
+        it = c.iterations
+    else:
+        x0 = np.array(nominal(pair, ph), dtype=float)
+        x0[:, 0], x0[:, 1] = u1, v1
+    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter)
+    return replace(out, iterations=out.iterations + it)
+
+
+def _transverse_applies(pair) -> bool:
+    """Whether the transverse stage means anything for ``pair``: parallel axes and member 2 an
+    explicit cylindrical flank (the axial component of n1 x n2 is the transverse mismatch)."""
+    return not pair._INTERSECTING_AXES and bool(getattr(pair.flank2, "cylindrical", False))
+
+
+def _retry(pair, c, new, bad):
+    """``c`` with its rows ``bad`` replaced by the rows of ``new`` (one per row of ``bad``) that are
+    CONVERGED and mesh; the iterations of every row of ``bad`` add those of ``new``."""
+    new = _non_meshing_wrong(pair, new)
+    ok = new.converged
+    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+    for f in parts:
+        parts[f][bad[ok]] = getattr(new, f)[ok]
+    parts["iterations"][bad] = c.iterations[bad] + new.iterations
+    cond = None
+    if c.condition is not None and new.condition is not None:
+        cond = np.array(c.condition, dtype=float)
+        cond[bad[ok]] = new.condition[ok]
+    return type(c)(formulation=c.formulation, condition=cond, **parts)
+
+
+def _non_meshing_wrong(pair, c):
+    """``c`` with the CONVERGED rows that do not mesh in the sense flank 1 faces (:func:`flank_sense`)
+    set to WRONG_ROOT."""
+    wrong = c.converged & ~_meshes(pair, c)
+    if not wrong.any():
+        return c
+    return replace(c, status=np.where(wrong, int(Status.WRONG_ROOT), c.status))
+
+
+def _nominal_pass(pair, ph, c, tol, maxiter, nominal):
+    """The rows of ``c`` that are not CONVERGED solved again from the family's nominal start at
+    their angle (conventional): :func:`_retry`."""
+    bad = np.flatnonzero(~c.converged)
+    x0 = np.array(nominal(pair, ph[bad]), dtype=float)
+    return _retry(pair, c, solve_contact(pair, ph[bad], x0, formulation="conventional", tol=tol, maxiter=maxiter), bad)
+
+
+def meshing_sense(pair: GearPair, c):
+    """(s1, s2) per contact of ``c`` (:class:`ContactPoints`): the signs of the velocity of member 1's
+    point (turning about z_f by phi1 > 0) and of member 2's (about w2 by phi2 > 0) along member 1's
+    outward normal. A tangency that meshes has s1 = s2 (the equation of meshing: both surfaces move
+    alike along the common normal); one with s1 != s2 touches from the side that turning separates
+    at once (not a contact of the flank pair that transmits the motion). Where member 2 turning
+    forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
+    smallest: the loaded tangency maximises s2 TE."""
+    r, n = c.position, c.normal
+    v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
+    v2 = np.cross(pair.w2, r - pair.O2)
+    with np.errstate(invalid="ignore"):
+        return np.sign(np.sum(v1 * n, axis=1)), np.sign(np.sum(v2 * n, axis=1))
+
+
+def flank_sense(pair: GearPair, phi1) -> np.ndarray:
+    """The side flank 1 faces at each angle ``phi1``: the sign of its point's velocity (member 1
+    turning by phi1 > 0) along its outward normal at the middle of its box. A contact of the flank
+    pair meshes with s1 = s2 = this sign (:func:`meshing_sense`); a root where flank 1 faces the
+    other way lies on a part of the parametric surface folded back over the tooth."""
+    ph = np.atleast_1d(np.asarray(phi1, dtype=float))
+    mid = 0.5 * (pair.lower1 + pair.upper1)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        r, n = pair.member1(np.full(len(ph), mid[0]), np.full(len(ph), mid[1]), ph)
+    return np.sign(r[:, 0] * n[:, 1] - r[:, 1] * n[:, 0])
+
+
+def _meshes(pair, c) -> np.ndarray:
+    """Rows of ``c`` whose tangency meshes in the sense flank 1 faces (:func:`flank_sense`)."""
+    s1, s2 = meshing_sense(pair, c)
+    return (s1 == s2) & (s1 == flank_sense(pair, c.phi1))
+
+
+def robust_contact(
+    pair: GearPair,
+    phi1,
+    u1,
+    v1,
+    *,
+    formulation: str = "reduced",
+    tol: float = 1e-12,
+    maxiter: int = 50,
+    nominal=None,
+    grid=FALLBACK_GRID,
+    fallback: bool = True,
+):
+    """Contact points at member-1 angles ``phi1`` from (u1, v1) starts anywhere on flank 1 (one
+    angle, or one per start): the start strategy whose correct-root rate from starts uniform over
+    the flank the robustness table measures.
+
+    1. Each start is projected into the domain where member 2's explicit surface is defined
+       (:func:`project_starts`).
+    2. Member 2 in explicit form (cylindrical or spherical flank): the reduced solve (damped
+       Newton, eq 33-44) from it; for ``formulation="conventional"`` the conventional solve
+       seeded with the u2, v2, phi2 that the reduced relations give at the reduced result
+       (:func:`seed_from_reduced`). Otherwise the conventional solve from the family's nominal
+       start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
+    3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) or
+       whose root does not mesh in the sense flank 1 faces (:func:`meshing_sense`,
+       :func:`flank_sense`; such a row is WRONG_ROOT) is restarted: on parallel axes with member 2
+       cylindrical from its projected start moved onto the contact line
+       (:func:`transverse_stage`; a helical pair's start far along the face otherwise lands on
+       the flat valley of the residual); for a member 2 without explicit form from the nominal
+       start itself; then from the points ``grid`` of flank 1 (fractions of its box, in order); of the
+       grid's verified roots at the row's angle that mesh, the loaded tangency is kept (the load
+       pushes member 2 to the most advanced tangency in the sense its flank moves away:
+       :func:`meshing_sense`).
+
+    ``fallback=False`` stops after step 2 (how far the start alone leads).
+
+    Returns :class:`ContactPoints` (iterations: those of every pass a row took, the fallback's
+    summed over its grid)."""
+    check_formulation(formulation)
+    ph, u1, v1 = _start_pairs(phi1, u1, v1)
+    if formulation == "reduced" and not _explicit2(pair):
+        raise ValueError("the reduced formulation needs member 2 in explicit (cylindrical or spherical) form")
+    if not _explicit2(pair) and nominal is None:
+        raise ValueError("a pair whose member 2 has no explicit form needs nominal(pair, phi1) -> (n, 5) starts")
+    check_positive("tol", tol)
+    check_integer("maxiter", maxiter)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
+        if not fallback:
+            return c
+        if _transverse_applies(pair) and not c.converged.all():
+            bad = np.flatnonzero(~c.converged)
+            new = _solve_projected(pair, ph[bad], u1[bad], v1[bad], formulation, tol, maxiter, nominal, transverse=True)
+            c = _retry(pair, c, new, bad)
+        if nominal is not None and not _explicit2(pair) and not c.converged.all():
+            c = _nominal_pass(pair, ph, c, tol, maxiter, nominal)
+        bad = np.flatnonzero(~c.converged)
+        if not len(bad) or not len(grid):
+            return c
+        lo, hi = pair.lower1, pair.upper1
+        g = lo + np.asarray(grid, float) * (hi - lo)
+        k = len(g)
+        phk = np.repeat(ph[bad], k)
+        cg = _solve_projected(
+            pair, phk, np.tile(g[:, 0], len(bad)), np.tile(g[:, 1], len(bad)), formulation, tol, maxiter, nominal
+        )
+        s1, s2 = meshing_sense(pair, cg)
+        ok = (cg.converged & _meshes(pair, cg)).reshape(len(bad), k)
+        te = np.where(ok, (s2 * cg.te).reshape(len(bad), k), -np.inf)
+        pick = np.argmax(te, axis=1)
+        found = ok.any(axis=1)
+        spent = cg.iterations.reshape(len(bad), k).sum(axis=1)
+        chosen = cg.take(np.arange(len(bad)) * k + pick)
+        parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+        rows = bad[found]
+        for f in parts:
+            parts[f][rows] = getattr(chosen, f)[found]
+        parts["iterations"][bad] = c.iterations[bad] + spent
+        cond = None
+        if c.condition is not None and chosen.condition is not None:
+            cond = np.array(c.condition, dtype=float)
+            cond[rows] = chosen.condition[found]
+        return type(c)(formulation=c.formulation, condition=cond, **parts)

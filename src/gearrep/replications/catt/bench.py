@@ -12,7 +12,7 @@ from .contact import contact_geometry
 from .design import Design
 from .design import prm as _prm
 
-__all__ = ["bench_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
+__all__ = ["bench_cases", "robustness_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
 
 #: the benchmarked pair: the 3D-model pair of seed 004 sec. 4 (z1 = 19, z2 = 31, m = 8 mm, B = 80 mm,
 #: R_T = 500 mm)
@@ -82,3 +82,48 @@ def bench_cases(settings: dict, design: Design) -> dict:
             "current": {"n_clip_nodes": settings["n_clip_nodes"], "n_tip_edge": settings["n_tip_edge"]},
         },
     }
+
+
+#: the crossing and in-plane errors of the CATT pair's misaligned robustness row
+ROBUSTNESS_MISALIGNMENT_ARCMIN = 3.0
+
+
+def robustness_cases(settings: dict, design: Design) -> list:
+    """The sec. 4 CATT pair (primary flanks) of the start-robustness table, aligned and under
+    dgamma_in = dgamma_out = 3 arcmin: dicts with ``family``, ``misalignment``, ``pair``,
+    ``phi1`` (five angles inside the real path, :func:`gearrep.surfaces.catt.path_limits`, its ends
+    left out), ``nominal`` (the study's starts, :func:`gearrep.surfaces.catt.starts`) and
+    ``formulations`` (conventional only: the flanks are parameterised by the cutter, with no
+    explicit form)."""
+    from ...surfaces.catt import starts
+    from ...tca import GearPair, Misalignment
+    from ...units import ARCMIN
+
+    q = _prm(settings, design)
+    mesh = assemble(design.by_name(BENCH_DESIGN), PRIMARY[0], q)
+    lim = path_limits(mesh)
+    base = mesh.gear_pair
+
+    def nominal(pair, phi1):
+        return starts(mesh, phi1, q["start_offset_mm"])
+
+    a = ROBUSTNESS_MISALIGNMENT_ARCMIN
+    out = []
+    for mis, lab in (
+        (None, "aligned"),
+        (Misalignment(d_gamma_in=a * ARCMIN, d_gamma_out=a * ARCMIN), f"dgamma_in = dgamma_out = {a:g} arcmin"),
+    ):
+        pair = GearPair(base.flank1, base.flank2, base.n1, base.n2, base.centre_distance, misalignment=mis, phase2=0.0)
+        out.append(
+            dict(
+                family="CATT (sec. 4 pair, primary flanks)",
+                misalignment=lab,
+                pair=pair,
+                phi1=np.linspace(lim["phi1_lo"], lim["phi1_hi"], 7)[1:-1],
+                nominal=nominal,
+                formulations=("conventional",),
+                tol=q["tol"],
+                maxiter=int(q["maxiter"]),
+            )
+        )
+    return out

@@ -9,10 +9,27 @@ from ...units import ARCMIN
 from .geometry import basics, make_pair
 from .te_studies import face_width, te_cycle, worm
 
-__all__ = ["BENCH_TE_TOL_ARCSEC", "bench_cases"]
+__all__ = ["BENCH_TE_TOL_ARCSEC", "bench_cases", "crowned_pair", "robustness_cases"]
 
 #: tightest printed tolerance of the TE maxima (sec. 5.5, 2 decimals): +-0.005 arcsec
 BENCH_TE_TOL_ARCSEC = 0.005
+
+
+def crowned_pair(settings: dict, design: dict, misalignment=None):
+    """The profile-crowned pair of sec. 2 (rack-generated flanks, radii rho_c, rho_t of the design)
+    with the settings' tolerance and pinion hand, under ``misalignment``."""
+    Pn, an, beta, lead = basics(design)
+    return make_pair(
+        design,
+        design["rho_c_times_Pn"] / Pn,
+        design["rho_t_times_Pn"] / Pn,
+        an,
+        lead,
+        beta,
+        tol=settings["tol"],
+        hand=settings["pinion_hand"],
+        misalignment=misalignment,
+    )
 
 
 def bench_cases(settings: dict, design: dict) -> dict:
@@ -23,22 +40,11 @@ def bench_cases(settings: dict, design: dict) -> dict:
     Errors: |TE_max - TE_max_ref| (max over cases) in arcsec, target a tenth of the printed +-0.005.
     ``settings``: the resolved settings; ``design``: :func:`.design.params_from_published`."""
     s, d = dict(settings), design
-    Pn, an, beta, l = basics(d)
     B, _ = face_width(s, d)
 
     def run_te(setting):
         q = {**s, **setting}
-        pair = make_pair(
-            d,
-            d["rho_c_times_Pn"] / Pn,
-            d["rho_t_times_Pn"] / Pn,
-            an,
-            l,
-            beta,
-            tol=q["tol"],
-            hand=q["pinion_hand"],
-            misalignment=Misalignment(d_gamma_out=q["misalignment_arcmin"] * ARCMIN),
-        )
+        pair = crowned_pair(q, d, Misalignment(d_gamma_out=q["misalignment_arcmin"] * ARCMIN))
         return te_cycle(pair, q, B)[2]["te_max_arcsec"]
 
     def run_worm(setting):
@@ -64,3 +70,30 @@ def bench_cases(settings: dict, design: dict) -> dict:
             "current": {"te_points_per_cycle": s["te_points_per_cycle"], "tol": s["tol"]},
         },
     }
+
+
+def robustness_cases(settings: dict, design: dict) -> list:
+    """The profile-crowned Novikov-Wildhaber pair (rack-generated flanks) of the start-robustness
+    table, aligned and under the study's crossing error dgamma: dicts with ``family``,
+    ``misalignment``, ``pair``, ``phi1`` (five angles over 0.6 of an angular pitch around phi1 =
+    0, the aligned contact at mid-face), ``nominal`` (the family's start,
+    :func:`gearrep.surfaces.novikov.aligned_start`) and ``formulations`` (conventional only: the
+    flanks are envelopes in rack parameters, with no explicit form)."""
+    from ...surfaces.novikov import aligned_start
+
+    out = []
+    arcmin = settings["misalignment_arcmin"]
+    for mis, lab in ((None, "aligned"), (Misalignment(d_gamma_out=arcmin * ARCMIN), f"dgamma_out = {arcmin:g} arcmin")):
+        pair = crowned_pair(settings, design, mis)
+        per = 2 * np.pi / pair.n1
+        out.append(
+            dict(
+                family="Novikov-Wildhaber (profile-crowned, rack-generated)",
+                misalignment=lab,
+                pair=pair,
+                phi1=np.linspace(-0.3, 0.3, 5) * per,
+                nominal=aligned_start,
+                formulations=("conventional",),
+            )
+        )
+    return out

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...tca import draw_starts
-from ...units import ARCSEC, DEG
+from ...units import ARCMIN, ARCSEC, DEG
 from .convergence import rng, run_variant, study_reference
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37
 from .model import crowning_object
@@ -99,3 +99,53 @@ def bench_cases(settings: dict, design: Design) -> dict:
             "current": {"te_n_points": p["te_n_points"]},
         },
     }
+
+
+#: misalignments of the robustness rows (the thesis's own where it has one): spur 0.05 deg in and
+#: out of plane; helical the Table 9 in-plane error; bevel pairs a shaft-angle error of 0.05 deg
+#: with an offset dE (0.05 mm straight, 0.01 module spiral)
+ROBUSTNESS_MISALIGNMENT = {"spur_dgamma_deg": 0.05, "bevel_dgamma_deg": 0.05, "straight_dE_mm": 0.05, "spiral_dE": 0.01}
+
+
+def robustness_cases(settings: dict, design: Design) -> list:
+    """Pairs of the start-robustness table (:func:`gearrep.tca.start_robustness`), aligned and
+    misaligned: dicts with ``family``, ``misalignment`` (label), ``pair`` and ``phi1`` (five
+    angles over the part of the meshing cycle where the tooth pair is in contact, in angular
+    pitches from the pitch-point position -pi/(2 N1): -0.2 to 0.2 for spur and straight bevel,
+    0.15 to 0.45 for the helical pair, whose profile-crowned contact crosses the face and is on
+    it from about 0.1 on; for the spiral pair from 0.4 of a pitch before phi1 = 0 to it, where its
+    contact ends about 0.09 after)."""
+    from ...tca import BevelMisalignment, Misalignment
+    from .bevel import bevel_pair
+
+    m = ROBUSTNESS_MISALIGNMENT
+    spur_mis = Misalignment(d_gamma_in=m["spur_dgamma_deg"] * DEG, d_gamma_out=m["spur_dgamma_deg"] * DEG)
+    hel_mis = Misalignment(d_gamma_in=float(design.helical_misalignment_arcmin) * ARCMIN)
+    out = []
+
+    def add(family, mis_label, pair, lo, hi, pitch=True):
+        per = 2 * np.pi / pair.n1
+        centre = -np.pi / (2 * pair.n1) if pitch else 0.0
+        out.append(dict(family=family, misalignment=mis_label, pair=pair, phi1=centre + np.linspace(lo, hi, 5) * per))
+
+    for mis, lab in ((None, "aligned"), (spur_mis, f"dgamma_in = dgamma_out = {m['spur_dgamma_deg']:g} deg")):
+        add("involute spur 52/72 (crowned)", lab, design_pair(design, "spur_52_72", mis), -0.2, 0.2)
+    for mis, lab in ((None, "aligned"), (hel_mis, f"dgamma_in = {design.helical_misalignment_arcmin:g} arcmin")):
+        add("involute helical 25/77 (profile-crowned)", lab, design_pair(design, "helical_25_77", mis), 0.15, 0.45)
+    for case, crown, dE, unit in (
+        ("straight_bevel_39_32", settings["bevel_conv_crown_straight_per_mm"], m["straight_dE_mm"], "mm"),
+        ("spiral_bevel_17_17", settings["bevel_conv_crown_spiral"], m["spiral_dE"], "module"),
+    ):
+        flank_pairs = ("convex1", "concave1") if case.startswith("spiral") else ("convex1",)
+        for fp in flank_pairs:
+            family = f"{case.replace('_', ' ', 1).replace('_', ' ')} (crowned" + (
+                f", {fp})" if case.startswith("spiral") else ")"
+            )
+            bmis = BevelMisalignment(d_E=dE, d_gamma=m["bevel_dgamma_deg"] * DEG)
+            for mis, lab in ((None, "aligned"), (bmis, f"dgamma = {m['bevel_dgamma_deg']:g} deg, dE = {dE:g} {unit}")):
+                pair = bevel_pair(design, case, crown=crown, flank_pair=fp, misalignment=mis)
+                if case.startswith("spiral"):
+                    add(family, lab, pair, -0.4, 0.0, pitch=False)
+                else:
+                    add(family, lab, pair, -0.2, 0.2)
+    return out
