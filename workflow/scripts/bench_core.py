@@ -60,7 +60,7 @@ def study(name):
 
 
 def angles(pair, n, rng):
-    """Member-1 angles over about one angular pitch around the pitch-point position."""
+    """Member-1 angles over about one angular pitch around phi1 = -pi/(2 N1)."""
     p = 2 * np.pi / pair.n1
     return -np.pi / (2 * pair.n1) + rng.uniform(-0.4 * p, 0.4 * p, n)
 
@@ -119,8 +119,8 @@ def catt_case(rng, n):
 def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
     """Seed 003 sec. 5: the crowned spiral (17/17, Table 12) or straight (39/32, Table 11) bevel
     pair of the convergence study, aligned, from the default starts, at angles where the tooth pair
-    they start on is in contact (spiral: from half an angular pitch before the pitch-point position
-    to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
+    they start on is in contact (spiral: from half an angular pitch before phi1 = -pi/(2 N1), the
+    aligned pair's pitch-cone contact, to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
     side of it)."""
     from gearrep.replications.thesis.bevel import convergence_pair
 
@@ -136,8 +136,7 @@ def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
 
 def helical_case(rng, n, formulation):
     """Seed 003 Table 9: the profile-crowned helical pair 25/77 under the study's in-plane
-    misalignment, from the default starts, over 0.8 of an angular pitch around the pitch-point
-    position; the thesis's solver tolerance."""
+    misalignment, from the default starts, over 0.8 of an angular pitch around phi1 = -pi/(2 N1); the thesis's solver tolerance."""
     from gearrep.replications.thesis.design import design_pair
 
     s, d = study("thesis")

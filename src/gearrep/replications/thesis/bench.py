@@ -111,7 +111,7 @@ def robustness_cases(settings: dict, design: Design) -> list:
     """Pairs of the start-robustness table (:func:`gearrep.tca.start_robustness`), aligned and
     misaligned: dicts with ``family``, ``misalignment`` (label), ``pair`` and ``phi1`` (five
     angles over the part of the meshing cycle where the tooth pair is in contact, in angular
-    pitches from the pitch-point position -pi/(2 N1): -0.2 to 0.2 for spur and straight bevel,
+    pitches from phi1 = -pi/(2 N1) (the aligned bevel pairs' pitch-cone contact): -0.2 to 0.2 for spur and straight bevel,
     0.15 to 0.45 for the helical pair, whose profile-crowned contact crosses the face and is on
     it from about 0.1 on; for the spiral pair from 0.4 of a pitch before phi1 = 0 to it, where its
     contact ends about 0.09 after)."""
