@@ -83,3 +83,24 @@ def test_the_kernel_sockets_live_in_a_directory_of_their_own():
     asyncio.run(km.cleanup_resources())
     assert not Path(km.ip).parent.exists()
     assert set(Path(tempfile.gettempdir()).glob("gearrep-kernel-*")) == before
+
+
+def test_the_job_and_its_kernel_write_errors_to_the_job_log(tmp_path):
+    """A notebook job's standard error, and that of the kernel it starts (a child process: here a
+    stand-in), goes to the job's log, not to the run's terminal (ipykernel can print an error about
+    a socket closed under it at shutdown)."""
+    import subprocess
+
+    log = tmp_path / "notebook.log"
+    code = (
+        f"import subprocess, sys; sys.path.insert(0, {str(ROOT / 'workflow' / 'scripts')!r}); "
+        "import importlib.util as u; "
+        f"s = u.spec_from_file_location('nb', {str(ROOT / 'workflow' / 'scripts' / 'notebook.py')!r}); "
+        "m = u.module_from_spec(s); s.loader.exec_module(m); "
+        f"m.log_stderr({str(log)!r}); print('job says', file=sys.stderr, flush=True); "
+        "subprocess.run([sys.executable, '-c', 'import sys; sys.stderr.write(\"kernel says\\\\n\")'], check=True)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stderr == ""
+    assert log.read_text().splitlines() == ["job says", "kernel says"]

@@ -141,10 +141,20 @@ def render(smk) -> None:
     exporter.register_preprocessor(TagRemovePreprocessor(remove_cell_tags={PREAMBLE_TAG}, enabled=True), enabled=True)
     body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": Path(smk.output.html).stem}})
     Path(smk.output.html).write_text(body, encoding="utf-8")
-    Path(smk.log[0]).write_text(f"executed and rendered {smk.input.notebook}: {len(nb.cells)} cells\n")
+    with open(smk.log[0], "a", encoding="utf-8") as log:
+        log.write(f"executed and rendered {smk.input.notebook}: {len(nb.cells)} cells\n")
+
+
+def log_stderr(path) -> None:
+    """Send this process's standard error, and so its kernel's (a child inherits the descriptor),
+    to the job's log: a kernel's messages, such as ipykernel's occasional error about a socket closed
+    under it at shutdown, belong to the job's log, not to the run's terminal."""
+    with open(path, "w", encoding="utf-8") as log:
+        os.dup2(log.fileno(), sys.stderr.fileno())
 
 
 if __name__ == "__main__":  # run by Snakemake (the tests import the module)
     smk = snakemake  # noqa: F821  (provided by Snakemake)
+    log_stderr(smk.log[0])
     execute(smk)
     render(smk)
