@@ -104,6 +104,29 @@ def test_a_toy_family_added_through_the_registry_works_in_check_and_tca(toy, tmp
     assert "toy_crowned_spur" in [alt["properties"]["family"]["enum"][0] for alt in json_schema()["oneOf"]]
 
 
+def test_a_toy_family_gets_the_curvature_table_and_the_sweep_metrics_and_its_analyses_are_kept(toy, tmp_path):
+    from gearrep.cli.analysis import sweep_point
+
+    rc, _, err = run("curvature", write(tmp_path, "toy.yaml", TOY), "-o", tmp_path / "k")
+    assert rc == 0, err
+    k = pd.read_csv(tmp_path / "k" / "curvatures.csv")
+    inv = pd.read_csv(_curvatures(tmp_path, INVOLUTE))
+    pin = k["member"] == "pinion"
+    assert len(k) == len(inv) and k.loc[pin, "radius_mm"].min() < inv.loc[pin, "radius_mm"].min()  # the whole box
+    m = sweep_point(check(TOY), 41)
+    assert m["converged"] >= 40 and m["solves"] == 41 + toy.engagement_solves
+    toy.analyses = ("tca",)
+    rc, _, err = run("curvature", write(tmp_path, "toy.yaml", TOY), "-o", tmp_path / "k2")
+    assert rc == 2 and "design.family: got 'toy_crowned_spur'; allowed: for curvature, a family that supports it" in err
+    assert not (tmp_path / "k2").exists()
+
+
+def _curvatures(tmp_path, doc) -> Path:
+    rc, _, err = run("curvature", write(tmp_path, "inv.yaml", doc), "-o", tmp_path / "inv")
+    assert rc == 0, err
+    return tmp_path / "inv" / "curvatures.csv"
+
+
 def test_a_family_missing_from_the_registry_is_refused_naming_the_registered_ones(tmp_path):
     rc, _, err = run("check", write(tmp_path, "toy.yaml", TOY))
     assert rc == 2 and "design.family: got 'toy_crowned_spur'; allowed: one of" in err

@@ -198,20 +198,37 @@ class PairFamily(Family):
         extends its flanks along the face. By default ``c``."""
         return c
 
-    def contact_at(self, d: Design, phi1, face: bool = True):
-        """Contact points (:class:`gearrep.tca.ContactPoints`) at pinion angles ``phi1`` [rad], one
-        independent solve each: :func:`gearrep.tca.robust_contact` from :meth:`starts` (a line
-        contact: the fixed section :meth:`line_section`), then :meth:`on_flanks`."""
+    def robust_solve(self, d: Design, phi1, fallback: bool = True):
+        """:func:`gearrep.tca.robust_contact` at pinion angles ``phi1`` [rad] from :meth:`starts`
+        (completed by :meth:`nominal`), with the design's tolerance and iteration limit;
+        ``fallback=False``: the strategy's first step alone (projection and solve)."""
         s = d.analysis
         phi1 = np.atleast_1d(np.asarray(phi1, float))
         with np.errstate(all="ignore"):
-            if d.line_contact:
+            nominal = self.nominal(d, phi1)
+            u1, v1 = self.starts(d, phi1, nominal)
+            return robust_contact(
+                d.pair,
+                phi1,
+                u1,
+                v1,
+                formulation=self.formulation,
+                tol=s["tol"],
+                maxiter=s["maxiter"],
+                nominal=nominal,
+                fallback=fallback,
+            )
+
+    def contact_at(self, d: Design, phi1, face: bool = True):
+        """Contact points (:class:`gearrep.tca.ContactPoints`) at pinion angles ``phi1`` [rad], one
+        independent solve each: :meth:`robust_solve` (a line contact: the fixed section
+        :meth:`line_section`), then :meth:`on_flanks`."""
+        if d.line_contact:
+            s = d.analysis
+            with np.errstate(all="ignore"):
                 c = solve_contact(d.pair, phi1, v1=self.line_section(d), tol=s["tol"], maxiter=s["maxiter"])
-            else:
-                nominal = self.nominal(d, phi1)
-                u1, v1 = self.starts(d, phi1, nominal)
-                kw = dict(formulation=self.formulation, tol=s["tol"], maxiter=s["maxiter"], nominal=nominal)
-                c = robust_contact(d.pair, phi1, u1, v1, **kw)
+        else:
+            c = self.robust_solve(d, phi1)
         return self.on_flanks(d, c, face)
 
     def conjugate(self, d: Design) -> bool:
@@ -227,14 +244,7 @@ class PairFamily(Family):
             return False
         if self.conjugate(d):
             return True
-        s = d.analysis
-        phi1 = np.array([0.0])
-        with np.errstate(all="ignore"):
-            nominal = self.nominal(d, phi1)
-            u1, v1 = self.starts(d, phi1, nominal)
-            kw = dict(formulation=self.formulation, tol=s["tol"], maxiter=s["maxiter"], nominal=nominal)
-            c = robust_contact(d.pair, phi1, u1, v1, fallback=False, **kw)
-        return bool(c.status[0] == Status.SINGULAR)
+        return bool(self.robust_solve(d, [0.0], fallback=False).status[0] == Status.SINGULAR)
 
     # -- the contact check ------------------------------------------------------------------------
     def check_contact(self, d: Design) -> None:
