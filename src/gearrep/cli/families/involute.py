@@ -15,7 +15,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ... import settings as st
 from ...meshing import centre_distance_limits, contact_ratio_closed_form
@@ -90,6 +89,10 @@ def _check_pointed(v, member):
     x = v[member]["profile_shift"]
     if half_angle(x) > 0:
         return
+    # scipy.optimize is imported only here, on the way to this refusal: it takes about a third of
+    # the command's start-up (0.2-0.4 s), which `gearrep --help`, `schema` and `check` then skip
+    from scipy.optimize import brentq
+
     limit = brentq(half_angle, -1.5, x) if half_angle(-1.5) > 0 else float("nan")
     raise SettingError(
         f"design.{member}.profile_shift: got {x!r}; allowed: below {limit:.4g} for {z} teeth (a larger shift leaves "
