@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from gearrep.cli import main
-from gearrep.cli.design import DECLARATIONS
+from gearrep.cli.families import REGISTRY
 
 ROOT = Path(__file__).resolve().parents[2]
 BASES = {
@@ -43,7 +43,7 @@ def _paths(decl, prefix=()):
             yield from _paths(s.fields, prefix + (k,))
 
 
-PATHS = {fam: sorted(_paths(decl), key=lambda x: x[0]) for fam, decl in DECLARATIONS.items()}
+PATHS = {name: sorted(_paths(fam.keys), key=lambda x: x[0]) for name, fam in REGISTRY.items()}
 
 HOSTILE = st.one_of(
     st.sampled_from([float("nan"), float("inf"), float("-inf"), -1, -1e-300, 0, 10**400, 1e308, -(10**30)]),
@@ -113,7 +113,7 @@ def mutation(draw, fam):
         where = path[:-1] if s.kind != "group" else path
         v = draw(HOSTILE)
         return lambda d: _put(d, where + (name,), copy.deepcopy(v))
-    other = draw(st.sampled_from(sorted(set(DECLARATIONS) - {fam})))
+    other = draw(st.sampled_from(sorted(set(REGISTRY) - {fam})))
     return lambda d: d.__setitem__("family", other)
 
 

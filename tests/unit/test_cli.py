@@ -57,7 +57,7 @@ def test_at_least_three_example_designs_of_the_required_kinds_pass_check():
 def test_schema_file_is_generated_from_the_declarations():
     assert json.loads((EXAMPLES / "design.schema.json").read_text()) == json_schema(), "run: gearrep schema --write"
     families = [alt["properties"]["family"]["enum"][0] for alt in json_schema()["oneOf"]]
-    assert families == ["involute", "novikov", "catt", "hobbed_curvilinear"]
+    assert families == ["involute", "novikov", "catt", "hobbed_curvilinear", "bevel"]
     inv = json_schema()["oneOf"][0]
     assert {"family", "module_mm", "face_width_mm", "pinion", "gear"} <= set(inv["required"])
     assert inv["properties"]["pinion"]["required"] == ["teeth"]

@@ -237,7 +237,6 @@ def test_centre_distance_limits_are_where_the_tca_loses_the_flank_or_the_overlap
     within 1e-4 mm of the pinion's base circle (where the gear tip would leave its involute; the
     start moves by (d sqrt(a^2 - R^2) / da)^2 / (2 r_b) ~ 2e-4 mm per (0.01 mm)^2 of d_E); near
     the upper one the TCA contact ratio is 1 (no overlap left). The limits are printed to 4 digits."""
-    from gearrep.cli.analysis import involute_limits
     from gearrep.meshing import contact_ratio, engagement_limits
 
     lo, hi = _limits()
@@ -246,7 +245,7 @@ def test_centre_distance_limits_are_where_the_tca_loses_the_flank_or_the_overlap
     b, _ = engagement_limits(d.pair)
     assert b.boundary == "u2_max" and 0 < b.contact.u1[0] - r_b1 < 1e-4
     d = check(spur(**{"misalignment.d_E_mm": hi - 0.001}))
-    assert 1.0 < contact_ratio(*involute_limits(d), 23) < 1.001
+    assert 1.0 < contact_ratio(*d.family.engagement(d), 23) < 1.001
     for outside in (lo - 0.002, hi + 0.001):
         rc, _, err = run("check", write(tmp_path, "d.yaml", spur(**{"misalignment.d_E_mm": outside})))
         assert rc == 2 and "d_E_mm" in err

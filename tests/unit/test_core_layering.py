@@ -95,7 +95,7 @@ def test_import_reader_sees_relative_and_nested_imports():
     assert {"gearrep.surfaces.rack", "gearrep.curvature_relations"} <= _imports(nov)  # one is in a method
 
 
-CLI = sorted((PKG / "cli").glob("*.py"))
+CLI = sorted((PKG / "cli").rglob("*.py"))
 #: what the command still takes from the replication packages, by module: none (the Novikov-
 #: Wildhaber, CATT and hobbed families are library code); this list may only stay empty
 CLI_REPLICATION_DEBT: dict[str, set[str]] = {}

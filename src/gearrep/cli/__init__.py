@@ -17,69 +17,25 @@ and the allowed range on stderr and exits with code 2, leaving no output directo
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import json
+import subprocess
 import sys
+import textwrap
 from pathlib import Path
 
+import yaml
+
+from .. import __version__
 from ..settings import SettingError
+from . import analysis, figures, sweep
+from .design import check, json_schema, require_analysis
+from .inputs import Refusal, load_yaml
+from .output import Writer, atomic_dir, check_output, provenance, stl_text, summary_html
 
 __all__ = ["main", "load_yaml", "Refusal"]
 
 EXIT_REFUSED = 2
-
-
-class Refusal(Exception):
-    """A refused input (file, option or design): the message names it; exit code 2."""
-
-
-def load_yaml(path) -> object:
-    """The YAML document of ``path``: floats like ``1e-3`` read as numbers (YAML 1.2), repeated
-    keys refused. Raises Refusal naming the file (and line) on any problem."""
-    import re
-
-    import yaml
-
-    class Loader(yaml.SafeLoader):
-        pass
-
-    Loader.add_implicit_resolver(
-        "tag:yaml.org,2002:float",
-        re.compile(
-            r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?|[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
-            |\.[0-9_]+(?:[eE][-+]?[0-9]+)?|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$""",
-            re.X,
-        ),
-        list("-+0123456789."),
-    )
-
-    def mapping(loader, node):
-        loader.flatten_mapping(node)
-        out = {}
-        for kn, vn in node.value:
-            k = loader.construct_object(kn, deep=True)
-            if not isinstance(k, (str, int, float, bool)) and k is not None:
-                raise Refusal(f"{path}: line {kn.start_mark.line + 1}: key {k!r} is not a plain key")
-            if k in out:
-                raise Refusal(f"{path}: line {kn.start_mark.line + 1}: key {k!r} repeated; allowed: each key once")
-            out[k] = loader.construct_object(vn, deep=True)
-        return out
-
-    Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, mapping)
-    p = Path(path)
-    try:
-        text = p.read_text()
-    except (OSError, UnicodeDecodeError) as e:
-        raise Refusal(
-            f"{path}: cannot read ({e.__class__.__name__}: {e}); allowed: a readable UTF-8 YAML file"
-        ) from None
-    try:
-        return yaml.load(text, Loader=Loader)
-    except yaml.YAMLError as e:
-        mark = getattr(e, "problem_mark", None)
-        where = f" line {mark.line + 1}" if mark is not None else ""
-        raise Refusal(f"{path}:{where} not valid YAML ({getattr(e, 'problem', None) or e})") from None
-    except RecursionError:
-        raise Refusal(f"{path}: nested too deeply; allowed: a design mapping (see the schema)") from None
 
 
 class _Progress:
@@ -100,8 +56,6 @@ class _Progress:
 
 def _parquet_ok(args):
     if getattr(args, "parquet", False):
-        import importlib.util
-
         if importlib.util.find_spec("pyarrow") is None and importlib.util.find_spec("fastparquet") is None:
             raise Refusal(
                 "--parquet: pyarrow is not installed; allowed: install the extra (pip install 'gearrep[parquet]') "
@@ -109,16 +63,17 @@ def _parquet_ok(args):
             )
 
 
-def _design(path, contact=True):
-    from .design import check
-
-    return check(load_yaml(path), contact=contact)
+def _design(path, analysis_name=None, contact=True):
+    """The checked design of the file ``path`` (refused if its family does not support
+    ``analysis_name``)."""
+    d = check(load_yaml(path), contact=contact)
+    if analysis_name is not None:
+        require_analysis(d, analysis_name)
+    return d
 
 
 def _out_dir(args):
     """The output directory of ``-o``, checked before any work (:func:`gearrep.cli.output.check_output`)."""
-    from .output import check_output
-
     return check_output(args.output, overwrite=args.overwrite)
 
 
@@ -126,25 +81,20 @@ def _cmd_check(args) -> int:
     d = _design(args.design)
     v = d.values
     print(
-        f"ok: {args.design}: {v['name']!r} ({d.family}, {v['pinion']['teeth']}/{v['gear']['teeth']} teeth"
+        f"ok: {args.design}: {v['name']!r} ({d.family.name}, {v['pinion']['teeth']}/{v['gear']['teeth']} teeth"
         f"{', line contact' if d.line_contact else ''})"
     )
     return 0
 
 
 def _yaml_text(values) -> str:
-    import yaml
-
     return yaml.safe_dump(values, sort_keys=False)
 
 
 def _cmd_tca(args) -> int:
-    from . import analysis, figures
-    from .output import Writer, atomic_dir, provenance, stl_text, summary_html
-
     out = _out_dir(args)
     _parquet_ok(args)
-    d = _design(args.design)
+    d = _design(args.design, "tca")
     prog = _Progress(args.progress, "tca")
     tables = analysis.tca_tables(d, progress=prog)
     prov = provenance(d.values, "tca")
@@ -167,12 +117,9 @@ def _cmd_tca(args) -> int:
 
 
 def _cmd_curvature(args) -> int:
-    from . import analysis, figures
-    from .output import Writer, atomic_dir, provenance
-
     out = _out_dir(args)
     _parquet_ok(args)
-    d = _design(args.design, contact=False)
+    d = _design(args.design, "curvature", contact=False)
     table = analysis.curvature_table(d)
     with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, provenance(d.values, "curvature"), parquet=args.parquet)
@@ -184,8 +131,6 @@ def _cmd_curvature(args) -> int:
 
 
 def _cmd_schema(args) -> int:
-    from .design import json_schema
-
     text = json.dumps(json_schema(), indent=1) + "\n"
     if args.write:
         Path(args.write).write_text(text)
@@ -195,14 +140,10 @@ def _cmd_schema(args) -> int:
 
 
 def _cmd_sweep(args) -> int:
-    from . import sweep
-
     return sweep.run_cli(args)
 
 
 def _cmd_replicate(args) -> int:
-    import subprocess
-
     root = Path(args.directory)
     if not (root / "Snakefile").is_file() or not (root / "workflow").is_dir():
         raise Refusal(
@@ -250,8 +191,6 @@ _EXAMPLES = {
 
 
 def _wrap(text: str) -> str:
-    import textwrap
-
     return textwrap.fill(text, 90)
 
 
@@ -267,8 +206,6 @@ def _command(sub, name: str, help: str, note: str = ""):
 
 
 def _parser() -> argparse.ArgumentParser:
-    from .. import __version__
-
     p = argparse.ArgumentParser(
         prog="gearrep",
         description=_wrap(_DESCRIPTIONS[None]),

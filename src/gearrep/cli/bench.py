@@ -14,6 +14,11 @@ import tempfile
 import time
 from pathlib import Path
 
+import pandas as pd
+import yaml
+
+from . import main as gearrep_main
+
 __all__ = ["GRID", "run_bench", "main"]
 
 #: the grid of the benchmark sweep: 40 x 25 = 1000 designs of examples/crowned_spur.yaml
@@ -25,10 +30,6 @@ GRID = {
 
 def run_bench(design: Path, cores: int) -> dict:
     """Run the benchmark sweep of ``design`` on ``cores`` cores; returns its row."""
-    import yaml
-
-    from . import main as gearrep_main
-
     with tempfile.TemporaryDirectory(prefix="gearrep-bench-") as tmp:
         sweep = Path(tmp) / "sweep.yaml"
         doc = {"design": str(Path(design).resolve()), "grid": GRID, "phi1_points": 1001, "solves_per_shard": 50000}
@@ -37,8 +38,6 @@ def run_bench(design: Path, cores: int) -> dict:
         t0 = time.perf_counter()
         rc = gearrep_main(["sweep", str(sweep), "-o", str(Path(tmp) / "out"), "--cores", str(cores), "--", "--quiet"])
         seconds = time.perf_counter() - t0
-        import pandas as pd
-
         table = pd.read_csv(Path(tmp) / "out" / "sweep.csv") if rc == 0 else None
     n = 0 if table is None else len(table)
     ok = 0 if table is None else int((table["status"] == "ok").sum())
@@ -55,8 +54,6 @@ def run_bench(design: Path, cores: int) -> dict:
 
 
 def main(argv=None) -> int:
-    import pandas as pd
-
     argv = list(sys.argv[1:] if argv is None else argv)
     out = Path(argv[0]) if argv else Path("results/bench/sweep_throughput.csv")
     root = Path(__file__).resolve().parents[3]

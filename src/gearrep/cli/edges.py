@@ -2,9 +2,10 @@
 
 A Hertz contact ellipse is the footprint on unbounded surfaces; on a tooth it ends where the flank
 ends. Each edge of each member is taken as a half-space at the contact point P (the ellipse is
-small against the tooth's radii): a face edge by the plane at axial coordinate +-B/2 of that
-member (axial coordinate along its axis, from its mid-face point), a tip circle (where the gear
-data know r_a) by the plane tangent to the tip cylinder at the foot of P, normal to the radial
+small against the tooth's radii), given by its family (``Family.edge_spaces``); for members on
+parallel or crossed axes (:func:`axial_edges`) a face edge is the plane at axial coordinate +-B/2
+of that member (axial coordinate along its axis, from its mid-face point), a tip circle (where the
+gear data know r_a) the plane tangent to the tip cylinder at the foot of P, normal to the radial
 direction e_r. With unit direction u out of the flank and distance d from P to that plane, the
 ellipse (semi-axes a, b along unit m, m2) reaches the edge when sqrt(a^2 (u.m)^2 + b^2 (u.m2)^2)
 > d. The ellipse cut by all the half-spaces is a convex polygon (:data:`POLYGON_POINTS` points on
@@ -19,9 +20,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["EDGES", "POLYGON_POINTS", "EdgeCut", "cut_at_edges"]
+__all__ = ["EDGES", "POLYGON_POINTS", "EdgeCut", "axial_edges", "cut_at_edges"]
 
-#: edge names, in the order they are tested
+#: edge names, in the order the half-spaces of :func:`axial_edges` come
 EDGES = ("pinion_face", "pinion_tip", "gear_face", "gear_tip")
 #: points on the ellipse of the clipped polygon (the area is the polygon's clipped share of pi a b)
 POLYGON_POINTS = 72
@@ -37,8 +38,11 @@ class EdgeCut:
         self.edge, self.lo, self.hi, self.area, self.outline = edge, lo, hi, area, outline
 
 
-def _half_spaces(pair, face_width, P):
-    """(name, u (n, 3), d (n,)) of every edge: the flank is where u . (X - P) <= d."""
+def axial_edges(pair, face_width, P) -> list:
+    """The edges of both members of a :class:`gearrep.tca.GearPair` at the contact points ``P``
+    (n, 3) [mm]: a list of (name, u (n, 3), d (n,)), the flank being where u . (X - P) <= d (module
+    docstring): the face edges at +-``face_width`` / 2 along each axis, the tip cylinders where
+    the flanks' gear data know r_a."""
     tips = [getattr(getattr(f, "gear", None), "r_a", None) for f in (pair.flank1, pair.flank2)]
     half = 0.5 * float(face_width)
     z = np.array([0.0, 0.0, 1.0])
@@ -81,15 +85,16 @@ def _area(poly) -> float:
     return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
 
 
-def cut_at_edges(pair, face_width, position, normal, major_axis, a, b) -> EdgeCut:
-    """The contact ellipses cut at the tooth edges (module docstring): ``position`` (n, 3) [mm] and
-    ``normal`` (n, 3) of the contact points in the fixed frame, ``major_axis`` (n, 3) unit vectors,
-    ``a``, ``b`` (n,) semi-axes [mm] (NaN: no ellipse there, then NaN results and edge "")."""
+def cut_at_edges(edges, position, normal, major_axis, a, b) -> EdgeCut:
+    """The contact ellipses cut at the tooth edges (module docstring): ``edges(P)`` -> the list of
+    half-spaces (name, u, d) at the points P (e.g. :func:`axial_edges`), ``position`` (n, 3) [mm]
+    and ``normal`` (n, 3) of the contact points in the fixed frame, ``major_axis`` (n, 3) unit
+    vectors, ``a``, ``b`` (n,) semi-axes [mm] (NaN: no ellipse there, then NaN results and edge "")."""
     P = np.asarray(position, float)
     m = np.asarray(major_axis, float)
     m2 = np.cross(np.asarray(normal, float), m)
     a, b = np.asarray(a, float), np.asarray(b, float)
-    spaces = _half_spaces(pair, face_width, P)
+    spaces = edges(P)
     th = np.linspace(0.0, 2.0 * np.pi, POLYGON_POINTS, endpoint=False)
     n = len(a)
     edge = np.full(n, "", dtype=object)

@@ -1,12 +1,19 @@
 """Figures of ``gearrep tca`` and ``gearrep curvature`` (matplotlib, headless): TE over three
 meshing cycles with its mean removed, the path of contact on the pinion flank with the contact
-ellipses' major axes, and the principal curvatures over the active profiles."""
+ellipses' major axes, and the principal curvatures over the active profiles. What differs by
+family comes from the design's family (:class:`gearrep.cli.family.Family`: the radius that turns
+the TE into a length, the face edges drawn, the flank edges that cut the ellipses).
+
+matplotlib is imported inside the functions that draw: ``gearrep check``, ``schema`` and
+``--help`` then start without it (about 0.3 s of import).
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
 from ..units import ARCSEC
+from .edges import cut_at_edges
 
 __all__ = ["tca_figures", "curvature_figure", "te_scales", "NUMERICALLY_ZERO_UM", "CYCLES_SHOWN"]
 
@@ -20,13 +27,10 @@ CYCLES_SHOWN = 3
 
 def te_scales(d) -> tuple[float, float]:
     """(micro-radians of the driven gear per arcsec, micrometres along the line of action per arcsec):
-    a TE of the driven gear in angle times its base radius r_b2 = r_p2 cos(alpha_t) (the pitch
-    radius N2 m_n / (2 cos beta)) is the displacement along the line of action."""
-    v = d.values
-    beta = np.radians(v.get("helix_angle_deg", 0.0))
-    alpha_t = np.arctan(np.tan(np.radians(v["pressure_angle_deg"])) / np.cos(beta))
-    r_b2 = 0.5 * v["gear"]["teeth"] * v["module_mm"] / np.cos(beta) * np.cos(alpha_t)
-    return ARCSEC * 1e6, ARCSEC * r_b2 * 1e3
+    a TE of the driven gear in angle times the radius of its family's ``te_radius_mm`` (a
+    cylindrical gear: its base radius r_b2 = r_p2 cos(alpha_t), the pitch radius N2 m_n / (2 cos
+    beta)) is the displacement along the line of action."""
+    return ARCSEC * 1e6, ARCSEC * d.family.te_radius_mm(d) * 1e3
 
 
 def tca_figures(d, tables) -> dict:
@@ -49,12 +53,9 @@ def tca_figures(d, tables) -> dict:
     r = np.hypot(x, y)
     ax.plot(z, r, "o-", ms=3, label="path of contact")
     if "edge_contact" in p:  # the contact ellipses cut at the tooth edges (gearrep.cli.edges)
-        from .edges import cut_at_edges
-
         cols = lambda *names: np.column_stack([p[c].to_numpy() for c in names])  # noqa: E731
         cut = cut_at_edges(
-            d.pair,
-            d.values["face_width_mm"],
+            lambda P: d.family.edges(d, P),
             cols("x_mm", "y_mm", "z_mm"),
             cols("normal_x", "normal_y", "normal_z"),
             cols("ellipse_major_x", "ellipse_major_y", "ellipse_major_z"),
@@ -80,9 +81,7 @@ def tca_figures(d, tables) -> dict:
                     c="C3",
                     lw=0.8,
                 )
-    half = 0.5 * d.values["face_width_mm"]
-    ax.axvline(-half, c="0.5", lw=0.6)
-    ax.axvline(half, c="0.5", lw=0.6)
+    d.family.draw_face_edges(d, ax)
     ax.set_xlabel("axial position [mm]")
     ax.set_ylabel("radius on the pinion [mm]")
     ax.set_title(

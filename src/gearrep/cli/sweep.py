@@ -20,32 +20,38 @@ import json
 import math
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from .. import settings as _s
+from .. import settings as st
 from ..settings import SettingError
-from .output import exact as _exact
+from .analysis import sweep_point
+from .design import canonical_hash, check, require_analysis, resolve, set_dotted
+from .families import family_of
+from .inputs import Refusal, load_yaml
+from .keys import lookup
+from .output import exact, provenance
 
 __all__ = ["SWEEP", "SNAKEFILE", "resolve_sweep", "points", "run_shard", "aggregate", "run_cli"]
 
 SNAKEFILE = Path(__file__).with_name("sweep.smk")
 
-SWEEP = _s.declare(
-    design=_s.text(None, "the base design file (a path relative to the sweep file)"),
-    phi1_points=_s.integer(
+SWEEP = st.declare(
+    design=st.text(None, "the base design file (a path relative to the sweep file)"),
+    phi1_points=st.integer(
         401, "1", "contact solves per grid point over one tooth pair's engagement window", ge=11, le=100001
     ),
-    solves_per_shard=_s.integer(
+    solves_per_shard=st.integer(
         100000, "1", "contact solves per shard (job); about 1e5 keeps the per-job start-up cost small", ge=1, le=10**9
     ),
-    resources=_s.group(
+    resources=st.group(
         "resources each shard job asks for (Snakemake threads, mem_mb, runtime)",
-        threads=_s.integer(1, "1", "threads per shard (the solves run in one process)", ge=1, le=256),
-        mem_mb=_s.integer(1000, "MB", "memory per shard", ge=100, le=10**7),
-        runtime_min=_s.integer(60, "min", "wall-time limit per shard", ge=1, le=10**5),
+        threads=st.integer(1, "1", "threads per shard (the solves run in one process)", ge=1, le=256),
+        mem_mb=st.integer(1000, "MB", "memory per shard", ge=100, le=10**7),
+        runtime_min=st.integer(60, "min", "wall-time limit per shard", ge=1, le=10**5),
     ),
 )
 
@@ -59,10 +65,10 @@ def _axis_values(key, spec):
             raise SettingError(
                 f"sweep.grid.{key}: got {spec!r}; allowed: a list of values or a mapping with keys start, stop, num"
             )
-        lin = _s.number(None, "", "", ge=-1e9, le=1e9)
-        a = _s._coerce(lin, spec["start"], f"sweep.grid.{key}.start")
-        b = _s._coerce(lin, spec["stop"], f"sweep.grid.{key}.stop")
-        n = _s._coerce(_s.integer(None, "1", "", ge=1, le=100000), spec["num"], f"sweep.grid.{key}.num")
+        lin = st.number(None, "", "", ge=-1e9, le=1e9)
+        axis = st.declare(start=lin, stop=lin, num=st.integer(None, "1", "", ge=1, le=100000))
+        r = st.resolve(axis, spec, where=f"sweep.grid.{key}")
+        a, b, n = r["start"], r["stop"], r["num"]
         return [float(x) for x in np.linspace(a, b, n)]
     if not isinstance(spec, list) or not 1 <= len(spec) <= 100000:
         raise SettingError(
@@ -76,25 +82,24 @@ def resolve_sweep(raw, base_design) -> dict:
     in that key's range) and the grid size. ``base_design``: the base design mapping. Returns the
     resolved sweep with ``axes`` (list of (key, values)), ``base`` (the resolved base design),
     ``n_points``, ``points_per_shard`` and ``n_shards``."""
-    from .design import DECLARATIONS, _lookup, resolve, set_dotted
-
     if not isinstance(raw, dict):
         raise SettingError(f"sweep: got {raw!r}; allowed: a mapping with keys {sorted(SWEEP) + ['grid']}")
     grid = raw.get("grid")
     if not isinstance(grid, dict) or not grid:
         raise SettingError(f"sweep.grid: got {grid!r}; allowed: a mapping of dotted design keys to lists of values")
     rest = {k: v for k, v in raw.items() if k != "grid"}
-    out = _s.resolve(SWEEP, rest, where="sweep")
+    out = st.resolve(SWEEP, rest, where="sweep")
     if out["design"] is None:
         raise SettingError("sweep.design: missing; allowed: the path of the base design file")
     base = resolve(base_design)
-    decl = DECLARATIONS[base["family"]]
+    family = family_of(base["family"])
+    decl = family.keys
     axes = []
     for key, spec in grid.items():
         if not isinstance(key, str):
             raise SettingError(f"sweep.grid: key {key!r}; allowed: dotted design keys")
         try:
-            leaf = _lookup(decl, key)
+            leaf = lookup(decl, key)
         except (KeyError, AttributeError, TypeError):
             leaf = None
         if leaf is None or leaf.kind == "group" or key == "family":
@@ -112,9 +117,7 @@ def resolve_sweep(raw, base_design) -> dict:
     n = math.prod(len(v) for _, v in axes)
     if n > _MAX_POINTS:
         raise SettingError(f"sweep.grid: {n} points; allowed: at most {_MAX_POINTS}")
-    from .analysis import solves_per_point
-
-    pps = max(1, math.ceil(out["solves_per_shard"] / solves_per_point(base["family"], out["phi1_points"])))
+    pps = max(1, math.ceil(out["solves_per_shard"] / family.solves_per_point(out["phi1_points"])))
     out.update(
         grid={k: v for k, v in axes},
         axes=[[k, v] for k, v in axes],
@@ -134,9 +137,6 @@ def points(spec: dict):
 
 
 def _point_row(spec, i, assign) -> dict:
-    from .analysis import sweep_point
-    from .design import check, set_dotted
-
     values = spec["base"]
     for k, v in assign.items():
         values = set_dotted(values, k, v)
@@ -166,9 +166,6 @@ def _frame(spec, rows) -> pd.DataFrame:
 
 
 def _sidecar(path: Path, spec: dict, extra: dict):
-    from .design import canonical_hash
-    from .output import provenance
-
     prov = provenance(
         spec["base"],
         "sweep",
@@ -184,15 +181,13 @@ def _sidecar(path: Path, spec: dict, extra: dict):
 def run_shard(spec_path, shard: int, out_path, log_path=None):
     """Compute shard ``shard`` of the sweep in ``spec_path`` and write its CSV (+ sidecar); the log
     (optional) gets one line per point and the shard's wall time."""
-    import time
-
     t0 = time.perf_counter()
     spec = json.loads(Path(spec_path).read_text())
     lo = shard * spec["points_per_shard"]
     hi = min(spec["n_points"], lo + spec["points_per_shard"])
     rows = [_point_row(spec, i, a) for i, a in itertools.islice(points(spec), lo, hi)]
     out = Path(out_path)
-    _frame(spec, rows).to_csv(out, index=False, float_format=_exact)
+    _frame(spec, rows).to_csv(out, index=False, float_format=exact)
     _sidecar(out, spec, {"shard": shard, "points": [lo, hi]})
     if log_path is not None:
         lines = [f"point {r['point']}: {r['status']} {r['message']}".rstrip() for r in rows]
@@ -206,14 +201,12 @@ def aggregate(spec_path, shard_paths, out_path):
     df = pd.concat([pd.read_csv(p, keep_default_na=False, na_values=[""]) for p in shard_paths], ignore_index=True)
     df = df.sort_values("point", kind="stable")
     out = Path(out_path)
-    df[list(_frame(spec, []).columns)].to_csv(out, index=False, float_format=_exact)
+    df[list(_frame(spec, []).columns)].to_csv(out, index=False, float_format=exact)
     _sidecar(out, spec, {"shards": len(list(shard_paths))})
 
 
 def run_cli(args) -> int:
     """``gearrep sweep``: check, write DIR/sweep.json, run Snakemake in DIR."""
-    from . import Refusal, load_yaml
-
     sweep_file = Path(args.sweep)
     raw = load_yaml(sweep_file)
     if not isinstance(raw, dict) or not isinstance(raw.get("design"), str):
@@ -223,9 +216,7 @@ def run_cli(args) -> int:
         )
     design_path = (sweep_file.parent / raw["design"]).resolve()
     spec = resolve_sweep(raw, load_yaml(design_path))
-    from .design import check
-
-    check(spec["base"])  # the base design itself must be analysable
+    require_analysis(check(spec["base"]), "sweep")  # the base design itself must be analysable
     spec["design"] = str(design_path)
     out = Path(args.output).resolve()
     spec_path = out / "sweep.json"

@@ -1,19 +1,20 @@
-"""The ``hobbed_curvilinear`` family of the ``gearrep`` command: curvilinear-tooth cylindrical gears
-cut by a ZA worm hob (seed 000), analysed by the library's TCA of two-parameter envelopes.
+"""The ``hobbed_curvilinear`` family: curvilinear-tooth cylindrical gears cut by a ZA worm hob
+(seed 000), analysed by the library's TCA of two-parameter envelopes.
 
 This module is an adapter, not a second TCA, and uses only the library (:mod:`gearrep.hobbed`,
 the replication seed 000 ch. 5 being another user of it): the pair is built by
 :func:`gearrep.hobbed.make_pair`, the contact at phi1 = 0 by :func:`gearrep.hobbed.continue_to`
 (continuation from the ideal pair, then the physical contact among the tangencies found across
-the face), paths by :func:`gearrep.tca_envelope.trace_path` and
-:func:`gearrep.hobbed.physical_contact`, the engagement limits by
-:func:`gearrep.hobbed.tip_crossing` (where the contact reaches each tip circle, r_p + m), the
-contact ellipses by :func:`gearrep.hobbed.elastic_ellipses` (curvature method, eq 5.14-5.17) and
-the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at phi1 = 0). What is added
-here is the mapping of those results onto the command's tables, the check that the contact at
-phi1 = 0 lies on both flanks, and the parameter grid over a flank (hob parameter l from the tip
-circle to the hob's working depth, swivel psi between the face edges) for the curvature table
-and the point clouds.
+the face), paths by :func:`gearrep.tca_envelope.trace_path` from it (the rows it misses are
+solved again by the robust start strategy :func:`gearrep.tca_envelope.robust_points` from the
+first-order predictor off the contact at phi1 = 0) and :func:`gearrep.hobbed.physical_contact`,
+the engagement limits by :func:`gearrep.hobbed.tip_crossing` (where the contact reaches each tip
+circle, r_p + m), the contact ellipses by :func:`gearrep.hobbed.elastic_ellipses` (curvature
+method, eq 5.14-5.17) and the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at
+phi1 = 0). What is added here is the design keys and their checks, the mapping of those results
+onto the command's tables, the check that the contact at phi1 = 0 lies on both flanks, and the
+parameter grid over a flank (hob parameter l from the tip circle to the hob's working depth,
+swivel psi between the face edges) for the curvature table and the point clouds.
 
 Frames: contact points in the fixed frame S_f of eq 5.1-5.4 (pinion axis along z for an aligned
 pinion); flank grids and curvatures in each member's tooth frame (tooth centred on X, Z = axis).
@@ -22,30 +23,176 @@ pinion); flank grids and curvatures in each member's tooth frame (tooth centred 
 from __future__ import annotations
 
 import math
+from dataclasses import fields
 
 import numpy as np
 import pandas as pd
 
-from ..settings import SettingError
-from ..solve import Status
-from ..units import ARCSEC
+from ... import settings as st
+from ...curvature import PrincipalCurvatures, with_opposite_normal
+from ...hobbed import (
+    Assembly,
+    continue_to,
+    elastic_ellipses,
+    ke_table,
+    make_pair,
+    phi1_grid,
+    physical_contact,
+    tip_crossing,
+)
+from ...meshing import contact_ratio
+from ...settings import SettingError
+from ...solve import Status
+from ...surfaces.hob import PairDesign, za_hob
+from ...tca_envelope import hob_pitch_l, pinion_outward, predict, robust_points, trace_path, turn_gap
+from ...units import ARCSEC
+from ..family import Design, Family
+from ..keys import ANALYSIS, set_dotted
+from ..tables import cloud, curvature_frame, cycle_summary, te_envelope
+from .involute import undercut_teeth
 
 __all__ = [
+    "KEYS",
     "PARAMS",
     "N_STARTS",
+    "assembly",
     "window_points",
     "path_solves",
     "start",
-    "check_contact",
+    "margin",
     "check_ke_grid",
     "tca",
     "flank_params",
-    "curvature_table",
-    "flank_cloud",
+    "HobbedCurvilinearFamily",
+    "FAMILY",
 ]
+
+_MISALIGNMENT = st.group(
+    "assembly errors of seed 000 sec 5.2 (eq 5.1-5.3): the pinion axis turned about the mid-face point of its "
+    "axis, the gear moved; the library (tseng_tca Assembly) takes at most 0.01 rad and 2 mm",
+    dgamma_h_deg=st.number(
+        0.0,
+        "deg",
+        "horizontal misalignment: pinion axis turned about the centre-distance line (axes cross)",
+        ge=-0.5,
+        le=0.5,
+    ),
+    dgamma_v_deg=st.number(
+        0.0,
+        "deg",
+        "vertical misalignment: pinion axis turned in the plane of the axes (axes intersect)",
+        ge=-0.5,
+        le=0.5,
+    ),
+    dC_mm=st.number(0.0, "mm", "centre-distance change", ge=-2, le=2),
+    dZ_mm=st.number(0.0, "mm", "axial displacement of the gear", ge=-2, le=2),
+)
+
+_ANALYSIS = st.group(
+    "numerical settings of the analyses (hashed as the settings in every provenance sidecar)",
+    n_points=ANALYSIS.fields["n_points"],
+    elastic_approach_mm=ANALYSIS.fields["elastic_approach_mm"],
+    tol=st.number(
+        1e-11,
+        "mm",
+        "residual of the 9-equation TCA system of every contact solve (seed 000 replication: 1e-11)",
+        ge=1e-13,
+        le=1e-6,
+    ),
+    continuation_steps=st.integer(
+        4,
+        "1",
+        "warm-started solves from the ideal pair (R_cg >= R_cp + 3 mm, aligned) to the design "
+        "(seed 000 replication: 4; one step fails for its almost-line-contact Example 5.2)",
+        ge=1,
+        le=100,
+    ),
+    ke_table=st.group(
+        "pinion angles of the kinematic-error table (KE zero at phi1 = 0; seed 000 Tables 5.2-5.9: -10 to 10 deg "
+        "in 2-deg steps); the grid must hit 0",
+        start_deg=st.number(-10.0, "deg", "first pinion angle", ge=-60, le=0),
+        end_deg=st.number(10.0, "deg", "last pinion angle", ge=0, le=60),
+        step_deg=st.number(2.0, "deg", "step of the pinion angle", gt=0, le=60),
+    ),
+    curvature_grid=ANALYSIS.fields["curvature_grid"],
+    flank_grid=ANALYSIS.fields["flank_grid"],
+)
+
+
+def _member_keys(reason):
+    return st.group(
+        reason,
+        teeth=st.integer(None, "1", "number of teeth", ge=4, le=10000),
+        cutter_radius_mm=st.number(
+            None, "mm", "nominal radius R_c of the circular-arc tooth trace (the hob's swivel radius)", ge=20, le=1e6
+        ),
+    )
+
+
+KEYS = st.declare(
+    family=st.choice("hobbed_curvilinear", ("hobbed_curvilinear",), "surface family of both members"),
+    name=st.text("unnamed design", "a name for the reports"),
+    module_mm=st.number(None, "mm", "normal module of the ZA hob (and of both members)", gt=0, le=100),
+    face_width_mm=st.number(None, "mm", "face width of both members", gt=0, le=1000),
+    pressure_angle_deg=st.number(20.0, "deg", "normal pressure angle of the hob", ge=10, le=35),
+    hob_pitch_radius_mm=st.number(
+        None, "mm", "pitch radius r_h of the single-start ZA hob (seed 000 Table 5.1: 30 mm)", gt=0, le=1000
+    ),
+    hob_profile=st.choice(
+        "axial",
+        ("axial", "printed"),
+        "axial: straight thread profile in the axial section (a true ZA hob; reproduces seed 000 Tables 4.3/4.4); "
+        "printed: seed 000 eq 4.40 as printed (profile in the normal section)",
+    ),
+    pinion=_member_keys("the driving member (member 1): convex flank, tooth trace arc centred on the far side"),
+    gear=_member_keys("the driven member (member 2): concave flank"),
+    misalignment=_MISALIGNMENT,
+    analysis=_ANALYSIS,
+)
 
 #: names (with units) of the two flank parameters: the hob profile parameter l and the swivel psi
 PARAMS = ("hob_l_mm", "swivel_psi_rad")
+
+
+def assembly(values) -> Assembly:
+    """The library's assembly errors of the resolved design ``values``."""
+    m = values["misalignment"]
+    return Assembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])
+
+
+def build(values) -> Design:
+    """The pair of the resolved design ``values`` (hob, cutter radii and KE grid checked; the
+    contact at phi1 = 0 is the contact check's)."""
+    v = values
+    m, B, a_deg = v["module_mm"], v["face_width_mm"], v["pressure_angle_deg"]
+    r_h = v["hob_pitch_radius_mm"]
+    least = max(0.5 * m, 0.25 * math.pi * m / math.tan(math.radians(a_deg)))
+    if not r_h > least:
+        raise SettingError(
+            f"design.hob_pitch_radius_mm: got {r_h!r}; allowed: above {least:.6g} mm for module {m:g} mm and "
+            f"{a_deg:g} deg (the radius of the thread-groove apex, r_h - (pi m / 4) / tan(alpha_n), must be positive)"
+        )
+    for member in ("pinion", "gear"):
+        z = v[member]["teeth"]
+        # the middle section (psi = 0) is cut by the hob's straight axial profile, a rack of addendum 1 module
+        undercut_teeth(member, z, m, a_deg, B, 1.0, ", cut by the hob's straight axial profile")
+        R = v[member]["cutter_radius_mm"]
+        if not R > 0.5 * B:
+            raise SettingError(
+                f"design.{member}.cutter_radius_mm: got {R!r}; allowed: above half the face width ({0.5 * B:g} mm), "
+                "so that the arc tooth trace spans the face"
+            )
+    R_p, R_g = v["pinion"]["cutter_radius_mm"], v["gear"]["cutter_radius_mm"]
+    if not R_g >= R_p:
+        raise SettingError(
+            f"design.gear.cutter_radius_mm: got {R_g!r}; allowed: >= pinion.cutter_radius_mm = {R_p!r} (the concave "
+            "gear trace must be as flat as the convex pinion trace or flatter, else the flanks meet at the face edges)"
+        )
+    check_ke_grid(v)
+    hob = za_hob(m, a_deg, r_h, v["hob_profile"])
+    gears = PairDesign(v["pinion"]["teeth"], v["gear"]["teeth"], float(B), hob)
+    pair = make_pair(gears, R_p, R_g, assembly(v))
+    return Design(v, FAMILY, pair, mesh=gears)
 
 
 def _half_window(n_teeth: int) -> float:
@@ -54,18 +201,16 @@ def _half_window(n_teeth: int) -> float:
     return min(2.0 * 2.0 * np.pi / n_teeth, np.radians(60.0))
 
 
-def start(values, gears, assembly, tol, steps):
-    """(pair, physical contact at phi1 = 0) of ``gears`` (PairDesign) under ``assembly``, or
-    (None, reason) when the continuation from the ideal pair fails."""
-    from ..hobbed import continue_to
-
+def start(values, gears, asm, tol, steps):
+    """(pair, physical contact at phi1 = 0) of ``gears`` (PairDesign) under the assembly errors
+    ``asm``, or (None, reason) when the continuation from the ideal pair fails."""
     try:
         with np.errstate(all="ignore"):
             return continue_to(
                 gears,
                 values["pinion"]["cutter_radius_mm"],
                 values["gear"]["cutter_radius_mm"],
-                assembly,
+                asm,
                 steps=steps,
                 tol=tol,
             )
@@ -89,13 +234,11 @@ def margin(values, pair, sol) -> float:
     )
 
 
-def check_contact(d) -> None:
+def _check_contact(d) -> None:
     """Solve the contact at phi1 = 0 of the checked design ``d`` (sets ``d.pair`` and ``d.start``);
     refuse (SettingError naming the key) when it is not found or lies off the flanks."""
-    from .design import _hob_assembly
-
     v, s = d.values, d.analysis
-    pair, sol = start(v, d.mesh, _hob_assembly(v), s["tol"], s["continuation_steps"])
+    pair, sol = start(v, d.mesh, assembly(v), s["tol"], s["continuation_steps"])
     ok = pair is not None and bool(sol.converged[0])
     if ok and margin(v, pair, sol) >= 0:
         d.pair, d.start = pair, sol
@@ -128,13 +271,11 @@ def _limit(d, name, x, pair, sol) -> float:
     in the margin between the aligned pair and ``sol`` (the contact moves about linearly with the
     misalignment), or by bisection (4 halvings) where the contact under ``x`` was not found or the
     linear estimate is not inside (0, |x|)."""
-    from .design import _hob_assembly, set_dotted
-
     v, s = d.values, d.analysis
 
     def contact(t):
         vv = set_dotted(v, f"misalignment.{name}", t * x)
-        return start(vv, d.mesh, _hob_assembly(vv), s["tol"], s["continuation_steps"])
+        return start(vv, d.mesh, assembly(vv), s["tol"], s["continuation_steps"])
 
     p0, s0 = contact(0.0)
     if p0 is None or not s0.converged[0]:
@@ -155,8 +296,6 @@ def _limit(d, name, x, pair, sol) -> float:
 
 def _ke_grid(s) -> np.ndarray:
     """Pinion angles [rad] of the KE table (:func:`gearrep.hobbed.phi1_grid`)."""
-    from ..hobbed import phi1_grid
-
     g = s["ke_table"]
     return phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
 
@@ -173,19 +312,37 @@ def check_ke_grid(values) -> None:
 
 
 def _path(pair, s0, phi1, tol):
-    """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
-    from ..hobbed import physical_contact
-    from ..tca_envelope import trace_path
-
+    """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``
+    (:func:`gearrep.tca_envelope.trace_path`); the rows it does not converge are solved again by
+    :func:`gearrep.tca_envelope.robust_points` from the first-order predictor off ``s0``."""
     with np.errstate(all="ignore"):
-        return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), tol=tol)
+        sol = trace_path(pair, s0, phi1, tol=tol)
+        bad = np.flatnonzero(~sol.converged)
+        if len(bad):
+
+            def nominal(ph):
+                return predict(pair, np.repeat(s0.x, len(ph), 0), np.repeat(s0.phi1, len(ph)), ph)
+
+            x0 = nominal(phi1[bad])
+            _take_rows(sol, bad, robust_points(pair, phi1[bad], x0[:, 0], x0[:, 3], nominal, tol=tol))
+        return physical_contact(pair, sol, tol=tol)
+
+
+def _take_rows(sol, rows, new) -> None:
+    """``sol`` (a ContactPath) with its rows ``rows`` replaced, in place, by the converged rows of
+    ``new`` (one row per entry of ``rows``)."""
+    ok = new.converged
+    at = rows[ok]
+    for record, other in ((sol, new), (sol.solve, new.solve)):
+        for f in fields(record):
+            a, b = getattr(record, f.name), getattr(other, f.name)
+            if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
+                a[at] = b[ok]
 
 
 def _engagement(pair, s0, tol):
     """(phi1_B, phi1_E) [rad]: where the contact reaches the pinion tip and the gear tip (the tip
     crossing nearest phi1 = 0 on the traced window)."""
-    from ..hobbed import tip_crossing
-
     w = _half_window(pair.pinion.n_teeth)
     n = window_points(pair.pinion.n_teeth)
     grid = np.linspace(-w, w, n)
@@ -239,11 +396,6 @@ def path_solves(n_teeth: int, n_phi: int) -> int:
 def tca(d, progress=None, n_points=None, with_ke=True):
     """(contact_path, te_cycle, summary dict, {"ke_table": ...}) of a checked hobbed design
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
-    from .. import meshing
-    from ..hobbed import elastic_ellipses, ke_table
-    from ..tca_envelope import pinion_outward, turn_gap
-    from .analysis import cycle_summary, te_envelope
-
     s, pair, s0 = d.analysis, d.pair, d.start
     tol, n = s["tol"], int(s["n_points"] if n_points is None else n_points)
     b, e = _engagement(pair, s0, tol)
@@ -308,7 +460,7 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     )
     te = pd.DataFrame({"phi1_rad": at, "te_arcsec": env / ARCSEC, "tooth_pair": lead})
     summary = {
-        "contact_ratio": float(meshing.contact_ratio(b, e, pair.pinion.n_teeth)),
+        "contact_ratio": float(contact_ratio(b, e, pair.pinion.n_teeth)),
         "contact_ratio_method": method,
         **cycle_summary(b, e, env, drive),
         "te_zero": "KE of seed 000 eq 5.12, zero at phi1 = 0",
@@ -332,8 +484,6 @@ def _outward_sign(g) -> float:
     pitch line of the mid-face section (the hob normal keeps its side of the flank; the polar-angle
     test of :meth:`GeneratedGear.outward` fails near the tip at the face edges, where the arc trace
     carries the tooth's centre line away from X)."""
-    from ..tca_envelope import hob_pitch_l
-
     pt, n, _ = g.points(hob_pitch_l(g.hob), 0.0)
     return float(np.sign(np.sum(g.outward(pt, n) * n)))
 
@@ -372,8 +522,6 @@ def flank_params(d, member: int, n_u: int, n_v: int):
     flank: l from the tip circle r_p + m down to the lowest contact radius (the reach of the mating
     tip, :func:`_lowest_contact_radius`), both at mid-face; psi at each l from the face edge
     Z = -B/2 to Z = +B/2. Where a radius is not found, l at the hob pitch line -+ m / cos alpha_n."""
-    from ..tca_envelope import hob_pitch_l
-
     g = _member(d, member)
     m, half = d.values["module_mm"], 0.5 * d.values["face_width_mm"]
     lp = hob_pitch_l(g.hob)
@@ -391,13 +539,10 @@ def flank_params(d, member: int, n_u: int, n_v: int):
     return np.repeat(ls, int(n_v)), psi.ravel()
 
 
-def curvature_table(d) -> pd.DataFrame:
+def _curvature_table(d) -> pd.DataFrame:
     """Principal curvatures [1/mm] and directions of both flanks on the curvature grid (the
     two-parameter-envelope relations, :func:`gearrep.curvature_relations.generated_curvatures`),
     each in its tooth frame, positive where the flank bends toward its outward normal."""
-    from ..curvature import PrincipalCurvatures, with_opposite_normal
-    from .analysis import curvature_frame
-
     n_u, n_v = d.analysis["curvature_grid"][:2]
     rows = []
     for member, name in ((1, "pinion"), (2, "gear")):
@@ -416,11 +561,9 @@ def curvature_table(d) -> pd.DataFrame:
     return pd.concat(rows, ignore_index=True)
 
 
-def flank_cloud(d, member: int):
+def _flank_cloud(d, member: int):
     """Point cloud of member ``member``'s working flank in its tooth frame: (points (n_u, n_v, 3),
     outward unit normals, table); NaN where the envelope solve did not converge."""
-    from .analysis import cloud
-
     n_u, n_v = d.analysis["flank_grid"][:2]
     g = _member(d, member)
     l, psi = flank_params(d, member, n_u, n_v)
@@ -428,3 +571,54 @@ def flank_cloud(d, member: int):
         pts, nrm, rec = g.points(l, psi)
         nrm = _outward_sign(g) * nrm
     return cloud(PARAMS, l, psi, pts, nrm, np.asarray(rec.converged, bool), n_u, n_v)
+
+
+def sweep_point(d, n_phi: int) -> dict:
+    """The metrics of one sweep point: those of :func:`tca` with ``n_phi`` path points (no KE table)."""
+    path, _, summary, _ = tca(d, n_points=n_phi, with_ke=False)
+    ok = path["status"] == "converged"
+    a = path["ellipse_semi_major_mm"]
+    return {
+        "contact_ratio": summary["contact_ratio"],
+        "te_peak_to_peak_arcsec": summary["te_peak_to_peak_arcsec"],
+        "max_ellipse_semi_major_mm": float(a.max()) if a.notna().any() else float("nan"),
+        "solves": summary["solves"],
+        "converged": int(ok.sum()),
+        "max_residual_mm": float(path.loc[ok, "residual"].max()) if ok.any() else float("nan"),
+    }
+
+
+class HobbedCurvilinearFamily(Family):
+    """Hob-cut curvilinear-tooth pairs (module docstring)."""
+
+    name = "hobbed_curvilinear"
+    keys = KEYS
+    param_names = PARAMS
+
+    def build(self, values: dict) -> Design:
+        return build(values)
+
+    def check_contact(self, d: Design) -> None:
+        """Solve the contact at phi1 = 0 (sets ``d.pair`` and ``d.start``); refuse (SettingError
+        naming the key) when it is not found or lies off the flanks."""
+        _check_contact(d)
+
+    def tca(self, d: Design, progress=None) -> tuple:
+        return tca(d, progress)
+
+    def sweep_point(self, d: Design, n_phi: int) -> dict:
+        return sweep_point(d, n_phi)
+
+    def solves_per_point(self, n_phi: int) -> int:
+        """An upper bound: the largest window (60 deg each side, 4 teeth or fewer) and the path
+        (:func:`path_solves`)."""
+        return path_solves(4, n_phi)
+
+    def curvature_table(self, d: Design) -> pd.DataFrame:
+        return _curvature_table(d)
+
+    def flank_cloud(self, d: Design, member: int) -> tuple:
+        return _flank_cloud(d, member)
+
+
+FAMILY = HobbedCurvilinearFamily()

@@ -1,0 +1,156 @@
+"""Design keys shared by the families of the ``gearrep`` command, and dotted-key helpers.
+
+Each family declares its own keys in its module (:mod:`gearrep.cli.families`); what several of
+them share is declared once here: the head of every design file (:func:`head`), the numerical
+settings of the analyses (:data:`ANALYSIS`), the assembly errors of a pair on crossed or parallel
+axes (:data:`MISALIGNMENT`, with :func:`misalignment` building the library's
+:class:`gearrep.tca.Misalignment`), and the lengthwise crowning and profile relief of a member
+(:data:`CROWNING`, :data:`RELIEF`, :func:`crowning`). Lengths are in mm and angles in degrees in
+the file; the library takes radians.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+
+from .. import settings as st
+from ..surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning
+from ..tca import Misalignment
+
+__all__ = [
+    "head",
+    "grid",
+    "ANALYSIS",
+    "MISALIGNMENT",
+    "CROWNING",
+    "RELIEF",
+    "misalignment",
+    "crowning",
+    "lookup",
+    "required",
+    "set_dotted",
+    "short",
+]
+
+MISALIGNMENT = st.group(
+    "assembly errors of the gear (member 2), pivoting about the mid-face point of its axis",
+    d_gamma_in_deg=st.number(0.0, "deg", "rotation in the plane of the axes (axes intersect)", ge=-5, le=5),
+    d_gamma_out_deg=st.number(0.0, "deg", "rotation about the centre line (axes cross)", ge=-5, le=5),
+    d_E_mm=st.number(0.0, "mm", "centre-distance change", ge=-100, le=100),
+    d_H_mm=st.number(0.0, "mm", "offset perpendicular to the centre line and the axis", ge=-100, le=100),
+    d_Z_mm=st.number(0.0, "mm", "axial displacement of the gear", ge=-100, le=100),
+)
+
+
+def grid(value, reason, most):
+    """A (profile, face) grid size: two integers in [2, ``most``]."""
+    return st.array(value, "1", reason, st.integer(None, "1", "", ge=2, le=most), min_items=2, max_items=2)
+
+
+ANALYSIS = st.group(
+    "numerical settings of the analyses (hashed as the settings in every provenance sidecar)",
+    n_points=st.integer(41, "1", "contact positions on the path and on the meshing cycle", ge=5, le=2001),
+    elastic_approach_mm=st.number(
+        0.00632, "mm", "elastic approach of the contact ellipses (thesis/NASA use 6.32e-3 mm)", gt=0, le=1
+    ),
+    tol=st.number(
+        1e-10,
+        "mm",
+        "Newton residual of every contact solve, the meshing cycle's included: far below surface finish and the"
+        " elastic approach; on the README pair TE moves by 3e-9 relative between 1e-10 and 1e-12",
+        ge=1e-14,
+        le=1e-4,
+    ),
+    maxiter=st.integer(50, "1", "Newton iterations per contact solve", ge=1, le=1000),
+    curvature_grid=grid([9, 7], "grid (profile x face) of the curvature table", 201),
+    flank_grid=grid([25, 25], "grid (profile x face) of the flank point clouds and STL", 501),
+)
+
+CROWNING = st.group(
+    "longitudinal crowning of the member (material removed toward the face edges)",
+    kind=st.choice("none", ("none", "parabolic", "circular", "logarithmic"), "crowning form (thesis eq 10-12)"),
+    crown_mm=st.number(0.0, "mm", "material removed at the face edges", ge=0, le=10),
+    log_shape=st.number(0.9, "1", "logarithmic crowning shape a2 (a1 follows from crown_mm)", ge=0.01, lt=1),
+)
+
+RELIEF = st.group(
+    "profile relief (parabolic, thesis eq 13)",
+    amount_mm=st.number(0.0, "mm", "material removed at the tip (tip relief) or form circle (root relief)", ge=0, le=5),
+    length_mm=st.number(0.5, "mm", "radial length of the relief", gt=0, le=100),
+)
+
+
+def head(family: str, module_reason: str, face_most: float = 5000) -> dict:
+    """The keys every family starts with: family, name, module_mm, face_width_mm."""
+    return dict(
+        family=st.choice(family, (family,), "surface family of both members"),
+        name=st.text("unnamed design", "a name for the reports"),
+        module_mm=st.number(None, "mm", module_reason, gt=0, le=100),
+        face_width_mm=st.number(None, "mm", "face width of both members", gt=0, le=face_most),
+    )
+
+
+def misalignment(values) -> Misalignment:
+    """The library's misalignment of the resolved ``values['misalignment']`` (:data:`MISALIGNMENT`)."""
+    m = values["misalignment"]
+    return Misalignment(
+        d_gamma_in=math.radians(m["d_gamma_in_deg"]),
+        d_gamma_out=math.radians(m["d_gamma_out_deg"]),
+        d_E=m["d_E_mm"],
+        d_H=m["d_H_mm"],
+        d_Z=m["d_Z_mm"],
+    )
+
+
+def crowning(c, face_width: float, v0: float = 0.0):
+    """The library's crowning of a resolved :data:`CROWNING` block ``c`` on a face ``face_width``
+    [mm] wide whose middle is at face coordinate ``v0`` [mm]; None for no crown."""
+    if c["kind"] == "none" or c["crown_mm"] == 0.0:
+        return None
+    h = 0.5 * face_width
+    if c["kind"] == "parabolic":
+        return ParabolicCrowning(c["crown_mm"] / h**2, v0=v0)
+    if c["kind"] == "circular":
+        return CircularCrowning(c["crown_mm"], face_width, v0=v0)
+    return LogarithmicCrowning(c["crown_mm"] / math.log(1.0 / (1.0 - c["log_shape"])), c["log_shape"], h, v0=v0)
+
+
+def lookup(decl, dotted: str):
+    """The declared setting of the dotted key ``dotted`` (KeyError, AttributeError or TypeError
+    where no key of that name is declared)."""
+    parts = dotted.split(".")
+    s = decl[parts[0]]
+    for p in parts[1:]:
+        s = s.fields[p]
+    return s
+
+
+def required(decl, prefix: str = "") -> list[str]:
+    """The dotted keys of ``decl`` without a default (value None): a design must give them."""
+    out = []
+    for k, s in decl.items():
+        if s.kind == "group":
+            out += required(s.fields, f"{prefix}{k}.")
+        elif s.value is None:
+            out.append(f"{prefix}{k}")
+    return out
+
+
+def set_dotted(d: dict, dotted: str, value) -> dict:
+    """A deep copy of ``d`` with the dotted key set (the sweep's grid axes)."""
+    out = copy.deepcopy(d)
+    node = out
+    parts = dotted.split(".")
+    for p in parts[:-1]:
+        if not isinstance(node.get(p), dict):
+            node[p] = {}
+        node = node[p]
+    node[parts[-1]] = value
+    return out
+
+
+def short(v) -> str:
+    """``repr(v)`` cut to 80 characters (a refused value in a one-line message)."""
+    r = repr(v)
+    return r if len(r) <= 80 else r[:77] + "..."
