@@ -20,7 +20,6 @@ from conftest import PUBLISHED_DIR, assert_honest
 
 from gearrep import hobbed as tt
 from gearrep import published
-from gearrep import tca_envelope as te
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
@@ -37,6 +36,7 @@ from gearrep.surfaces.catt import (
     tooth_thickness,
 )
 from gearrep.surfaces.hob import GeneratedGear
+from gearrep.tca import _envelope as te
 from gearrep.tca import solve_contact
 from gearrep.units import ARCSEC
 

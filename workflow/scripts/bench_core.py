@@ -156,7 +156,7 @@ def hobbed_case(rng, n):
     from gearrep.hobbed import continue_to
     from gearrep.replications.tseng_tca import TABLE_EXAMPLE
     from gearrep.replications.tseng_tca.studies import assembly_of, phi1_grid
-    from gearrep.tca_envelope import predict, solve_points, trace_path
+    from gearrep.tca._envelope import predict, solve_points, trace_path
 
     s, d = study("tseng_tca")
     case = d.cases[TABLE_EXAMPLE["5.4"]]

@@ -175,7 +175,7 @@ def check_ke_grid(values) -> None:
 def _path(pair, s0, phi1, tol):
     """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
     from ..hobbed import physical_contact
-    from ..tca_envelope import trace_path
+    from ..tca._envelope import trace_path
 
     with np.errstate(all="ignore"):
         return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), tol=tol)
@@ -241,7 +241,7 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
     from .. import meshing
     from ..hobbed import elastic_ellipses, ke_table
-    from ..tca_envelope import pinion_outward, turn_gap
+    from ..tca._envelope import pinion_outward, turn_gap
     from .analysis import cycle_summary, te_envelope
 
     s, pair, s0 = d.analysis, d.pair, d.start
@@ -332,7 +332,7 @@ def _outward_sign(g) -> float:
     pitch line of the mid-face section (the hob normal keeps its side of the flank; the polar-angle
     test of :meth:`GeneratedGear.outward` fails near the tip at the face edges, where the arc trace
     carries the tooth's centre line away from X)."""
-    from ..tca_envelope import hob_pitch_l
+    from ..tca._envelope import hob_pitch_l
 
     pt, n, _ = g.points(hob_pitch_l(g.hob), 0.0)
     return float(np.sign(np.sum(g.outward(pt, n) * n)))
@@ -372,7 +372,7 @@ def flank_params(d, member: int, n_u: int, n_v: int):
     flank: l from the tip circle r_p + m down to the lowest contact radius (the reach of the mating
     tip, :func:`_lowest_contact_radius`), both at mid-face; psi at each l from the face edge
     Z = -B/2 to Z = +B/2. Where a radius is not found, l at the hob pitch line -+ m / cos alpha_n."""
-    from ..tca_envelope import hob_pitch_l
+    from ..tca._envelope import hob_pitch_l
 
     g = _member(d, member)
     m, half = d.values["module_mm"], 0.5 * d.values["face_width_mm"]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...hobbed import Assembly, continue_to
-from ...tca_envelope import hob_pitch_l, predict
+from ...tca._envelope import hob_pitch_l, predict
 from .studies import TABLE_EXAMPLE, assembly_of, phi1_grid
 
 __all__ = ["robustness_cases"]

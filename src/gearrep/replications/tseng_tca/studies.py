@@ -14,7 +14,7 @@ import pandas as pd
 from ... import hobbed, meshing
 from ...hobbed import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact, tip_crossing
 from ...surfaces.hob import PairDesign
-from ...tca_envelope import (
+from ...tca._envelope import (
     ContactPath,
     dropped_component,
     member_geometry,
