@@ -20,13 +20,13 @@ from conftest import study_settings
 
 from gearrep import checks as C
 from gearrep import frames, published
-from gearrep import hobbed as H
 from gearrep.replications import tseng_tca as T
 from gearrep.replications.tseng_tca import model
 from gearrep.settings import SettingError, resolve
 from gearrep.solve import newton
 from gearrep.surfaces.hob import PairDesign
 from gearrep.tca import _envelope as TE
+from gearrep.tca import _hobbed as H
 
 #: statuses and values of the studies: run again by the portability passes (tests/README.md)
 pytestmark = pytest.mark.numerics

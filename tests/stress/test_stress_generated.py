@@ -18,7 +18,6 @@ import numpy as np
 import pytest
 from conftest import PUBLISHED_DIR, assert_honest
 
-from gearrep import hobbed as tt
 from gearrep import published
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
@@ -37,6 +36,7 @@ from gearrep.surfaces.catt import (
 )
 from gearrep.surfaces.hob import GeneratedGear
 from gearrep.tca import _envelope as te
+from gearrep.tca import _hobbed as tt
 from gearrep.tca import solve_contact
 from gearrep.units import ARCSEC
 

@@ -8,8 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from gearrep import hobbed as H
 from gearrep.surfaces.hob import PairDesign, ZAHob, za_hob
+from gearrep.tca import _hobbed as H
 
 
 @pytest.fixture(scope="module")

@@ -86,8 +86,8 @@ def envelope_cases(published):
 def test_hob_cut_starts_reach_the_reference(envelope_cases, i):
     """The hob-cut pair, aligned and with the Table 5.4 example's errors: starts uniform over the
     pinion flank's box reach the physical contact traced by continuation."""
-    from gearrep import hobbed
     from gearrep.tca import _envelope as tca_envelope
+    from gearrep.tca import _hobbed as hobbed
 
     s, c = envelope_cases[i]
     pair, phi, tol = c["pair"], c["phi1"], c["tol"]

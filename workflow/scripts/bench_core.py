@@ -153,10 +153,10 @@ def hobbed_case(rng, n):
     the 9-unknown envelope-pair TCA (gearrep.tca_envelope.solve_points) at angles over the
     study's phi1' grid, each from the first-order path predictor off the nearest point of the
     study's path on that grid (continuation and path not timed)."""
-    from gearrep.hobbed import continue_to
     from gearrep.replications.tseng_tca import TABLE_EXAMPLE
     from gearrep.replications.tseng_tca.studies import assembly_of, phi1_grid
     from gearrep.tca._envelope import predict, solve_points, trace_path
+    from gearrep.tca._hobbed import continue_to
 
     s, d = study("tseng_tca")
     case = d.cases[TABLE_EXAMPLE["5.4"]]

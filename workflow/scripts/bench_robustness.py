@@ -16,10 +16,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from gearrep import benchmark, hobbed, published
+from gearrep import benchmark, published
 from gearrep.replications import load as load_study
 from gearrep.settings import defaults
 from gearrep.tca import _envelope as tca_envelope
+from gearrep.tca import _hobbed as hobbed
 from gearrep.tca import default_start, reference_contacts, robust_contact, start_robustness
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)

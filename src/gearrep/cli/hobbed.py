@@ -57,7 +57,7 @@ def _half_window(n_teeth: int) -> float:
 def start(values, gears, assembly, tol, steps):
     """(pair, physical contact at phi1 = 0) of ``gears`` (PairDesign) under ``assembly``, or
     (None, reason) when the continuation from the ideal pair fails."""
-    from ..hobbed import continue_to
+    from ..tca._hobbed import continue_to
 
     try:
         with np.errstate(all="ignore"):
@@ -155,7 +155,7 @@ def _limit(d, name, x, pair, sol) -> float:
 
 def _ke_grid(s) -> np.ndarray:
     """Pinion angles [rad] of the KE table (:func:`gearrep.hobbed.phi1_grid`)."""
-    from ..hobbed import phi1_grid
+    from ..tca._hobbed import phi1_grid
 
     g = s["ke_table"]
     return phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
@@ -174,7 +174,7 @@ def check_ke_grid(values) -> None:
 
 def _path(pair, s0, phi1, tol):
     """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
-    from ..hobbed import physical_contact
+    from ..tca._hobbed import physical_contact
     from ..tca._envelope import trace_path
 
     with np.errstate(all="ignore"):
@@ -184,7 +184,7 @@ def _path(pair, s0, phi1, tol):
 def _engagement(pair, s0, tol):
     """(phi1_B, phi1_E) [rad]: where the contact reaches the pinion tip and the gear tip (the tip
     crossing nearest phi1 = 0 on the traced window)."""
-    from ..hobbed import tip_crossing
+    from ..tca._hobbed import tip_crossing
 
     w = _half_window(pair.pinion.n_teeth)
     n = window_points(pair.pinion.n_teeth)
@@ -240,7 +240,7 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     """(contact_path, te_cycle, summary dict, {"ke_table": ...}) of a checked hobbed design
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
     from .. import meshing
-    from ..hobbed import elastic_ellipses, ke_table
+    from ..tca._hobbed import elastic_ellipses, ke_table
     from ..tca._envelope import pinion_outward, turn_gap
     from .analysis import cycle_summary, te_envelope
 

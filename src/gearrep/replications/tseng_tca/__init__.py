@@ -22,9 +22,9 @@ import numpy as np
 import pandas as pd
 
 from ... import settings as _s
-from ...hobbed import clear_start_cache, ke_table
 from ...surfaces.hob import PairDesign
 from ...tca._envelope import require
+from ...tca._hobbed import clear_start_cache, ke_table
 from .._face import FACE, Job, run_jobs
 from .._seed000 import table_5_1
 from . import studies

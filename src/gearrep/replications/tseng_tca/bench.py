@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...hobbed import Assembly, continue_to
 from ...tca._envelope import hob_pitch_l, predict
+from ...tca._hobbed import Assembly, continue_to
 from .studies import TABLE_EXAMPLE, assembly_of, phi1_grid
 
 __all__ = ["robustness_cases"]

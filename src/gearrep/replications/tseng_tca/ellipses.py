@@ -7,10 +7,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...hobbed import Assembly, Pair, continue_to, elastic_ellipses
 from ...solve import newton
 from ...surfaces.hob import PairDesign
 from ...tca._envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
+from ...tca._hobbed import Assembly, Pair, continue_to, elastic_ellipses
 
 __all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 

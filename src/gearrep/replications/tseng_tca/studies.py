@@ -11,9 +11,9 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ... import hobbed, meshing
-from ...hobbed import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact, tip_crossing
+from ... import meshing
 from ...surfaces.hob import PairDesign
+from ...tca import _hobbed as hobbed
 from ...tca._envelope import (
     ContactPath,
     dropped_component,
@@ -25,6 +25,7 @@ from ...tca._envelope import (
     trace_path,
     turn_gap,
 )
+from ...tca._hobbed import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact, tip_crossing
 from ...units import ARCSEC
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 

@@ -22,13 +22,13 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .curvature import PrincipalCurvatures, with_opposite_normal
-from .curvature_relations import generated_curvatures
-from .ellipse import elastic_ellipse_at
-from .frames import drot_z, rot_x, rot_y, rot_z
-from .tca import _envelope as _te
-from .tca._envelope import ContactPath, Flank, make_flank, predict, require, solve_points
-from .units import ARCSEC
+from ..curvature import PrincipalCurvatures, with_opposite_normal
+from ..curvature_relations import generated_curvatures
+from ..ellipse import elastic_ellipse_at
+from ..frames import drot_z, rot_x, rot_y, rot_z
+from ..units import ARCSEC
+from . import _envelope as _te
+from ._envelope import ContactPath, Flank, make_flank, predict, require, solve_points
 
 # a gearrep.surfaces.hob.PairDesign (typed by what is used: n_pinion, n_gear, face_width_mm, hob, cut)
 _PairDesign = Any
