@@ -248,7 +248,7 @@ def tca_throughput(
     solve (per call for the single points; CPU seconds), the converged fractions, the mean Newton
     iterations of the vectorised solve, and the machine load before and after. ``solve(phi1, start)``
     replaces :func:`gearrep.tca.solve_contact` for a family with its own contact solve (e.g.
-    :func:`gearrep.tca_envelope.solve_points`); its result has ``converged`` and ``iterations`` or
+    :func:`gearrep.tca.solve_envelope_points`); its result has ``converged`` and ``iterations`` or
     ``solve.iterations`` (``solve_kwargs`` and ``scipy_points`` are then unused)."""
     from .tca import solve_contact
 

@@ -104,7 +104,7 @@ CLI_REPLICATION_DEBT: dict[str, set[str]] = {}
 @pytest.mark.parametrize("path", CLI, ids=_name)
 def test_cli_uses_the_library_not_the_replications(path):
     """The user-facing command is a user of the library: it imports no replication package (the
-    hobbed_curvilinear family uses gearrep.hobbed and gearrep.surfaces.hob, not tseng_tca), except
+    hobbed_curvilinear family uses gearrep.tca and gearrep.surfaces.hob, not tseng_tca), except
     the modules listed in CLI_REPLICATION_DEBT."""
     mod = _name(path)
     allowed = CLI_REPLICATION_DEBT.get(mod, set())

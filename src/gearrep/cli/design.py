@@ -588,7 +588,7 @@ def _catt(v) -> Design:
 
 def _hobbed_curvilinear(v) -> Design:
     from ..surfaces.hob import PairDesign, za_hob
-    from ..tca._hobbed import make_pair
+    from ..tca import hobbed_pair as make_pair
 
     m, B, a_deg = v["module_mm"], v["face_width_mm"], v["pressure_angle_deg"]
     r_h = v["hob_pitch_radius_mm"]
@@ -624,7 +624,7 @@ def _hobbed_curvilinear(v) -> Design:
 
 
 def _hob_assembly(v):
-    from ..tca._hobbed import Assembly
+    from ..tca import HobbedAssembly as Assembly
 
     m = v["misalignment"]
     return Assembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])

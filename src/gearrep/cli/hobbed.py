@@ -57,7 +57,7 @@ def _half_window(n_teeth: int) -> float:
 def start(values, gears, assembly, tol, steps):
     """(pair, physical contact at phi1 = 0) of ``gears`` (PairDesign) under ``assembly``, or
     (None, reason) when the continuation from the ideal pair fails."""
-    from ..tca._hobbed import continue_to
+    from ..tca import hobbed_continue_to as continue_to
 
     try:
         with np.errstate(all="ignore"):
@@ -155,7 +155,7 @@ def _limit(d, name, x, pair, sol) -> float:
 
 def _ke_grid(s) -> np.ndarray:
     """Pinion angles [rad] of the KE table (:func:`gearrep.hobbed.phi1_grid`)."""
-    from ..tca._hobbed import phi1_grid
+    from ..tca import hobbed_phi1_grid as phi1_grid
 
     g = s["ke_table"]
     return phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
@@ -174,8 +174,8 @@ def check_ke_grid(values) -> None:
 
 def _path(pair, s0, phi1, tol):
     """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``."""
-    from ..tca._hobbed import physical_contact
-    from ..tca._envelope import trace_path
+    from ..tca import hobbed_physical_contact as physical_contact
+    from ..tca import trace_envelope_path as trace_path
 
     with np.errstate(all="ignore"):
         return physical_contact(pair, trace_path(pair, s0, phi1, tol=tol), tol=tol)
@@ -184,7 +184,7 @@ def _path(pair, s0, phi1, tol):
 def _engagement(pair, s0, tol):
     """(phi1_B, phi1_E) [rad]: where the contact reaches the pinion tip and the gear tip (the tip
     crossing nearest phi1 = 0 on the traced window)."""
-    from ..tca._hobbed import tip_crossing
+    from ..tca import hobbed_tip_crossing as tip_crossing
 
     w = _half_window(pair.pinion.n_teeth)
     n = window_points(pair.pinion.n_teeth)
@@ -240,8 +240,10 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     """(contact_path, te_cycle, summary dict, {"ke_table": ...}) of a checked hobbed design
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
     from .. import meshing
-    from ..tca._hobbed import elastic_ellipses, ke_table
-    from ..tca._envelope import pinion_outward, turn_gap
+    from ..tca import envelope_pinion_outward as pinion_outward
+    from ..tca import envelope_turn_gap as turn_gap
+    from ..tca import hobbed_elastic_ellipses as elastic_ellipses
+    from ..tca import ke_table
     from .analysis import cycle_summary, te_envelope
 
     s, pair, s0 = d.analysis, d.pair, d.start
@@ -332,7 +334,7 @@ def _outward_sign(g) -> float:
     pitch line of the mid-face section (the hob normal keeps its side of the flank; the polar-angle
     test of :meth:`GeneratedGear.outward` fails near the tip at the face edges, where the arc trace
     carries the tooth's centre line away from X)."""
-    from ..tca._envelope import hob_pitch_l
+    from ..tca import hob_pitch_l
 
     pt, n, _ = g.points(hob_pitch_l(g.hob), 0.0)
     return float(np.sign(np.sum(g.outward(pt, n) * n)))
@@ -372,7 +374,7 @@ def flank_params(d, member: int, n_u: int, n_v: int):
     flank: l from the tip circle r_p + m down to the lowest contact radius (the reach of the mating
     tip, :func:`_lowest_contact_radius`), both at mid-face; psi at each l from the face edge
     Z = -B/2 to Z = +B/2. Where a radius is not found, l at the hob pitch line -+ m / cos alpha_n."""
-    from ..tca._envelope import hob_pitch_l
+    from ..tca import hob_pitch_l
 
     g = _member(d, member)
     m, half = d.values["module_mm"], 0.5 * d.values["face_width_mm"]
