@@ -30,8 +30,8 @@ from urllib.parse import quote
 import numpy as np
 import pandas as pd
 
-from . import checks as _checks
-from .published import PAPERS
+from .. import checks as _checks
+from ..published import PAPERS
 
 __all__ = [
     "AGREE",

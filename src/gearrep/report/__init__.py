@@ -1,0 +1,48 @@
+"""The replication report: one self-contained HTML page built from in-memory results (the page and
+its parts in the private module ``_page``)."""
+
+from ._page import (
+    AGREE,
+    DISAGREE,
+    OPEN,
+    STATUS_MEANINGS,
+    VERDICT_CRITERIA,
+    VERDICTS,
+    absolute_paths,
+    anchor,
+    apart_statuses,
+    findings,
+    highlight,
+    ordered_sources,
+    paper_verdicts,
+    parity_png,
+    parity_pngs,
+    parity_rows,
+    render,
+    result_statuses,
+    status_meaning,
+    verdict,
+)
+
+__all__ = [
+    "AGREE",
+    "DISAGREE",
+    "OPEN",
+    "STATUS_MEANINGS",
+    "VERDICTS",
+    "VERDICT_CRITERIA",
+    "absolute_paths",
+    "anchor",
+    "apart_statuses",
+    "findings",
+    "highlight",
+    "ordered_sources",
+    "paper_verdicts",
+    "parity_png",
+    "parity_pngs",
+    "parity_rows",
+    "render",
+    "result_statuses",
+    "status_meaning",
+    "verdict",
+]
