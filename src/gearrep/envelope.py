@@ -76,10 +76,11 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from . import frames
+from .inputs import check_integer, check_positive
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
 from .motion import __all__ as _MOTION_NAMES
-from .solve import SolveResult, Status, check_integer, check_positive, newton
+from .solve import SolveResult, Status, newton
 from .surface import _D1, _D1_OFF, Surface, SurfacePoint, cross
 
 __all__ = [

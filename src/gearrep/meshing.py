@@ -36,7 +36,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .solve import SolveResult, Status, check_positive, newton
+from .inputs import check_positive
+from .solve import SolveResult, Status, newton
 from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
 from .tca._kernels import _reduced_FJ
 from .units import ARCSEC

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solve import check_finite, check_positive
+from ..inputs import check_finite, check_positive
 
 __all__ = [
     "Q_PRIME_COEFFICIENTS",

@@ -90,7 +90,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import frames
-from ..solve import SolveResult, Status, check_finite, newton
+from ..inputs import check_finite
+from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [

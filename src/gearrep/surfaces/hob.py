@@ -64,8 +64,9 @@ from ..curvature_relations import (
     two_parameter_system,
 )
 from ..envelope import Envelope, EnvelopeResult, EnvelopeSurface
+from ..inputs import check_integer, check_positive
 from ..motion import ChainMotion, rotation, translation
-from ..solve import SolveResult, Status, check_integer, check_positive, newton
+from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
