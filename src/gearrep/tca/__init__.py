@@ -130,7 +130,7 @@ from ._formulations import (
     trace_path,
 )
 from ._hobbed import KE_COLUMNS, ke_table
-from ._kernels import normal_derivatives
+from ._kernels import normal_derivatives, reduced_system
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
 from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
 from ._starts import (
@@ -199,6 +199,7 @@ __all__ = [
     "default_start",
     "solve_contact",
     "reduced_unknowns",
+    "reduced_system",
     "trace_path",
     "contact_curvatures",
     "contact_ellipse",
