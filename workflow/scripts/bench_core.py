@@ -122,7 +122,7 @@ def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
     they start on is in contact (spiral: from half an angular pitch before phi1 = -pi/(2 N1), the
     aligned pair's pitch-cone contact, to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
     side of it)."""
-    from gearrep.replications.thesis.bevel import convergence_pair
+    from gearrep.replications.thesis.bevel_convergence import convergence_pair
 
     s, d = study("thesis")
     pair = convergence_pair(s, d, case)
