@@ -10,6 +10,7 @@ import numpy as np
 
 from ..frames import rotate_z
 from ..surface import add3, cross, cross3, cross3_sparse, dot3
+from ._bevel import spherical_unknowns
 from ._pair import GearPair, _wrap
 
 __all__ = ["normal_derivatives", "reduced_system"]
@@ -123,8 +124,6 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True, 
     computed at once). ``P1``: member 1's flank already evaluated at (u1, v1) by components, if
     the caller has it."""
     if getattr(pair.flank2, "spherical", False):
-        from ._bevel import spherical_unknowns
-
         view = pair.axial_view
         P1 = P1 if view.flank1 is pair.flank1 else None
         K = _reduced3(view, u1, v1, phi1, c1, s1, derivs=bool(derivs), v_column=v_column, P1=P1)

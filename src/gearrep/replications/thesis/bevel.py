@@ -32,11 +32,13 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...curvature import relative_curvature
+from ...ellipse import hertz_contact
 from ...meshing import sampled_cycle
-from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length
+from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length, spherical_involute_azimuth
 from ...surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning, RootRelief
-from ...tca import BevelMisalignment, BevelPair, solve_contact
-from ...units import DEG
+from ...tca import BevelMisalignment, BevelPair, contact_curvatures, solve_contact
+from ...units import ARCSEC, DEG
 from .te import JUMP_TOL_ARCSEC, PAIRS
 
 CASES = ("straight_bevel_39_32", "spiral_bevel_17_17")
@@ -334,10 +336,6 @@ def contact_pressure(pair: BevelPair, contact, load: float, E: float, nu: float)
     """Hertz maximum contact pressure p0 at every converged contact point (NaN elsewhere) for the
     normal ``load`` (gearrep.ellipse.hertz_contact from the relative curvatures of
     gearrep.tca.contact_curvatures)."""
-    from ...curvature import relative_curvature
-    from ...ellipse import hertz_contact
-    from ...tca import contact_curvatures
-
     out = np.full(len(contact), np.nan)
     ok = np.flatnonzero(contact.converged)
     if not len(ok):
@@ -376,8 +374,6 @@ def _asymmetry(phi, te, lead):
 
 def _pitch_columns(pair: BevelPair, res: dict, p0: np.ndarray, material) -> dict:
     """Summary columns at the pitch point (contact on gear 1's pitch cone, solved) and at phi1 = 0."""
-    from ...units import ARCSEC
-
     phi = res["phi1"]
     i0 = int(np.argmin(np.abs(phi)))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -422,8 +418,6 @@ def contact_study(
     and reaches -te_pp). Pitch point: the mesh position whose contact lies on gear 1's pitch cone
     (:func:`pitch_cone_contact`, solved), with its p0, cone distance v1 and TE; ``*_at_phi1_0``
     columns are taken at phi1 = 0, which is not the pitch point."""
-    from ...units import ARCSEC
-
     mis = mis or BevelMisalignment()
     pair = bevel_pair(
         design,
@@ -480,8 +474,6 @@ def contact_study(
 
 def _curve_rows(label: str, case: str, res: dict, lead: np.ndarray, p0: np.ndarray) -> pd.DataFrame:
     """Rows of bevel_*_curves.csv: one pair's path, TE and p0 on the grid, then the cycle's TE."""
-    from ...units import ARCSEC
-
     curves = pd.DataFrame(
         dict(
             study=label,
@@ -637,8 +629,6 @@ def bevel_protocol_items(p: dict) -> list:
 
 def bevel_errata_rows(design) -> list:
     """Rows of errata.csv (job ``errata``) for the bevel part: Table 5's base cones, eq (46), eq (45)."""
-    from ...surfaces.bevel import spherical_involute_azimuth
-
     d = design.pairs["straight_bevel_39_32"]
     g1, g2 = bevel_gears(d)
     printed = d["printed_base_cone_deg"]
