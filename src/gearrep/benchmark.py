@@ -37,6 +37,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from .tca import check_formulation, conventional_system, reduced_unknowns, solve_contact
+
 __all__ = [
     "ERROR_FLOOR",
     "Timing",
@@ -174,8 +176,6 @@ def scipy_root_solves(pair, phi1, start, formulation: str = "reduced", *, tol: f
     Returns (x (n, 2 or 5), success (n,) bool)."""
     from scipy.optimize import root
 
-    from .tca import check_formulation, conventional_system, reduced_unknowns
-
     check_formulation(formulation)
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     start = np.atleast_2d(np.asarray(start, float))
@@ -248,10 +248,8 @@ def tca_throughput(
     solve (per call for the single points; CPU seconds), the converged fractions, the mean Newton
     iterations of the vectorised solve, and the machine load before and after. ``solve(phi1, start)``
     replaces :func:`gearrep.tca.solve_contact` for a family with its own contact solve (e.g.
-    :func:`gearrep.tca_envelope.solve_points`); its result has ``converged`` and ``iterations`` or
+    :func:`gearrep.tca.solve_envelope_points`); its result has ``converged`` and ``iterations`` or
     ``solve.iterations`` (``solve_kwargs`` and ``scipy_points`` are then unused)."""
-    from .tca import solve_contact
-
     phi1, start = _throughput_inputs(phi1, start, n_single, scipy_points, solve)
     n = len(phi1)
     kw = dict(solve_kwargs or {})

@@ -50,6 +50,7 @@ __all__ = [
     "printed_interval",
     "compare_value",
     "check_values",
+    "claim_verdict",
     "qualitative",
     "not_computed",
     "printed_input",
@@ -192,6 +193,17 @@ def check_values(published_values: pd.DataFrame, computed: pd.DataFrame) -> pd.D
             )
         )
     return pd.DataFrame(recs, columns=CHECK_COLUMNS)
+
+
+def claim_verdict(confirm: bool, refute: bool, evidence: str) -> tuple[bool, str]:
+    """(holds, evidence) of a claim from the outcomes of its ``confirm_if`` and ``refute_if``
+    criteria (data/published/claims_*.csv): it holds only if the confirm criterion is met; when
+    neither is met it is not confirmed (fails) and the evidence says so. ValueError if both are
+    met (the criteria on file contradict each other)."""
+    if confirm and refute:
+        raise ValueError(f"claim criteria contradict each other: {evidence}")
+    tail = "" if (confirm or refute) else " [confirm criterion not met; refute criterion not met either]"
+    return bool(confirm), evidence + tail
 
 
 def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:

@@ -76,11 +76,12 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from . import frames
+from .inputs import check_integer, check_positive
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
 from .motion import __all__ as _MOTION_NAMES
-from .solve import SolveResult, Status, check_integer, check_positive, newton
-from .surface import _D1, _D1_OFF, Surface, SurfacePoint, cross
+from .solve import SolveResult, Status, newton
+from .surface import D1_OFFSETS, D1_WEIGHTS, Surface, SurfacePoint, cross
 
 __all__ = [
     *_MOTION_NAMES,
@@ -553,7 +554,7 @@ class EnvelopeSurface(Surface):
         # second derivatives of the solved parameters: d/d(free_d) of D[..., e]
         D2 = np.zeros((a.size, 2 + env.k, 2, 2))
         for d, h in enumerate(self.fd_step):
-            dD = sum(w * shifted[(d, int(o))] for w, o in zip(_D1, _D1_OFF)) / h  # d/d(free_d) of D
+            dD = sum(w * shifted[(d, int(o))] for w, o in zip(D1_WEIGHTS, D1_OFFSETS)) / h  # d/d(free_d) of D
             D2[:, :, :, d] = dD
         D2 = 0.5 * (D2 + np.swapaxes(D2, -1, -2))
         D2[:, list(env.free)] = 0.0

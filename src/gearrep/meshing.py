@@ -36,9 +36,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .solve import SolveResult, Status, check_positive, newton
-from .tca import ContactPoints, GearPair, newton_rows, solve_contact, trace_path
-from .tca._kernels import _reduced_FJ
+from .inputs import check_positive
+from .solve import SolveResult, Status, newton
+from .tca import ContactPoints, GearPair, newton_rows, reduced_system, solve_contact, trace_path
 from .units import ARCSEC
 
 __all__ = [
@@ -176,7 +176,7 @@ def _boundary_solve(pair, contact: ContactPoints, j: int, v1_fixed, tol=1e-12, m
         u1 = x[:, 0]
         v1 = p[:, 1] if fixed else x[:, 1]
         phi1 = x[:, -1]
-        Fv, _, K = _reduced_FJ(pair, u1, v1, phi1, p[:, 0], derivs=False)
+        Fv, _, K = reduced_system(pair, u1, v1, phi1, p[:, 0], derivs=False)
         vals = np.stack([u1, v1, K["u2"], K["v2"]], axis=-1)[:, p_idx]
         return np.column_stack([Fv, vals - bound])
 

@@ -17,7 +17,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import frames
-from .surface import _D1, _D1_OFF, _D2, _D2_OFF  # the fourth-order central differences of the surfaces
+from .surface import (  # the fourth-order central differences of the surfaces
+    D1_OFFSETS,
+    D1_WEIGHTS,
+    D2_OFFSETS,
+    D2_WEIGHTS,
+)
 
 __all__ = [
     "Motion",
@@ -108,7 +113,9 @@ class FunctionMotion(Motion):
         if self._dM is not None:
             dM = np.asarray(self._dM(m), dtype=float)
         else:
-            dM = np.stack([sum(w * at(o * h * eye[j]) for w, o in zip(_D1, _D1_OFF)) / h for j in range(k)], axis=-3)
+            dM = np.stack(
+                [sum(w * at(o * h * eye[j]) for w, o in zip(D1_WEIGHTS, D1_OFFSETS)) / h for j in range(k)], axis=-3
+            )
         if self._d2M is not None:
             d2M = np.asarray(self._d2M(m), dtype=float)
         else:
@@ -117,13 +124,16 @@ class FunctionMotion(Motion):
                 row = []
                 for j in range(k):
                     if i == j:
-                        row.append(sum(w * (M if o == 0 else at(o * h * eye[i])) for w, o in zip(_D2, _D2_OFF)) / h**2)
+                        row.append(
+                            sum(w * (M if o == 0 else at(o * h * eye[i])) for w, o in zip(D2_WEIGHTS, D2_OFFSETS))
+                            / h**2
+                        )
                     else:
                         row.append(
                             sum(
                                 wi * wj * at(oi * h * eye[i] + oj * h * eye[j])
-                                for wi, oi in zip(_D1, _D1_OFF)
-                                for wj, oj in zip(_D1, _D1_OFF)
+                                for wi, oi in zip(D1_WEIGHTS, D1_OFFSETS)
+                                for wj, oj in zip(D1_WEIGHTS, D1_OFFSETS)
                             )
                             / h**2
                         )

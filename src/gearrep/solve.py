@@ -5,23 +5,34 @@ iterations and a status for each of many independent problems solved at once (a 
 starting points or meshing positions). A caller decides what to do with an unconverged point;
 the solver never hands one back looking like a converged one.
 
-The step is the least-squares Newton step computed by SVD, so square (n equations, n unknowns)
-and over-determined systems (more equations than unknowns, e.g. the vector equations of tooth
-contact) are handled by one code path, and a rank-deficient Jacobian is detected from its
-singular values instead of being inverted. 2 x 2 systems take the same step in closed form, and
-with ``inverse_square`` larger square ones by Gauss-Jordan elimination over the batch with a
-Frobenius-norm bound of the condition; only rows that bound cannot clear of singularity go through the SVD then.
+The step is the least-squares Newton step (private module ``_newton_steps``): by SVD, so that
+square (n equations, n unknowns) and over-determined systems (more equations than unknowns, e.g.
+the vector equations of tooth contact) are handled alike and a rank-deficient Jacobian is detected
+from its singular values instead of being inverted; 2 x 2 systems take a closed form, and with
+``inverse_square`` larger square ones Gauss-Jordan elimination, each with a bound of the condition
+that sends the rows it cannot clear of singularity to the SVD.
+
+Each algorithm (the Newton iteration, the 2 x 2 closed form, Gauss-Jordan elimination) exists in
+two forms: on arrays for a batch, and on Python floats for one problem, which :func:`newton` takes
+for a batch of one row and for the last active row of a batch. On one row numpy's cost per call
+exceeds the arithmetic: with the batch form, a single-point contact solve of the README pair
+(crowned spur 52/72) costs 1117 instead of 589 reference-kernel elements (reduced) and 1356
+instead of 688 (conventional, measured in one interleaved run). Both forms do the same operations
+in the same order (Gauss-Jordan bit for bit: +, -, x, / and abs only), so one problem gets the
+record its row gets in a batch (tests/unit/test_solve.py).
 """
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from enum import IntEnum
 
 import numpy as np
+
+from ._newton_steps import step_batch, step_floats
+from .inputs import check_integer, check_positive, real_or_nan
 
 __all__ = [
     "Status",
@@ -30,9 +41,7 @@ __all__ = [
     "SolveResult",
     "numeric_jacobian",
     "newton",
-    "check_integer",
-    "check_positive",
-    "check_finite",
+    "finite_rows",
 ]
 
 
@@ -156,262 +165,23 @@ def _all_finite(a) -> bool:
     return all(map(math.isfinite, a.ravel().tolist()))
 
 
+def finite_rows(a) -> np.ndarray:
+    """Per row (first axis) of the array ``a``, whether every entry is finite (one pass when all are)."""
+    if len(a) == 1:
+        return np.array([_all_finite(a)])
+    fin = np.isfinite(a)
+    if fin.all():
+        return np.ones(len(a), dtype=bool)
+    return fin.reshape(len(a), -1).all(axis=1)
+
+
 def _matrix_finite(J) -> bool:
     """Whether every entry of a matrix given as a list of rows of floats is finite: a finite sum
     proves it (an inf or NaN entry makes the sum inf or NaN); otherwise each entry is tested."""
     return math.isfinite(sum(map(sum, J))) or all(math.isfinite(v) for row in J for v in row)
 
 
-def _ratio(a: float, b: float) -> float:
-    """a / b with numpy's result for b = 0 (inf, -inf or NaN) instead of an exception."""
-    if b == 0.0:
-        return math.inf if a > 0 else (-math.inf if a < 0 else math.nan)
-    return a / b
-
-
-def _lstsq_step(J: np.ndarray, F: np.ndarray, rcond: float, inverse_square: bool = False):
-    """Least-squares Newton step ``d = -J^+ F`` by batched SVD, and a singular mask (plus the
-    extreme singular values, or bounds of them, for the condition number).
-
-    Square 2x2 systems (the reduced TCA) take a closed form: singular values from the
-    rotation/reflection split of the matrix (s1 = Q + R, s2 = |det| / s1 with
-    Q = |((a+d)/2, (c-b)/2)|, R = |((a-d)/2, (c+b)/2)|) and the step from the adjugate; rows found
-    singular go through the SVD so that they get the same pseudo-inverse step."""
-    if J.shape[1:] == (2, 2):
-        return _step_2x2(J, F, rcond)
-    if inverse_square and J.shape[1] == J.shape[2] > 2 and J.shape[0] > 0:
-        return _step_square_one(J, F, rcond) if J.shape[0] == 1 else _step_square(J, F, rcond)
-    return _svd_step(J, F, rcond)
-
-
-def _step_square(J, F, rcond):
-    """Square k x k systems (k > 2, e.g. the conventional TCA): the step and the inverse from
-    Gauss-Jordan elimination with partial pivoting over the batch (:func:`_gauss_jordan`), and
-    instead of the singular values the bounds ||J||_F >= s_max and 1 / ||J^-1||_F <= s_min,
-    whose ratio (the Frobenius condition number) is at most k times the 2-norm one. Rows where
-    that ratio exceeds 1 / rcond (only these can be singular; a zero pivot gives a non-finite
-    inverse, which counts so) go through the SVD, which decides and gives them the pseudo-inverse
-    step and their exact extreme singular values."""
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        x, q_inv, q_J = _gauss_jordan(J, F)
-        step = -x
-        sv = np.stack([np.sqrt(q_J), 1.0 / np.sqrt(q_inv)], axis=-1)
-        flagged = ~(sv[:, 1] > rcond * sv[:, 0])
-    singular = np.zeros(len(J), dtype=bool)
-    if flagged.any():
-        idx = np.flatnonzero(flagged)
-        step[idx], singular[idx], s = _svd_step(J[idx], F[idx], rcond)
-        sv[idx] = s[:, [0, -1]]
-    return step, singular, sv
-
-
-def _gauss_jordan(J, F):
-    """(x (n, k) = J^-1 F, ||J^-1||_F^2 (n,), ||J||_F^2 (n,)) of n square systems J (n, k, k),
-    F (n, k) by Gauss-Jordan elimination with partial pivoting (per system the first row with the
-    largest |entry| of the column, as LAPACK's idamax), in place on the augmented rows [J | F] held
-    as k x (k + 1) contiguous 1-D arrays over the batch: a 5 x 5 batch costs about a sixth of
-    numpy's batched inverse, which pays a LAPACK call per matrix. The inverse is formed in place
-    with its columns in pivot order, which the Frobenius norm does not see; F's column follows the
-    row swaps, so x needs no reordering. Sums of squares run left to right over the rows. A zero
-    pivot gives inf/NaN in its system (callers test the norm). :func:`_gauss_jordan_one` does the
-    same operations in the same order on floats, so one system gets the same values alone."""
-    n, k = F.shape
-    M = np.empty((k, k + 1, n))
-    M[:, :k] = J.transpose(1, 2, 0)
-    M[:, k] = F.T
-    R = [[M[i, j] for j in range(k + 1)] for i in range(k)]
-    tmp = np.empty(n)
-    q_J = _sum_squares(R, k, tmp)
-    for c in range(k):
-        if c < k - 1:
-            _pivot_rows(R, c, n)
-        row = R[c]
-        inv = 1.0 / row[c]
-        row[c] = inv
-        for j in range(k + 1):
-            if j != c:
-                row[j] *= inv
-        for i in range(k):
-            if i == c:
-                continue
-            ri = R[i]
-            f = ri[c]
-            for j in range(k + 1):
-                if j != c:
-                    np.multiply(f, row[j], out=tmp)
-                    ri[j] -= tmp
-            np.multiply(f, inv, out=f)
-            np.negative(f, out=f)
-    return np.stack([R[i][k] for i in range(k)], axis=-1), _sum_squares(R, k, tmp), q_J
-
-
-def _sum_squares(R, k, tmp):
-    """Sum of the squares of the first k columns of the rows R (1-D arrays), row by row."""
-    q = np.zeros(len(tmp))
-    for i in range(k):
-        for j in range(k):
-            np.multiply(R[i][j], R[i][j], out=tmp)
-            q += tmp
-    return q
-
-
-def _pivot_rows(R, c, n):
-    """Partial pivoting of column ``c`` of the rows ``R`` (lists of 1-D arrays): per system, the
-    first row i >= c with the largest |R[i][c]| is swapped with row c (a plain list swap where
-    every system picks the same one, else by np.where)."""
-    best = np.abs(R[c][c])
-    cand = np.empty(n)
-    idx = None
-    for i in range(c + 1, len(R)):
-        np.abs(R[i][c], out=cand)
-        more = cand > best
-        if more.any():
-            if idx is None:
-                idx = np.full(n, c)
-            idx[more] = i
-            np.copyto(best, cand, where=more)
-    if idx is None:
-        return
-    lo, hi = int(idx.min()), int(idx.max())
-    if lo == hi:
-        R[c], R[lo] = R[lo], R[c]
-        return
-    for i in range(c + 1, len(R)):
-        s = idx == i
-        if s.any():
-            R[c], R[i] = (
-                [np.where(s, b, a) for a, b in zip(R[c], R[i])],
-                [np.where(s, a, b) for a, b in zip(R[c], R[i])],
-            )
-
-
-@functools.cache
-def _gauss_jordan_one(k: int):
-    """:func:`_gauss_jordan` of one k x k system on Python floats: f(J rows (lists), F (list)) ->
-    (x (list), ||J^-1||_F^2, ||J||_F^2) by the same operations in the same order. The function is
-    written out for the size k (no loops: a fifth of the interpreter's work of the looped form,
-    about 10 us for k = 5) and compiled once per k. ZeroDivisionError on a zero pivot."""
-    L = ["def gauss_jordan(J, F):", f"    R = [J[i] + [F[i]] for i in range({k})]"]
-    L += _sum_squares_lines("q_J", k)
-    for c in range(k):
-        if c < k - 1:
-            L.append(f"    p, best = {c}, abs(R[{c}][{c}])")
-            for i in range(c + 1, k):
-                L += [f"    a = abs(R[{i}][{c}])", f"    if a > best: p, best = {i}, a"]
-            L.append(f"    if p != {c}: R[{c}], R[p] = R[p], R[{c}]")
-        L += [f"    a = R[{c}]", f"    inv = 1.0 / a[{c}]"]
-        L.append(f"    b = R[{c}] = [" + ", ".join("inv" if j == c else f"a[{j}] * inv" for j in range(k + 1)) + "]")
-        for i in (i for i in range(k) if i != c):
-            L += [f"    a = R[{i}]", f"    f = a[{c}]"]
-            terms = ("-(f * inv)" if j == c else f"a[{j}] - f * b[{j}]" for j in range(k + 1))
-            L.append(f"    R[{i}] = [" + ", ".join(terms) + "]")
-    L += _sum_squares_lines("q_inv", k)
-    L.append("    return [" + ", ".join(f"R[{i}][{k}]" for i in range(k)) + "], q_inv, q_J")
-    namespace = {}
-    exec(compile("\n".join(L), f"<gauss_jordan_one k={k}>", "exec"), namespace)
-    return namespace["gauss_jordan"]
-
-
-def _sum_squares_lines(name, k):
-    """Source lines of :func:`_sum_squares` on the float rows R (same order)."""
-    lines = [f"    {name} = 0.0"]
-    for i in range(k):
-        lines.append(f"    {name} = {name} + " + " + ".join(f"R[{i}][{j}] * R[{i}][{j}]" for j in range(k)))
-    return lines
-
-
-def _step_square_floats(J, F, rcond):
-    """:func:`_step_square` of one system given as lists (J rows, F), by the same operations on
-    Python floats: (step, fro, s2), or None where it needs the SVD or meets a zero or non-finite
-    pivot (the batch function then decides)."""
-    try:
-        x, q_inv, q_J = _gauss_jordan_one(len(F))(J, F)
-    except ArithmeticError:
-        return None
-    fro = math.sqrt(q_J)
-    s2 = 1.0 / math.sqrt(q_inv) if q_inv > 0.0 else (math.inf if q_inv == 0.0 else math.nan)
-    if not (s2 > rcond * fro):
-        return None
-    return [-v for v in x], fro, s2
-
-
-def _step_square_one(J, F, rcond):
-    """:func:`_step_square` of one system (arrays of one row) by :func:`_step_square_floats`."""
-    out = _step_square_floats(J[0].tolist(), F[0].tolist(), rcond)
-    if out is None:
-        return _step_square(J, F, rcond)
-    return np.array([out[0]]), np.array([False]), np.array([out[1:]])
-
-
-def _step_2x2(J, F, rcond):
-    if len(J) == 1:
-        return _step_2x2_one(J, F, rcond)
-    a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
-    s1 = np.hypot(0.5 * (a + d), 0.5 * (c - b)) + np.hypot(0.5 * (a - d), 0.5 * (c + b))
-    det = a * d - b * c
-    n = len(J)
-    step = np.empty((n, 2))
-    sv = np.empty((n, 2))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s2 = np.where(s1 > 0, np.abs(det) / s1, 0.0)
-        singular = ~(s2 > rcond * s1)
-        step[:, 0] = -(d * F[:, 0] - b * F[:, 1]) / det
-        step[:, 1] = -(a * F[:, 1] - c * F[:, 0]) / det
-    sv[:, 0], sv[:, 1] = s1, s2
-    if singular.any():
-        idx = np.flatnonzero(singular)
-        step[idx], _, sv[idx] = _svd_step(J[idx], F[idx], rcond)
-    return step, singular, sv
-
-
-def _step_2x2_floats(J, F, rcond):
-    """:func:`_step_2x2` of one system given as lists (J two rows, F), by the same operations on
-    Python floats (np.hypot kept): (step, s1, s2), or None where the closed form finds the system
-    singular (the SVD then decides and steps, as for a batch)."""
-    (a, b), (c, d) = J
-    f0, f1 = F
-    s1 = float(np.hypot(0.5 * (a + d), 0.5 * (c - b))) + float(np.hypot(0.5 * (a - d), 0.5 * (c + b)))
-    det = a * d - b * c
-    s2 = abs(det) / s1 if s1 > 0 else 0.0
-    if not (s2 > rcond * s1):
-        return None
-    return [-(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det], s1, s2
-
-
-def _step_2x2_one(J, F, rcond):
-    """:func:`_step_2x2` of one system (arrays of one row) by :func:`_step_2x2_floats`."""
-    out = _step_2x2_floats(J[0].tolist(), F[0].tolist(), rcond)
-    if out is None:
-        step, _, sv = _svd_step(J, F, rcond)
-        return step, np.array([True]), sv
-    return np.array([out[0]]), np.array([False]), np.array([out[1:]])
-
-
-def _step_floats(J, F, rcond, inverse_square):
-    """:func:`_lstsq_step` of one system given as lists: (step list, singular, condition number),
-    on Python floats where a closed form applies (2 x 2; square with ``inverse_square``), else by
-    the batch function on a batch of one."""
-    m, k = len(J), len(J[0])
-    out = None
-    if m == k == 2:
-        out = _step_2x2_floats(J, F, rcond)
-    elif m == k and inverse_square:
-        out = _step_square_floats(J, F, rcond)
-    if out is not None:
-        return out[0], False, _ratio(out[1], out[2])
-    d, singular, sv = _lstsq_step(np.array([J], dtype=float), np.array([F], dtype=float), rcond, inverse_square)
-    return d[0].tolist(), bool(singular[0]), _ratio(float(sv[0, 0]), float(sv[0, -1]))
-
-
-def _svd_step(J, F, rcond):
-    U, s, Vt = np.linalg.svd(J, full_matrices=False)
-    smax = s[:, :1]
-    singular = ~(s[:, -1] > rcond * smax[:, 0])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv = np.where(s > rcond * smax, 1.0 / s, 0.0)
-    coef = np.einsum("nmk,nm->nk", U, F) * inv
-    d = -np.einsum("nkj,nk->nj", Vt, coef)
-    return d, singular, s
+# -- the Newton iteration --------------------------------------------------------------------
 
 
 def _dense(J):
@@ -442,7 +212,7 @@ def _one_point_evaluator(fun, fun_jac, floats, k):
 
 def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResult:
     """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
-    arithmetic (steps as :func:`_lstsq_step`, residual norms as :func:`_row_norms`, the same Armijo
+    arithmetic (steps as :func:`step_batch`, residual norms as :func:`_row_norms`, the same Armijo
     test and statuses) on Python floats, the iterate, residual and Jacobian as lists (on one row
     numpy's per-call cost exceeds the arithmetic; tests/unit/test_solve.py). ``floats`` (optional)
     evaluates on lists; where it returns None the array callables evaluate."""
@@ -472,7 +242,7 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
         bad_j = not _matrix_finite(J)
         if bad_j:
             J = [[0.0] * k for _ in range(m)]
-        d, singular, cond = _step_floats(J, F, rcond, opts.inverse_square)
+        d, singular, cond = step_floats(J, F, rcond, opts.inverse_square)
         singular = singular or bad_j
         if bad_j:
             cond = math.nan
@@ -519,49 +289,6 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
         status=np.array([int(status)]),
         condition=np.array([cond]),
     )
-
-
-def _real(value) -> float:
-    """``value`` as a float if it is a real number (not a string, bool or None), else NaN."""
-    if isinstance(value, (str, bytes, bool)) or value is None:
-        return math.nan
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        return math.nan
-
-
-def check_finite(name: str, value, *, positive: bool = False, nonneg: bool = False) -> float:
-    """``value`` as a float when it is a finite real number (and > 0 with ``positive``, >= 0 with
-    ``nonneg``); ValueError naming ``name`` and the value otherwise. A string, a bool or None is
-    not a number here (a numeric string would be stored as a string and fail far away)."""
-    x = _real(value)
-    if not math.isfinite(x):
-        number = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
-        what = "finite" if number else "a finite number"
-        raise ValueError(f"{name} must be {what}, got {value!r}")
-    if positive and not x > 0:
-        raise ValueError(f"{name} must be > 0, got {value!r}")
-    if nonneg and not x >= 0:
-        raise ValueError(f"{name} must be >= 0, got {value!r}")
-    return x
-
-
-def check_positive(name: str, value) -> float:
-    """``value`` as a float when it is a finite number > 0; ValueError naming ``name`` otherwise
-    (``tol=inf`` would call every start converged)."""
-    x = _real(value)
-    if not (math.isfinite(x) and x > 0):
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
-    return x
-
-
-def check_integer(name: str, value, minimum: int = 1) -> int:
-    """``value`` as an int when it is an integer >= ``minimum`` (a Python or numpy integer, not a
-    bool); ValueError naming ``name`` otherwise (``maxiter=2.5`` is an error, not 2 iterations)."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    return int(value)
 
 
 def _check_bounds(lower, upper, k):
@@ -648,7 +375,7 @@ def newton(
         next step, for the rows that step (a row's last evaluation, at its root, then costs no
         Jacobian).
     inverse_square : square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
-        elimination over the batch (:func:`_step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
+        elimination over the batch (:func:`step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
         the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
     floats : callable (x, derivs) -> (F, J) or None, optional, with ``fun_jac``: the same
@@ -664,7 +391,7 @@ def newton(
     inside the bounds.
     """
     check_positive("tol", tol)
-    if isinstance(rcond, bool) or not (0.0 <= _real(rcond) < 1.0):
+    if isinstance(rcond, bool) or not (0.0 <= real_or_nan(rcond) < 1.0):
         raise ValueError(f"rcond must be in [0, 1) (relative singular-value threshold), got {rcond!r}")
     maxiter = check_integer("maxiter", maxiter)
     max_halvings = check_integer("max_halvings", max_halvings, 0)
@@ -748,16 +475,6 @@ class _BatchState:
         self.fresh[act] = True
 
 
-def _rows_all_finite(a):
-    """Per row (first axis) whether every entry of ``a`` is finite (one pass when all are)."""
-    if len(a) == 1:
-        return np.array([_all_finite(a)])
-    fin = np.isfinite(a)
-    if fin.all():
-        return np.ones(len(a), dtype=bool)
-    return fin.reshape(len(a), -1).all(axis=1)
-
-
 def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
     """Jacobian of the active rows (reusing the fresh ones of ``fun_jac``) and their Newton step;
     records the condition and counts the iteration. Returns (d, singular)."""
@@ -783,14 +500,19 @@ def _batch_step(S: _BatchState, act, sel, jac, fun, box, opts: _BatchOptions):
     else:
         Ja = _dense(jac(xa)) if jac is not None else numeric_jacobian(fun, xa, Fa)
     Ja = np.asarray(Ja, dtype=float).reshape(act.size, S.m, S.k)
-    good_j = _rows_all_finite(Ja)
+    good_j = finite_rows(Ja)
     bad_j = ~good_j
     if bad_j.any():
         Ja = np.where(bad_j[:, None, None], 0.0, Ja)
-    d, singular, sv = _lstsq_step(Ja, Fa, opts.rcond, opts.inverse_square)
+    if act.size == 1:  # the last active row: its step on floats, as a solve of one problem
+        d1, sing1, cond = step_floats(Ja[0].tolist(), Fa[0].tolist(), opts.rcond, opts.inverse_square)
+        d, singular = np.array([d1]), np.array([sing1])
+    else:
+        d, singular, sv = step_batch(Ja, Fa, opts.rcond, opts.inverse_square)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cond = sv[:, 0] / sv[:, -1]
     singular |= bad_j
-    with np.errstate(divide="ignore", invalid="ignore"):
-        S.cond[sel] = np.where(bad_j, np.nan, sv[:, 0] / sv[:, -1])
+    S.cond[sel] = np.where(bad_j, np.nan, cond)
     S.iters[sel] += 1
     return d, singular
 
@@ -859,7 +581,7 @@ def _newton_batch(fun, jac, fun_jac, x, box, opts: _BatchOptions) -> SolveResult
             S.F[sel] = F_new
         else:
             S.x[sel], S.F[sel], S.res[sel] = x_new, F_new, r_new
-        nonfinite = ~(np.isfinite(r_new) & _rows_all_finite(x_new))
+        nonfinite = ~(np.isfinite(r_new) & finite_rows(x_new))
         conv = (r_new < opts.tol) & ~nonfinite
         sing_stop = singular & ~conv
         S.status[act[conv]] = int(Status.CONVERGED)

@@ -29,6 +29,10 @@ __all__ = [
     "dot3",
     "fd_derivatives",
     "unit",
+    "D1_WEIGHTS",
+    "D1_OFFSETS",
+    "D2_WEIGHTS",
+    "D2_OFFSETS",
 ]
 
 
@@ -161,11 +165,15 @@ class SurfacePoint:
         return SurfacePoint(self.r, self.r_v, self.r_u, self.r_vv, self.r_uv, self.r_uu)
 
 
-# fourth-order central-difference weights
-_D1 = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0  # at offsets -2, -1, +1, +2 (times 1/h)
-_D1_OFF = np.array([-2.0, -1.0, 1.0, 2.0])
-_D2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0  # at offsets -2..2 (times 1/h^2)
-_D2_OFF = np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
+#: fourth-order central differences (the surfaces' and the motions' finite-difference
+#: derivatives): first derivative = sum(D1_WEIGHTS * f(x + D1_OFFSETS h)) / h
+D1_WEIGHTS = np.array([1.0, -8.0, 8.0, -1.0]) / 12.0
+#: offsets of the first-derivative stencil, in steps h
+D1_OFFSETS = np.array([-2.0, -1.0, 1.0, 2.0])
+#: second derivative = sum(D2_WEIGHTS * f(x + D2_OFFSETS h)) / h^2
+D2_WEIGHTS = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / 12.0
+#: offsets of the second-derivative stencil, in steps h
+D2_OFFSETS = np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
 
 
 def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3, *, one_call: bool = False) -> SurfacePoint:
@@ -190,7 +198,7 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3, *, one_
     r = np.asarray(position(u, v), dtype=float)
 
     def d1(f, du, dv):
-        return sum(w * f(o * du, o * dv) for w, o in zip(_D1, _D1_OFF))
+        return sum(w * f(o * du, o * dv) for w, o in zip(D1_WEIGHTS, D1_OFFSETS))
 
     def shifted(a, b):
         return np.asarray(position(u + a, v + b), dtype=float)
@@ -201,12 +209,14 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3, *, one_
 def _fd_combine(r, shifted, h_u, h_v) -> SurfacePoint:
     """The stencil sums of :func:`fd_derivatives` from the centre value ``r`` and ``shifted(a, b)``
     (the position at (u + a, v + b))."""
-    r_u = sum(w * shifted(o * h_u, 0.0) for w, o in zip(_D1, _D1_OFF)) / h_u
-    r_v = sum(w * shifted(0.0, o * h_v) for w, o in zip(_D1, _D1_OFF)) / h_v
-    r_uu = sum(w * (r if o == 0 else shifted(o * h_u, 0.0)) for w, o in zip(_D2, _D2_OFF)) / h_u**2
-    r_vv = sum(w * (r if o == 0 else shifted(0.0, o * h_v)) for w, o in zip(_D2, _D2_OFF)) / h_v**2
+    r_u = sum(w * shifted(o * h_u, 0.0) for w, o in zip(D1_WEIGHTS, D1_OFFSETS)) / h_u
+    r_v = sum(w * shifted(0.0, o * h_v) for w, o in zip(D1_WEIGHTS, D1_OFFSETS)) / h_v
+    r_uu = sum(w * (r if o == 0 else shifted(o * h_u, 0.0)) for w, o in zip(D2_WEIGHTS, D2_OFFSETS)) / h_u**2
+    r_vv = sum(w * (r if o == 0 else shifted(0.0, o * h_v)) for w, o in zip(D2_WEIGHTS, D2_OFFSETS)) / h_v**2
     r_uv = sum(
-        wi * wj * shifted(oi * h_u, oj * h_v) for wi, oi in zip(_D1, _D1_OFF) for wj, oj in zip(_D1, _D1_OFF)
+        wi * wj * shifted(oi * h_u, oj * h_v)
+        for wi, oi in zip(D1_WEIGHTS, D1_OFFSETS)
+        for wj, oj in zip(D1_WEIGHTS, D1_OFFSETS)
     ) / (h_u * h_v)
     return SurfacePoint(r, r_u, r_v, r_uu, r_uv, r_vv)
 
@@ -214,8 +224,8 @@ def _fd_combine(r, shifted, h_u, h_v) -> SurfacePoint:
 def _fd_one_call(position, u, v, h_u, h_v) -> SurfacePoint:
     """:func:`fd_derivatives` with every stencil point in one call of ``position``."""
     offsets = [(0.0, 0.0)]
-    offsets += [(o * h_u, 0.0) for o in _D1_OFF] + [(0.0, o * h_v) for o in _D1_OFF]
-    offsets += [(oi * h_u, oj * h_v) for oi in _D1_OFF for oj in _D1_OFF]
+    offsets += [(o * h_u, 0.0) for o in D1_OFFSETS] + [(0.0, o * h_v) for o in D1_OFFSETS]
+    offsets += [(oi * h_u, oj * h_v) for oi in D1_OFFSETS for oj in D1_OFFSETS]
     uu = np.concatenate([(u + a).ravel() for a, _ in offsets])
     vv = np.concatenate([(v + b).ravel() for _, b in offsets])
     P = np.asarray(position(uu, vv), dtype=float).reshape(len(offsets), *u.shape, 3)

@@ -19,9 +19,7 @@ from _numerics import assert_rounding_close, reads_printed_design
 from conftest import study_settings
 
 from gearrep import checks as C
-from gearrep import frames, published
-from gearrep import hobbed as H
-from gearrep import tca_envelope as TE
+from gearrep import frames, published, tca
 from gearrep.replications import tseng_tca as T
 from gearrep.replications.tseng_tca import model
 from gearrep.settings import SettingError, resolve
@@ -91,7 +89,7 @@ def test_expected_status(records, cid):
 def test_all_points_converged(tables):
     for name in [f"ke_table_5_{i}" for i in range(2, 10)] + ["ke_example_5_3"]:
         t = tables[name]
-        assert list(t.columns[:7]) == H.KE_COLUMNS
+        assert list(t.columns[:7]) == tca.KE_COLUMNS
         assert (t["status"] == "converged").all(), name
         assert t["residual"].max() < 1e-10
         assert len(t) == 11
@@ -147,7 +145,7 @@ def test_table_5_2_reports_both_tangencies(tables, settings):
     angle the flanks interpenetrate by 2.93e-6 mm at the pair, with the gear at the pair's angle
     mid-face is 2.93e-6 mm apart; from phi1' = 6 deg on both are one tangency."""
     t = tables["ke_table_5_2"]
-    assert list(t.columns[:7]) == H.KE_COLUMNS
+    assert list(t.columns[:7]) == tca.KE_COLUMNS
     assert t["Z_p_midface_mm"].abs().max() < 1e-6 and t["Z_g_midface_mm"].abs().max() < 1e-6
     r = t.iloc[0]
     assert r["Z_p_mm"] == pytest.approx(2.063072665, abs=1e-6)
@@ -219,7 +217,7 @@ def test_separation_threshold_setting_is_far_below_the_physical_scales(design):
     with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
         T.validate(resolve(T.SETTINGS), thin)
     with pytest.raises(ValueError, match="Z_p_mm"):
-        TE.tangency_near(H.make_pair(design.gears, 110.0, 113.0), None, float("nan"))
+        tca.envelope_tangency_near(tca.hobbed_pair(design.gears, 110.0, 113.0), None, float("nan"))
 
 
 def test_physical_contact_has_no_interference(tables):
@@ -246,24 +244,24 @@ def test_jacobian_matches_central_differences(gears, cases):
     pair, sol = T.compute_case(gears, cases["5.9"], np.radians([-6.0, 4.0]))
     drop = np.argmax(np.abs(sol.n_p), axis=1)
     x = sol.x + 1e-4  # off the root as well
-    _, J, Fphi = TE.tangency_system(pair, x, sol.phi1, drop)
+    _, J, Fphi = tca.envelope_tangency_system(pair, x, sol.phi1, drop)
     h = 1e-6
     for j in range(9):
         e = np.zeros(9)
         e[j] = h
-        Fp = TE.tangency_system(pair, x + e, sol.phi1, drop, derivs=False)[0]
-        Fm = TE.tangency_system(pair, x - e, sol.phi1, drop, derivs=False)[0]
+        Fp = tca.envelope_tangency_system(pair, x + e, sol.phi1, drop, derivs=False)[0]
+        Fm = tca.envelope_tangency_system(pair, x - e, sol.phi1, drop, derivs=False)[0]
         np.testing.assert_allclose(J[:, :, j], (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
-    Fp = TE.tangency_system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
-    Fm = TE.tangency_system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
+    Fp = tca.envelope_tangency_system(pair, x, sol.phi1 + h, drop, derivs=False)[0]
+    Fm = tca.envelope_tangency_system(pair, x, sol.phi1 - h, drop, derivs=False)[0]
     np.testing.assert_allclose(Fphi, (Fp - Fm) / (2 * h), atol=2e-7, rtol=1e-6)
 
 
 def test_predictor_is_first_order(gears):
-    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly())
+    pair, s0 = tca.hobbed_continue_to(gears, 110.0, 113.0, tca.HobbedAssembly())
     for d in (np.radians(1.0), np.radians(0.5)):
-        pred = TE.predict(pair, s0.x, s0.phi1, [d])
-        true = TE.solve_points(pair, [d], pred).x
+        pred = tca.predict_envelope_contact(pair, s0.x, s0.phi1, [d])
+        true = tca.solve_envelope_points(pair, [d], pred).x
         err = np.abs(pred - true).max()
         assert err < 2e-4 * (d / np.radians(1.0)) ** 2 * 1.5 + 1e-9
 
@@ -273,7 +271,7 @@ def test_pair_is_physical_no_interference(gears):
     and measure the gear surface along the contact normal: the gap must be positive (clearance)
     and close to Z^2/2 (1/110 - 1/113), the lengthwise relative curvature of convex 110 in
     concave 113."""
-    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly())
+    pair, s0 = tca.hobbed_continue_to(gears, 110.0, 113.0, tca.HobbedAssembly())
     x = s0.x[0]
     # normal pointing from the pinion tooth into its tooth space: away from the pinion's centre
     # line X_p, i.e. along the side of the point's polar angle
@@ -316,13 +314,13 @@ def test_bad_input_raises(design):
     with pytest.raises(ValueError, match="lack examples"):
         T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0), design.gears))
     with pytest.raises(ValueError, match="dgamma_h"):
-        H.Assembly(dgamma_h=0.5)
+        tca.HobbedAssembly(dgamma_h=0.5)
     with pytest.raises(ValueError, match="R_cg_mm"):
-        H.make_pair(design.gears, 110.0, 5.0)
-    pair = H.make_pair(design.gears, 110.0, 113.0)
-    start = H.continue_to(design.gears, 110.0, 113.0, H.Assembly())[1]
+        tca.hobbed_pair(design.gears, 110.0, 5.0)
+    pair = tca.hobbed_pair(design.gears, 110.0, 113.0)
+    start = tca.hobbed_continue_to(design.gears, 110.0, 113.0, tca.HobbedAssembly())[1]
     with pytest.raises(ValueError, match="face_width_mm"):
-        TE.physical_contact(pair, start, face_width_mm=0.0)
+        tca.envelope_physical_contact(pair, start, face_width_mm=0.0)
 
 
 def _with_param(pub, parameter, value):
@@ -368,14 +366,14 @@ def test_design_carries_the_table_5_1_pair(design, pub):
     for k, v in (("N_pinion", 21.0), ("pinion_pitch_radius", 31.5), ("pinion_outside_diameter", 69.0)):
         changed = _with_param(changed, k, v)
     other = T.params_from_published(changed)
-    pair = H.make_pair(other.gears, 110.0, 113.0)
+    pair = tca.hobbed_pair(other.gears, 110.0, 113.0)
     assert pair.pinion.n_teeth == 21 and pair.ratio == 21 / 40
     with pytest.raises(ValueError, match="n_pinion"):
         PairDesign(3, 40, 40.0, g.hob)
     with pytest.raises(ValueError, match="face_width_mm"):
         PairDesign(20, 40, float("nan"), g.hob)
     with pytest.raises(ValueError, match="face_width_mm / 2"):
-        H.make_pair(PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
+        tca.hobbed_pair(PairDesign(20, 40, 300.0, g.hob), 110.0, 113.0)
 
 
 def test_one_job_writes_only_its_table(settings, design):
@@ -394,8 +392,8 @@ def test_printed_matrices_against_the_library_route(tables, design):
     gh, gv, phi = 3e-3, -2e-3, np.array([0.3, -0.7])
     np.testing.assert_allclose(model.M_fh(gh) @ model.M_hv(gv), frames.misalignment_rotation(-gh, gv), atol=1e-15)
     np.testing.assert_allclose(model.dM_vp(phi), (model.M_vp(phi + 1e-6) - model.M_vp(phi - 1e-6)) / 2e-6, atol=1e-9)
-    # the library's pair (gearrep.hobbed.Pair) places the members by the printed matrices
-    pair = H.make_pair(design.gears, 110.0, 113.0, H.Assembly(dgamma_h=gh, dgamma_v=gv))
+    # the library's pair (gearrep.tca.HobbedPair) places the members by the printed matrices
+    pair = tca.hobbed_pair(design.gears, 110.0, 113.0, tca.HobbedAssembly(dgamma_h=gh, dgamma_v=gv))
     tilt = model.M_fh(gh) @ model.M_hv(gv)
     for deriv, M in ((False, model.M_vp), (True, model.dM_vp)):
         want = tilt @ M(phi) @ pair.pinion.placement
@@ -468,20 +466,20 @@ def test_unconverged_continuation_is_reported_not_passed_on(gears):
     """Table 5.3 (110/110 under 3') in ONE continuation step from 110/113 does not converge: the
     run stops with the solver status instead of returning a wrong contact."""
     with pytest.raises(RuntimeError, match="did not converge"):
-        H.continue_to(gears, 110.0, 110.0, H.Assembly(dgamma_h=np.radians(3 / 60)), steps=1)
+        tca.hobbed_continue_to(gears, 110.0, 110.0, tca.HobbedAssembly(dgamma_h=np.radians(3 / 60)), steps=1)
     with pytest.raises(ValueError, match="x0"):
-        pair = H.make_pair(gears, 110.0, 113.0)
-        TE.solve_points(pair, [0.0], np.full((1, 9), np.nan))
+        pair = tca.hobbed_pair(gears, 110.0, 113.0)
+        tca.solve_envelope_points(pair, [0.0], np.full((1, 9), np.nan))
 
 
 def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
     """A start thrown onto another branch (one row of the batch predictor corrupted by a gear
     pitch in phi2' and half a turn in the hob angles) is flagged and re-solved by marching: the
     result equals the clean path, every point converged."""
-    pair, s0 = H.continue_to(gears, 110.0, 113.0, H.Assembly(dgamma_h=np.radians(3 / 60)))
+    pair, s0 = tca.hobbed_continue_to(gears, 110.0, 113.0, tca.HobbedAssembly(dgamma_h=np.radians(3 / 60)))
     phi1 = np.radians([-10.0, -4.0, 0.0, 6.0])
-    clean = TE.trace_path(pair, s0, phi1)
-    real_predict = TE.predict
+    clean = tca.trace_envelope_path(pair, s0, phi1)
+    real_predict = tca.predict_envelope_contact
     calls = {"n": 0}
 
     def bad_predict(pair_, x, p0, p1):
@@ -493,7 +491,7 @@ def test_trace_path_rejects_a_far_root_and_marches(gears, monkeypatch):
             out[1, 8] += 2 * np.pi / 40
         return out
 
-    monkeypatch.setattr(TE, "predict", bad_predict)
-    sol = TE.trace_path(pair, s0, phi1)
+    monkeypatch.setattr(tca._envelope, "predict", bad_predict)  # the predictor trace_envelope_path calls
+    sol = tca.trace_envelope_path(pair, s0, phi1)
     assert sol.converged.all(), sol.status_name
     np.testing.assert_allclose(sol.x, clean.x, atol=1e-9)

@@ -18,9 +18,7 @@ import numpy as np
 import pytest
 from conftest import PUBLISHED_DIR, assert_honest
 
-from gearrep import hobbed as tt
-from gearrep import published
-from gearrep import tca_envelope as te
+from gearrep import published, tca
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
 from gearrep.replications import catt as catt_rep
@@ -423,9 +421,9 @@ def test_envelope_limiting_line_near_face_ends(flank, record_conditions):
 # ---------------------------------------------------------------------------------------------
 # 3b. the almost-line contact of the ideal R_cp = R_cg = 110 mm pair (seed 000 Table 5.2/5.3)
 # ---------------------------------------------------------------------------------------------
-def _outward_f(flank: te.Flank, rot, x4):
+def _outward_f(flank: tca.EnvelopeFlank, rot, x4):
     """Outward (out of the tooth) unit normal in S_f of a member at its parameters x4 (n, 4)."""
-    r, _, n, _, _, _ = te.member_geometry(flank, x4)
+    r, _, n, _, _, _ = tca.envelope_member_geometry(flank, x4)
     R = flank.gear.to_tooth_frame  # tooth frame: the tooth centred on X (GeneratedGear.outward)
     rm, nm = r @ R.T, n @ R.T
     s = np.sign(np.sum(GeneratedGear.outward(rm, nm) * nm, -1))
@@ -445,8 +443,8 @@ def _gap_at(pair, at, conf):
 def line_contact_roots():
     """The ideal 110/110 pair at phi1' = 0: the library's route (continuation from 110/113) and
     200 starts spread over the face (psi_p, psi_g, l_p, l_g perturbed)."""
-    pair, sol = tt.continue_to(TCA_GEARS, 110.0, 110.0, tt.Assembly())
-    ref = tt.ideal_start(tt.make_pair(TCA_GEARS, 110.0, 113.0))
+    pair, sol = tca.hobbed_continue_to(TCA_GEARS, 110.0, 110.0, tca.HobbedAssembly())
+    ref = tca.hobbed_ideal_start(tca.hobbed_pair(TCA_GEARS, 110.0, 113.0))
     rng = np.random.default_rng(0)
     n = 200
     x0 = np.repeat(ref.x, n, 0)
@@ -454,11 +452,11 @@ def line_contact_roots():
     x0[:, 7] += rng.uniform(-0.05, 0.05, n)
     x0[:, 0] += rng.normal(0.0, 0.3, n)
     x0[:, 4] += rng.normal(0.0, 0.3, n)
-    roots = te.solve_points(pair, np.zeros(n), x0)
+    roots = tca.solve_envelope_points(pair, np.zeros(n), x0)
     return pair, sol, roots
 
 
-def _assert_honest_ke(r: te.ContactPath, tol=1e-11):
+def _assert_honest_ke(r: tca.EnvelopeContactPath, tol=1e-11):
     assert set(np.unique(r.solve.status)) <= KNOWN
     ok = r.converged
     for name in ("x", "r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond"):
@@ -491,7 +489,9 @@ def test_line_contact_110_110_roots_are_tangencies(line_contact_roots, record_co
     np.testing.assert_allclose(n_p, -n_g, atol=1e-9)
     record_conditions(sol.cond, "110/110 continuation from 110/113")
     record_conditions(roots.cond, "110/110, 200 starts over the face")
-    record_conditions(tt.ideal_start(tt.make_pair(TCA_GEARS, 110.0, 113.0)).cond, "110/113 ideal (reference)")
+    record_conditions(
+        tca.hobbed_ideal_start(tca.hobbed_pair(TCA_GEARS, 110.0, 113.0)).cond, "110/113 ideal (reference)"
+    )
 
 
 def test_line_contact_110_110_returned_root_is_the_physical_contact(line_contact_roots):
@@ -504,7 +504,7 @@ def test_line_contact_110_110_returned_root_is_the_physical_contact(line_contact
     gap = _gap_at(pair, others, sol)
     assert np.all(gap >= -1e-9), gap.min()
     # the library's first-order gap (used to judge Table 5.2) agrees with this independent one
-    np.testing.assert_allclose(te.turn_gap(pair, others, sol.phi2), gap, rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(tca.envelope_turn_gap(pair, others, sol.phi2), gap, rtol=1e-9, atol=1e-15)
     # the physical phi2' is the smallest of the tangencies (no interference at the others); the
     # interfering mid-face root is 0.001 arcsec away by nature, so it cannot be within 0.0005 of sol
     assert abs(others.phi2.min() - sol.phi2[0]) / ARCSEC < 0.0005
@@ -533,6 +533,6 @@ def test_line_contact_110_110_along_the_path(record_conditions):
     x0 = np.repeat(path.x, n, 0)
     x0[:, 3] += rng.uniform(-0.1, 0.1, len(x0))
     x0[:, 7] += rng.uniform(-0.05, 0.05, len(x0))
-    r = te.solve_points(pair, np.repeat(phi1, n), x0)
+    r = tca.solve_envelope_points(pair, np.repeat(phi1, n), x0)
     _assert_honest_ke(r)
     record_conditions(r.cond, "110/110 path, 50 starts per point")

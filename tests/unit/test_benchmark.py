@@ -121,7 +121,7 @@ def test_throughput_of_a_family_with_its_own_solve():
     start = default_start(pair, phi, "reduced")
     calls = []
 
-    def own(ph, st):  # a result shaped like gearrep.tca_envelope.ContactPath (iterations in .solve)
+    def own(ph, st):  # a result shaped like gearrep.tca.EnvelopeContactPath (iterations in .solve)
         calls.append(len(ph))
         c = solve_contact(pair, ph, st, formulation="reduced")
         return SimpleNamespace(converged=c.converged, solve=SimpleNamespace(iterations=c.iterations))

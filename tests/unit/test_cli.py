@@ -473,8 +473,8 @@ def test_hobbed_example_is_the_published_seed000_example_5_4(seed000):
 def test_hobbed_tca_ke_equals_the_replication_route_and_table_5_4(hob_run, seed000):
     """The command's KE table is the tseng_tca route (continuation, path, physical contact, eq 5.12)
     on the same pair, and it reproduces the printed Table 5.4 to its 3 decimals."""
-    from gearrep.hobbed import ke_table
     from gearrep.replications import tseng_tca as T
+    from gearrep.tca import ke_table
 
     pub, design = seed000
     settings = {"phi1_start_deg": -10.0, "phi1_end_deg": 10.0, "phi1_step_deg": 2.0}

@@ -1,4 +1,4 @@
-"""The robust start strategy (gearrep.tca.robust_contact; gearrep.tca_envelope.robust_points for
+"""The robust start strategy (gearrep.tca.robust_contact; gearrep.tca.robust_envelope_points for
 the hob-cut pair) against the reference contact traced by continuation and verified
 (gearrep.tca.reference_contacts): 100 % correct roots from starts uniform over flank 1 for every
 pair of the robustness table, aligned and misaligned, each formulation; a small sample here, the full table (results/bench/robustness.csv, >= 1000 starts
@@ -86,20 +86,20 @@ def envelope_cases(published):
 def test_hob_cut_starts_reach_the_reference(envelope_cases, i):
     """The hob-cut pair, aligned and with the Table 5.4 example's errors: starts uniform over the
     pinion flank's box reach the physical contact traced by continuation."""
-    from gearrep import hobbed, tca_envelope
+    from gearrep import tca
 
     s, c = envelope_cases[i]
     pair, phi, tol = c["pair"], c["phi1"], c["tol"]
-    ref = hobbed.physical_contact(pair, tca_envelope.trace_path(pair, c["start"], phi, tol=tol), tol=tol)
+    ref = tca.hobbed_physical_contact(pair, tca.trace_envelope_path(pair, c["start"], phi, tol=tol), tol=tol)
     assert ref.converged.all()
     row = start_robustness(
         pair,
         ref,
         10,
         np.random.default_rng([43, i]),
-        lambda p, ph, l_p, psi_p: tca_envelope.robust_points(p, ph, l_p, psi_p, c["nominal"], tol=tol),
+        lambda p, ph, l_p, psi_p: tca.robust_envelope_points(p, ph, l_p, psi_p, c["nominal"], tol=tol),
         box=c["box"],
-        classify=tca_envelope.classify_points,
+        classify=tca.classify_envelope_points,
     )
     assert row["n_starts"] == 50
     assert row["correct_pct"] == 100.0, (c["misalignment"], row)

@@ -271,7 +271,7 @@ def test_job_counts_of_framework_targets(every_job):
 
 def test_touching_one_module_reruns_exactly_its_users(wf, every_job):
     """Mark every output of the default target as up to date (empty files + --touch), then touch
-    src/gearrep/report.py: only the report job, the per-seed parity-plot jobs that draw with it
+    src/gearrep/report/_page.py: only the report job, the per-seed parity-plot jobs that draw with it
     (one per seed with a study) and the `all` target may be planned."""
     for job in needed(every_job, "all"):
         for o in job["output"]:
@@ -280,7 +280,7 @@ def test_touching_one_module_reruns_exactly_its_users(wf, every_job):
             p.touch()
     smk(wf, "--cores", "1", "--touch", "-q")
     assert "Nothing to be done" in smk(wf, "-n")
-    (wf / "src" / "gearrep" / "report.py").touch()
+    (wf / "src" / "gearrep" / "report" / "_page.py").touch()
     from gearrep.replications import REGISTRY
 
     n_seeds = len({s.seed for s in REGISTRY.values()})

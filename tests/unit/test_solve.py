@@ -117,7 +117,8 @@ def test_condition_number_of_the_last_jacobian_is_reported():
 
 
 def test_closed_form_2x2_step_matches_the_svd_step():
-    from gearrep.solve import _step_2x2, _svd_step
+    from gearrep._newton_steps import step_2x2 as _step_2x2
+    from gearrep._newton_steps import svd_step as _svd_step
 
     rng = np.random.default_rng(7)
     J = rng.normal(size=(400, 2, 2)) * 10.0 ** rng.uniform(-4, 4, size=(400, 1, 1))
@@ -215,7 +216,8 @@ def test_a_lazy_jacobian_gives_the_same_solves_and_is_formed_only_for_rows_that_
 
 
 def test_square_step_matches_the_svd_step_and_flags_the_same_rows():
-    from gearrep.solve import _step_square, _svd_step
+    from gearrep._newton_steps import step_square as _step_square
+    from gearrep._newton_steps import svd_step as _svd_step
 
     rng = np.random.default_rng(8)
     J = rng.normal(size=(300, 5, 5)) * 10.0 ** rng.uniform(-3, 3, size=(300, 1, 1))
@@ -238,7 +240,7 @@ def test_gauss_jordan_matches_the_inverse_and_one_system_alone_gets_its_batch_va
     Frobenius norms of J and J^-1 to rounding, and the written-out float version of one system
     gives bit for bit what that system gets in the batch: random, scaled, pivot-heavy (every
     pivot choice differs between systems), exactly singular and non-finite systems."""
-    from gearrep.solve import _gauss_jordan, _gauss_jordan_one, _step_square, _step_square_one
+    from gearrep._newton_steps import GAUSS_JORDAN_FLOATS, gauss_jordan, step_floats, step_square
 
     rng = np.random.default_rng(k)
     n = 400
@@ -248,13 +250,13 @@ def test_gauss_jordan_matches_the_inverse_and_one_system_alone_gets_its_batch_va
     J[60:62, 1, 1] = np.nan
     F = rng.normal(size=(n, k))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        x, q_inv, q_J = _gauss_jordan(J, F)
+        x, q_inv, q_J = gauss_jordan(J, F)
     ok = np.arange(n) >= 62
     inv = np.linalg.inv(J[ok])
     np.testing.assert_allclose(x[ok], np.einsum("nij,nj->ni", inv, F[ok]), rtol=1e-7, atol=1e-9 * np.abs(x[ok]).max())
     np.testing.assert_allclose(q_inv[ok], np.einsum("nij,nij->n", inv, inv), rtol=1e-7)
     np.testing.assert_allclose(q_J, np.einsum("nij,nij->n", J, J), rtol=1e-13)
-    one = _gauss_jordan_one(k)
+    one = GAUSS_JORDAN_FLOATS[k]
     for r in range(n):
         try:
             xr, qi, qj = one(J[r].tolist(), F[r].tolist())
@@ -265,8 +267,67 @@ def test_gauss_jordan_matches_the_inverse_and_one_system_alone_gets_its_batch_va
         np.testing.assert_array_equal([qi, qj], [q_inv[r], q_J[r]], err_msg=f"system {r}")
     for r in [*range(50, 60), *range(62, n)]:  # steps (the solver zeroes a non-finite Jacobian first)
         Jr, Fr = J[r : r + 1], F[r : r + 1]
-        for a, b in zip(_step_square_one(Jr, Fr, 1e-13), _step_square(Jr, Fr, 1e-13)):
-            np.testing.assert_array_equal(a, b, err_msg=f"step of system {r}")
+        d, singular, cond = step_floats(Jr[0].tolist(), Fr[0].tolist(), 1e-13, True)
+        db, sb, sv = step_square(Jr, Fr, 1e-13)
+        np.testing.assert_array_equal(np.array([d]), db, err_msg=f"step of system {r}")
+        with np.errstate(divide="ignore"):
+            assert singular == sb[0] and cond == sv[0, 0] / sv[0, 1], f"step of system {r}"
+
+
+def _looped_gauss_jordan(J, F):
+    """Gauss-Jordan elimination of one system on floats in loops: the reference the written-out
+    eliminations are read against (the same operations in the same order)."""
+    k = len(F)
+    R = [J[i] + [F[i]] for i in range(k)]
+
+    def squares():
+        q = 0.0
+        for row in R:
+            for v in row[:k]:
+                q = q + v * v
+        return q
+
+    q_J = squares()
+    for c in range(k):
+        p = max(range(c, k), key=lambda i: (abs(R[i][c]), -i))  # the first row with the largest |entry|
+        R[c], R[p] = R[p], R[c]
+        a = R[c]
+        inv = 1.0 / a[c]
+        b = R[c] = [inv if j == c else a[j] * inv for j in range(k + 1)]
+        for i in range(k):
+            if i != c:
+                a, f = R[i], R[i][c]
+                R[i] = [-(f * inv) if j == c else a[j] - f * b[j] for j in range(k + 1)]
+    return [R[i][k] for i in range(k)], squares(), q_J
+
+
+def test_the_written_out_eliminations_are_readable_compiled_at_import_and_equal_the_loops():
+    """Each size's elimination on floats is compiled at import from gauss_jordan_source, which is
+    its source (inspect.getsource reads it back, a traceback shows its lines), straight-line code
+    (no loop but the one building the rows), and gives bit for bit what the same elimination in
+    loops gives."""
+    import inspect
+    import traceback
+
+    from gearrep._newton_steps import GAUSS_JORDAN_FLOATS, gauss_jordan_source, step_floats, step_square
+
+    assert sorted(GAUSS_JORDAN_FLOATS) == list(range(3, 7))
+    rng = np.random.default_rng(11)
+    for k, fn in GAUSS_JORDAN_FLOATS.items():
+        source = gauss_jordan_source(k)
+        assert inspect.getsource(fn) == source
+        assert source.count(" for ") == 1 and "while" not in source
+        for _ in range(50):
+            J = (rng.normal(size=(k, k)) * 10.0 ** rng.uniform(-3, 3, size=(k, 1))).tolist()
+            F = rng.normal(size=k).tolist()
+            assert fn(J, F) == _looped_gauss_jordan(J, F)
+    # a size without a written-out elimination: the batch elimination on a batch of one
+    J, F = rng.normal(size=(1, 7, 7)), rng.normal(size=(1, 7))
+    d, singular, cond = step_floats(J[0].tolist(), F[0].tolist(), 1e-13, True)
+    np.testing.assert_array_equal(np.array([d]), step_square(J, F, 1e-13)[0])
+    with pytest.raises(ZeroDivisionError) as err:
+        GAUSS_JORDAN_FLOATS[3]([[0.0] * 3] * 3, [1.0, 2.0, 3.0])
+    assert "inv = 1.0 / a[0]" in "".join(traceback.format_tb(err.value.__traceback__))
 
 
 @pytest.mark.numerics

@@ -2,7 +2,7 @@
 default run): robustness.csv, one row per gear family, formulation and assembly (aligned or
 misaligned; the involute, bevel, Novikov-Wildhaber, CATT and hob-cut pairs of the replications):
 starts (u1, v1) uniform over flank 1 at five angles of the meshing cycle, solved by
-gearrep.tca.robust_contact (the hob-cut pair: gearrep.tca_envelope.robust_points), classified against the reference contact traced by continuation from
+gearrep.tca.robust_contact (the hob-cut pair: gearrep.tca.robust_envelope_points), classified against the reference contact traced by continuation from
 the family's nominal start and verified (gearrep.tca.reference_contacts); correct, wrong-root and
 not-converged percentages (and the correct percentage of the same starts without the strategy's
 restarts: start_alone_correct_pct), mean Newton iterations and the cost per solve (wall seconds of the
@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from gearrep import benchmark, hobbed, published, tca_envelope
+from gearrep import benchmark, published, tca
 from gearrep.replications import load as load_study
 from gearrep.settings import defaults
 from gearrep.tca import default_start, reference_contacts, robust_contact, start_robustness
@@ -51,17 +51,17 @@ def cases():
 
 def envelope_row(s, case, row, rng):
     """The row of a pair of generated envelopes (9-unknown TCA): reference by continuation from the
-    solved start and the physical tangency (gearrep.hobbed.physical_contact), starts (l_p, psi_p)
-    uniform over the case's pinion box solved by gearrep.tca_envelope.robust_points."""
+    solved start and the physical tangency (gearrep.tca.hobbed_physical_contact), starts (l_p, psi_p)
+    uniform over the case's pinion box solved by gearrep.tca.robust_envelope_points."""
     pair, phi, tol, nominal = case["pair"], case["phi1"], case["tol"], case["nominal"]
-    ref = hobbed.physical_contact(pair, tca_envelope.trace_path(pair, case["start"], phi, tol=tol), tol=tol)
+    ref = tca.hobbed_physical_contact(pair, tca.trace_envelope_path(pair, case["start"], phi, tol=tol), tol=tol)
     if not ref.converged.all():
         return row | {"reference": f"no verified reference contact (status {list(ref.status_name)})"}
 
     def solve(p, ph, u1, v1, fallback=True):
-        return tca_envelope.robust_points(p, ph, u1, v1, nominal, tol=tol, fallback=fallback)
+        return tca.robust_envelope_points(p, ph, u1, v1, nominal, tol=tol, fallback=fallback)
 
-    kw = dict(box=case["box"], classify=tca_envelope.classify_points)
+    kw = dict(box=case["box"], classify=tca.classify_envelope_points)
     seed = rng.integers(2**32)
     r = start_robustness(pair, ref, N_PER_ANGLE, np.random.default_rng(seed), solve, **kw)
     alone = start_robustness(

@@ -9,7 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..ellipse import effective_modulus
-from ..solve import Status, check_finite, check_integer
+from ..inputs import check_finite, check_integer
+from ..solve import Status
 from ..tca import GearPair
 from . import _compliance as compliance
 from ._compliance import STEEL, Material

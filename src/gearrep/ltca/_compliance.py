@@ -48,7 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..ellipse import effective_modulus
-from ..solve import check_finite
+from ..inputs import check_finite
 
 __all__ = [
     "Material",

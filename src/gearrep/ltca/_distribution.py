@@ -25,7 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..solve import Status, check_positive
+from ..inputs import check_positive
+from ..solve import Status
 
 __all__ = ["ContactLoads", "solve_contact_loads"]
 

@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solve import check_finite, check_positive
+from ..ellipse import effective_modulus
+from ..inputs import check_finite, check_positive
 
 __all__ = [
     "Q_PRIME_COEFFICIENTS",
@@ -54,8 +55,6 @@ def zone_factor(alpha_t: float, alpha_wt: float | None = None, beta_b: float = 0
 def elasticity_factor(E1_MPa: float, nu1: float, E2_MPa: float | None = None, nu2: float | None = None) -> float:
     """ISO 6336-2 elasticity factor Z_E = sqrt(E* / pi) [sqrt(MPa)], 1/E* = sum (1 - nu_i^2)/E_i
     (:func:`gearrep.ellipse.effective_modulus`); 189.8 sqrt(MPa) for steel (206000 MPa, 0.3)."""
-    from ..ellipse import effective_modulus
-
     return float(np.sqrt(effective_modulus(E1_MPa, nu1, E2_MPa, nu2) / np.pi))
 
 

@@ -90,8 +90,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import frames
-from ..solve import SolveResult, Status, check_finite, newton
+from ..inputs import check_finite
+from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
+from ..tca import GearPair, solve_contact
 
 __all__ = [
     "CATTGearData",
@@ -587,8 +589,6 @@ def assemble(design: dict, pair_id: str, prm: dict) -> Mesh:
     """Mount the pinion and the turned-over gear of ``design`` (keys ``z1``, ``z2``, ``module``,
     ``R_T``, ``face_width``; mm) with flank pair ``pair_id`` (a key of :data:`PAIRS`) in the frames
     of :mod:`gearrep.tca`; ``prm`` as in :func:`gear_data`."""
-    from ..tca import GearPair
-
     if pair_id not in PAIRS:
         raise ValueError(f"pair_id must be one of {sorted(PAIRS)}, got {pair_id!r}")
     s1, s2 = PAIRS[pair_id]
@@ -650,8 +650,6 @@ def solve_cycle(mesh: Mesh, phi1, prm: dict):
     """TCA at mesh pinion angles ``phi1`` (rad) by :func:`gearrep.tca.solve_contact`
     (conventional) from :func:`starts`; ``prm`` brings ``start_offset_mm`` (mm), ``tol`` and
     ``maxiter``. Returns the :class:`gearrep.tca.ContactPoints` (status per point)."""
-    from ..tca import solve_contact
-
     _require_keys("prm", prm, ("start_offset_mm", "tol", "maxiter"))
     start = starts(mesh, phi1, prm["start_offset_mm"])
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

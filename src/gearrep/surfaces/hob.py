@@ -64,8 +64,9 @@ from ..curvature_relations import (
     two_parameter_system,
 )
 from ..envelope import Envelope, EnvelopeResult, EnvelopeSurface
+from ..inputs import check_integer, check_positive
 from ..motion import ChainMotion, rotation, translation
-from ..solve import SolveResult, Status, check_integer, check_positive, newton
+from ..solve import SolveResult, Status, newton
 from ..surface import RotatedSurface, Surface, SurfacePoint
 
 __all__ = [
@@ -462,7 +463,7 @@ class PairDesign:
     """The pinion and gear of a curvilinear-tooth pair cut by one hob: tooth numbers ``n_pinion``,
     ``n_gear`` (integers in [4, 10000]), the face width ``face_width_mm`` of both members (in
     (0, 1000] mm) and the :class:`ZAHob`. :meth:`cut` generates the two working flanks; the pair
-    for the TCA is :func:`gearrep.hobbed.make_pair`."""
+    for the TCA is :func:`gearrep.tca.hobbed_pair`."""
 
     n_pinion: int
     n_gear: int

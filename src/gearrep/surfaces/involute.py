@@ -76,7 +76,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..solve import check_finite as _check_finite
+from ..inputs import check_finite as _check_finite
 from ..surface import Surface, SurfacePoint
 
 __all__ = [

@@ -28,8 +28,10 @@ import math
 import numpy as np
 
 from .. import frames
-from ..envelope import Envelope
+from ..curvature_relations import generated_curvatures
+from ..envelope import Envelope, singular_points
 from ..motion import Motion, rack_generation_motion
+from ..solve import Status
 from ..surface import Surface, SurfacePoint
 from .rack import CircularArcRackCutter, ParabolicRackCutter
 
@@ -265,8 +267,6 @@ def undercut_limit(flank: RackGeneratedFlank, u_guess: float) -> tuple[float, fl
     theta = 0; the line is parallel to the rack generatrix) and its height x_b(u*) from the rack
     pitch line (negative: on the member's side). Rack points beyond u* undercut the member.
     ``u_guess``: a start on the side of interest. Raises RuntimeError if the solve fails."""
-    from ..envelope import singular_points
-
     if not np.isfinite(u_guess):
         raise ValueError(f"u_guess must be finite, got {u_guess!r}")
     phi0 = flank.rolling_angle(np.array([u_guess]), np.array([0.0]))[0]
@@ -718,9 +718,6 @@ class NormalPartSurface(Surface):
         return self.base.position(u, v)
 
     def evaluate(self, u, v) -> SurfacePoint:
-        from ..curvature_relations import generated_curvatures
-        from ..solve import Status
-
         u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
         shape = u.shape
         rec = self.base.solve(u.reshape(-1), v.reshape(-1))

@@ -81,6 +81,16 @@ Bevel pairs (intersecting axes, thesis sec 3.3 and 5, misalignments eq 47-48): :
 and :class:`BevelMisalignment` (private module ``_bevel``, whose docstring derives the explicit
 spherical form of member 2 used by the reduced formulation); every solve here accepts them.
 
+Pairs of generated flanks (seed 000 eq 5.1-5.11): two two-parameter envelopes
+(:class:`gearrep.surfaces.hob.GeneratedGear`) meet in a 9-unknown tangency system
+(:func:`envelope_tangency_system`, :func:`solve_envelope_points`, :func:`trace_envelope_path`,
+:func:`envelope_physical_contact`, :func:`robust_envelope_points`; private module ``_envelope``);
+the curvilinear-tooth pair cut by one ZA hob is :class:`HobbedPair` with its
+:class:`HobbedAssembly` errors, reached by continuation from the ideal pair
+(:func:`hobbed_continue_to`), with its kinematic-error table (:func:`ke_table`), tip crossings and
+contact ellipses (private module ``_hobbed``). Their names here carry ``envelope`` or ``hobbed``
+where the module's own name is generic (``Pair``, ``trace_path``).
+
 Start strategies and solver variants (plain / damped / domain-kept / seeded / robust Newton for
 the conventional formulation, plain / damped / robust for the reduced one, random and
 line-of-action starts) are in this package too (private module ``_starts``). The library's start
@@ -105,8 +115,10 @@ numba took 1.5 s and the first compilation 15 s per process (load ~9 on 2 cores)
 cold-run goal of 45 s for the whole workflow: not adopted; numpy is the only path.
 """
 
+from . import _envelope, _hobbed
 from ._bevel import BevelMisalignment, BevelPair
 from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
+from ._envelope import hob_pitch_l
 from ._formulations import (
     MAX_CONTACT_TOL,
     check_formulation,
@@ -117,7 +129,8 @@ from ._formulations import (
     solve_contact,
     trace_path,
 )
-from ._kernels import normal_derivatives
+from ._hobbed import KE_COLUMNS, ke_table
+from ._kernels import normal_derivatives, reduced_system
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
 from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
 from ._starts import (
@@ -142,6 +155,35 @@ from ._starts import (
     transverse_stage,
 )
 
+#: the envelope-pair TCA (private module ``_envelope``) under names that say so
+EnvelopeFlank = _envelope.Flank
+envelope_flank = _envelope.make_flank
+envelope_member_geometry = _envelope.member_geometry
+envelope_dropped_component = _envelope.dropped_component
+envelope_tangency_system = _envelope.tangency_system
+EnvelopeContactPath = _envelope.ContactPath
+solve_envelope_points = _envelope.solve_points
+predict_envelope_contact = _envelope.predict
+require_converged = _envelope.require
+trace_envelope_path = _envelope.trace_path
+envelope_physical_contact = _envelope.physical_contact
+envelope_pinion_outward = _envelope.pinion_outward
+envelope_tangency_near = _envelope.tangency_near
+envelope_turn_gap = _envelope.turn_gap
+robust_envelope_points = _envelope.robust_points
+classify_envelope_points = _envelope.classify_points
+#: the hob-cut curvilinear pair (private module ``_hobbed``)
+HobbedAssembly = _hobbed.Assembly
+HobbedPair = _hobbed.Pair
+hobbed_pair = _hobbed.make_pair
+hobbed_ideal_start = _hobbed.ideal_start
+hobbed_continue_to = _hobbed.continue_to
+clear_hobbed_start_cache = _hobbed.clear_start_cache
+hobbed_physical_contact = _hobbed.physical_contact
+hobbed_phi1_grid = _hobbed.phi1_grid
+hobbed_tip_crossing = _hobbed.tip_crossing
+hobbed_elastic_ellipses = _hobbed.elastic_ellipses
+
 __all__ = [
     "Misalignment",
     "GearPair",
@@ -157,6 +199,7 @@ __all__ = [
     "default_start",
     "solve_contact",
     "reduced_unknowns",
+    "reduced_system",
     "trace_path",
     "contact_curvatures",
     "contact_ellipse",
@@ -184,4 +227,33 @@ __all__ = [
     "reference_contacts",
     "classify_contacts",
     "start_robustness",
+    "EnvelopeFlank",
+    "envelope_flank",
+    "envelope_member_geometry",
+    "envelope_dropped_component",
+    "envelope_tangency_system",
+    "EnvelopeContactPath",
+    "solve_envelope_points",
+    "predict_envelope_contact",
+    "hob_pitch_l",
+    "require_converged",
+    "trace_envelope_path",
+    "envelope_physical_contact",
+    "envelope_pinion_outward",
+    "envelope_tangency_near",
+    "envelope_turn_gap",
+    "robust_envelope_points",
+    "classify_envelope_points",
+    "KE_COLUMNS",
+    "HobbedAssembly",
+    "HobbedPair",
+    "hobbed_pair",
+    "hobbed_ideal_start",
+    "hobbed_continue_to",
+    "clear_hobbed_start_cache",
+    "hobbed_physical_contact",
+    "ke_table",
+    "hobbed_phi1_grid",
+    "hobbed_tip_crossing",
+    "hobbed_elastic_ellipses",
 ]

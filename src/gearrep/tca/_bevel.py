@@ -57,7 +57,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..frames import rot_y, rot_z
-from ..solve import check_finite
+from ..inputs import check_finite
 from ..surface import AxialForm
 from ._pair import GearPair
 

@@ -4,14 +4,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..curvature import principal_curvatures, with_opposite_normal
+from ..ellipse import elastic_ellipse_at, hertz_contact_at
+from ..surface import SurfacePoint
 from ._pair import ContactPoints, GearPair, _mv
 
 __all__ = ["contact_curvatures", "contact_ellipse", "contact_hertz"]
 
 
 def _fixed_frame_point(flank, u, v, R, origin=None):
-    from ..surface import SurfacePoint
-
     P = flank.evaluate(u, v)
     vecs = [_mv(R, x) for x in (P.r, P.r_u, P.r_v, P.r_uu, P.r_uv, P.r_vv)]
     if origin is not None:
@@ -28,8 +29,6 @@ def contact_curvatures(pair: GearPair, contact: ContactPoints):
     toward the normal): a convex member-1 flank has negative values, a convex member-2 flank
     (seen from member 1) positive ones. Computed for every row; rows whose status is not
     CONVERGED are NaN. Returns (PrincipalCurvatures of member 1, of member 2)."""
-    from ..curvature import principal_curvatures, with_opposite_normal
-
     ok = contact.converged
     idx = np.flatnonzero(ok)
     nan = np.full(len(contact), np.nan)
@@ -72,8 +71,6 @@ def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
     axis unit vectors in S_f. Rows whose
     status is not CONVERGED are NaN; a contact whose relative curvature is not definite (line
     contact) has ``elliptic`` False."""
-    from ..ellipse import elastic_ellipse_at
-
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
     delta = _per_point("delta", delta, contact, ok)
@@ -93,8 +90,6 @@ def contact_hertz(pair: GearPair, contact: ContactPoints, load_N, E1_MPa, nu1, E
     p0 [MPa] for the normal load ``load_N`` [N] carried by each point (design lengths in mm).
     Rows whose contact status is not CONVERGED are NaN and keep that status; a line contact (a
     relative curvature of 0 or of mixed sign) is NaN with status SINGULAR."""
-    from ..ellipse import hertz_contact_at
-
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
     load_N = _per_point("load_N", load_N, contact, ok)

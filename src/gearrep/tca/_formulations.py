@@ -9,7 +9,8 @@ import math
 import numpy as np
 
 from ..frames import rotate_z
-from ..solve import SolveResult, Status, _real, _rows_all_finite, check_integer, newton
+from ..inputs import check_integer, real_or_nan
+from ..solve import SolveResult, Status, finite_rows, newton
 from ..surface import cross3, dot3
 from ._kernels import (
     _SCALAR_ERRORS,
@@ -199,14 +200,14 @@ MAX_CONTACT_TOL = 1e-3
 
 def _check_knobs(tol, maxiter, phi10, phi20) -> None:
     """ValueError naming the knob: tol in (0, MAX_CONTACT_TOL], maxiter an integer >= 1, the TE reference
-    angles phi10, phi20 one finite number each [rad] (a string or a bool is no number: ``_real``)."""
-    if not 0 < _real(tol) <= MAX_CONTACT_TOL:
+    angles phi10, phi20 one finite number each [rad] (a string or a bool is no number: :func:`gearrep.inputs.real_or_nan`)."""
+    if not 0 < real_or_nan(tol) <= MAX_CONTACT_TOL:
         raise ValueError(
             f"tol must be a number in (0, {MAX_CONTACT_TOL:g}] (a larger one calls an untouched start converged), got {tol!r}"
         )
     check_integer("maxiter", maxiter)
     for name, value in (("phi10", phi10), ("phi20", phi20)):
-        if np.ndim(value) != 0 or not math.isfinite(_real(value)):
+        if np.ndim(value) != 0 or not math.isfinite(real_or_nan(value)):
             raise ValueError(f"{name} (TE reference angle) must be one finite number [rad], got {value!r}")
 
 
@@ -691,7 +692,7 @@ def _contact_geometry(pair, formulation, sol, phi1, recorded):
                 r[miss], n1[miss] = pair.member1(u1[miss], v1[miss], phi1[miss])
                 n2[miss] = pair.member2(u2[miss], v2[miss], phi2[miss])[1]
     for vec in (r, n1):  # a point or normal with a non-finite component is not a vector
-        bad = ~_rows_all_finite(vec)
+        bad = ~finite_rows(vec)
         if bad.any():
             vec[bad] = np.nan
     return u2, v2, phi2, r, n1, n2

@@ -10,9 +10,10 @@ import numpy as np
 
 from ..frames import rotate_z
 from ..surface import add3, cross, cross3, cross3_sparse, dot3
+from ._bevel import spherical_unknowns
 from ._pair import GearPair, _wrap
 
-__all__ = ["normal_derivatives"]
+__all__ = ["normal_derivatives", "reduced_system"]
 
 
 def normal_derivatives(P, sign):
@@ -123,8 +124,6 @@ def _reduced3(pair: GearPair, u1, v1, phi1, c1, s1, derivs=True, v_column=True, 
     computed at once). ``P1``: member 1's flank already evaluated at (u1, v1) by components, if
     the caller has it."""
     if getattr(pair.flank2, "spherical", False):
-        from ._bevel import spherical_unknowns
-
         view = pair.axial_view
         P1 = P1 if view.flank1 is pair.flank1 else None
         K = _reduced3(view, u1, v1, phi1, c1, s1, derivs=bool(derivs), v_column=v_column, P1=P1)
@@ -330,7 +329,12 @@ def _reduced_FJ3(pair, u1, v1, phi1, c1, s1, first0, last2, derivs=True, v_colum
     return (*_pack(f, columns if derivs == "lazy" else columns(), n, one), K)
 
 
-def _reduced_FJ(pair, u1, v1, phi1, drop, derivs=True):
+def reduced_system(pair, u1, v1, phi1, drop, derivs=True):
+    """The reduced formulation (eq 33-44) at member 1's (u1, v1) and angles phi1 (arrays (n,),
+    [rad]): (F (n, 2), J (n, 2, 2) or None without ``derivs``, K), F the two components of
+    n_f1 x n_f2 kept when the component ``drop`` (n,) (0, 1 or 2) is dropped, J its Jacobian in
+    (u1, v1), K the kernel's record: member 2's explicit unknowns ``u2``, ``v2``, ``phi2``, the
+    point ``r`` and the normals ``n1``, ``n2`` by components."""
     u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
     drop = np.asarray(drop)
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -10,7 +10,8 @@ from typing import ClassVar
 import numpy as np
 
 from ..frames import matrix_applier, rot_x, rot_y, rot_z
-from ..solve import Status, _real, check_finite, status_names
+from ..inputs import check_finite, real_or_nan
+from ..solve import Status, status_names
 from ..units import ARCSEC
 
 __all__ = ["Misalignment", "GearPair", "transmission_error", "ContactPoints"]
@@ -101,7 +102,7 @@ class GearPair:
                 "with gearrep.tca.BevelPair, not GearPair"
             )
         for name, n in (("n1", n1), ("n2", n2)):
-            if not math.isfinite(_real(n)) or int(n) != n or n < 1:
+            if not math.isfinite(real_or_nan(n)) or int(n) != n or n < 1:
                 raise ValueError(f"{name} must be a positive integer, got {n!r}")
         for name, n, flank in (("n1", n1, flank1), ("n2", n2, flank2)):
             own = getattr(getattr(flank, "gear", None), "n_teeth", None)  # the flank's own tooth number

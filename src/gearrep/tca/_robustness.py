@@ -15,7 +15,8 @@ import time
 
 import numpy as np
 
-from ..solve import Status, check_integer
+from ..inputs import check_integer
+from ..solve import Status
 from ._formulations import check_formulation, trace_path
 from ._pair import ContactPoints, GearPair, _wrap
 from ._starts import _solve_projected, flank_sense, meshing_sense

@@ -18,7 +18,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..solve import SolveResult, Status, _real, check_integer, check_positive, newton
+from ..inputs import check_integer, check_positive, real_or_nan
+from ..solve import SolveResult, Status, newton
 from ..surface import cross
 from ._formulations import (
     _angles,
@@ -93,7 +94,7 @@ def _starts5(x0, name: str = "x0") -> np.ndarray:
 
 
 def _check_margin(margin) -> None:
-    if not 0.0 <= _real(margin) < 0.5:
+    if not 0.0 <= real_or_nan(margin) < 0.5:
         raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
 
 

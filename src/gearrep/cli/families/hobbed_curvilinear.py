@@ -1,16 +1,16 @@
 """The ``hobbed_curvilinear`` family: curvilinear-tooth cylindrical gears cut by a ZA worm hob
 (seed 000), analysed by the library's TCA of two-parameter envelopes.
 
-This module is an adapter, not a second TCA, and uses only the library (:mod:`gearrep.hobbed`,
+This module is an adapter, not a second TCA, and uses only the library (:mod:`gearrep.tca`,
 the replication seed 000 ch. 5 being another user of it): the pair is built by
-:func:`gearrep.hobbed.make_pair`, the contact at phi1 = 0 by :func:`gearrep.hobbed.continue_to`
+:func:`gearrep.tca.hobbed_pair`, the contact at phi1 = 0 by :func:`gearrep.tca.hobbed_continue_to`
 (continuation from the ideal pair, then the physical contact among the tangencies found across
-the face), paths by :func:`gearrep.tca_envelope.trace_path` from it (the rows it misses are
-solved again by the robust start strategy :func:`gearrep.tca_envelope.robust_points` from the
-first-order predictor off the contact at phi1 = 0) and :func:`gearrep.hobbed.physical_contact`,
-the engagement limits by :func:`gearrep.hobbed.tip_crossing` (where the contact reaches each tip
-circle, r_p + m), the contact ellipses by :func:`gearrep.hobbed.elastic_ellipses` (curvature
-method, eq 5.14-5.17) and the KE table by :func:`gearrep.hobbed.ke_table` (eq 5.12, zero at
+the face), paths by :func:`gearrep.tca.trace_envelope_path` from it (the rows it misses are
+solved again by the robust start strategy :func:`gearrep.tca.robust_envelope_points` from the
+first-order predictor off the contact at phi1 = 0) and :func:`gearrep.tca.hobbed_physical_contact`,
+the engagement limits by :func:`gearrep.tca.hobbed_tip_crossing` (where the contact reaches each tip
+circle, r_p + m), the contact ellipses by :func:`gearrep.tca.hobbed_elastic_ellipses` (curvature
+method, eq 5.14-5.17) and the KE table by :func:`gearrep.tca.ke_table` (eq 5.12, zero at
 phi1 = 0). What is added here is the design keys and their checks, the mapping of those results
 onto the command's tables, the check that the contact at phi1 = 0 lies on both flanks, and the
 parameter grid over a flank (hob parameter l from the tip circle to the hob's working depth,
@@ -30,21 +30,26 @@ import pandas as pd
 
 from ... import settings as st
 from ...curvature import PrincipalCurvatures, with_opposite_normal
-from ...hobbed import (
-    Assembly,
-    continue_to,
-    elastic_ellipses,
-    ke_table,
-    make_pair,
-    phi1_grid,
-    physical_contact,
-    tip_crossing,
-)
 from ...meshing import contact_ratio
 from ...settings import SettingError
 from ...solve import Status
 from ...surfaces.hob import PairDesign, za_hob
-from ...tca_envelope import hob_pitch_l, pinion_outward, predict, robust_points, trace_path, turn_gap
+from ...tca import (
+    HobbedAssembly,
+    envelope_pinion_outward,
+    envelope_turn_gap,
+    hob_pitch_l,
+    hobbed_continue_to,
+    hobbed_elastic_ellipses,
+    hobbed_pair,
+    hobbed_phi1_grid,
+    hobbed_physical_contact,
+    hobbed_tip_crossing,
+    ke_table,
+    predict_envelope_contact,
+    robust_envelope_points,
+    trace_envelope_path,
+)
 from ...units import ARCSEC
 from ..family import Design, Family
 from ..keys import ANALYSIS, set_dotted
@@ -69,7 +74,7 @@ __all__ = [
 
 _MISALIGNMENT = st.group(
     "assembly errors of seed 000 sec 5.2 (eq 5.1-5.3): the pinion axis turned about the mid-face point of its "
-    "axis, the gear moved; the library (tseng_tca Assembly) takes at most 0.01 rad and 2 mm",
+    "axis, the gear moved; the library (gearrep.tca.HobbedAssembly) takes at most 0.01 rad and 2 mm",
     dgamma_h_deg=st.number(
         0.0,
         "deg",
@@ -154,10 +159,10 @@ KEYS = st.declare(
 PARAMS = ("hob_l_mm", "swivel_psi_rad")
 
 
-def assembly(values) -> Assembly:
+def assembly(values) -> HobbedAssembly:
     """The library's assembly errors of the resolved design ``values``."""
     m = values["misalignment"]
-    return Assembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])
+    return HobbedAssembly(math.radians(m["dgamma_h_deg"]), math.radians(m["dgamma_v_deg"]), m["dC_mm"], m["dZ_mm"])
 
 
 def build(values) -> Design:
@@ -191,7 +196,7 @@ def build(values) -> Design:
     check_ke_grid(v)
     hob = za_hob(m, a_deg, r_h, v["hob_profile"])
     gears = PairDesign(v["pinion"]["teeth"], v["gear"]["teeth"], float(B), hob)
-    pair = make_pair(gears, R_p, R_g, assembly(v))
+    pair = hobbed_pair(gears, R_p, R_g, assembly(v))
     return Design(v, FAMILY, pair, mesh=gears)
 
 
@@ -206,7 +211,7 @@ def start(values, gears, asm, tol, steps):
     ``asm``, or (None, reason) when the continuation from the ideal pair fails."""
     try:
         with np.errstate(all="ignore"):
-            return continue_to(
+            return hobbed_continue_to(
                 gears,
                 values["pinion"]["cutter_radius_mm"],
                 values["gear"]["cutter_radius_mm"],
@@ -295,9 +300,9 @@ def _limit(d, name, x, pair, sol) -> float:
 
 
 def _ke_grid(s) -> np.ndarray:
-    """Pinion angles [rad] of the KE table (:func:`gearrep.hobbed.phi1_grid`)."""
+    """Pinion angles [rad] of the KE table (:func:`gearrep.tca.hobbed_phi1_grid`)."""
     g = s["ke_table"]
-    return phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
+    return hobbed_phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
 
 
 def check_ke_grid(values) -> None:
@@ -313,19 +318,19 @@ def check_ke_grid(values) -> None:
 
 def _path(pair, s0, phi1, tol):
     """The physical contact at the pinion angles ``phi1`` [rad], traced from the contact ``s0``
-    (:func:`gearrep.tca_envelope.trace_path`); the rows it does not converge are solved again by
-    :func:`gearrep.tca_envelope.robust_points` from the first-order predictor off ``s0``."""
+    (:func:`gearrep.tca.trace_envelope_path`); the rows it does not converge are solved again by
+    :func:`gearrep.tca.robust_envelope_points` from the first-order predictor off ``s0``."""
     with np.errstate(all="ignore"):
-        sol = trace_path(pair, s0, phi1, tol=tol)
+        sol = trace_envelope_path(pair, s0, phi1, tol=tol)
         bad = np.flatnonzero(~sol.converged)
         if len(bad):
 
             def nominal(ph):
-                return predict(pair, np.repeat(s0.x, len(ph), 0), np.repeat(s0.phi1, len(ph)), ph)
+                return predict_envelope_contact(pair, np.repeat(s0.x, len(ph), 0), np.repeat(s0.phi1, len(ph)), ph)
 
             x0 = nominal(phi1[bad])
-            _take_rows(sol, bad, robust_points(pair, phi1[bad], x0[:, 0], x0[:, 3], nominal, tol=tol))
-        return physical_contact(pair, sol, tol=tol)
+            _take_rows(sol, bad, robust_envelope_points(pair, phi1[bad], x0[:, 0], x0[:, 3], nominal, tol=tol))
+        return hobbed_physical_contact(pair, sol, tol=tol)
 
 
 def _take_rows(sol, rows, new) -> None:
@@ -370,14 +375,14 @@ def _engagement(pair, s0, tol):
             )
         k = found[2]
         try:
-            cross = tip_crossing(pair, path.take([k, k + 1]), member, ra, np.degrees(w), tol)
+            cross = hobbed_tip_crossing(pair, path.take([k, k + 1]), member, ra, np.degrees(w), tol)
         except RuntimeError as e:  # a secant step without a converged contact
             raise ValueError(f"the {member} tip crossing was not found: {e}") from None
         ends.append(np.radians(cross["phi1_deg"]))
     return tuple(sorted(ends))
 
 
-#: starts of the tangency search at each contact (tca_envelope.physical_contact's default)
+#: starts of the tangency search at each contact (gearrep.tca.envelope_physical_contact's default)
 N_STARTS = 9
 
 
@@ -416,14 +421,14 @@ def tca(d, progress=None, n_points=None, with_ke=True):
         method = "tip crossings, cut where the path leaves the face (to the grid of the path)"
     ke = np.where(ok, (sol.phi2 - phi2_0) - pair.ratio * sol.phi1, np.nan)
     # the gear rests where no tooth pair interferes: turn_gap < 0 when it turns on (s < 0: the least phi2)
-    drive = 1.0 if float(np.nanmedian(np.where(ok, turn_gap(pair, sol, sol.phi2 + 1.0), np.nan))) > 0 else -1.0
+    drive = 1.0 if float(np.nanmedian(np.where(ok, envelope_turn_gap(pair, sol, sol.phi2 + 1.0), np.nan))) > 0 else -1.0
     p1 = 2.0 * np.pi / pair.pinion.n_teeth
     at, env, lead = te_envelope(phi, ke, drive, p1, b, n)
     if progress:
         progress("contact ellipses and KE table", 0.6)
     with np.errstate(all="ignore"):
-        el, _, _ = elastic_ellipses(pair, sol, s["elastic_approach_mm"])
-        normal = pinion_outward(pair, sol)
+        el, _, _ = hobbed_elastic_ellipses(pair, sol, s["elastic_approach_mm"])
+        normal = envelope_pinion_outward(pair, sol)
     ell = np.asarray(el.elliptic, bool) & ok
     pu, pv = PARAMS
     path = pd.DataFrame(

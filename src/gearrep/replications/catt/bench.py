@@ -6,7 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...surfaces.catt import assemble, path_limits, solve_cycle
+from ...surfaces.catt import assemble, path_limits, solve_cycle, starts
+from ...tca import GearPair, Misalignment
+from ...units import ARCMIN
 from .assembly import PRIMARY
 from .contact import contact_geometry
 from .design import Design
@@ -95,10 +97,6 @@ def robustness_cases(settings: dict, design: Design) -> list:
     left out), ``nominal`` (the study's starts, :func:`gearrep.surfaces.catt.starts`) and
     ``formulations`` (conventional only: the flanks are parameterised by the cutter, with no
     explicit form)."""
-    from ...surfaces.catt import starts
-    from ...tca import GearPair, Misalignment
-    from ...units import ARCMIN
-
     q = _prm(settings, design)
     mesh = assemble(design.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = path_limits(mesh)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...surfaces.novikov import aligned_start
 from ...tca import Misalignment
 from ...units import ARCMIN
 from .geometry import basics, make_pair
@@ -79,8 +80,6 @@ def robustness_cases(settings: dict, design: dict) -> list:
     0, the aligned contact at mid-face), ``nominal`` (the family's start,
     :func:`gearrep.surfaces.novikov.aligned_start`) and ``formulations`` (conventional only: the
     flanks are envelopes in rack parameters, with no explicit form)."""
-    from ...surfaces.novikov import aligned_start
-
     out = []
     arcmin = settings["misalignment_arcmin"]
     for mis, lab in ((None, "aligned"), (Misalignment(d_gamma_out=arcmin * ARCMIN), f"dgamma_out = {arcmin:g} arcmin")):

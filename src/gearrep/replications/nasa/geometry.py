@@ -28,6 +28,7 @@ from ...surfaces.rack import vertex_pitch_distance
 from ...tca import GearPair, offset_start, solve_contact
 from ...units import DEG
 from .design import design_beta
+from .model import a_d_eq_5_4_13
 
 __all__ = [
     "basics",
@@ -245,8 +246,6 @@ def make_disk_pair(d, s, E_d, *, misalignment=None, d_lambda=0.0):
     ``E_d``, plunge a_pd of eq 5.4.13 from a_pl) with the profile-crowned gear; racks of sec. 5.4
     (``worm_rack_coefficients``), tooth space from ``heights_rack_tooth_over_pitch``; left-hand
     pinion by default. ``d_lambda``: lead-angle error of the ground helicoid (beta - d_lambda)."""
-    from .model import a_d_eq_5_4_13
-
     Pn, an, beta, l = basics(d)
     h = -1.0 if s["pinion_hand"] == "left" else 1.0
     a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"])

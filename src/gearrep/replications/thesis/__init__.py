@@ -15,7 +15,7 @@ What is replicated (one job per table group, :data:`JOBS`):
   shift at a common angle and crown (:func:`.te.shift_common_angle_table`).
 
 * straight and spiral bevel gears (sec 5.1-5.2, Tables 11-12; :mod:`.bevel`): their convergence
-  rows in ``convergence.csv`` and the contact studies (TE, path, Hertz pressure) of jobs
+  rows in ``convergence.csv`` (:mod:`.bevel_convergence`) and the contact studies (TE, path, Hertz pressure) of jobs
   ``bevel_straight`` and ``bevel_spiral``.
 
 The thesis's frame and printed formulas are in :mod:`.model`; its design data
@@ -37,13 +37,13 @@ from ... import settings as st
 from .._face import FACE, Job, run_jobs
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
 from .bevel import bevel_pair, spiral_contact_tables, straight_contact_tables
+from .bevel_convergence import convergence_tables
 from .claims import CLAIMS, claim_verdicts, conv_row
 from .convergence import (
     OUTCOMES,
     STREAMS,
     Reference,
     classify,
-    convergence_tables,
     reference_contact,
     rng,
     run_variant,

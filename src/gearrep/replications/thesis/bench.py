@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...tca import draw_starts
+from ...tca import BevelMisalignment, Misalignment, draw_starts
 from ...units import ARCMIN, ARCSEC, DEG
+from .bevel import bevel_pair
 from .convergence import rng, run_variant, study_reference
 from .design import TABLE34, Design, design_pair, misalignment, pair_40_37
 from .model import crowning_object
@@ -115,9 +116,6 @@ def robustness_cases(settings: dict, design: Design) -> list:
     0.15 to 0.45 for the helical pair, whose profile-crowned contact crosses the face and is on
     it from about 0.1 on; for the spiral pair from 0.4 of a pitch before phi1 = 0 to it, where its
     contact ends about 0.09 after)."""
-    from ...tca import BevelMisalignment, Misalignment
-    from .bevel import bevel_pair
-
     m = ROBUSTNESS_MISALIGNMENT
     spur_mis = Misalignment(d_gamma_in=m["spur_dgamma_deg"] * DEG, d_gamma_out=m["spur_dgamma_deg"] * DEG)
     hel_mis = Misalignment(d_gamma_in=float(design.helical_misalignment_arcmin) * ARCMIN)

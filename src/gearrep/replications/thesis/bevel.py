@@ -5,13 +5,14 @@ intersecting axes (:class:`gearrep.tca.BevelPair`, misalignments eq 47-48). Ever
 computed here:
 
 * the convergence study of Tables 11 (straight bevel 39/32) and 12 (spiral bevel 17/17) with the
-  protocol of Table 10 (:func:`bevel_convergence`; rows of ``convergence.csv``);
+  protocol of Table 10 (:func:`.bevel_convergence.bevel_convergence`; rows of ``convergence.csv``);
 * the contact studies of sec 5.1-5.2 (:func:`bevel_contact_tables`): TE over a mesh cycle (upper
   envelope of the tooth pairs, :mod:`gearrep.meshing`), path of contact and the Hertz maximum
   contact pressure along it (:mod:`gearrep.ellipse`) under the thesis's misalignments.
 
 Readings where the thesis prints nothing (:data:`READINGS`, also in protocol.csv): the pressure
-angle of the spiral pair (20 deg, as for every other pair of the thesis); phi1 of the convergence
+angle of the spiral pair (20 deg, as for every other pair of the thesis; with the design data,
+:data:`.design.READINGS`); phi1 of the convergence
 studies (0 in our frame: the aligned pair's conjugate position, contact near mid-face); the crown
 of the Table 11 pair (Table 10's a_1 scaled to m = 2.5); the crown of the Table 12 pair (Table 7's
 smallest c_1 = 0.002); the straight pair's crown and relief amounts of sec 5.1 (settings); the
@@ -31,21 +32,18 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ...curvature import relative_curvature
+from ...ellipse import hertz_contact
 from ...meshing import sampled_cycle
-from ...published import param_table
-from ...solve import Status
-from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length
+from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length, spherical_involute_azimuth
 from ...surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning, RootRelief
-from ...tca import BevelMisalignment, BevelPair, draw_starts, seed_from_reduced, solve_contact, solve_conventional
-from ...units import DEG
-from .convergence import ALL_VARIANTS, EQUATION_ABLATION, Reference, convergence_study, loop_timing
-from .model import wrap
+from ...tca import BevelMisalignment, BevelPair, contact_curvatures, solve_contact
+from ...units import ARCSEC, DEG
 from .te import JUMP_TOL_ARCSEC, PAIRS
 
 CASES = ("straight_bevel_39_32", "spiral_bevel_17_17")
 #: our readings where the thesis prints nothing (module docstring)
 READINGS = {
-    "spiral_bevel_17_17_pressure_angle_deg": 20.0,
     "phi1_rad": 0.0,
     "dH_is_dG": True,
 }
@@ -60,50 +58,6 @@ CYCLE_REFINE = 64
 #: the random stream of each bevel convergence study (default_rng([seed, stream]); 1-12 are the
 #: cylindrical studies' in :data:`.convergence.STREAMS`)
 BEVEL_STREAMS = {"straight_bevel_39_32": 21, "spiral_bevel_17_17": 22}
-
-
-def bevel_params(published) -> dict:
-    """Design entries of both bevel pairs from the params tables of ``published`` (angles in degrees)."""
-    params = published.params[published.params["seed"] == "003"]
-    st = param_table(params, "params_003_straight_bevel_39_32.csv", "straight_bevel_39_32")
-    sp = param_table(params, "params_003_spiral_bevel_17_17.csv", "spiral_bevel_17_17")
-    out = {
-        "straight_bevel_39_32": dict(
-            n1=int(st["N1"]),
-            n2=int(st["N2"]),
-            module=float(st["module"]),
-            pressure_angle_deg=float(st["pressure_angle"]),
-            face_width=float(st["face_width"]),
-            shaft_angle_deg=float(st["shaft_angle"]),
-            spiral_angle_deg=0.0,
-            young_modulus=float(st["young_modulus_GPa"]) * 1e3,  # N/mm^2
-            poisson_ratio=float(st["poisson_ratio"]),
-            load=float(st["applied_load_kN"]) * 1e3,  # N
-            printed_base_cone_deg=(float(st["base_cone_angle_1"]), float(st["base_cone_angle_2"])),
-            printed_outer_cone_deg=(float(st["outer_cone_angle_1"]), float(st["outer_cone_angle_2"])),
-            table6=dict(
-                d_gamma=float(st["misalignment_shaft_angle"]) * DEG,
-                d_E=float(st["misalignment_dE"]),
-                d_A=float(st["misalignment_dA"]),
-                d_G=float(st["misalignment_dG"]),
-            ),
-            n_starts=int(st["n_starts"]),
-        ),
-        "spiral_bevel_17_17": dict(
-            n1=int(sp["N1"]),
-            n2=int(sp["N2"]),
-            module=float(sp["module"]),
-            pressure_angle_deg=READINGS["spiral_bevel_17_17_pressure_angle_deg"],
-            face_width=float(sp["face_width"]),
-            shaft_angle_deg=float(sp["shaft_angle"]),
-            spiral_angle_deg=float(sp["spiral_angle"]),
-            young_modulus=float(sp["young_modulus_N_per_mm2"]),
-            poisson_ratio=float(sp["poisson_ratio"]),
-            load=float(sp["load_F_nondim"]),  # non-dimensional F = load / (E m b) (eq 56)
-            n_starts=int(sp["n_starts"]),
-        ),
-    }
-    return out
 
 
 def bevel_gears(d: dict) -> tuple[BevelGearData, BevelGearData]:
@@ -183,166 +137,6 @@ def bevel_pair(
         g1, g2, hand1=hand1, crowning1=lead_crown(g1, crown_kind, crown, log_a2), relief1=relief
     )
     return BevelPair(f1, f2, d["n1"], d["n2"], shaft_angle=d["shaft_angle_deg"] * DEG, misalignment=misalignment)
-
-
-# ----------------------------------------------------------------------------------------------
-# convergence (Tables 11-12)
-# ----------------------------------------------------------------------------------------------
-def bevel_reference(pair: BevelPair, phi1: float, s: dict) -> Reference:
-    """Verified reference contact: reduced solve from mid-flank (several starts along the profile),
-    then the conventional formulation from the seeded start; both must converge and agree."""
-    lo, hi = pair.lower1, pair.upper1
-    u0 = lo[0] + np.array([0.5, 0.3, 0.7, 0.15, 0.85]) * (hi[0] - lo[0])
-    st = np.column_stack([u0, np.full(len(u0), 0.5 * (lo[1] + hi[1]))])
-    c = solve_contact(pair, np.full(len(u0), phi1), st, formulation="reduced", tol=s["tol"], maxiter=100)
-    ok = np.flatnonzero(c.converged)
-    if not len(ok):
-        raise ValueError(f"no bevel reference contact at phi1 = {phi1!r}")
-    x = c.unknowns("conventional")[ok[0]]
-    _, n1 = pair.member1(x[:1], x[1:2], phi1)
-    drop = int(np.argmax(np.abs(n1[0])))
-    r = solve_conventional(
-        pair, phi1, seed_from_reduced(pair, phi1, x[:1], x[1:2]), variant="damped", drop=drop, tol=s["tol"], maxiter=100
-    )
-    if r.status[0] != Status.CONVERGED:
-        raise ValueError(f"conventional bevel reference did not converge at phi1 = {phi1!r}")
-    ref = Reference(phi1=float(phi1), x=x, x_conventional=r.x[0].copy(), drop=drop)
-    if ref.max_diff_mm > s["agree_tol_mm"] or ref.diff_rad > s["agree_tol_rad"]:
-        raise ValueError(f"bevel reference: formulations disagree by {ref.max_diff_mm:.3g} / {ref.diff_rad:.3g} rad")
-    return ref
-
-
-def convergence_pair(s: dict, design, case: str) -> BevelPair:
-    crown = s["bevel_conv_crown_straight_per_mm"] if case.startswith("straight") else s["bevel_conv_crown_spiral"]
-    return bevel_pair(design, case, crown=crown)
-
-
-def bevel_convergence(s: dict, design) -> dict:
-    """Tables 11-12: every variant of Table 10 (and its equation ablation) from the same random
-    starts (u1, v1, u2, v2 uniform on the flanks, phi2 uniform on the primary window centred on the
-    root), correct root inside both flanks only. Returns rows (convergence), references, the
-    per-solve accuracy (mean |x - x_ref| over the correct starts and the five unknowns, phi2
-    wrapped) with the batch and one-start-per-call loop times of plain and reduced Newton."""
-    rows, refs, acc, timing = [], [], [], []
-    w0 = float(s["primary_phi2_window_rad"])
-    for case in CASES:
-        pair = convergence_pair(s, design, case)
-        ref = bevel_reference(pair, READINGS["phi1_rad"], s)
-        refs.append(_reference_row(case, ref))
-        n = int(s["bevel_n_starts"])
-        st = draw_starts(pair, n, rng_bevel(s, case), phi2_window=(ref.x[4] - w0 / 2, ref.x[4] + w0 / 2))
-        study = "Table 11" if case.startswith("straight") else "Table 12"
-        r = convergence_study(
-            case,
-            pair,
-            ref,
-            st,
-            ALL_VARIANTS,
-            s,
-            window=w0,
-            study=study,
-            start_rule="u1,v1,u2,v2 uniform on the flanks; phi2 uniform on the window centred on the root",
-            equations=EQUATION_ABLATION,
-        )
-        rows += r.rows
-        if case.startswith("spiral"):
-            rows += _crown_sensitivity_rows(s, design, case, ref, st, w0)
-            rows += _other_flank_rows(s, design, case, ref, st, w0)
-        acc += _accuracy_rows(case, r, ref)
-        timing += [loop_timing(s, pair, ref, r.rows, st, lab) for lab in ("plain", "reduced")]
-    accuracy = pd.DataFrame(acc).merge(
-        pd.DataFrame(timing)[["case", "variant", "seconds_per_solve_batch", "seconds_per_solve_loop", "n_loop"]],
-        on=["case", "variant"],
-        how="left",
-    )
-    return dict(rows=rows, refs=pd.DataFrame(refs), accuracy=accuracy)
-
-
-def _reference_row(case: str, ref: Reference) -> dict:
-    """Row of bevel_references.csv: the verified reference contact of one pair."""
-    return dict(
-        case=case,
-        phi1_rad=ref.phi1,
-        u1_rad=ref.x[0],
-        v1=ref.x[1],
-        u2_rad=ref.x[2],
-        v2=ref.x[3],
-        phi2_rad=ref.x[4],
-        conventional_minus_reduced=ref.max_diff_mm,
-        conventional_minus_reduced_rad=ref.diff_rad,
-        dropped_normal_component="xyz"[ref.drop],
-    )
-
-
-def _same_starts_rows(s, design, case, ref, st, w0, c1, flank_pair, label, study, start_rule) -> list:
-    """The Table 12 starts (phi2 moved with the root) on the spiral pair with crown ``c1`` meshing
-    ``flank_pair``: rows of plain, reduced and reduced_robust."""
-    pc = bevel_pair(design, case, crown=float(c1), flank_pair=flank_pair)
-    rc = bevel_reference(pc, READINGS["phi1_rad"], s)
-    stc = st.copy()
-    stc[:, 4] += rc.x[4] - ref.x[4]
-    return convergence_study(
-        label, pc, rc, stc, ("plain", "reduced", "reduced_robust"), s, window=w0, study=study, start_rule=start_rule
-    ).rows
-
-
-def _crown_sensitivity_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
-    """Crown sensitivity of the Table 12 study: the same starts on the pair with each crown c_1 of
-    the settings."""
-    rows = []
-    for c1 in s["bevel_conv_crown_spiral_sensitivity"]:
-        rule = f"as Table 12 with c_1 = {float(c1):g}"
-        rows += _same_starts_rows(
-            s,
-            design,
-            case,
-            ref,
-            st,
-            w0,
-            c1,
-            "convex1",
-            f"{case}_c1_{float(c1):g}",
-            "Table 12 (crown sensitivity)",
-            rule,
-        )
-    return rows
-
-
-def _other_flank_rows(s: dict, design, case: str, ref: Reference, st: np.ndarray, w0: float) -> list:
-    """The Table 12 study on the spiral pair's other flank pair (``concave1``: gear 1's lengthwise
-    concave flank drives), at the Table 12 crown and at each crown of the sensitivity rows, from the
-    same starts."""
-    rows = []
-    for c1 in [s["bevel_conv_crown_spiral"], *s["bevel_conv_crown_spiral_sensitivity"]]:
-        tag = "" if float(c1) == float(s["bevel_conv_crown_spiral"]) else f"_c1_{float(c1):g}"
-        rule = f"as Table 12 on the other flank pair (gear 1 concave) with c_1 = {float(c1):g}"
-        rows += _same_starts_rows(
-            s, design, case, ref, st, w0, c1, "concave1", f"{case}_concave1{tag}", "Table 12 (other flank pair)", rule
-        )
-    return rows
-
-
-def _accuracy_rows(case: str, r, ref: Reference) -> list:
-    """Per variant: mean and max |x - x_ref| over the correct starts and the five unknowns (phi2 wrapped)."""
-    acc = []
-    for lab, (o, x, _) in r.outcomes.items():
-        ok = o == "correct"
-        d = np.abs(x[ok] - ref.x) if ok.any() else np.full((1, 5), np.nan)
-        d[:, 4] = np.abs(wrap(d[:, 4]))
-        acc.append(
-            dict(
-                case=case,
-                variant=lab,
-                n_correct=int(ok.sum()),
-                mean_abs_error=float(np.mean(d)),
-                max_abs_error=float(np.max(d)),
-            )
-        )
-    return acc
-
-
-def rng_bevel(s: dict, case: str) -> np.random.Generator:
-    return np.random.default_rng([int(s["seed"]), BEVEL_STREAMS[case]])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -542,10 +336,6 @@ def contact_pressure(pair: BevelPair, contact, load: float, E: float, nu: float)
     """Hertz maximum contact pressure p0 at every converged contact point (NaN elsewhere) for the
     normal ``load`` (gearrep.ellipse.hertz_contact from the relative curvatures of
     gearrep.tca.contact_curvatures)."""
-    from ...curvature import relative_curvature
-    from ...ellipse import hertz_contact
-    from ...tca import contact_curvatures
-
     out = np.full(len(contact), np.nan)
     ok = np.flatnonzero(contact.converged)
     if not len(ok):
@@ -584,8 +374,6 @@ def _asymmetry(phi, te, lead):
 
 def _pitch_columns(pair: BevelPair, res: dict, p0: np.ndarray, material) -> dict:
     """Summary columns at the pitch point (contact on gear 1's pitch cone, solved) and at phi1 = 0."""
-    from ...units import ARCSEC
-
     phi = res["phi1"]
     i0 = int(np.argmin(np.abs(phi)))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -630,8 +418,6 @@ def contact_study(
     and reaches -te_pp). Pitch point: the mesh position whose contact lies on gear 1's pitch cone
     (:func:`pitch_cone_contact`, solved), with its p0, cone distance v1 and TE; ``*_at_phi1_0``
     columns are taken at phi1 = 0, which is not the pitch point."""
-    from ...units import ARCSEC
-
     mis = mis or BevelMisalignment()
     pair = bevel_pair(
         design,
@@ -688,8 +474,6 @@ def contact_study(
 
 def _curve_rows(label: str, case: str, res: dict, lead: np.ndarray, p0: np.ndarray) -> pd.DataFrame:
     """Rows of bevel_*_curves.csv: one pair's path, TE and p0 on the grid, then the cycle's TE."""
-    from ...units import ARCSEC
-
     curves = pd.DataFrame(
         dict(
             study=label,
@@ -845,8 +629,6 @@ def bevel_protocol_items(p: dict) -> list:
 
 def bevel_errata_rows(design) -> list:
     """Rows of errata.csv (job ``errata``) for the bevel part: Table 5's base cones, eq (46), eq (45)."""
-    from ...surfaces.bevel import spherical_involute_azimuth
-
     d = design.pairs["straight_bevel_39_32"]
     g1, g2 = bevel_gears(d)
     printed = d["printed_base_cone_deg"]

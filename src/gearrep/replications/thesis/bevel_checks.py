@@ -11,20 +11,20 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-#: case of the convergence rows for each published case label
+from ...checks import claim_verdict
+from ...published import parse_row
 from .bevel import CYCLE_REFINE
 
+#: case of the convergence rows for each published case label
 _CONV_CASE = {"straight_bevel": "straight_bevel_39_32", "spiral_bevel": "spiral_bevel_17_17"}
 _METHOD = {"conventional": "plain", "reduced": "reduced"}
 
 
 def bevel_fact_key(row: pd.Series) -> str | None:
     """Key of the computed fact for a published bevel value (id ``003-<tag>-<row>-<quantity>``)."""
-    from .facts import _parse_row  # the one parser of the row keys (facts imports this module)
-
     tag = str(row["id"]).split("-")[1]
     q = str(row["quantity"])
-    rk = _parse_row(row["row"])
+    rk = parse_row(row["row"])
     if tag in ("T11", "T12") and rk.get("case") in _CONV_CASE and rk.get("method") in _METHOD:
         return f"bev_{rk['case']}_{rk['method']}_{q}"
     if tag == "S5":
@@ -256,12 +256,6 @@ def bevel_facts(tables: dict) -> dict:
 # ----------------------------------------------------------------------------------------------
 # claims
 # ----------------------------------------------------------------------------------------------
-def _verdict(confirm, refute, evidence):
-    from .claims import verdict
-
-    return verdict(confirm, refute, evidence)
-
-
 def _rows(c, case):
     conv = c.conv
     d = conv[conv["case"] == case]
@@ -278,7 +272,7 @@ def _t11(c):
         return None
     red, con = d.loc["reduced"], d.loc["plain"]
     ratio = _per_correct(con) / _per_correct(red)
-    return _verdict(
+    return claim_verdict(
         red["correct_pct"] >= 99.95 and 20 <= con["correct_pct"] <= 40 and ratio >= 1.5,
         red["correct_pct"] < 99,
         f"straight bevel 39/32, 1000 starts: reduced {red['correct_pct']:.1f} %, plain conventional "
@@ -313,7 +307,7 @@ def _t12(c):
         for k in c.conv["case"].unique()
         if str(k).startswith("spiral_bevel_17_17_concave1")
     )
-    return _verdict(
+    return claim_verdict(
         confirm,
         refute,
         f"spiral bevel 17/17, 1000 starts: reduced {red['correct_pct']:.1f} % in {red['mean_iterations']:.2f} "
@@ -332,7 +326,7 @@ def _c6_bevel(c):
             return None
         rates[case] = float(d.loc["plain", "correct_pct"])
     v = list(rates.values())
-    return _verdict(
+    return claim_verdict(
         all(15 <= x <= 45 for x in v),
         any(x < 5 or x > 60 for x in v),
         "plain conventional Newton, phi2 over a full turn: " + ", ".join(f"{k} {x:.1f} %" for k, x in rates.items()),
@@ -355,7 +349,7 @@ def _tip_relief(c):
             f"{name}: lead only gap {a['handover_gap_arcsec']:.2f} arcsec ({rel:.0f} % of its {a['te_pp_arcsec']:.2f} arcsec "
             f"range), with relief {with_relief}"
         )
-    return _verdict(
+    return claim_verdict(
         all(lead_jumps) and all(relief_ok),
         not any(lead_jumps),
         "straight bevel 39/32, Table 6 errors one at a time, lead crown "
@@ -383,7 +377,7 @@ def _crown_types(c):
             f"{ang:g} deg: TE functions within {d:.3f} arcsec, largest p0 parabolic/circular/logarithmic "
             f"{p[0]:.0f}/{p[1]:.0f}/{p[2]:.0f} MPa"
         )
-    return _verdict(
+    return claim_verdict(
         max(diffs) <= 2.0,
         max(diffs) > 5.0,
         "straight bevel 39/32, the three lead crowns with equal drop at the face ends (logarithmic a_2 = 0.9), tip and "
@@ -397,7 +391,7 @@ def _angular(c):
         return None
     ang = sp[sp["claim"] == "angular_no_TE"]
     pp = float(ang["te_pp_arcsec"].max())
-    return _verdict(
+    return claim_verdict(
         pp < 0.1,
         pp > 1.0,
         f"spiral bevel 17/17, c_1 = 0.002, no relief, shaft-angle errors up to {ang['d_gamma_deg'].max():g} deg: the TE "
@@ -416,7 +410,7 @@ def _asymmetric(c):
         return None
     r = sp.loc["dH_0.04"]
     res, off = float(r["te_quadratic_residual_pct"]), float(r["te_max_offset_pct"])
-    return _verdict(
+    return claim_verdict(
         res > 5.0 or off > 10.0,
         res < 1.0 and off < 2.0,
         f"spiral bevel 17/17, dH = 0.04, c_1 = 0.02, c_t = 0.08, L_t = 0.16: quadratic fit of one pair's TE over the "
@@ -446,7 +440,7 @@ def _dE_vs_dH(c):
         f"{delta[f'sweep_dE_dH_{x:g}']:.3f}"
         for x in vals
     )
-    return _verdict(
+    return claim_verdict(
         stress_E and dev_E and top_ok,
         stress_H and dev_H,
         "spiral bevel 17/17, c_1 = 0.005, c_t = 0.08, L_t = 0.16; at the pitch point (the mesh position whose contact "
@@ -475,7 +469,7 @@ def _stress_peak_mid(c):
             f"{mid['p0_MPa']:.0f} MPa (largest on the path {d['p0_MPa'].max():.0f} MPa at v1 = "
             f"{d.loc[d['p0_MPa'].idxmax(), 'v1']:.2f}, u1 = {d.loc[d['p0_MPa'].idxmax(), 'u1_rad']:.4f} rad)"
         )
-    return _verdict(
+    return claim_verdict(
         all(mids),
         not all(mids),
         "spiral bevel 17/17, c_1 = 0.005, c_t = 0.04, L_t = 0.16 (tip and root relief): "

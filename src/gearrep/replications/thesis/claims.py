@@ -1,7 +1,7 @@
 """Claims of seed 003 (claims_003.csv): one small predicate per claim id.
 
 :data:`CLAIMS` maps a claim id to a function of a :class:`Context` returning ``(holds, evidence)``
-(built by :func:`verdict` from the claim's confirm_if / refute_if criteria on file), a string
+(built by :func:`gearrep.checks.claim_verdict` from the claim's confirm_if / refute_if criteria on file), a string
 (the reason the claim is not evaluated), or None (the tables needed are not there). The bevel
 claims' predicates are in :mod:`.bevel_checks`.
 """
@@ -14,6 +14,7 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
+from ...checks import claim_verdict
 from .bevel_checks import BEVEL_CLAIMS
 from .design import Design, design_pair
 
@@ -21,15 +22,6 @@ NOT_COMPUTED_STRESS = (
     "stress ratios (Hertz, thesis eq 15-25) not computed in this run: the table of the stress job "
     "(thesis/stress.csv) is missing"
 )
-
-
-def verdict(confirm: bool, refute: bool, evidence: str):
-    """(holds, evidence): holds only if the confirm criterion is met; when neither criterion is met
-    the claim is not confirmed (fails) and the evidence says so."""
-    if confirm and refute:
-        raise ValueError(f"claim criteria contradict each other: {evidence}")
-    tail = "" if (confirm or refute) else " [confirm criterion not met; refute criterion not met either]"
-    return bool(confirm), evidence + tail
 
 
 def standard_error(pct, n):
@@ -119,7 +111,7 @@ def _reduced_except_edge(c: Context):
         | (bad["v1_0_thesis_mm"] <= 0.05 * b)
         | (b - bad["v1_0_thesis_mm"] <= 0.05 * b)
     )
-    return verdict(
+    return claim_verdict(
         red["correct_pct"] >= 99.5 and bool(near.all()),
         red["correct_pct"] < 99 or not near.all(),
         f"reduced, plain Newton, {int(red['n_starts'])} starts: {red['correct_pct']:.2f} % correct; "
@@ -131,7 +123,7 @@ def _conventional_slower(c: Context):
     red, plain = c.row("spur_52_72", "reduced"), c.row("spur_52_72", "plain", c.full)
     it_ratio = plain["mean_iterations"] / red["mean_iterations"]
     t_ratio = (plain["seconds_per_solve"] / plain["correct_pct"]) / (red["seconds_per_solve"] / red["correct_pct"])
-    return verdict(
+    return claim_verdict(
         it_ratio >= 1.3 and t_ratio >= 1.5,
         it_ratio <= 1.0 or t_ratio <= 1.0,
         f"spur 52/72, same starts: mean iterations over correct starts conventional/reduced = "
@@ -147,7 +139,7 @@ def _phi2_start_decides(c: Context):
     mono = all(b_ >= a_ - 2 * se(0.5 * (a_ + b_), n6) for (_, a_), (_, b_) in zip(g, g[1:]))
     r0, r11, r12 = g[0][1], g[1][1], g[3][1]
     listing = ", ".join(f"{x:g}: {r:.1f} %" for x, r in g)
-    return verdict(
+    return claim_verdict(
         mono and r0 < 5 and r12 >= 90,
         r0 > 20 or r12 < r11 - 2 * se(0.5 * (r11 + r12), n6),
         f"plain conventional Newton, {n6} starts, phi2 guess (thesis frame) -> correct rate: {listing}",
@@ -156,7 +148,7 @@ def _phi2_start_decides(c: Context):
 
 def _almost_all_at_12(c: Context):
     r12 = c.guesses[3][1]
-    return verdict(
+    return claim_verdict(
         r12 >= 95, r12 < 90, f"plain Newton from phi2 = -1.2 rad, u2, v2 mid-point: {r12:.1f} % of {c.n6} correct"
     )
 
@@ -165,7 +157,9 @@ def _random_phi2_fails(c: Context):
     if not (c.conv["case"] == "spur_25_25_full_turn").any():
         return None
     rf = c.rate("spur_25_25_full_turn")
-    return verdict(rf < 5, rf > 20, f"plain Newton, phi2 uniform on a full turn, u2, v2 mid-point: {rf:.1f} % correct")
+    return claim_verdict(
+        rf < 5, rf > 20, f"plain Newton, phi2 uniform on a full turn, u2, v2 mid-point: {rf:.1f} % correct"
+    )
 
 
 def _misalignment_small_effect(c: Context):
@@ -173,7 +167,7 @@ def _misalignment_small_effect(c: Context):
     if not mis:
         return None
     ra, rm = c.rate("spur_25_25_window_thesis"), c.rate(mis[0])
-    return verdict(
+    return claim_verdict(
         abs(ra - rm) < 5,
         abs(ra - rm) > 10,
         f"plain Newton, phi2 in (-1.7, -1.0): aligned {ra:.1f} %, {mis[0]} {rm:.1f} % (difference "
@@ -185,7 +179,7 @@ def _helical_more_iterations(c: Context):
     if not (c.conv["case"] == "helical_25_77_maxiter_x4").any():
         return None
     a_, b_ = c.rate("helical_25_77"), c.rate("helical_25_77_maxiter_x4")
-    return verdict(
+    return claim_verdict(
         abs(b_ - a_) < 1,
         b_ - a_ > 5,
         f"helical 25/77, plain Newton, same starts: {a_:.1f} % with the iteration limit, {b_:.1f} % with 4 x",
@@ -197,7 +191,7 @@ def _helical_random_phi2_fails(c: Context):
     if not hm:
         return None
     rf = c.rate(hm[0])
-    return verdict(rf < 5, rf > 20, f"{hm[0]}: plain Newton, phi2 uniform on a full turn: {rf:.1f} % correct")
+    return claim_verdict(rf < 5, rf > 20, f"{hm[0]}: plain Newton, phi2 uniform on a full turn: {rf:.1f} % correct")
 
 
 def _wrong_roots_exist(c: Context):
@@ -209,7 +203,7 @@ def _wrong_roots_exist(c: Context):
         if len(wr)
         else ""
     )
-    return verdict(len(wr) > 0, len(wr) == 0, f"{len(wr)} conventional studies with wrong-root share > 0" + top)
+    return claim_verdict(len(wr) > 0, len(wr) == 0, f"{len(wr)} conventional studies with wrong-root share > 0" + top)
 
 
 def _conventional_about_30(c: Context):
@@ -219,7 +213,7 @@ def _conventional_about_30(c: Context):
         if np.isclose(c.conv["phi2_window_rad"], np.pi).any()
         else float("nan")
     )
-    return verdict(
+    return claim_verdict(
         15 <= rp <= 45,
         rp < 5 or rp > 60,
         f"plain conventional Newton, spur 52/72, phi2 over a full turn: {rp:.2f} % (half turn {half:.2f} %)",
@@ -238,7 +232,7 @@ def _reduced_about_100(c: Context):
         )
         for k in cases
     }
-    return verdict(
+    return claim_verdict(
         all(rr[k]["correct_pct"] >= 99 and tpc[k][0] < tpc[k][1] for k in cases),
         any(rr[k]["correct_pct"] < 95 or tpc[k][0] > tpc[k][1] for k in cases),
         "reduced plain Newton correct rate: "
@@ -297,7 +291,7 @@ def _crown_decides_continuity(c: Context):
         return None
     disc = [s_["gap"] or s_["jump_rel"] > 0.01 for s_ in (lo_c, lo_o)]
     cont = [not s_["gap"] and s_["jump_rel"] <= 0.01 and s_["r2"] > 0.99 for s_ in (hi_c, hi_o)]
-    return verdict(
+    return claim_verdict(
         all(disc) and all(cont),
         not all(disc) or any(s_["gap"] or s_["jump_rel"] > 0.01 for s_ in (hi_c, hi_o)),
         f"spur 25/25 m = 1, 17.5 mrad: a1 = 0.00125 in-plane {_fmt(lo_c)}; out-of-plane {_fmt(lo_o)}; "
@@ -312,7 +306,7 @@ def _edge_free_but_discontinuous(c: Context):
         return None
     ok = all((s_["inside"] is True) and not s_["gap"] and s_["jump_rel"] > 0.01 for s_ in mid)
     bad = any(s_["gap"] or s_["inside"] is False or s_["jump_rel"] <= 0.01 for s_ in mid)
-    return verdict(
+    return claim_verdict(
         ok,
         bad and not ok,
         f"a1 = 0.0025, 17.5 mrad: in-plane {_fmt(mid[0])}, contact inside the face "
@@ -333,7 +327,7 @@ def _log_smallest_te(c: Context):
         order_ok += bool(t["logarithmic"] < t["circular"] < t["parabolic"])
         log_small += bool(t["logarithmic"] < min(t["circular"], t["parabolic"]))
     n_g = grp.ngroups
-    return verdict(
+    return claim_verdict(
         order_ok == n_g,
         log_small <= n_g / 2,
         f"|TE_max| log < circular < parabolic in {order_ok} of {n_g} (plane, angle, row) cases; logarithmic "
@@ -349,7 +343,7 @@ def _shift_grows(c: Context):
     for (kind, plane), d in c.row1.groupby(["crown_kind", "plane"]):
         s_ = d.sort_values("ang")["abs_shift"].to_numpy()
         grows.append((kind, plane, bool(np.all(np.diff(s_) > 0)), s_))
-    return verdict(
+    return claim_verdict(
         all(x[2] for x in grows),
         not all(x[2] for x in grows),
         "|contact shift| at 0.05/0.1/0.2 deg (row 1): "
@@ -369,7 +363,7 @@ def _circular_closest_in_plane(c: Context):
         for a, s_ in smallest.items()
         if round(a, 3) in want
     )
-    return verdict(
+    return claim_verdict(
         conf,
         ref_,
         "in-plane |shift| (row 1): "
@@ -387,7 +381,7 @@ def _log_farthest_out_of_plane(c: Context):
     if len(o2) != 3:
         return None
     others = o2.drop("logarithmic")
-    return verdict(
+    return claim_verdict(
         bool(o2["logarithmic"] > 1.1 * others.max()),
         bool(o2["logarithmic"] < others.max()),
         "out-of-plane 0.2 deg |shift| (row 1): " + ", ".join(f"{k} {x:.3g} mm" for k, x in o2.items()),
@@ -401,7 +395,7 @@ def _out_of_plane_shift_larger(c: Context):
     if len(o2) != 3 or len(i2) != 3:
         return None
     ratio = o2 / i2
-    return verdict(
+    return claim_verdict(
         bool((ratio > 3).all()),
         bool((o2 <= i2).any()),
         "0.2 deg |shift| out/in (row 1): " + ", ".join(f"{k} {x:.3g}" for k, x in ratio.items()),
@@ -419,7 +413,7 @@ def _out_of_plane_worse(c: Context):
             worse += bool(
                 d.loc["out", "abs_te"] > d.loc["in", "abs_te"] and d.loc["out", "abs_shift"] > d.loc["in", "abs_shift"]
             )
-    return verdict(
+    return claim_verdict(
         tot > 0 and worse == tot,
         worse < tot / 2,
         f"|TE_max| and |shift| larger out-of-plane than in-plane in {worse} of {tot} (crown, angle) cases (row 1)",
@@ -437,7 +431,7 @@ def _log_area_smallest(c: Context):
 
     red_ = {pl: 100 * (1 - abs(a.loc[pl, "S_l"]) / others(pl)) for pl in a.index}
     smaller = all(abs(a.loc[pl, "S_l"]) < others(pl) for pl in a.index)
-    return verdict(
+    return claim_verdict(
         smaller and red_["out"] > red_["in"],
         not smaller,
         "TE areas at 0.2 deg (row 1, one rule): "
@@ -460,7 +454,7 @@ def _log_highest_stress_ratio(c: Context):
     sr = at[top]
     others = sr.drop("logarithmic")
     spread = {a: float(x.max() / x.min() - 1) for a, x in at.items() if a < top}
-    return verdict(
+    return claim_verdict(
         bool(sr["logarithmic"] > 1.1 * others.max() and all(v < 0.05 for v in spread.values())),
         bool(sr["logarithmic"] < others.max()),
         f"Hertz SR (largest p_max along the path / line-contact p_o; Table 4 row-1 amounts, log a2 "
@@ -494,7 +488,7 @@ def _helical_shift_vs_spur(c: Context):
                 f"{float(h2['abs_shift'].max()):.3g} mm; to first order the shift is the lead error over twice the crown "
                 "coefficient, so the printed helical shifts follow from the much weaker helical crowns"
             )
-    return verdict(
+    return claim_verdict(
         bool((r >= 5).all()),
         bool((r < 2).all()),
         "contact shift at phi1 = 0, both pairs under the same misalignment with the same parabolic "
@@ -524,7 +518,7 @@ def _path_points_fail(c: Context):
             f"{case}: {len(bad)} of {n} starts ({npts} path points x 2 offset signs) not correct"
             + (f" [{where}]" if where else "")
         )
-    return verdict(
+    return claim_verdict(
         confirm,
         refute,
         "plain conventional Newton along the path, u1, v1, u2, v2 from the flank mid-points, phi2 = root + offset "

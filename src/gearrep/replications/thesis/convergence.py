@@ -2,7 +2,8 @@
 
 The protocol is written out in ``protocol.csv`` (:func:`.records.protocol_table`); the solver
 variants and start strategies are :mod:`gearrep.tca`'s. One random stream per study:
-``default_rng([seed, STREAMS[study]])``.
+``default_rng([seed, STREAMS[study]])``. The ``convergence`` job, which runs these studies and the
+bevel pairs' (Tables 11-12), is :func:`.bevel_convergence.convergence_tables`.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from ...tca import (
     solve_variant,
 )
 from ...units import ARCMIN, DEG
-from .design import Design, design_pair
+from .design import Design, design_pair, helical_pair
 from .model import ThesisFrame, wrap
 
 ALL_VARIANTS = CONVENTIONAL_VARIANTS + REDUCED_VARIANTS
@@ -545,8 +546,6 @@ HELICAL_READINGS = [
 
 def helical_sensitivity(s: dict, design: Design) -> list:
     """Table 9 pair, thesis window: plain Newton under other readings of the thesis (each a row)."""
-    from .design import helical_pair
-
     d = design.pairs["helical_25_77"]
     lo_t, hi_t = design.helical_phi2_window_thesis
     n = max(10, int(s["n_starts_sec61"]) // 2)
@@ -602,35 +601,6 @@ def starts_table(res: StudyResult, frame: ThesisFrame) -> pd.DataFrame:
         df[f"u1_{lab}_mm"] = x[:, 0]
         df[f"v1_{lab}_thesis_mm"] = frame.v_to_thesis(x[:, 1])
     return df
-
-
-def convergence_tables(s: dict, design: Design) -> dict:
-    """Job ``convergence``: every convergence study -> convergence (summary), convergence_detail,
-    agreement, references, the per-start tables of Table 10, sec 6.1 and Table 9, and the timing of
-    the Table 10 study."""
-    out = Collected(rows=[], agree=[], refs=[], details={})
-    table10_studies(s, design, out)
-    sec61_studies(s, design, out)
-    helical_studies(s, design, out)
-    out.rows += helical_sensitivity(s, design)
-    from .bevel import bevel_convergence  # straight and spiral bevel pairs (Tables 11-12)
-
-    bev = bevel_convergence(s, design)
-    out.rows += bev["rows"]
-    detail = pd.DataFrame(out.rows)
-    tables = dict(
-        convergence=detail[CONVERGENCE_COLUMNS].copy(),
-        convergence_detail=detail,
-        agreement=pd.DataFrame(out.agree),
-        references=pd.DataFrame(out.refs),
-    )
-    for name, key in (("starts_table10", "table10"), ("starts_sec61", "sec61"), ("starts_helical", "helical")):
-        res = out.details[key]
-        tables[name] = starts_table(res, ThesisFrame.of(res.pair))
-    tables["timing"] = timing_table(s, out.details["table10"])
-    tables["bevel_references"] = bev["refs"]
-    tables["bevel_accuracy"] = bev["accuracy"]
-    return tables
 
 
 #: Table 10: total time for 5000 converged points, failed starts replaced (Mathematica, unknown hardware)

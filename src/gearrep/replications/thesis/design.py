@@ -18,13 +18,15 @@ from ...units import DEG
 from .model import profile_crowning
 
 #: our readings where the thesis prints nothing: phi1 of every convergence study (the thesis gives
-#: pi/2 in its frame for sec 6.1 only), the hands of the helical pairs, which gears carry a crown
+#: pi/2 in its frame for sec 6.1 only), the hands of the helical pairs, which gears carry a crown,
+#: the pressure angle of the spiral bevel pair
 READINGS = {
     "phi1_thesis": np.pi / 2,
     "hand1_helical_25_77": -1,
     "hand1_helical_40_37": 1,
     "spur_25_25_crown_on_both": True,  # a_p: "the text does not say whether one or both gears carry it"
     "spur_52_72_crown2": 0.0,  # a_1 on gear 1 only, gear 2 unmodified
+    "spiral_bevel_17_17_pressure_angle_deg": 20.0,  # as for every other pair of the thesis
 }
 
 
@@ -95,9 +97,7 @@ def params_from_published(published) -> Design:
             poisson_ratio=float(h40["poisson_ratio"]),
         ),
     }
-    from .bevel import bevel_params  # straight_bevel_39_32 and spiral_bevel_17_17 (sec 5.1-5.2)
-
-    pairs.update(bevel_params(published))
+    pairs.update(bevel_params(published))  # straight_bevel_39_32 and spiral_bevel_17_17 (sec 5.1-5.2)
     mrad_in, mrad_out = float(m1["misalignment_in_plane_mrad"]), float(m1["misalignment_out_of_plane_mrad"])
     if mrad_in != mrad_out:
         raise ValueError(f"spur_25_25_m1: the TE study uses one angle for both planes, got {mrad_in} and {mrad_out}")
@@ -111,6 +111,50 @@ def params_from_published(published) -> Design:
         spur_te_crowns=tuple(float(m1[k]) for k in ("a_1_insufficient", "a_1_edge", "a_1_sufficient")),
         spur_te_misalignment_mrad=mrad_in,
     )
+
+
+def bevel_params(published) -> dict:
+    """Design entries of both bevel pairs from the params tables of ``published`` (angles in degrees)."""
+    params = published.params[published.params["seed"] == "003"]
+    st = param_table(params, "params_003_straight_bevel_39_32.csv", "straight_bevel_39_32")
+    sp = param_table(params, "params_003_spiral_bevel_17_17.csv", "spiral_bevel_17_17")
+    out = {
+        "straight_bevel_39_32": dict(
+            n1=int(st["N1"]),
+            n2=int(st["N2"]),
+            module=float(st["module"]),
+            pressure_angle_deg=float(st["pressure_angle"]),
+            face_width=float(st["face_width"]),
+            shaft_angle_deg=float(st["shaft_angle"]),
+            spiral_angle_deg=0.0,
+            young_modulus=float(st["young_modulus_GPa"]) * 1e3,  # N/mm^2
+            poisson_ratio=float(st["poisson_ratio"]),
+            load=float(st["applied_load_kN"]) * 1e3,  # N
+            printed_base_cone_deg=(float(st["base_cone_angle_1"]), float(st["base_cone_angle_2"])),
+            printed_outer_cone_deg=(float(st["outer_cone_angle_1"]), float(st["outer_cone_angle_2"])),
+            table6=dict(
+                d_gamma=float(st["misalignment_shaft_angle"]) * DEG,
+                d_E=float(st["misalignment_dE"]),
+                d_A=float(st["misalignment_dA"]),
+                d_G=float(st["misalignment_dG"]),
+            ),
+            n_starts=int(st["n_starts"]),
+        ),
+        "spiral_bevel_17_17": dict(
+            n1=int(sp["N1"]),
+            n2=int(sp["N2"]),
+            module=float(sp["module"]),
+            pressure_angle_deg=READINGS["spiral_bevel_17_17_pressure_angle_deg"],
+            face_width=float(sp["face_width"]),
+            shaft_angle_deg=float(sp["shaft_angle"]),
+            spiral_angle_deg=float(sp["spiral_angle"]),
+            young_modulus=float(sp["young_modulus_N_per_mm2"]),
+            poisson_ratio=float(sp["poisson_ratio"]),
+            load=float(sp["load_F_nondim"]),  # non-dimensional F = load / (E m b) (eq 56)
+            n_starts=int(sp["n_starts"]),
+        ),
+    }
+    return out
 
 
 # ----------------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ... import checks as ck
+from ...published import parse_row
 from .bevel_checks import bevel_fact_key, bevel_facts
 from .claims import NOT_COMPUTED_STRESS, claim_verdicts, conv_row
 from .design import params_from_published
@@ -32,7 +33,7 @@ def readings_vs_printed(readings: pd.DataFrame, values: pd.DataFrame) -> tuple[p
     v = values[values["quantity"] == "te_max"]
     pub = []
     for _, r in v.iterrows():
-        rk = _parse_row(r["row"])
+        rk = parse_row(r["row"])
         pub.append(
             dict(
                 plane=rk["plane"],
@@ -352,7 +353,7 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
     r1 = st[st["table_row"] == 1]
     printed = {}
     for _, v in vals[vals["quantity"] == "stress_ratio"].iterrows():
-        rk = _parse_row(v["row"])
+        rk = parse_row(v["row"])
         if rk.get("plane") == "out" and "bevel" not in str(v["id"]):
             printed[(float(rk["misalignment_deg"]), rk["crown"])] = float(v["value"])
 
@@ -423,16 +424,6 @@ INPUT_AMOUNT = (
 _BEVEL_WORDS = ("bevel", "spiral", "straight")
 
 
-def _parse_row(s) -> dict:
-    """Row key ``k=v;k=v`` of data/published as a dict (values kept as strings)."""
-    out = {}
-    for part in filter(None, (x.strip() for x in str(s).split(";"))):
-        k, sep, v = part.partition("=")
-        if sep:
-            out[k.strip()] = v.strip()
-    return out
-
-
 def _is_bevel(r: pd.Series) -> bool:
     text = " ".join(str(r.get(k, "")) for k in ("id", "row", "parameters", "source")).lower()
     return any(w in text for w in _BEVEL_WORDS)
@@ -458,7 +449,7 @@ def fact_key(row: pd.Series) -> str | None:
         return bevel_fact_key(row)
     tag = str(row["id"]).split("-")[1]
     q = str(row["quantity"])
-    rk = _parse_row(row["row"])
+    rk = parse_row(row["row"])
     if ("stress" in q or "pressure" in q) and not (tag == "S4.2" and q == "stress_ratio"):
         return None
     if tag == "T10":

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...solve import newton
 from ...surfaces.involute import (
     CircularCrowning,
     InvoluteGearData,
@@ -123,8 +124,6 @@ def printed_hertz(k_max1, k_min1, k_max2, k_min2, load_N, E1_MPa, nu1, E2_MPa, n
     directions of both surfaces coincide (true for aligned parallel-axis flanks, nearly so here).
     Returns dict(a_mm, b_mm, e, p_MPa, residual, iterations, status) of scalars."""
     from scipy.special import ellipe, ellipk
-
-    from ...solve import newton
 
     A = 0.5 * abs(float(k_max1) + float(k_max2))
     B = 0.5 * abs(float(k_min1) + float(k_min2))

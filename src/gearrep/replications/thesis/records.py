@@ -7,6 +7,7 @@ import pandas as pd
 
 from ...surfaces.involute import InvoluteGearData
 from ...units import DEG
+from .bevel import bevel_errata_rows, bevel_protocol_items
 from .convergence import STREAMS, study_reference
 from .design import Design, design_pair
 
@@ -70,8 +71,6 @@ def errata_table(s: dict, design: Design) -> dict:
             "dominates (spur) and show that the helical TE is dominated by the rigid-body term",
         )
     )
-    from .bevel import bevel_errata_rows  # Table 5's base cones, eq (45), eq (46)
-
     rows += bevel_errata_rows(design)
     return dict(errata=pd.DataFrame(rows))
 
@@ -130,8 +129,6 @@ def protocol_table(s: dict, design: Design) -> dict:
             f"window sweep: {p['n_starts_window']}",
         ),
     ]
-    from .bevel import bevel_protocol_items  # Tables 11-12 and the sec 5.1-5.2 studies
-
     items += bevel_protocol_items(p)
     run_info = pd.DataFrame([{k: (str(v) if isinstance(v, (list, dict)) else v) for k, v in s.items()}])
     return dict(protocol=pd.DataFrame(items, columns=["item", "value"]), run_info=run_info)

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...hobbed import Assembly, continue_to
-from ...tca_envelope import hob_pitch_l, predict
+from ...tca import HobbedAssembly, hob_pitch_l, hobbed_continue_to, predict_envelope_contact
 from .studies import TABLE_EXAMPLE, assembly_of, phi1_grid
 
 __all__ = ["robustness_cases"]
@@ -15,16 +14,19 @@ def robustness_cases(settings: dict, design) -> list:
     """The Table 5.4 example pair (seed 000 ch. 5), aligned and with the example's assembly errors:
     dicts with ``family``, ``misalignment``, ``pair``, ``phi1`` (five angles over 0.8 of the
     study's phi1' grid), ``start`` (the physical contact at phi1' = 0 by continuation,
-    :func:`gearrep.hobbed.continue_to`), ``nominal(phi1)`` (the first-order path predictor off
-    it, :func:`gearrep.tca_envelope.predict`), ``box`` (the pinion flank of the starts: hob
+    :func:`gearrep.tca.hobbed_continue_to`), ``nominal(phi1)`` (the first-order path predictor off
+    it, :func:`gearrep.tca.predict_envelope_contact`), ``box`` (the pinion flank of the starts: hob
     parameter l over the working depth, pitch line +- m / cos(alpha_n) along the profile; swivel
     psi over the face, +- (B / 2) / R_cp) and ``tol``."""
     case = design.cases[TABLE_EXAMPLE["5.4"]]
     tol = settings["tol"]
     g = phi1_grid(settings)
     out = []
-    for asm, lab in ((Assembly(0.0, 0.0, 0.0, 0.0), "aligned"), (assembly_of(case), "Table 5.4 example's errors")):
-        pair, s0 = continue_to(
+    for asm, lab in (
+        (HobbedAssembly(0.0, 0.0, 0.0, 0.0), "aligned"),
+        (assembly_of(case), "Table 5.4 example's errors"),
+    ):
+        pair, s0 = hobbed_continue_to(
             design.gears, case["R_cp_mm"], case["R_cg_mm"], asm, steps=settings["continuation_steps"], tol=tol
         )
         hob = pair.pinion.gear.hob
@@ -34,7 +36,7 @@ def robustness_cases(settings: dict, design) -> list:
 
         def nominal(phi1, pair=pair, s0=s0):
             n = len(phi1)
-            return predict(pair, np.repeat(s0.x, n, 0), np.repeat(s0.phi1, n), phi1)
+            return predict_envelope_contact(pair, np.repeat(s0.x, n, 0), np.repeat(s0.phi1, n), phi1)
 
         out.append(
             dict(

@@ -7,20 +7,30 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...hobbed import Assembly, Pair, continue_to, elastic_ellipses
 from ...solve import newton
 from ...surfaces.hob import PairDesign
-from ...tca_envelope import ContactPath, Flank, hob_pitch_l, predict, require, solve_points
+from ...tca import (
+    EnvelopeContactPath,
+    EnvelopeFlank,
+    HobbedAssembly,
+    HobbedPair,
+    hob_pitch_l,
+    hobbed_continue_to,
+    hobbed_elastic_ellipses,
+    predict_envelope_contact,
+    require_converged,
+    solve_envelope_points,
+)
 
 __all__ = ["contact_ellipses", "pitch_point_ratio", "topology_pattern"]
 
 
-def contact_ellipses(pair: Pair, sol: ContactPath, delta_mm: float) -> pd.DataFrame:
+def contact_ellipses(pair: HobbedPair, sol: EnvelopeContactPath, delta_mm: float) -> pd.DataFrame:
     """Elastic-approach ellipse (eq 5.14-5.17; :func:`gearrep.ellipse.elastic_ellipse_at`) at
     every contact point of ``sol``: the chapter-4 curvatures of both flanks (two-parameter
     relations, :func:`gearrep.curvature_relations.generated_curvatures`) at the TCA point,
     expressed with the pinion's normal. a/b does not depend on delta (a/b = sqrt(B_e/A_e))."""
-    el, cp, cg = elastic_ellipses(pair, sol, delta_mm)  # the library route (gearrep.hobbed)
+    el, cp, cg = hobbed_elastic_ellipses(pair, sol, delta_mm)  # the library route (gearrep.tca)
     return pd.DataFrame(
         {
             "phi1_deg": np.degrees(sol.phi1),
@@ -49,17 +59,17 @@ def pitch_point_ratio(
     approach ``delta_mm``."""
     gears = gears.with_hob(pressure_angle_rad=float(np.radians(alpha_deg)))
     hob = gears.hob
-    pair, s0 = continue_to(gears, R_cp_mm, R_cg_mm, Assembly(), steps=2, tol=tol)
+    pair, s0 = hobbed_continue_to(gears, R_cp_mm, R_cg_mm, HobbedAssembly(), steps=2, tol=tol)
     lp = hob_pitch_l(hob)
     # dl_p/dphi1 from the predictor, then Newton on l_p(phi1) = l_pitch (secant, converged TCA points)
     a, cur = 0.0, s0
     for _ in range(20):
         d = np.radians(1e-3)
-        s1 = solve_points(pair, [a + d], predict(pair, cur.x, cur.phi1, [a + d]), tol=tol)
+        s1 = solve_envelope_points(pair, [a + d], predict_envelope_contact(pair, cur.x, cur.phi1, [a + d]), tol=tol)
         slope = (s1.x[0, 0] - cur.x[0, 0]) / d
         a_new = a + (lp - cur.x[0, 0]) / slope
-        cur = solve_points(pair, [a_new], predict(pair, cur.x, cur.phi1, [a_new]), tol=tol)
-        require(cur, "pitch-point contact")
+        cur = solve_envelope_points(pair, [a_new], predict_envelope_contact(pair, cur.x, cur.phi1, [a_new]), tol=tol)
+        require_converged(cur, "pitch-point contact")
         a = a_new
         if abs(cur.x[0, 0] - lp) < 1e-9:
             break
@@ -76,7 +86,7 @@ def pitch_point_ratio(
     }
 
 
-def _height(flank: Flank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30):
+def _height(flank: EnvelopeFlank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30):
     """Signed height (along n) above the tangent plane of the flank point that projects on the
     tangent-plane points X (m, 3) (Newton on the flank parameters (l, psi), analytic Jacobian
     from the envelope tangents; (phi, theta) warm-started from the contact q0)."""
@@ -109,7 +119,9 @@ def _height(flank: Flank, R, origin, q0, O, t1, t2, n, X, tol=1e-12, maxiter=30)
     return np.where(ok, (P - O) @ n, np.nan), ok
 
 
-def topology_pattern(pair: Pair, sol: ContactPath, i: int, delta_mm: float, n_dirs: int = 24) -> pd.DataFrame:
+def topology_pattern(
+    pair: HobbedPair, sol: EnvelopeContactPath, i: int, delta_mm: float, n_dirs: int = 24
+) -> pd.DataFrame:
     """Boundary of the contact pattern at contact point i of ``sol``: in each of ``n_dirs``
     directions of the common tangent plane, the distance rho at which the normal separation of
     the two flanks equals delta (eq 5.18-5.20: the paint-thickness criterion), found by the
@@ -119,7 +131,7 @@ def topology_pattern(pair: Pair, sol: ContactPath, i: int, delta_mm: float, n_di
         raise ValueError(f"n_dirs must be a positive multiple of 4, got {n_dirs!r}")
     one = sol.take([i])
     el = contact_ellipses(pair, one, delta_mm).iloc[0]
-    ell, cp, _ = elastic_ellipses(pair, one, delta_mm)
+    ell, cp, _ = hobbed_elastic_ellipses(pair, one, delta_mm)
     n = cp.normal[0]
     t1 = ell.major_axis[0] / np.linalg.norm(ell.major_axis[0])
     t2 = np.cross(n, t1)

@@ -2,7 +2,7 @@
 
 The coordinate transformations of eq 5.1-5.4 read as active rotations (the printed M_fh has an
 OCR-garbled last row, [0 0 1 1]), every rotation from :mod:`gearrep.frames`; the library's
-:class:`gearrep.hobbed.Pair` places the members by the same rotations (tested against these).
+:class:`gearrep.tca.HobbedPair` places the members by the same rotations (tested against these).
 Eq 5.12 (kinematic error) and eq 5.13 (contact ratio, with the angular pitch 2 pi / T_p instead
 of the printed 360 deg: erratum in data/errata.csv) are kept here as printed; the tests compare
 them with the library route.

@@ -11,19 +11,25 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ... import hobbed, meshing
-from ...hobbed import Assembly, Pair, continue_to, ke_table, make_pair, physical_contact, tip_crossing
+from ... import meshing, tca
 from ...surfaces.hob import PairDesign
-from ...tca_envelope import (
-    ContactPath,
-    dropped_component,
-    member_geometry,
-    require,
-    solve_points,
-    tangency_near,
-    tangency_system,
-    trace_path,
-    turn_gap,
+from ...tca import (
+    EnvelopeContactPath,
+    HobbedAssembly,
+    HobbedPair,
+    envelope_dropped_component,
+    envelope_member_geometry,
+    envelope_tangency_near,
+    envelope_tangency_system,
+    envelope_turn_gap,
+    hobbed_continue_to,
+    hobbed_pair,
+    hobbed_physical_contact,
+    hobbed_tip_crossing,
+    ke_table,
+    require_converged,
+    solve_envelope_points,
+    trace_envelope_path,
 )
 from ...units import ARCSEC
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
@@ -75,25 +81,29 @@ class Design:
 
 def phi1_grid(settings: dict) -> np.ndarray:
     """phi1' [rad] of the settings' grid, phi1_start_deg to phi1_end_deg in phi1_step_deg steps
-    (:func:`gearrep.hobbed.phi1_grid`; 0 exactly on it)."""
-    return hobbed.phi1_grid(settings["phi1_start_deg"], settings["phi1_end_deg"], settings["phi1_step_deg"])
+    (:func:`gearrep.tca.hobbed_phi1_grid`; 0 exactly on it)."""
+    return tca.hobbed_phi1_grid(settings["phi1_start_deg"], settings["phi1_end_deg"], settings["phi1_step_deg"])
 
 
-def assembly_of(case: dict) -> Assembly:
+def assembly_of(case: dict) -> HobbedAssembly:
     """The assembly errors of a case (angles printed in arc-minutes)."""
     am = np.radians(1.0 / 60.0)
-    return Assembly(case["dgamma_h_arcmin"] * am, case["dgamma_v_arcmin"] * am, case["dC_mm"], case["dZ_mm"])
+    return HobbedAssembly(case["dgamma_h_arcmin"] * am, case["dgamma_v_arcmin"] * am, case["dC_mm"], case["dZ_mm"])
 
 
-def compute_case(gears: PairDesign, case: dict, phi1_rad, *, tol=1e-11, steps=4) -> tuple[Pair, ContactPath]:
+def compute_case(
+    gears: PairDesign, case: dict, phi1_rad, *, tol=1e-11, steps=4
+) -> tuple[HobbedPair, EnvelopeContactPath]:
     """(pair, path) of one Example of the pair ``gears``: continuation at phi1' = 0, then the path,
     and at every phi1' the physical contact among the tangencies found
-    (:func:`gearrep.hobbed.physical_contact`)."""
-    pair, s0 = continue_to(gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=steps, tol=tol)
-    return pair, physical_contact(pair, trace_path(pair, s0, phi1_rad, tol=tol), tol=tol)
+    (:func:`gearrep.tca.hobbed_physical_contact`)."""
+    pair, s0 = hobbed_continue_to(gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=steps, tol=tol)
+    return pair, hobbed_physical_contact(pair, trace_envelope_path(pair, s0, phi1_rad, tol=tol), tol=tol)
 
 
-def solved(settings: dict, design: Design, example: str, gears: PairDesign | None = None) -> tuple[Pair, ContactPath]:
+def solved(
+    settings: dict, design: Design, example: str, gears: PairDesign | None = None
+) -> tuple[HobbedPair, EnvelopeContactPath]:
     """The path of an Example on the settings' phi1' grid (of the design's pair, or of ``gears``)."""
     return compute_case(
         design.gears if gears is None else gears,
@@ -117,15 +127,15 @@ def ke_table_two_tangencies(settings: dict, design: Design, example: str) -> pd.
 
     Added columns: the mid-face tangency's l, Z and KE (re-zeroed at its own phi1' = 0 row, as
     a printed table would be), its gear angle minus the first contact's [arcsec], and the two
-    separations, first-order normal gaps (:func:`gearrep.tca_envelope.turn_gap`; < 0 =
+    separations, first-order normal gaps (:func:`gearrep.tca.envelope_turn_gap`; < 0 =
     interpenetration): ``gap_at_first_contact_if_midface_mm`` at the first-contact point with the
     gear at the mid-face tangency's angle (the largest interpenetration of the mid-face tangency
     to second order in the turn; the mirror point of the pair has the same by symmetry) and
     ``gap_at_midface_if_first_contact_mm`` at mid-face with the gear at the first contact's angle;
     and the ``tangency_gap_threshold_mm`` setting they are judged against (:mod:`.checks`)."""
     pair, sol = solved(settings, design, example)
-    mid = tangency_near(pair, sol, 0.0, tol=settings["tol"])
-    require(mid, f"mid-face tangency of Example {example}")
+    mid = envelope_tangency_near(pair, sol, 0.0, tol=settings["tol"])
+    require_converged(mid, f"mid-face tangency of Example {example}")
     if not (np.all(np.abs(mid.Z_p) < 1e-6) and np.all(np.abs(mid.phi2 - sol.phi2) < 1e-6)):
         raise RuntimeError(f"Example {example}: the search from Z_p = 0 did not return the mid-face tangency")
     t = ke_table(sol, pair.ratio)
@@ -136,8 +146,8 @@ def ke_table_two_tangencies(settings: dict, design: Design, example: str) -> pd.
     t["Z_g_midface_mm"] = tm["Z_g_mm"]
     t["KE_midface_arcsec"] = tm["KE_arcsec"]
     t["phi2_midface_minus_phi2_arcsec"] = (mid.phi2 - sol.phi2) / ARCSEC
-    t["gap_at_first_contact_if_midface_mm"] = turn_gap(pair, sol, mid.phi2)
-    t["gap_at_midface_if_first_contact_mm"] = turn_gap(pair, mid, sol.phi2)
+    t["gap_at_first_contact_if_midface_mm"] = envelope_turn_gap(pair, sol, mid.phi2)
+    t["gap_at_midface_if_first_contact_mm"] = envelope_turn_gap(pair, mid, sol.phi2)
     t["tangency_gap_threshold_mm"] = float(settings["tangency_gap_threshold_mm"])
     return t
 
@@ -147,9 +157,9 @@ def _shifted(gears, case, pair, sol, which, h, tol):
     for sgn in (1, -1):
         c = dict(case)
         c[which] = case[which] + sgn * h
-        pr = make_pair(gears, c["R_cp_mm"], c["R_cg_mm"], pair.assembly)
-        s = solve_points(pr, sol.phi1, sol.x, tol=tol)
-        require(s, f"sensitivity {which}")
+        pr = hobbed_pair(gears, c["R_cp_mm"], c["R_cg_mm"], pair.assembly)
+        s = solve_envelope_points(pr, sol.phi1, sol.x, tol=tol)
+        require_converged(s, f"sensitivity {which}")
         out.append(s)
     return out
 
@@ -159,12 +169,12 @@ def _sensitivity_of(gears, case, pair, sol, settings) -> pd.DataFrame:
     started from the path), and Z at a loose solver tolerance (1e-6)."""
     h = float(settings["sensitivity_step_mm"])
     out = {which: _shifted(gears, case, pair, sol, which, h, settings["tol"]) for which in ("R_cg_mm", "R_cp_mm")}
-    loose = solve_points(pair, sol.phi1, sol.x + 1e-5, tol=1e-6)
+    loose = solve_envelope_points(pair, sol.phi1, sol.x + 1e-5, tol=1e-6)
     # how far Z_p can move along the weakest direction of the 9 x 9 Jacobian while the residual
     # stays below 1e-6 (a solver stopping there could report any Z_p in this band)
-    _, J, _ = tangency_system(pair, sol.x, sol.phi1, dropped_component(pair, sol.x, sol.phi1))
+    _, J, _ = envelope_tangency_system(pair, sol.x, sol.phi1, envelope_dropped_component(pair, sol.x, sol.phi1))
     _, sv, Vt = np.linalg.svd(J)
-    Tp = member_geometry(pair.pinion, sol.x[:, 0:4])[1]  # d r_p / d q_p, z unchanged by the placement
+    Tp = envelope_member_geometry(pair.pinion, sol.x[:, 0:4])[1]  # d r_p / d q_p, z unchanged by the placement
     band = np.abs(np.einsum("nq,nq->n", Tp[:, :, 2], Vt[:, -1, 0:4])) / sv[:, -1] * 1e-6
     ke = {k: [ke_table(s, pair.ratio)["KE_arcsec"].to_numpy() for s in v] for k, v in out.items()}
     g, p = out["R_cg_mm"], out["R_cp_mm"]
@@ -204,12 +214,12 @@ def contact_ratio(settings: dict, design: Design) -> pd.DataFrame:
     start = sol.take([int(np.argmin(np.abs(sol.phi1)))])
     tol, window = settings["tol"], settings["contact_ratio_window_deg"]
     w = np.radians(window)
-    path = physical_contact(pair, trace_path(pair, start, np.linspace(-w, w, 31), tol=tol), tol=tol)
-    require(path, "contact-ratio path")
+    path = hobbed_physical_contact(pair, trace_envelope_path(pair, start, np.linspace(-w, w, 31), tol=tol), tol=tol)
+    require_converged(path, "contact-ratio path")
     d = pd.DataFrame(
         [
-            tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
-            tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
+            hobbed_tip_crossing(pair, path, "pinion", pair.pinion.r_outside_mm, window, tol),
+            hobbed_tip_crossing(pair, path, "gear", pair.gear.r_outside_mm, window, tol),
         ]
     )
     # the library's contact ratio (the printed eq 5.13 with the angular pitch, model.contact_ratio,
@@ -225,7 +235,7 @@ def ke_vs_hob_radius(settings: dict, design: Design) -> pd.DataFrame:
         gears = design.gears.with_hob(pitch_radius_mm=float(r_h))
         hob = gears.hob
         pair, sol = solved(settings, design, "5.1", gears)
-        require(sol, f"hob sweep r_h={r_h}")
+        require_converged(sol, f"hob sweep r_h={r_h}")
         t = ke_table(sol, pair.ratio)
         rows += [
             {

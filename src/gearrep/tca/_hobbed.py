@@ -3,7 +3,7 @@ first user): the pair with its assembly errors, the contact at phi1' = 0 by cont
 ideal pair, the physical contact among several tangencies, the kinematic-error (KE) table, where
 the contact reaches a tip circle, and the elastic contact ellipses along a path.
 
-The 9-unknown tangency system, its solve and the path are :mod:`gearrep.tca_envelope`; the
+The 9-unknown tangency system, its solve and the path are in :mod:`gearrep.tca._envelope`; the
 flanks come from :class:`gearrep.surfaces.hob.PairDesign` (``design.cut``), typed here by what is
 used (the core does not import the surface families).
 
@@ -22,13 +22,13 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from . import tca_envelope as _te
-from .curvature import PrincipalCurvatures, with_opposite_normal
-from .curvature_relations import generated_curvatures
-from .ellipse import elastic_ellipse_at
-from .frames import drot_z, rot_x, rot_y, rot_z
-from .tca_envelope import ContactPath, Flank, make_flank, predict, require, solve_points
-from .units import ARCSEC
+from ..curvature import PrincipalCurvatures, with_opposite_normal
+from ..curvature_relations import generated_curvatures
+from ..ellipse import elastic_ellipse_at
+from ..frames import drot_z, rot_x, rot_y, rot_z
+from ..units import ARCSEC
+from . import _envelope as _te
+from ._envelope import ContactPath, Flank, make_flank, predict, require, solve_points
 
 # a gearrep.surfaces.hob.PairDesign (typed by what is used: n_pinion, n_gear, face_width_mm, hob, cut)
 _PairDesign = Any
@@ -80,7 +80,7 @@ class Assembly:
 
 @dataclass(frozen=True)
 class Pair:
-    """Pinion and gear flanks (:class:`gearrep.tca_envelope.Flank`), the face width [mm] of both
+    """Pinion and gear flanks (:class:`gearrep.tca.EnvelopeFlank`), the face width [mm] of both
     and the assembly errors; the placements of the module docstring."""
 
     pinion: Flank
@@ -129,7 +129,7 @@ def make_pair(design: _PairDesign, R_cp_mm: float, R_cg_mm: float, assembly: Ass
     if not all(hasattr(design, a) for a in ("cut", "face_width_mm", "n_pinion", "n_gear")):
         raise ValueError(f"design must be a gearrep.surfaces.hob.PairDesign, got {design!r}")
     if assembly is not None and not isinstance(assembly, Assembly):
-        raise ValueError(f"assembly must be a gearrep.hobbed.Assembly or None, got {assembly!r}")
+        raise ValueError(f"assembly must be a gearrep.tca.HobbedAssembly or None, got {assembly!r}")
     half = design.face_width_mm / 2
     for name, v in (("R_cp_mm", R_cp_mm), ("R_cg_mm", R_cg_mm)):
         if not (np.isfinite(v) and 20.0 <= v <= 1e6 and v > half):
@@ -148,7 +148,7 @@ def ideal_start(pair: Pair, *, tol: float = 1e-11) -> ContactPath:
     near the hob pitch line, (phi, theta) solved by each envelope, phi2' = 0; ``tol`` the
     solver's tolerance (residual, mm and rad)."""
     if not isinstance(pair, Pair):
-        raise ValueError(f"pair must be a gearrep.hobbed.Pair, got {pair!r}")
+        raise ValueError(f"pair must be a gearrep.tca.HobbedPair, got {pair!r}")
     _check_tol(tol)
     l0 = _te.hob_pitch_l(pair.pinion.gear.hob)
     qp = pair.pinion.gear.solve(l0, 0.0).params[0]
@@ -184,7 +184,7 @@ def continue_to(
     if int(steps) != steps or steps < 1:
         raise ValueError(f"steps must be a positive integer, got {steps!r}")
     if not isinstance(assembly, Assembly):
-        raise ValueError(f"assembly must be a gearrep.hobbed.Assembly, got {assembly!r}")
+        raise ValueError(f"assembly must be a gearrep.tca.HobbedAssembly, got {assembly!r}")
     if not (np.isfinite(R_gap_mm) and R_gap_mm >= 0):
         raise ValueError(f"R_gap_mm must be a finite length >= 0 mm, got {R_gap_mm!r}")
     _check_tol(tol)
@@ -204,10 +204,10 @@ def continue_to(
 
 
 def physical_contact(pair: Pair, sol: ContactPath, **kw) -> ContactPath:
-    """:func:`gearrep.tca_envelope.physical_contact` over the pair's face width (``kw``: its
+    """:func:`gearrep.tca.envelope_physical_contact` over the pair's face width (``kw``: its
     search settings)."""
     if not isinstance(pair, Pair):
-        raise ValueError(f"pair must be a gearrep.hobbed.Pair, got {pair!r}")
+        raise ValueError(f"pair must be a gearrep.tca.HobbedPair, got {pair!r}")
     return _te.physical_contact(pair, sol, face_width_mm=pair.face_width_mm, **kw)
 
 

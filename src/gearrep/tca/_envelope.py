@@ -23,10 +23,10 @@ from typing import Any
 
 import numpy as np
 
-from .envelope import local_geometry
-from .frames import rot_z
-from .solve import SolveResult, Status, newton, status_names
-from .surface import cross
+from ..envelope import local_geometry
+from ..frames import rot_z
+from ..solve import SolveResult, Status, newton, status_names
+from ..surface import cross
 
 # The flanks are gearrep.surfaces.hob.GeneratedGear objects and the tool a ZAHob; the core does not
 # import the surface families (not even for annotations), so they are typed by what is used.
