@@ -3,8 +3,9 @@ library's envelope solve and EnvelopeSurface derivatives."""
 
 import numpy as np
 import pytest
-from _numerics import assert_rounding_close
+from _numerics import assert_rounding_close, solve_bound
 
+from gearrep import frames
 from gearrep.surface import fd_derivatives
 from gearrep.surfaces.novikov import RackGeneratedFlank, pitch_radius
 from gearrep.units import DEG
@@ -233,13 +234,52 @@ def test_disk_ground_pinion():
     assert np.all(np.linalg.norm(plunged - x, axis=1) > 1e-6)  # the plunge moves the swept points
     # pointwise position: the finite differences in one call give the per-offset values
     assert disk.pointwise
-    e, f = disk.evaluate(uu, psi), fd_derivatives(disk.position, uu, psi, *disk.fd_step)
+    e, f = disk.fd_evaluate(uu, psi), fd_derivatives(disk.position, uu, psi, *disk.fd_step)
     for name in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
         np.testing.assert_array_equal(getattr(e, name), getattr(f, name), err_msg=name)
     with pytest.raises(ValueError, match="E_d"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 1.0, 0.0)
     with pytest.raises(ValueError, match="a_pd"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, -1.0)
+
+
+@pytest.mark.numerics
+def test_disk_ground_pinion_analytic_derivatives():
+    """The disk-ground pinion's analytic derivatives (the spline's cubic pieces carried by the
+    screw motion and the plunge) against scipy's derivatives of the same spline and against the
+    finite differences of its position that the surface used before; one point on floats gives
+    the array values."""
+    from gearrep.surfaces.novikov import DiskGroundPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    pin = RackGeneratedFlank(0.425, an, np.cos(an) / Pn, beta, pitch_radius(17, Pn, beta), -1)
+    p_n = np.pi / Pn
+    disk = DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, 0.001)
+    # u over the working part of the grinding line (towards u = -0.24 its derivatives grow
+    # a hundredfold, and below it the line's solve is on another branch), three of them on knots
+    rng = np.random.default_rng(5)
+    u, psi = rng.uniform(-0.15, 0.4, 40), rng.uniform(-0.6, 0.6, 40)
+    u[:3] = disk._line.x[[600, 900, 1700]]
+    for k, L in enumerate(disk._line_derivs(u)):  # the same cubic pieces: rounding only
+        assert_rounding_close(np.stack(L, axis=-1), disk._line(u, k))
+    a, f = disk.evaluate(u, psi), disk.fd_evaluate(u, psi)
+    # along u the surface is the line turned by Rz(phi_s) Rz(-psi): r_u, r_uu from scipy's L', L''
+    turn = np.einsum("ab,nbc->nac", frames.rot_z(disk.phi_s), frames.rot_z(-psi))
+    for name, k in (("r_u", 1), ("r_uu", 2)):
+        assert_rounding_close(getattr(a, name), np.einsum("nab,nb->na", turn, disk._line(u, k)), err_msg=name)
+    np.testing.assert_allclose(a.r, f.r, rtol=0, atol=1e-14)
+    # the psi-derivatives against fourth-order differences with h = 1e-4 (smooth in psi): rounding
+    # eps |r| / h ~ 1e-11 in the first derivatives, eps |r| / h^2 ~ 1e-7 in the second, relative
+    # to each vector's largest entry (along u the differences straddle the spline's knots, where its
+    # third derivative jumps: r_uu is checked above instead)
+    for name, rtol in (("r_u", 1e-9), ("r_v", 1e-9), ("r_uv", 1e-6), ("r_vv", 1e-6)):
+        x, y = getattr(a, name), getattr(f, name)
+        assert np.abs(x - y).max() <= rtol * np.abs(y).max(), name
+    for i in range(3):
+        one = disk.evaluate_components(float(u[i]), float(psi[i]))
+        assert all(type(c) is float for vec in one for c in vec)
+        for vec, name in zip(one, ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv")):
+            assert_rounding_close(np.array(vec), getattr(a, name)[i])
 
 
 @pytest.mark.parametrize("rho, l", [(0.2, 0.2), (0.23, 0.18), (-0.258, -0.23)])
@@ -371,6 +411,39 @@ def test_offset_start_reaches_the_same_contacts_in_a_few_iterations():
     x0, x1 = before.unknowns("conventional"), after.unknowns("conventional")
     assert np.abs(x0 - x1).max() < 1e-9
     assert np.abs(before.te_arcsec - after.te_arcsec).max() < 1e-6
+
+
+def test_linear_offset_start_for_a_ground_pinion(published):
+    """The disk-ground pinion of seed 002 under the 3 arcmin crossing error: its aligned start
+    drifts from the contact along the path (0.8 in along the tooth at the ends of a pitch), so a
+    constant offset leaves most of the drift; the offset linear in the angle (order=1) leads to the
+    same roots in fewer iterations."""
+    from conftest import study_settings
+
+    from gearrep.replications import nasa
+    from gearrep.replications.nasa.geometry import disk_start, make_disk_pair
+    from gearrep.tca import Misalignment, offset_start, solve_contact
+    from gearrep.units import ARCMIN
+
+    s = study_settings("nasa")
+    d = nasa.params_from_published(published)
+    mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
+    pair = make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
+    per = 2 * np.pi / pair.n1
+    phi = np.linspace(-0.5 * per, 0.5 * per, 21)
+    kw = dict(formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    c0 = solve_contact(pair, phi, offset_start(pair, phi, disk_start, tol=s["tol"], maxiter=s["maxiter"]), **kw)
+    c1 = solve_contact(
+        pair, phi, offset_start(pair, phi, disk_start, order=1, tol=s["tol"], maxiter=s["maxiter"]), **kw
+    )
+    assert c0.converged.all() and c1.converged.all()
+    assert c1.iterations.mean() < 0.6 * c0.iterations.mean() and c1.iterations.max() <= 6
+    # the same roots: both residuals below tol, within the solver's bound (condition x 2 tol)
+    x0, x1 = c0.unknowns("conventional"), c1.unknowns("conventional")
+    bound = solve_bound(s["tol"], np.fmax(c0.condition, c1.condition)[:, None], x0)
+    assert np.all(np.abs(x0 - x1) <= bound)
+    with pytest.raises(ValueError, match="order"):
+        offset_start(pair, phi, disk_start, order=2)
 
 
 def test_offset_start_keeps_the_nominal_start_where_it_cannot_help():

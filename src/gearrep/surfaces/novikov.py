@@ -23,6 +23,7 @@ Units: lengths in inches (P_n in 1/in), angles in radians.
 
 from __future__ import annotations
 
+import bisect
 import math
 
 import numpy as np
@@ -419,8 +420,10 @@ class DiskGroundPinion(Surface):
 
     Without plunging this is the helicoid again (tested). The line L is solved once on a grid of
     u (``u_range``, 1801 points, Newton to 1e-14) and interpolated by a cubic spline (error far
-    below 1e-12 in); derivatives by finite differences (:class:`gearrep.surface.Surface`). The
-    report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
+    below 1e-12 in). The derivatives are analytic: those of the spline's cubic pieces carried by
+    the screw motion and the plunge (:meth:`evaluate_components`); :meth:`fd_evaluate` is the
+    same surface differentiated by finite differences (the reference they are tested against).
+    The report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
     """
 
     fd_step = (1e-4, 1e-4)
@@ -462,6 +465,11 @@ class DiskGroundPinion(Surface):
         self._d = np.array([0.0, np.sin(self.gamma_d), np.cos(self.gamma_d)])
         ug = np.linspace(float(u_range[0]), float(u_range[1]), 1801)
         self._line = CubicSpline(ug, self._line_exact(ug, float(th0[0])), axis=0)
+        # the spline's pieces, for the analytic derivatives: knots and coefficients (4, piece, 3)
+        self._knots, self._pieces = self._line.x.tolist(), len(ug) - 1
+        self._coef = self._line.c
+        self._coef_rows = [tuple(row) for row in np.moveaxis(self._coef, 1, 0).reshape(len(ug) - 1, 12).tolist()]
+        self._cs, self._ss = math.cos(self.phi_s), math.sin(self.phi_s)
         self.lower = np.array([float(u_range[0]), -np.inf])
         self.upper = np.array([float(u_range[1]), np.inf])
 
@@ -504,6 +512,64 @@ class DiskGroundPinion(Surface):
         x, y = c * q[..., 0] + s_ * q[..., 1], -s_ * q[..., 0] + c * q[..., 1]
         out = np.stack([x, y, q[..., 2] + ll], axis=-1)
         return frames.transform_vectors(frames.rot_z(self.phi_s), out)
+
+    def _line_derivs(self, u):
+        """The spline of the grinding line and its first two derivatives at u, by components (the
+        cubic piece of u's interval, extrapolated beyond the ends as the spline is): three
+        3-tuples (L, L', L''); floats for a Python float u."""
+        if type(u) is float:  # the interval scipy picks: x_i <= u < x_i+1, the end pieces beyond
+            i = min(max(bisect.bisect_right(self._knots, u) - 1, 0), self._pieces - 1)
+            t = u - self._knots[i]
+            a0, a1, a2, b0, b1, b2, c0, c1, c2, d0, d1, d2 = self._coef_rows[i]
+        else:
+            i = np.clip(np.searchsorted(self._line.x, u, side="right") - 1, 0, self._pieces - 1)
+            t = u - self._line.x[i]
+            C = self._coef[:, i]
+            (a0, a1, a2), (b0, b1, b2), (c0, c1, c2), (d0, d1, d2) = (
+                (C[k, ..., 0], C[k, ..., 1], C[k, ..., 2]) for k in range(4)
+            )
+        t3 = 3.0 * t
+        return (
+            (((a0 * t + b0) * t + c0) * t + d0, ((a1 * t + b1) * t + c1) * t + d1, ((a2 * t + b2) * t + c2) * t + d2),
+            ((a0 * t3 + 2.0 * b0) * t + c0, (a1 * t3 + 2.0 * b1) * t + c1, (a2 * t3 + 2.0 * b2) * t + c2),
+            (2.0 * (a0 * t3 + b0), 2.0 * (a1 * t3 + b1), 2.0 * (a2 * t3 + b2)),
+        )
+
+    def evaluate(self, u, v) -> SurfacePoint:
+        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        return SurfacePoint.from_components(self.evaluate_components(u, v))
+
+    def fd_evaluate(self, u, v) -> SurfacePoint:
+        """The derivatives by fourth-order central differences of :meth:`position` (the surface
+        protocol's default; the reference of the analytic ones)."""
+        return Surface.evaluate(self, u, v)
+
+    def evaluate_components(self, u, v) -> tuple:
+        """Position and analytic derivatives by components (Python floats for one point). With
+        G = Rz(-psi), K w = e_z x w, the plunged line Q = L(u) - a_pd p^2 psi^2 e_x and
+        q_v = -2 a_pd p^2 psi (the x component of dQ/dpsi), r = Rz(phi_s) s with
+        s = G Q - p psi e_z: s_u = G L', s_uu = G L'', s_uv = -K G L',
+        s_v = -K G Q + q_v G e_x - p e_z and s_vv = K^2 G Q - 2 q_v K G e_x - 2 a_pd p^2 G e_x."""
+        one = type(u) is float and type(v) is float
+        if not one:
+            u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
+        L, L1, L2 = self._line_derivs(u)
+        c, s = (math.cos(v), math.sin(v)) if one else (np.cos(v), np.sin(v))
+        p, k = self.p, self.a_pd * self.p * self.p
+        qx = L[0] - k * v * v
+        qv, qvv = -2.0 * k * v, -2.0 * k
+        gx, gy = c * qx + s * L[1], -s * qx + c * L[1]  # G Q
+        g1x, g1y = c * L1[0] + s * L1[1], -s * L1[0] + c * L1[1]  # G L'
+        zero = 0.0 if one else np.zeros(np.shape(u))
+        parts = (
+            (gx, gy, L[2] - p * v),
+            (g1x, g1y, L1[2]),
+            (gy + c * qv, -gx - s * qv, zero - p),
+            (c * L2[0] + s * L2[1], -s * L2[0] + c * L2[1], L2[2]),
+            (g1y, -g1x, zero),
+            (-gx - 2.0 * s * qv + c * qvv, -gy - 2.0 * c * qv - s * qvv, zero),
+        )
+        return tuple(frames.rotate_z(self._cs, self._ss, w) for w in parts)
 
 
 class WormGeneratedPinion(Surface):

@@ -232,7 +232,9 @@ def robust_start(pair: GearPair, phi1, u1, v1):
     return _transverse(pair, ph, u1g, v1, 1e-10, 50)
 
 
-def offset_start(pair: GearPair, phi1, nominal, *, formulation="conventional", solve=None, tol=1e-12, maxiter=50):
+def offset_start(
+    pair: GearPair, phi1, nominal, *, formulation="conventional", solve=None, tol=1e-12, maxiter=50, order: int = 0
+):
     """Starts at member-1 angles ``phi1`` (rad): a family's nominal starts ``nominal(pair, phi1)``
     ((n, 5) conventional or (n, 2) reduced unknowns) moved by the offset of one solved contact from
     its nominal start, x_ref - nominal(pair, [phi_ref]), at the reference angle phi_ref = the phi1
@@ -248,32 +250,50 @@ def offset_start(pair: GearPair, phi1, nominal, *, formulation="conventional", s
     about 32 iterations (the residual norm on the straight line to the root rises 15-fold), from the
     moved start 2-3.
 
+    ``order=1``: the offset linear in the angle, through the offsets solved at the two angles
+    nearest a quarter and three quarters of the range (where the nominal start drifts from the
+    contact along the path: the ground Novikov pinions of seed 002, whose aligned start misses the
+    contact by up to 0.8 in along the tooth at the ends of a pitch and 0.03 in at its middle);
+    where one of the two references fails, the offset of the other is used alone.
+
     ``solve(pair, phi_ref, start)`` -> :class:`ContactPoints` (phi_ref and start one row each) solves
     the reference; default :func:`solve_contact` (damped Newton, ``formulation``, ``tol``,
     ``maxiter``), so the reference is the root the nominal start reaches, and where the offset
     changes slowly with the angle the moved starts lead to the roots the nominal ones reach
     (tested on the seed-002 pair). A stronger start strategy (a robust solve of the reference)
-    plugs in here. Where the reference does not converge, or ``phi1`` is one angle (the reference
-    would be the solve itself), the nominal starts are returned unchanged."""
+    plugs in here. Where the reference does not converge, or ``phi1`` is one angle (two for
+    ``order=1``; the references would be the solves themselves), the nominal starts are returned
+    unchanged."""
     check_formulation(formulation)
+    if order not in (0, 1) or type(order) is bool:
+        raise ValueError(f"order must be 0 (a constant offset) or 1 (linear in phi1), got {order!r}")
     phi1 = _angles(phi1)
     start = np.array(nominal(pair, phi1), dtype=float)
     width = 5 if formulation == "conventional" else 2
     if start.ndim != 2 or start.shape != (len(phi1), width):
         raise ValueError(f"nominal must return ({len(phi1)}, {width}) {formulation} starts, got shape {start.shape}")
-    if len(phi1) == 1 or not np.all(np.isfinite(phi1)):
+    if len(phi1) <= 1 + order or not np.all(np.isfinite(phi1)):
         return start
-    i = int(np.argmin(np.abs(phi1 - 0.5 * (phi1.min() + phi1.max()))))
     if solve is None:
 
         def solve(pair, ph, x0):
             return solve_contact(pair, ph, x0, formulation=formulation, tol=tol, maxiter=maxiter)
 
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        ref = solve(pair, phi1[i : i + 1], start[i : i + 1])
-    if not ref.converged[0]:
+    lo, hi = phi1.min(), phi1.max()
+    fractions = (0.5,) if order == 0 else (0.25, 0.75)
+    refs = []
+    for f in fractions:
+        i = int(np.argmin(np.abs(phi1 - (lo + f * (hi - lo)))))
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            ref = solve(pair, phi1[i : i + 1], start[i : i + 1])
+        if ref.converged[0]:
+            refs.append((phi1[i], ref.unknowns(formulation)[0] - start[i]))
+    if not refs:
         return start
-    return start + (ref.unknowns(formulation)[0] - start[i])
+    if len(refs) == 1 or refs[0][0] == refs[1][0]:
+        return start + refs[0][1]
+    (pa, oa), (pb, ob) = refs
+    return start + oa + (ob - oa) * ((phi1 - pa) / (pb - pa))[:, None]
 
 
 def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduced", tol=1e-12, maxiter=50):
