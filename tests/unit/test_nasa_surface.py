@@ -3,7 +3,7 @@ library's envelope solve and EnvelopeSurface derivatives."""
 
 import numpy as np
 import pytest
-from _numerics import assert_rounding_close, solve_bound
+from _numerics import assert_rounding_close, assert_same_solve, solve_bound
 
 from gearrep import frames
 from gearrep.surface import fd_derivatives
@@ -160,6 +160,123 @@ def test_normal_part_surface_matches_envelope_surface():
     pf, pl = principal_curvatures(full), principal_curvatures(light)
     np.testing.assert_allclose([pf.k1, pf.k2], [pl.k1, pl.k2], rtol=1e-7, atol=1e-9)
     assert w.light().outward_sign == w.outward_sign
+
+
+def _plunged_worm(feed="translation", hand="opposite"):
+    from gearrep.surfaces.novikov import WormGeneratedPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    a, l, rp = Pn / (2 * 5.88), np.cos(an) / Pn, pitch_radius(17, Pn, beta)
+    return WormGeneratedPinion(a, an, l, beta, rp, Pn, 3.82, 0.00139, feed=feed, worm_hand=hand)
+
+
+def _reduction_bound(w, psi, ll, value):
+    """Largest difference of a value of the worm-ground pinion between two solves of its equations of
+    meshing, each to a residual below the envelope's tol: the solved parameters differ by at most
+    ||J_S^-1|| 2 tol (J_S the meshing Jacobian in them, at the envelope solve's root), the point by
+    that times its tangents' size, a derivative by as much relative to its own size
+    (tests/_numerics.solve_bound)."""
+    rec = w.solve(psi, ll)
+    assert rec.converged.all()
+    J = w.envelope.meshing_jacobian(rec.params)[:, :, list(w.envelope.solved)]
+    tool = w.worm.evaluate(rec.params[:, 0], rec.params[:, 1])
+    size = np.maximum(np.linalg.norm(tool.r_u, axis=-1), np.linalg.norm(tool.r_v, axis=-1))
+    sensitivity = np.linalg.norm(np.linalg.inv(J), ord=2, axis=(1, 2)) * (1.0 + size)
+    return solve_bound(w.envelope.tol, sensitivity[:, None], np.abs(value).max(axis=-1, keepdims=True))
+
+
+@pytest.mark.numerics
+@pytest.mark.parametrize("feed, hand", [("translation", "opposite"), ("translation", "same"), ("rotation", "opposite")])
+def test_reduced_worm_surface_against_the_envelope_solve(feed, hand):
+    """The worm-ground pinion by the one-dimensional reduction of its equations of meshing
+    (:class:`ReducedWormSurface`, what ``light()`` returns) against the two-parameter envelope solve
+    with Litvin's curvature relations (:class:`NormalPartSurface`, the evaluation it replaces): the
+    same point, tangents and normal parts of the second derivatives over the flank, for either feed
+    and worm hand with plunging, within the solves' accuracy; one point on floats and points
+    started from the last evaluation (warm start) give the same values."""
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.surfaces.worm_ground import ReducedWormSurface
+
+    w = _plunged_worm(feed, hand)
+    psi, ll = (x.ravel() for x in np.meshgrid(np.linspace(-0.3, 0.3, 9), np.linspace(-1.5, 1.5, 9)))
+    red = w.light()
+    assert isinstance(red, ReducedWormSurface) and red.outward_sign == w.outward_sign
+    new, ref = red.evaluate(psi, ll), NormalPartSurface(w).evaluate(psi, ll)
+    names = ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv")
+    for name in names:
+        x, y = getattr(new, name), getattr(ref, name)
+        assert np.all(np.abs(x - y) <= _reduction_bound(w, psi, ll, y)), name
+    _, done, it = red.solve_reduced(psi, ll)  # from the linear start about the flank's middle
+    assert done.all() and it.max() <= 12
+    # the points moved by a small step start from the last evaluation's prediction: fewer iterations
+    moved, step = (psi + 1e-3, ll - 2e-3), red._warm_start(psi + 1e-3, ll - 2e-3, False)
+    _, done, it_warm = red.solve_reduced(*moved, step)
+    assert done.all() and it_warm.max() <= 2
+    again, fresh = red.evaluate(*moved), ReducedWormSurface(w).evaluate(*moved)
+    for name in names:
+        y = getattr(fresh, name)
+        assert np.all(np.abs(getattr(again, name) - y) <= _reduction_bound(w, *moved, y)), name
+    for i in (0, 40, 80):
+        one = red.evaluate_components(float(psi[i]), float(ll[i]))
+        assert all(type(c) is float for vec in one for c in vec)
+        for vec, name in zip(one, names):
+            y = getattr(new, name)[i : i + 1]
+            assert np.all(np.abs(np.array(vec) - y) <= _reduction_bound(w, psi[i : i + 1], ll[i : i + 1], y)), name
+
+
+@pytest.mark.numerics
+def test_worm_ground_contacts_by_the_reduction(published):
+    """The contact solve of the seed-002 worm-ground pair (3 arcmin crossing error) with the pinion
+    evaluated by the one-dimensional reduction finds the contacts it found with the two-parameter
+    envelope solve: the same statuses, iterations within one, values within the solver's bound."""
+    from conftest import study_settings
+
+    from gearrep.replications import nasa
+    from gearrep.replications.nasa.geometry import make_worm_pair, worm_start
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.tca import ContactPoints, GearPair, Misalignment, solve_contact
+    from gearrep.units import ARCMIN
+
+    s = study_settings("nasa")
+    d = nasa.params_from_published(published)
+    pair = make_worm_pair(d, s, misalignment=Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN))
+    before = GearPair(
+        NormalPartSurface(pair.flank1.base),
+        pair.flank2,
+        pair.n1,
+        pair.n2,
+        pair.centre_distance,
+        misalignment=pair.misalignment,
+        phase2=0.0,
+    )
+    per = 2 * np.pi / pair.n1
+    phi = np.linspace(-0.5 * per, 0.5 * per, 21)
+    kw = dict(formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    a = solve_contact(pair, phi, worm_start(pair, phi), **kw)
+    b = solve_contact(before, phi, worm_start(pair, phi), **kw)
+    assert a.converged.all()
+    assert_same_solve(a, b, s["tol"], [*ContactPoints.ARRAYS, "condition"])
+
+
+def test_reduced_worm_surface_falls_back_to_the_envelope_solve():
+    """Rows the reduction does not solve (here: no Newton iteration allowed) are evaluated by the
+    two-parameter envelope solve; one point on floats raises ValueError (the contact solve then
+    evaluates it on arrays); bad settings are refused."""
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.surfaces.worm_ground import ReducedWormSurface
+
+    w = _plunged_worm()
+    psi, ll = np.array([0.05, -0.2, 0.1]), np.array([0.3, 1.1, -0.9])
+    stuck = ReducedWormSurface(w, maxiter=0)
+    got, ref = stuck.evaluate(psi, ll), NormalPartSurface(w).evaluate(psi, ll)
+    for name in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
+        np.testing.assert_array_equal(getattr(got, name), getattr(ref, name))
+    with pytest.raises(ValueError, match="reduced worm-pinion solve failed"):
+        stuck.evaluate_components(0.05, 0.3)
+    with pytest.raises(ValueError, match="tol"):
+        ReducedWormSurface(w, tol=0.0)
+    with pytest.raises(ValueError, match="WormGeneratedPinion"):
+        ReducedWormSurface(NormalPartSurface(w))
 
 
 def _straight_rack_member(N=17, beta=0.35):

@@ -607,7 +607,10 @@ class WormGeneratedPinion(Surface):
     The meshing equations of the two-parameter envelope are solved by
     :class:`gearrep.envelope.Envelope` (free = (psi, l)); ``evaluate`` is
     :class:`gearrep.envelope.EnvelopeSurface` (analytic first derivatives, second derivatives
-    with analytic normal parts).
+    with analytic normal parts). For TCA, :meth:`light` evaluates the same surface by the
+    one-dimensional reduction of the equations of meshing
+    (:class:`gearrep.surfaces.worm_ground.ReducedWormSurface`: one unknown by Newton's method,
+    the other in closed form), tested against the envelope solve.
     """
 
     def __init__(
@@ -726,8 +729,12 @@ class WormGeneratedPinion(Surface):
         return self._surface.evaluate(u, v)
 
     def light(self) -> NormalPartSurface:
-        """This surface with cheap second derivatives for TCA (:class:`NormalPartSurface`)."""
-        return NormalPartSurface(self)
+        """This surface for TCA: the exact position and first derivatives and the normal parts of
+        the second derivatives, by the one-dimensional reduction of the equations of meshing
+        (:class:`gearrep.surfaces.worm_ground.ReducedWormSurface`, a :class:`NormalPartSurface`)."""
+        from .worm_ground import ReducedWormSurface
+
+        return ReducedWormSurface(self)
 
 
 class _WormMotion(Motion):
