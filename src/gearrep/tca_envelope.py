@@ -95,22 +95,8 @@ def member_geometry(flank: Flank, q):
     """Point, d point/dq, hob normal, d normal/dq (generation frame S_2) and the meshing
     functions with their Jacobian at q = (l, phi, theta, psi) (n, 4)."""
     loc = local_geometry(flank.tool, flank.motion, q)
-    R = loc.M[:, :3, :3]
-    p = loc.tool
-    r = np.einsum("nab,nb->na", R, p.r) + loc.M[:, :3, 3]
-    T = np.einsum("nab,nqb->nqa", R, loc.T)
-    n1 = loc.n
-    Nn = np.linalg.norm(loc.N, axis=-1, keepdims=True)
-    N_u = cross(p.r_uu, p.r_v) + cross(p.r_u, p.r_uv)
-    N_v = cross(p.r_uv, p.r_v) + cross(p.r_u, p.r_vv)
-
-    def dn(Nx):
-        return (Nx - n1 * np.sum(n1 * Nx, -1, keepdims=True)) / Nn
-
-    # d n / d m_j = R (omega_j x n1): the normal is carried by the motion's rotation
-    dn1 = np.stack([dn(N_u), dn(N_v), cross(loc.omega[:, 0], n1), cross(loc.omega[:, 1], n1)], 1)
     # f and J copied: the local geometry's arrays may be shared (envelope._local's reuse, read-only)
-    return r, T, np.einsum("nab,nb->na", R, n1), np.einsum("nab,nqb->nqa", R, dn1), np.array(loc.f), np.array(loc.J)
+    return (*loc.in_member_frame, np.array(loc.f), np.array(loc.J))
 
 
 _KEEP = np.array([[1, 2], [0, 2], [0, 1]])
