@@ -25,8 +25,8 @@ FAMILIES = [
     (
         "hob-cut",
         "envelope pair (9 unknowns)",
-        "about 1.6 x target per vectorised solve (230-290 elements): two generic two-parameter envelopes and "
-        "9 x 9 Newton steps by SVD on 200 angles (docs/performance.md)",
+        "1.3-1.5 x target per vectorised solve (190-230 elements across runs): two generic two-parameter "
+        "envelopes and 9 x 9 Newton steps on 200 angles (docs/performance.md)",
     ),
 ]
 
