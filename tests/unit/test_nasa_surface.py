@@ -530,11 +530,11 @@ def test_offset_start_reaches_the_same_contacts_in_a_few_iterations():
     assert np.abs(before.te_arcsec - after.te_arcsec).max() < 1e-6
 
 
-def test_linear_offset_start_for_a_ground_pinion(published):
+def test_polynomial_offset_start_for_a_ground_pinion(published):
     """The disk-ground pinion of seed 002 under the 3 arcmin crossing error: its aligned start
     drifts from the contact along the path (0.8 in along the tooth at the ends of a pitch), so a
-    constant offset leaves most of the drift; the offset linear in the angle (order=1) leads to the
-    same roots in fewer iterations."""
+    constant offset leaves most of the drift; the offset polynomial in the angle (order 1, 2) leads
+    to the same roots in fewer iterations."""
     from conftest import study_settings
 
     from gearrep.replications import nasa
@@ -549,18 +549,23 @@ def test_linear_offset_start_for_a_ground_pinion(published):
     per = 2 * np.pi / pair.n1
     phi = np.linspace(-0.5 * per, 0.5 * per, 21)
     kw = dict(formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
-    c0 = solve_contact(pair, phi, offset_start(pair, phi, disk_start, tol=s["tol"], maxiter=s["maxiter"]), **kw)
-    c1 = solve_contact(
-        pair, phi, offset_start(pair, phi, disk_start, order=1, tol=s["tol"], maxiter=s["maxiter"]), **kw
-    )
-    assert c0.converged.all() and c1.converged.all()
-    assert c1.iterations.mean() < 0.6 * c0.iterations.mean() and c1.iterations.max() <= 6
+    c = [
+        solve_contact(pair, phi, offset_start(pair, phi, disk_start, order=k, tol=s["tol"], maxiter=s["maxiter"]), **kw)
+        for k in (0, 1, 2)
+    ]
+    assert all(ck.converged.all() for ck in c)
+    assert c[1].iterations.mean() < 0.6 * c[0].iterations.mean() and c[1].iterations.max() <= 6
+    assert c[2].iterations.mean() < c[1].iterations.mean() and c[2].iterations.max() <= 5
     # the same roots: both residuals below tol, within the solver's bound (condition x 2 tol)
-    x0, x1 = c0.unknowns("conventional"), c1.unknowns("conventional")
-    bound = solve_bound(s["tol"], np.fmax(c0.condition, c1.condition)[:, None], x0)
-    assert np.all(np.abs(x0 - x1) <= bound)
+    x0 = c[0].unknowns("conventional")
+    for ck in c[1:]:
+        bound = solve_bound(s["tol"], np.fmax(c[0].condition, ck.condition)[:, None], x0)
+        assert np.all(np.abs(x0 - ck.unknowns("conventional")) <= bound)
+    # one angle more than the polynomial needs: the references are three of the four angles
+    assert np.all(np.isfinite(offset_start(pair, phi[:4], disk_start, order=2)))
+    assert np.array_equal(offset_start(pair, phi[:3], disk_start, order=2), disk_start(pair, phi[:3]))
     with pytest.raises(ValueError, match="order"):
-        offset_start(pair, phi, disk_start, order=2)
+        offset_start(pair, phi, disk_start, order=4)
 
 
 def test_offset_start_keeps_the_nominal_start_where_it_cannot_help():

@@ -78,8 +78,8 @@ def novikov_case(rng, n, pinion="rack"):
     study's 3 arcmin dgamma, from the aligned contact moved by the offset of a solved contact
     (gearrep.tca.offset_start, whose reference solves are in the row's start cost): for the
     rack-generated pair the offset solved at one angle (the study's starts), for the ground pinions,
-    whose aligned start drifts from the contact along the path, the offset linear in the angle
-    through two solved ones (order=1), and with the study's solver settings."""
+    whose aligned start drifts from the contact along the path, the offset quadratic in the angle
+    through three solved ones (order=2), and with the study's solver settings."""
     from gearrep.replications.nasa import geometry as ng
     from gearrep.replications.nasa.bench import crowned_pair
     from gearrep.surfaces.novikov import aligned_start
@@ -97,7 +97,7 @@ def novikov_case(rng, n, pinion="rack"):
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
     nominal = {"worm": ng.worm_start, "disk": ng.disk_start, "rack": aligned_start}[pinion]
-    order = 0 if pinion == "rack" else 1
+    order = 0 if pinion == "rack" else 2
     return pair, phi, lambda: offset_start(pair, phi, nominal, order=order, **kw), kw
 
 
