@@ -72,10 +72,10 @@ tests/unit/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
+from functools import cached_property
 
 import numpy as np
 
-from . import frames
 from .inputs import check_integer, check_positive
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
@@ -113,6 +113,23 @@ class LocalGeometry:
     J: np.ndarray  # (n,k,2+k) Jacobian of f in q
     T: np.ndarray  # (n,2+k,3) dr_2/dq in S_1
     H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
+    n_q: np.ndarray  # (n,2+k,3) dn/dq in S_1: (n_u, n_v) of the tool, omega_j x n of the motion
+
+    @cached_property
+    def in_member_frame(self) -> tuple:
+        """(point, dpoint/dq (n, 2+k, 3), normal, dnormal/dq (n, 2+k, 3)) in the generated member's
+        frame S_2 (the tool frame's vectors turned by M), formed once per local geometry (a solve's
+        record evaluates the converged iterate again: :data:`_RECENT`); read-only arrays."""
+        R = self.M[:, :3, :3]
+        out = (
+            (R @ self.tool.r[:, :, None])[:, :, 0] + self.M[:, :3, 3],
+            self.T @ np.swapaxes(R, 1, 2),
+            (R @ self.n[:, :, None])[:, :, 0],
+            self.n_q @ np.swapaxes(R, 1, 2),
+        )
+        for a in out:
+            a.flags.writeable = False
+        return out
 
 
 def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
@@ -122,11 +139,14 @@ def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometr
     return _local(tool, motion, np.asarray(q, dtype=float))
 
 
-#: the local geometries of the last few small batches, newest first: (tool, motion, q's shape and
-#: bytes, LocalGeometry). A solve's record, a TCA's finish and the generated curvatures evaluate the
-#: converged iterate again: a third of the calls of the seed 000 and NASA jobs repeat one of the four
-#: before (measured). The tool and motion are held, so their identities stay theirs (a tool or motion
-#: is not changed after it is made: none of the library's is); the arrays are read-only, so that no
+#: the local geometries of the last few small batches, newest first: [tool, motion, q's shape and
+#: bytes, LocalGeometry, its rows by bytes (formed when first needed; :data:`_GATHERED` for one
+#: assembled from others' rows)]. A solve's record, a TCA's
+#: finish and the generated curvatures evaluate the converged iterate again: a third of the calls
+#: of the seed 000 and NASA jobs repeat one of the four before (measured), and a batch solve's
+#: record gathers rows its iterations evaluated in different batches (rows converge at different
+#: iterations). The tool and motion are held, so their identities stay theirs (a tool or motion is
+#: not changed after it is made: none of the library's is); the arrays are read-only, so that no
 #: caller can change what another receives.
 _RECENT: list = []
 _RECENT_SIZE = 4
@@ -135,39 +155,82 @@ _RECENT_MAX_ROWS = 256
 
 def _local(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     """:func:`_local_geometry`, or the same values again where one of the last few calls had this
-    tool, motion and q (:data:`_RECENT`)."""
+    tool, motion and q (:data:`_RECENT`); a q whose rows they hold in part is assembled from their
+    rows and only the others are evaluated."""
     if q.ndim != 2 or q.shape[0] > _RECENT_MAX_ROWS:
         return _local_geometry(tool, motion, q)
     key = q.tobytes()
-    for entry in _RECENT:
-        if entry[0] is tool and entry[1] is motion and entry[2] == q.shape and entry[3] == key:
+    mine = [entry for entry in _RECENT if entry[0] is tool and entry[1] is motion]
+    for entry in mine:
+        if entry[2] == q.shape and entry[3] == key:
             return entry[4]
-    loc = _local_geometry(tool, motion, q)
+    held = [entry for entry in mine if entry[5] is not _GATHERED]
+    loc = _from_rows(held, q) if held else None
+    rows = None if loc is None else _GATHERED  # a gathered one is found again whole, not by rows
+    if loc is None:
+        loc = _local_geometry(tool, motion, q)
     for a in (*(getattr(loc, f.name) for f in fields(loc)), *(getattr(loc.tool, f.name) for f in fields(loc.tool))):
         if isinstance(a, np.ndarray):
             a.flags.writeable = False
-    _RECENT.insert(0, (tool, motion, q.shape, key, loc))
+    _RECENT.insert(0, [tool, motion, q.shape, key, loc, rows])
     del _RECENT[_RECENT_SIZE:]
     return loc
+
+
+#: the rows entry of a :data:`_RECENT` geometry gathered from others' rows (its rows are theirs)
+_GATHERED = ()
+
+
+def _from_rows(entries, q):
+    """The local geometry at q gathered from the rows of recent ones (``entries`` of
+    :data:`_RECENT`, one tool and motion) that have the same parameters, bit for bit, and
+    evaluated at the rest; None where no row is held. Rows are matched by their bytes (as fixed
+    length byte strings, sorted once per entry)."""
+    width = f"S{q.dtype.itemsize * q.shape[1]}"
+    keys = np.ascontiguousarray(q).view(width)[:, 0]
+    where = np.full(len(q), -1)
+    at = np.zeros(len(q), dtype=int)
+    for e, entry in enumerate(entries):
+        if entry[5] is None:  # the entry's rows as byte strings, sorted, with their order
+            stored = np.frombuffer(entry[3], dtype=float).reshape(entry[2]).view(width)[:, 0]
+            order = np.argsort(stored, kind="stable")
+            entry[5] = (stored[order], order)
+        ks, order = entry[5]
+        pos = np.minimum(np.searchsorted(ks, keys), len(ks) - 1)
+        hit = (ks[pos] == keys) & (where < 0)
+        where[hit], at[hit] = e, order[pos[hit]]
+    if not np.any(where >= 0):
+        return None
+    sources = [(entries[e][4], where == e) for e in range(len(entries)) if np.any(where == e)]
+    missing = where < 0
+    if missing.any():
+        sources.append((_local_geometry(entries[0][0], entries[0][1], q[missing]), missing))
+        at[missing] = np.arange(missing.sum())
+
+    def gather(name, part=None):
+        parts = [(getattr(src if part is None else getattr(src, part), name), rows) for src, rows in sources]
+        out = np.empty((len(q),) + parts[0][0].shape[1:])
+        for arr, rows in parts:
+            out[rows] = arr[at[rows]]
+        return out
+
+    tool = SurfacePoint(*(gather(f.name, "tool") for f in fields(SurfacePoint)))
+    return LocalGeometry(*(tool if f.name == "tool" else gather(f.name) for f in fields(LocalGeometry)))
 
 
 def _local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     k = motion.n_params
     u, v, m = q[:, 0], q[:, 1], q[:, 2:]
     p = tool.evaluate(u, v)
-    M, dM, d2M = motion.matrices(m)
-    Mi = frames.inverse(M, check=False)  # rigid by construction; NaN rows pass through
-    W = Mi[:, None] @ dM  # (n,k,4,4)
-    X = Mi[:, None, None] @ d2M  # (n,k,k,4,4)
-    Om = W[..., :3, :3]
-    omega = np.stack([Om[..., 2, 1], Om[..., 0, 2], Om[..., 1, 0]], axis=-1)
+    tw = motion.twists(m)  # M^-1 dM = (omega x) + v, M^-1 d2M on tool points (gearrep.motion)
+    omega = tw.omega
     r = p.r
-    w = np.einsum("nkab,nb->nka", Om, r) + W[..., :3, 3]
-    Xr = np.einsum("nijab,nb->nija", X[..., :3, :3], r) + X[..., :3, 3]
+    w = cross(omega, r[:, None, :]) + tw.v
+    Xr = tw.second(r)
     N = cross(p.r_u, p.r_v)
-    Nn = np.linalg.norm(N, axis=-1, keepdims=True)
+    Nn = np.sqrt(np.sum(N * N, axis=-1, keepdims=True))
     n = N / Nn
-    f = np.einsum("na,nka->nk", n, w)
+    f = np.sum(n[:, None, :] * w, axis=-1)
     # derivatives of the unit normal: n_x = (I - n n^T) N_x / |N|
     N_u = cross(p.r_uu, p.r_v) + cross(p.r_u, p.r_uv)
     N_v = cross(p.r_uv, p.r_v) + cross(p.r_u, p.r_vv)
@@ -176,12 +239,13 @@ def _local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeomet
         return (Nx - n * np.sum(n * Nx, -1, keepdims=True)) / Nn
 
     n_u, n_v = dn(N_u), dn(N_v)
-    Om_ru = np.einsum("nkab,nb->nka", Om, p.r_u)
-    Om_rv = np.einsum("nkab,nb->nka", Om, p.r_v)
-    f_u = np.einsum("na,nka->nk", n_u, w) + np.einsum("na,nka->nk", n, Om_ru)
-    f_v = np.einsum("na,nka->nk", n_v, w) + np.einsum("na,nka->nk", n, Om_rv)
-    # df_j/dm_i = n . (X_ij r_h) - n . (omega_i x w_j)
-    f_m = np.einsum("na,nija->nji", n, Xr) - np.einsum("na,nija->nji", n, cross(omega[:, :, None, :], w[:, None, :, :]))
+    Om_ru = cross(omega, p.r_u[:, None, :])
+    Om_rv = cross(omega, p.r_v[:, None, :])
+    f_u = np.sum(n_u[:, None, :] * w, axis=-1) + np.sum(n[:, None, :] * Om_ru, axis=-1)
+    f_v = np.sum(n_v[:, None, :] * w, axis=-1) + np.sum(n[:, None, :] * Om_rv, axis=-1)
+    # df_j/dm_i = n . (X_ij r_h) - n . (omega_i x w_j), the second term omega_i . (w_j x n)
+    nX = (Xr.reshape(len(q), k * k, 3) @ n[:, :, None]).reshape(len(q), k, k)
+    f_m = np.swapaxes(nX - omega @ np.swapaxes(cross(w, n[:, None, :]), 1, 2), 1, 2)
     J = np.concatenate([f_u[..., None], f_v[..., None], f_m], axis=-1)
     T = np.concatenate([p.r_u[:, None], p.r_v[:, None], w], axis=1)
     nq = 2 + k
@@ -190,7 +254,8 @@ def _local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeomet
     H[:, 0, 2:], H[:, 2:, 0] = Om_ru, Om_ru
     H[:, 1, 2:], H[:, 2:, 1] = Om_rv, Om_rv
     H[:, 2:, 2:] = Xr
-    return LocalGeometry(M, p, N, n, w, omega, Xr, f, J, T, H)
+    n_q = np.concatenate([n_u[:, None], n_v[:, None], cross(omega, n[:, None, :])], axis=1)
+    return LocalGeometry(tw.M, p, N, n, w, omega, Xr, f, J, T, H, n_q)
 
 
 # --------------------------------------------------------------------------------------------

@@ -7,6 +7,25 @@ for the equations of meshing and the generated surface's derivatives.
   product rule; :func:`rack_generation_motion` is the rack-cutter chain of seed 002 sec. 2.2-2.3.
 * :class:`FunctionMotion`: any M(m), with given or finite-difference derivatives.
 * :class:`Motion`: the base class (subclasses implement :meth:`Motion.matrices`).
+
+:meth:`Motion.twists` gives what the equations of meshing need in the tool frame without the
+4 x 4 derivative stacks: M, the angular and translational velocities (omega_j, v_j) of
+M^-1 dM/dm_j (the point velocity is omega_j x r + v_j) and the second derivatives
+M^-1 d^2M/dm_i dm_j applied to tool points. :class:`ChainMotion` forms them from the factors'
+twists (below); any other motion from its matrices.
+
+Twists of a chain (GGAT ch. 2's product of elementary motions, differentiated as a product of
+one-parameter subgroups): a rotation about the unit axis a through p by s is F(s) = exp(s Xi)
+with the twist Xi x = a x x + p x a, a translation by s d has Xi x = d, so F^-1 dF/ds = Xi and
+F^-1 d^2F/ds^2 = Xi^2 (constant). With S_i = F_(i+1) ... F_n (the factors after factor i) and
+s_i = offset_i + c_i . m, the twist of factor i seen in the tool frame is Xi~_i = S_i^-1 Xi_i S_i
+(omega~ = R^T omega, v~ = R^T (omega x t + v) for S_i = (R, t)), and
+
+    M^-1 dM/dm_j = sum_i c_ij Xi~_i,
+    M^-1 d^2M/dm_j dm_k = sum_(i<l) (c_ij c_lk + c_lj c_ik) Xi~_i Xi~_l + sum_i c_ij c_ik Xi~_i^2,
+
+i < l meaning factor i comes before factor l in the chain; on a tool point r,
+Xi~_i Xi~_l r = omega~_i x (omega~_l x r + v~_l). Tested against :meth:`ChainMotion.matrices`.
 """
 
 from __future__ import annotations
@@ -17,15 +36,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import frames
-from .surface import (  # the fourth-order central differences of the surfaces
+from .surface import (  # the fourth-order central differences of the surfaces, and cross
     D1_OFFSETS,
     D1_WEIGHTS,
     D2_OFFSETS,
     D2_WEIGHTS,
+    cross,
 )
 
 __all__ = [
     "Motion",
+    "MotionTwists",
     "FunctionMotion",
     "ChainMotion",
     "rotation",
@@ -48,6 +69,19 @@ def _check_names(names, k):
     return names
 
 
+@dataclass(frozen=True)
+class MotionTwists:
+    """A motion's first and second derivatives in the tool frame at n parameter points (module doc):
+    ``M`` (n, 4, 4); ``omega``, ``v`` (n, k, 3), M^-1 dM/dm_j = (omega_j x) + v_j (the velocity
+    of a tool point r is omega_j x r + v_j); ``second(r)`` (n, k, k, 3) = M^-1 d^2M/dm_i dm_j
+    applied to the tool points r (n, 3)."""
+
+    M: np.ndarray
+    omega: np.ndarray
+    v: np.ndarray
+    second: Callable
+
+
 class Motion:
     """A rigid motion M_21(m) from the tool frame S_1 to the generated member's frame S_2.
 
@@ -62,6 +96,22 @@ class Motion:
         """(M, dM, d2M) at parameters m (..., k): shapes (..., 4, 4), (..., k, 4, 4) and
         (..., k, k, 4, 4); dM[..., j] = dM/dm_j, d2M[..., i, j] = d^2 M / dm_i dm_j."""
         raise NotImplementedError
+
+    def twists(self, m) -> MotionTwists:
+        """:class:`MotionTwists` at parameters m (n, k) (module doc), here from :meth:`matrices`."""
+        M, dM, d2M = self.matrices(m)
+        M = M.reshape(-1, 4, 4)
+        k = self.n_params
+        Mi = frames.inverse(M, check=False)  # rigid by construction; NaN rows pass through
+        W = Mi[:, None] @ dM.reshape(-1, k, 4, 4)
+        X = Mi[:, None, None] @ d2M.reshape(-1, k, k, 4, 4)
+        Om = W[..., :3, :3]
+        omega = np.stack([Om[..., 2, 1], Om[..., 0, 2], Om[..., 1, 0]], axis=-1)
+
+        def second(r):
+            return np.einsum("nijab,nb->nija", X[..., :3, :3], r) + X[..., :3, 3]
+
+        return MotionTwists(M, omega, W[..., :3, 3], second)
 
     def _params(self, m):
         m = np.asarray(m, dtype=float)
@@ -154,6 +204,23 @@ class _Factor:
     matrix: np.ndarray | None = None
     generators: tuple | None = None  # (K, K^2) of a rotation's axis (frames.axis_generators)
 
+    def twist(self):
+        """(omega, v) of the factor's constant twist F^-1 dF/ds (module doc): (a, p x a) of a
+        rotation, (0, d) of a translation."""
+        if self.kind == "rot":
+            return self.vector, np.cross(self.point, self.vector)
+        return np.zeros(3), self.vector
+
+    def rigid(self, s):
+        """(Q (n, 3, 3), t (n, 3)) of F at scalar parameters s (n,) (a moving factor): Rodrigues'
+        rotation about the axis through the point, or the translation (no derivatives)."""
+        if self.kind == "trans":
+            return np.eye(3), s[:, None] * self.vector
+        K, K2 = self.generators
+        sn, cs = np.sin(s)[:, None, None], np.cos(s)[:, None, None]
+        Q = np.eye(3) + sn * K + (1.0 - cs) * K2
+        return Q, self.point - Q @ self.point
+
     def evaluate(self, s):
         """F, dF/ds, d^2F/ds^2 at scalar parameters s (n,) -> (n, 4, 4) each."""
         n = s.shape[0]
@@ -236,6 +303,19 @@ class ChainMotion(Motion):
                 raise ValueError(f"each factor needs {self.n_params} coeffs (one per motion parameter), got {f.coeffs}")
         self.factors = tuple(factors)
         self._steps = self._plan()
+        # for twists(): each moving factor's twist, the coefficients (F, k) and the weights of
+        # omega~_i x (omega~_l x r + v~_l) in M^-1 d^2M/dm_j dm_k (module doc), (F, F, k, k)
+        movers = [st[1] for st in self._steps if st[0] != "fixed"]
+        self._twist_of = {id(f): f.twist() for f in movers}
+        nf = len(movers)
+        self._coef = np.array([f.coeffs for f in movers]).reshape(nf, self.n_params)
+        c = self._coef
+        wt = np.zeros((nf, nf, self.n_params, self.n_params))
+        for i in range(nf):
+            wt[i, i] = np.outer(c[i], c[i])
+            for j in range(i + 1, nf):
+                wt[i, j] = np.outer(c[i], c[j]) + np.outer(c[j], c[i])
+        self._pair_weights = wt.reshape(nf * nf, self.n_params**2).T.copy()  # (k k, F F)
 
     def _plan(self):
         """The factors as steps of :meth:`matrices`: ("fixed", M) for a fixed factor or one whose
@@ -305,6 +385,50 @@ class ChainMotion(Motion):
             dP = dP @ F[:, None] + P[:, None] @ dF
             P = P @ F
         return (P.reshape(shape + (4, 4)), dP.reshape(shape + (k, 4, 4)), d2P.reshape(shape + (k, k, 4, 4)))
+
+    def twists(self, m) -> MotionTwists:
+        """:class:`MotionTwists` from the factors' twists (module doc): the products S_i of the
+        factors after each moving one, built from the tool side, carry each twist into the tool
+        frame; no derivative matrices are formed."""
+        m = self._params(m).reshape(-1, self.n_params)
+        n, k = m.shape
+        oms, vs = [], []  # omega~, v~ of the moving factors, from the last one
+        R, t = None, None  # S_i (rotation, translation); None: the identity
+        for step in reversed(self._steps):
+            if step[0] == "fixed":
+                QF, tF = step[1][:3, :3], step[1][:3, 3]
+            else:
+                f = step[1]
+                om, v = self._twist_of[id(f)]
+                if R is None:
+                    oms.append(np.broadcast_to(om, (n, 3)))
+                    vs.append(np.broadcast_to(v, (n, 3)))
+                else:  # R^T omega, R^T (omega x t + v)
+                    oms.append(om @ R)
+                    vs.append((cross(om, t) + v)[:, None, :] @ R)
+                QF, tF = f.rigid(f.offset + m @ f.coeffs)
+            if R is None:
+                R, t = np.broadcast_to(QF, (n, 3, 3)), np.broadcast_to(tF, (n, 3))
+            else:  # F S = (R_F R, R_F t + t_F)
+                R, t = QF @ R, (QF @ t[:, :, None])[:, :, 0] + tF
+        M = np.zeros((n, 4, 4))
+        M[:, :3, :3], M[:, :3, 3], M[:, 3, 3] = R, t, 1.0
+        if not oms:
+            z = np.zeros((n, k, 3))
+            return MotionTwists(M, z, z.copy(), lambda r: np.zeros((len(r), k, k, 3)))
+        om_f = np.stack([x.reshape(n, 3) for x in reversed(oms)], axis=1)  # (n, F, 3) in chain order
+        v_f = np.stack([x.reshape(n, 3) for x in reversed(vs)], axis=1)
+        c, wt = self._coef, self._pair_weights
+        omega, v = np.einsum("nfa,fj->nja", om_f, c), np.einsum("nfa,fj->nja", v_f, c)
+
+        nf = c.shape[0]
+
+        def second(r):
+            y = cross(om_f, r[:, None, :]) + v_f  # (n, F, 3): the velocity of each factor
+            Z = cross(om_f[:, :, None, :], y[:, None, :, :]).reshape(n, nf * nf, 3)
+            return (wt @ Z).reshape(n, k, k, 3)
+
+        return MotionTwists(M, omega, v, second)
 
 
 def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi") -> ChainMotion:

@@ -11,6 +11,7 @@ Arrays broadcast: ``u`` and ``v`` of any (equal, broadcastable) shape ``S`` give
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -340,10 +341,13 @@ class AxialForm(Surface):
 
     def evaluate_components(self, rho, z) -> tuple:
         """The chain rule of the class docstring by components (structure of arrays), on the
-        flank's own :meth:`~Surface.evaluate_components`."""
-        rho, z = np.broadcast_arrays(np.asarray(rho, float), np.asarray(z, float))
-        v = np.hypot(rho, z)
-        r, r_u, r_v, r_uu, r_uv, r_vv = self.flank.evaluate_components(np.arctan2(rho, z), v)
+        flank's own :meth:`~Surface.evaluate_components` (Python floats for one point)."""
+        if type(rho) is float and type(z) is float:  # one point: on Python floats
+            v, u = math.hypot(rho, z), math.atan2(rho, z)
+        else:
+            rho, z = np.broadcast_arrays(np.asarray(rho, float), np.asarray(z, float))
+            v, u = np.hypot(rho, z), np.arctan2(rho, z)
+        r, r_u, r_v, r_uu, r_uv, r_vv = self.flank.evaluate_components(u, v)
         v2, v3, v4 = v * v, v**3, v**4
         ua, ub = z / v2, -rho / v2
         va, vb = rho / v, z / v

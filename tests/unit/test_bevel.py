@@ -3,8 +3,10 @@ bevel TCA (intersecting axes, eq 47-48) in both formulations."""
 
 import numpy as np
 import pytest
+from _numerics import assert_rounding_close, assert_same_solve
 
 from gearrep.curvature import principal_curvatures
+from gearrep.solve import Status
 from gearrep.surface import AxialForm, fd_derivatives
 from gearrep.surfaces.bevel import (
     BevelGearData,
@@ -15,7 +17,7 @@ from gearrep.surfaces.bevel import (
     spherical_involute_eq48,
 )
 from gearrep.surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning
-from gearrep.tca import BevelMisalignment, BevelPair, reduced_unknowns, solve_contact
+from gearrep.tca import BevelMisalignment, BevelPair, ContactPoints, default_start, reduced_unknowns, solve_contact
 
 D = np.radians
 
@@ -255,3 +257,53 @@ def test_relative_curvature_of_the_crowned_straight_pair_closed_form():
     k = np.sort(np.abs(np.stack([rel.k1, rel.k2], axis=-1)), axis=-1)
     np.testing.assert_allclose(k[:, 1], k_profile, rtol=1e-6)
     np.testing.assert_allclose(k[:, 0], 2 * c1, rtol=2e-3)
+
+
+@pytest.mark.numerics
+@pytest.mark.parametrize("crown", [None, "par", "circ", "log"])
+def test_one_point_on_floats_gives_the_array_values(crown):
+    """A bevel flank (and its axial form) evaluated at one point given as Python floats computes on
+    floats (the single-point TCA's path) and gives the array path's values within rounding (math's
+    sine and cosine against numpy's), with tip and root relief on and off the point; inside the base
+    cone the floats raise ValueError where the arrays give NaN."""
+    for g in (straight()[0], spiral()[0]):
+        rel = [relief_from_length(g, 0.16, 0.08), relief_from_length(g, 0.16, 0.05, root=True)]
+        f = SphericalInvoluteFlank(g, -1, -1, crowning=_crowns(g)[crown], relief=rel)
+        a = AxialForm(f)
+        for su, sv in ((0.02, 0.3), (0.5, 0.5), (0.97, 0.9)):
+            u, v = f.u_min + su * (f.u_max - f.u_min), f.v_min + sv * (f.v_max - f.v_min)
+            for surf, (p, q) in ((f, (u, v)), (a, (v * np.sin(u), v * np.cos(u)))):
+                one = surf.evaluate_components(float(p), float(q))
+                assert all(type(c) is float for vec in one for c in vec)
+                arr = surf.evaluate_components(np.array([p]), np.array([q]))
+                for vo, va in zip(one, arr):
+                    assert_rounding_close(
+                        np.array(vo), np.concatenate([np.ravel(np.broadcast_to(c, (1,))) for c in va])
+                    )
+        with pytest.raises(ValueError, match="base cone"):
+            f.evaluate_components(0.5 * f.a_b, float(f.v_max))
+        assert np.isnan(f.evaluate_components(np.array([0.5 * f.a_b]), np.array([f.v_max]))[0][0]).all()
+
+
+@pytest.mark.numerics
+@pytest.mark.parametrize("formulation", ["reduced", "conventional"])
+def test_one_point_bevel_solve_gives_its_batch_row(formulation):
+    """A solve of one point of a misaligned crowned bevel pair (kernels on Python floats) returns
+    what the point gets in a batch: the same status and, where it converged, every field within the
+    solver's accuracy (tests/_numerics.py), from starts scattered about the pitch-cone contact."""
+    rng = np.random.default_rng(11)
+    fields = [*ContactPoints.ARRAYS, "condition"]
+    statuses = set()
+    for case in ("straight", "spiral"):
+        g1 = (straight() if case == "straight" else spiral())[0]
+        mis = BevelMisalignment(d_A=0.02 * g1.module, d_E=0.04 * g1.module, d_gamma=D(0.2))
+        pair, _ = _pair(case, ParabolicCrowning(0.01 / g1.module, v0=g1.mean_cone_distance), mis)
+        phi = -np.pi / (2 * pair.n1) + rng.uniform(-0.3, 0.3, 30) * 2 * np.pi / pair.n1
+        start = default_start(pair, phi, formulation)
+        start = start + rng.normal(0.0, 0.02, start.shape) * np.abs(start).max(axis=0)
+        batch = solve_contact(pair, phi, start, formulation=formulation, tol=1e-12)
+        statuses |= set(batch.status.tolist())
+        for i in range(len(phi)):
+            one = solve_contact(pair, phi[i : i + 1], start[i : i + 1], formulation=formulation, tol=1e-12)
+            assert_same_solve(one, batch, 1e-12, fields, [0], [i], what=f"{case} point {i}")
+    assert Status.CONVERGED in statuses

@@ -12,6 +12,7 @@ from _envelope_cases import (
     principal_wrt,
     torus_motion,
 )
+from _numerics import assert_rounding_close
 
 from gearrep.envelope import (
     ChainMotion,
@@ -64,17 +65,23 @@ def test_chain_motion_derivatives_match_finite_differences():
     assert M.shape == (2, 4, 4) and dM.shape == (2, 2, 4, 4) and d2M.shape == (2, 2, 2, 4, 4)
 
 
+def _first_factor(kind):
+    """A chain's first factor of each kind of step: a constant, one moving with both parameters,
+    one moving with one."""
+    return {
+        "constant": rotation((1, 0, 0), [0.0, 0.0], offset=0.4),
+        "both": rotation((0, 1, 0), [0.5, -0.3]),
+        "one": translation((0, 0, 2.0), [0.0, 1.0]),
+    }[kind]
+
+
 @pytest.mark.parametrize("first", ["constant", "both", "one"])
 def test_chain_motion_steps(first):
     """Every kind of step of ChainMotion.matrices (a factor with all-zero coefficients is a constant,
     one moving with a single parameter adds only its row and column, one moving with both the full
     product rule), first in the chain or after others: the derivatives match finite differences,
     and a constant factor gives the same matrices, bit for bit, as the fixed factor of its matrix."""
-    head = {
-        "constant": rotation((1, 0, 0), [0.0, 0.0], offset=0.4),
-        "both": rotation((0, 1, 0), [0.5, -0.3]),
-        "one": translation((0, 0, 2.0), [0.0, 1.0]),
-    }[first]
+    head = _first_factor(first)
     rest = [
         rotation((0, 0, 1), [0.05, 0.0]),
         translation((1, 0, 0), [0.0, 0.0], offset=60),
@@ -97,6 +104,37 @@ def test_chain_motion_steps(first):
     for i in range(len(m)):  # one point alone: the same matrices
         for a, b in zip(mot.matrices(m[i]), (M[i], dM[i], d2M[i])):
             np.testing.assert_array_equal(a, b)
+
+
+@pytest.mark.numerics
+@pytest.mark.parametrize("first", ["constant", "both", "one"])
+def test_chain_motion_twists_are_the_matrices_derivatives(first):
+    """ChainMotion.twists (the factors' twists carried into the tool frame, gearrep.motion's module
+    doc) against the same quantities from its matrices (Motion.twists: M^-1 dM and M^-1 d2M applied to
+    points): every kind of step, a fixed first factor, one and two parameters; the two routes round
+    differently (a few ulps of the largest entry)."""
+    from gearrep.motion import Motion
+
+    head = _first_factor(first)
+    rest = [
+        fixed(np.diag([1.0, -1.0, -1.0, 1.0])),
+        rotation((0, 0, 1), [0.05, 0.0]),
+        translation((1, 0, 0), [0.0, 0.0], offset=60),
+        rotation((1, 0.2, 0), [0.0, 1.0], point=(60, 110, 0)),
+        rotation((0, 0, 1), [1.0, 0.7]),
+    ]
+    rng = np.random.default_rng(8)
+    for mot in (ChainMotion([head, *rest], names=("theta", "psi")), rack_generation_motion(30.0, 1), hob_case()[1]):
+        m = rng.uniform(-1.0, 1.0, (6, mot.n_params))
+        r = rng.uniform(-50.0, 50.0, (6, 3))
+        a, b = mot.twists(m), Motion.twists(mot, m)
+        for x, y in ((a.M, b.M), (a.omega, b.omega), (a.v, b.v), (a.second(r), b.second(r))):
+            assert x.shape == y.shape
+            assert_rounding_close(x, y)
+    fixed_only = ChainMotion([fixed(np.eye(4)), translation((1, 0, 0), [0.0], offset=2.0)])
+    t = fixed_only.twists(np.zeros((2, 1)))
+    assert np.all(t.omega == 0) and np.all(t.v == 0) and np.all(t.second(np.ones((2, 3))) == 0)
+    assert t.M[0, 0, 3] == 2.0
 
 
 @pytest.mark.parametrize("member_side", [-1, 1])
@@ -379,6 +417,44 @@ def test_recent_local_geometries_are_reused_read_only():
     q[0, 0] += 1e-9  # changed in place: a new key
     assert E.local_geometry(rack, mot, q) is not a
     assert E.local_geometry(rack, rack_generation_motion(r_p, -1), q.copy()) is not E.local_geometry(rack, mot, q)
+
+
+@pytest.mark.numerics
+def test_a_batch_of_recent_rows_is_gathered_from_them():
+    """A batch whose rows the last evaluations hold (bit for bit) in part is assembled from their
+    rows and evaluated only at the others: the same values as a fresh evaluation (gathered rows
+    exactly their sources', the rest within rounding of the batch they are evaluated in); a gathered
+    batch is found again whole, but its rows are not offered to later batches; the member-frame
+    quantities of a local geometry are its tool-frame ones turned by M."""
+    import gearrep.envelope as E
+
+    tool, mot = hob_case()[:2]
+    rng = np.random.default_rng(12)
+    q1, q2, q3 = (
+        np.column_stack([rng.uniform(3, 6, 7), rng.uniform(-1, 1, 7), rng.uniform(2, 4, 7), rng.uniform(-0.1, 0.1, 7)])
+        for _ in range(3)
+    )
+    E._RECENT.clear()
+    a, b = E.local_geometry(tool, mot, q1), E.local_geometry(tool, mot, q2)
+    mixed = np.concatenate([q2[:3], q1[4:], q3[:2]])  # rows of both, and two new ones
+    got = E.local_geometry(tool, mot, mixed)
+    fresh = E._local_geometry(tool, mot, mixed)
+    for f in ("M", "N", "n", "w", "omega", "Xr", "f", "J", "T", "H", "n_q"):
+        x, y = getattr(got, f), getattr(fresh, f)
+        np.testing.assert_array_equal(x[:3], getattr(b, f)[:3])
+        np.testing.assert_array_equal(x[3:6], getattr(a, f)[4:])
+        assert_rounding_close(x, y, err_msg=f)
+        assert not x.flags.writeable
+    np.testing.assert_array_equal(got.tool.r[:3], b.tool.r[:3])
+    assert E.local_geometry(tool, mot, mixed.copy()) is got
+    assert E._RECENT[0][5] is E._GATHERED
+    R = got.M[:, :3, :3]
+    r, T, n, dn = got.in_member_frame
+    assert_rounding_close(r, np.einsum("nab,nb->na", R, got.tool.r) + got.M[:, :3, 3])
+    assert_rounding_close(T, np.einsum("nab,nqb->nqa", R, got.T))
+    assert_rounding_close(n, np.einsum("nab,nb->na", R, got.n))
+    assert_rounding_close(dn, np.einsum("nab,nqb->nqa", R, got.n_q))
+    assert not r.flags.writeable
 
 
 def test_newton_does_not_write_to_the_callers_arrays():

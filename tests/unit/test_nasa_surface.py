@@ -3,8 +3,9 @@ library's envelope solve and EnvelopeSurface derivatives."""
 
 import numpy as np
 import pytest
-from _numerics import assert_rounding_close
+from _numerics import assert_rounding_close, assert_same_solve, solve_bound
 
+from gearrep import frames
 from gearrep.surface import fd_derivatives
 from gearrep.surfaces.novikov import RackGeneratedFlank, pitch_radius
 from gearrep.units import DEG
@@ -50,7 +51,7 @@ def test_unplunged_worm_grinds_the_rack_generated_pinion(feed, hand):
     rack-generated pinion (module doc of WormGeneratedPinion), for either feed and worm hand;
     plunging removes material away from l = 0."""
     from gearrep.solve import newton
-    from gearrep.surfaces.novikov import WormGeneratedPinion
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
 
     an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
     l, rp, a = np.cos(an) / Pn, pitch_radius(17, Pn, beta), Pn / (2 * 5.88)
@@ -89,7 +90,7 @@ def test_worm_hand_and_crossing_angle():
     """The worm of the pinion's hand meshes with the pinion's rack at 90 - beta + lambda_w between the
     axes, the opposite-hand worm at 90 - beta - lambda_w (the value printed as seed 002 eq 5.2.1);
     the worm's screw parameter is r_pw tan(lambda_w) in magnitude."""
-    from gearrep.surfaces.novikov import WormGeneratedPinion
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
 
     an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)  # left-hand pinion
     l, rp, a = np.cos(an) / Pn, pitch_radius(17, Pn, beta), Pn / (2 * 5.88)
@@ -109,7 +110,7 @@ def test_worm_motion_derivatives(feed):
     finite-difference derivatives of its M (FunctionMotion, 4th order); batched and single points
     give the same matrices."""
     from gearrep.envelope import FunctionMotion
-    from gearrep.surfaces.novikov import WormGeneratedPinion
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
 
     an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
     l, rp, a = np.cos(an) / Pn, pitch_radius(17, Pn, beta), Pn / (2 * 5.88)
@@ -129,7 +130,7 @@ def test_worm_motion_derivatives(feed):
 
 
 def test_worm_options_are_checked():
-    from gearrep.surfaces.novikov import WormGeneratedPinion
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
 
     args = (0.425, 25 * DEG, 0.18, -0.35, 1.8, 5.0, 3.82, 0.001)
     with pytest.raises(ValueError, match="feed"):
@@ -142,7 +143,7 @@ def test_normal_part_surface_matches_envelope_surface():
     """NormalPartSurface: same r, r_u, r_v as EnvelopeSurface and the same normal components of the
     second derivatives (hence the same unit-normal derivatives and curvatures)."""
     from gearrep.curvature import principal_curvatures
-    from gearrep.surfaces.novikov import WormGeneratedPinion
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
 
     an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
     w = WormGeneratedPinion(Pn / (2 * 5.88), an, np.cos(an) / Pn, beta, pitch_radius(17, Pn, beta), Pn, 3.82, 0.00139)
@@ -159,6 +160,123 @@ def test_normal_part_surface_matches_envelope_surface():
     pf, pl = principal_curvatures(full), principal_curvatures(light)
     np.testing.assert_allclose([pf.k1, pf.k2], [pl.k1, pl.k2], rtol=1e-7, atol=1e-9)
     assert w.light().outward_sign == w.outward_sign
+
+
+def _plunged_worm(feed="translation", hand="opposite"):
+    from gearrep.surfaces.worm_ground import WormGeneratedPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    a, l, rp = Pn / (2 * 5.88), np.cos(an) / Pn, pitch_radius(17, Pn, beta)
+    return WormGeneratedPinion(a, an, l, beta, rp, Pn, 3.82, 0.00139, feed=feed, worm_hand=hand)
+
+
+def _reduction_bound(w, psi, ll, value):
+    """Largest difference of a value of the worm-ground pinion between two solves of its equations of
+    meshing, each to a residual below the envelope's tol: the solved parameters differ by at most
+    ||J_S^-1|| 2 tol (J_S the meshing Jacobian in them, at the envelope solve's root), the point by
+    that times its tangents' size, a derivative by as much relative to its own size
+    (tests/_numerics.solve_bound)."""
+    rec = w.solve(psi, ll)
+    assert rec.converged.all()
+    J = w.envelope.meshing_jacobian(rec.params)[:, :, list(w.envelope.solved)]
+    tool = w.worm.evaluate(rec.params[:, 0], rec.params[:, 1])
+    size = np.maximum(np.linalg.norm(tool.r_u, axis=-1), np.linalg.norm(tool.r_v, axis=-1))
+    sensitivity = np.linalg.norm(np.linalg.inv(J), ord=2, axis=(1, 2)) * (1.0 + size)
+    return solve_bound(w.envelope.tol, sensitivity[:, None], np.abs(value).max(axis=-1, keepdims=True))
+
+
+@pytest.mark.numerics
+@pytest.mark.parametrize("feed, hand", [("translation", "opposite"), ("translation", "same"), ("rotation", "opposite")])
+def test_reduced_worm_surface_against_the_envelope_solve(feed, hand):
+    """The worm-ground pinion by the one-dimensional reduction of its equations of meshing
+    (:class:`ReducedWormSurface`, what ``light()`` returns) against the two-parameter envelope solve
+    with Litvin's curvature relations (:class:`NormalPartSurface`, the evaluation it replaces): the
+    same point, tangents and normal parts of the second derivatives over the flank, for either feed
+    and worm hand with plunging, within the solves' accuracy; one point on floats and points
+    started from the last evaluation (warm start) give the same values."""
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.surfaces.worm_ground import ReducedWormSurface
+
+    w = _plunged_worm(feed, hand)
+    psi, ll = (x.ravel() for x in np.meshgrid(np.linspace(-0.3, 0.3, 9), np.linspace(-1.5, 1.5, 9)))
+    red = w.light()
+    assert isinstance(red, ReducedWormSurface) and red.outward_sign == w.outward_sign
+    new, ref = red.evaluate(psi, ll), NormalPartSurface(w).evaluate(psi, ll)
+    names = ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv")
+    for name in names:
+        x, y = getattr(new, name), getattr(ref, name)
+        assert np.all(np.abs(x - y) <= _reduction_bound(w, psi, ll, y)), name
+    _, done, it = red.solve_reduced(psi, ll)  # from the linear start about the flank's middle
+    assert done.all() and it.max() <= 12
+    # the points moved by a small step start from the last evaluation's prediction: fewer iterations
+    moved, step = (psi + 1e-3, ll - 2e-3), red._warm_start(psi + 1e-3, ll - 2e-3, False)
+    _, done, it_warm = red.solve_reduced(*moved, step)
+    assert done.all() and it_warm.max() <= 2
+    again, fresh = red.evaluate(*moved), ReducedWormSurface(w).evaluate(*moved)
+    for name in names:
+        y = getattr(fresh, name)
+        assert np.all(np.abs(getattr(again, name) - y) <= _reduction_bound(w, *moved, y)), name
+    for i in (0, 40, 80):
+        one = red.evaluate_components(float(psi[i]), float(ll[i]))
+        assert all(type(c) is float for vec in one for c in vec)
+        for vec, name in zip(one, names):
+            y = getattr(new, name)[i : i + 1]
+            assert np.all(np.abs(np.array(vec) - y) <= _reduction_bound(w, psi[i : i + 1], ll[i : i + 1], y)), name
+
+
+@pytest.mark.numerics
+def test_worm_ground_contacts_by_the_reduction(published):
+    """The contact solve of the seed-002 worm-ground pair (3 arcmin crossing error) with the pinion
+    evaluated by the one-dimensional reduction finds the contacts it found with the two-parameter
+    envelope solve: the same statuses, iterations within one, values within the solver's bound."""
+    from conftest import study_settings
+
+    from gearrep.replications import nasa
+    from gearrep.replications.nasa.geometry import make_worm_pair, worm_start
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.tca import ContactPoints, GearPair, Misalignment, solve_contact
+    from gearrep.units import ARCMIN
+
+    s = study_settings("nasa")
+    d = nasa.params_from_published(published)
+    pair = make_worm_pair(d, s, misalignment=Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN))
+    before = GearPair(
+        NormalPartSurface(pair.flank1.base),
+        pair.flank2,
+        pair.n1,
+        pair.n2,
+        pair.centre_distance,
+        misalignment=pair.misalignment,
+        phase2=0.0,
+    )
+    per = 2 * np.pi / pair.n1
+    phi = np.linspace(-0.5 * per, 0.5 * per, 21)
+    kw = dict(formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    a = solve_contact(pair, phi, worm_start(pair, phi), **kw)
+    b = solve_contact(before, phi, worm_start(pair, phi), **kw)
+    assert a.converged.all()
+    assert_same_solve(a, b, s["tol"], [*ContactPoints.ARRAYS, "condition"])
+
+
+def test_reduced_worm_surface_falls_back_to_the_envelope_solve():
+    """Rows the reduction does not solve (here: no Newton iteration allowed) are evaluated by the
+    two-parameter envelope solve; one point on floats raises ValueError (the contact solve then
+    evaluates it on arrays); bad settings are refused."""
+    from gearrep.surfaces.novikov import NormalPartSurface
+    from gearrep.surfaces.worm_ground import ReducedWormSurface
+
+    w = _plunged_worm()
+    psi, ll = np.array([0.05, -0.2, 0.1]), np.array([0.3, 1.1, -0.9])
+    stuck = ReducedWormSurface(w, maxiter=0)
+    got, ref = stuck.evaluate(psi, ll), NormalPartSurface(w).evaluate(psi, ll)
+    for name in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
+        np.testing.assert_array_equal(getattr(got, name), getattr(ref, name))
+    with pytest.raises(ValueError, match="reduced worm-pinion solve failed"):
+        stuck.evaluate_components(0.05, 0.3)
+    with pytest.raises(ValueError, match="tol"):
+        ReducedWormSurface(w, tol=0.0)
+    with pytest.raises(ValueError, match="WormGeneratedPinion"):
+        ReducedWormSurface(NormalPartSurface(w))
 
 
 def _straight_rack_member(N=17, beta=0.35):
@@ -233,13 +351,52 @@ def test_disk_ground_pinion():
     assert np.all(np.linalg.norm(plunged - x, axis=1) > 1e-6)  # the plunge moves the swept points
     # pointwise position: the finite differences in one call give the per-offset values
     assert disk.pointwise
-    e, f = disk.evaluate(uu, psi), fd_derivatives(disk.position, uu, psi, *disk.fd_step)
+    e, f = disk.fd_evaluate(uu, psi), fd_derivatives(disk.position, uu, psi, *disk.fd_step)
     for name in ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv"):
         np.testing.assert_array_equal(getattr(e, name), getattr(f, name), err_msg=name)
     with pytest.raises(ValueError, match="E_d"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 1.0, 0.0)
     with pytest.raises(ValueError, match="a_pd"):
         DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, -1.0)
+
+
+@pytest.mark.numerics
+def test_disk_ground_pinion_analytic_derivatives():
+    """The disk-ground pinion's analytic derivatives (the spline's cubic pieces carried by the
+    screw motion and the plunge) against scipy's derivatives of the same spline and against the
+    finite differences of its position that the surface used before; one point on floats gives
+    the array values."""
+    from gearrep.surfaces.novikov import DiskGroundPinion
+
+    an, Pn, beta = 25 * DEG, 5.0, -np.arccos(0.94)
+    pin = RackGeneratedFlank(0.425, an, np.cos(an) / Pn, beta, pitch_radius(17, Pn, beta), -1)
+    p_n = np.pi / Pn
+    disk = DiskGroundPinion(pin, 17, p_n, 0.5 * p_n, 6.0, 0.001)
+    # u over the working part of the grinding line (towards u = -0.24 its derivatives grow
+    # a hundredfold, and below it the line's solve is on another branch), three of them on knots
+    rng = np.random.default_rng(5)
+    u, psi = rng.uniform(-0.15, 0.4, 40), rng.uniform(-0.6, 0.6, 40)
+    u[:3] = disk._line.x[[600, 900, 1700]]
+    for k, L in enumerate(disk._line_derivs(u)):  # the same cubic pieces: rounding only
+        assert_rounding_close(np.stack(L, axis=-1), disk._line(u, k))
+    a, f = disk.evaluate(u, psi), disk.fd_evaluate(u, psi)
+    # along u the surface is the line turned by Rz(phi_s) Rz(-psi): r_u, r_uu from scipy's L', L''
+    turn = np.einsum("ab,nbc->nac", frames.rot_z(disk.phi_s), frames.rot_z(-psi))
+    for name, k in (("r_u", 1), ("r_uu", 2)):
+        assert_rounding_close(getattr(a, name), np.einsum("nab,nb->na", turn, disk._line(u, k)), err_msg=name)
+    np.testing.assert_allclose(a.r, f.r, rtol=0, atol=1e-14)
+    # the psi-derivatives against fourth-order differences with h = 1e-4 (smooth in psi): rounding
+    # eps |r| / h ~ 1e-11 in the first derivatives, eps |r| / h^2 ~ 1e-7 in the second, relative
+    # to each vector's largest entry (along u the differences straddle the spline's knots, where its
+    # third derivative jumps: r_uu is checked above instead)
+    for name, rtol in (("r_u", 1e-9), ("r_v", 1e-9), ("r_uv", 1e-6), ("r_vv", 1e-6)):
+        x, y = getattr(a, name), getattr(f, name)
+        assert np.abs(x - y).max() <= rtol * np.abs(y).max(), name
+    for i in range(3):
+        one = disk.evaluate_components(float(u[i]), float(psi[i]))
+        assert all(type(c) is float for vec in one for c in vec)
+        for vec, name in zip(one, ("r", "r_u", "r_v", "r_uu", "r_uv", "r_vv")):
+            assert_rounding_close(np.array(vec), getattr(a, name)[i])
 
 
 @pytest.mark.parametrize("rho, l", [(0.2, 0.2), (0.23, 0.18), (-0.258, -0.23)])
@@ -371,6 +528,44 @@ def test_offset_start_reaches_the_same_contacts_in_a_few_iterations():
     x0, x1 = before.unknowns("conventional"), after.unknowns("conventional")
     assert np.abs(x0 - x1).max() < 1e-9
     assert np.abs(before.te_arcsec - after.te_arcsec).max() < 1e-6
+
+
+def test_polynomial_offset_start_for_a_ground_pinion(published):
+    """The disk-ground pinion of seed 002 under the 3 arcmin crossing error: its aligned start
+    drifts from the contact along the path (0.8 in along the tooth at the ends of a pitch), so a
+    constant offset leaves most of the drift; the offset polynomial in the angle (order 1, 2) leads
+    to the same roots in fewer iterations."""
+    from conftest import study_settings
+
+    from gearrep.replications import nasa
+    from gearrep.replications.nasa.geometry import disk_start, make_disk_pair
+    from gearrep.tca import Misalignment, offset_start, solve_contact
+    from gearrep.units import ARCMIN
+
+    s = study_settings("nasa")
+    d = nasa.params_from_published(published)
+    mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
+    pair = make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
+    per = 2 * np.pi / pair.n1
+    phi = np.linspace(-0.5 * per, 0.5 * per, 21)
+    kw = dict(formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    c = [
+        solve_contact(pair, phi, offset_start(pair, phi, disk_start, order=k, tol=s["tol"], maxiter=s["maxiter"]), **kw)
+        for k in (0, 1, 2)
+    ]
+    assert all(ck.converged.all() for ck in c)
+    assert c[1].iterations.mean() < 0.6 * c[0].iterations.mean() and c[1].iterations.max() <= 6
+    assert c[2].iterations.mean() < c[1].iterations.mean() and c[2].iterations.max() <= 5
+    # the same roots: both residuals below tol, within the solver's bound (condition x 2 tol)
+    x0 = c[0].unknowns("conventional")
+    for ck in c[1:]:
+        bound = solve_bound(s["tol"], np.fmax(c[0].condition, ck.condition)[:, None], x0)
+        assert np.all(np.abs(x0 - ck.unknowns("conventional")) <= bound)
+    # one angle more than the polynomial needs: the references are three of the four angles
+    assert np.all(np.isfinite(offset_start(pair, phi[:4], disk_start, order=2)))
+    assert np.array_equal(offset_start(pair, phi[:3], disk_start, order=2), disk_start(pair, phi[:3]))
+    with pytest.raises(ValueError, match="order"):
+        offset_start(pair, phi, disk_start, order=4)
 
 
 def test_offset_start_keeps_the_nominal_start_where_it_cannot_help():

@@ -75,9 +75,11 @@ def novikov_case(rng, n, pinion="rack"):
     """Seed 002: the profile-crowned Novikov-Wildhaber pair (rack-generated flanks, ``pinion``
     "rack"), or with the worm-ground (``"worm"``, sec. 5.4) or disk-ground (``"disk"``, sec. 4.2,
     at the middle of the study's bracket of the disk-pinion distance E_d) pinion, under the
-    study's 3 arcmin dgamma, from the study's starts (the aligned contact; for the rack-generated
-    and the disk-ground pinion moved by the offset solved at one angle, gearrep.tca.offset_start,
-    whose reference solve is in the row's start cost) and with its solver settings."""
+    study's 3 arcmin dgamma, from the aligned contact moved by the offset of a solved contact
+    (gearrep.tca.offset_start, whose reference solves are in the row's start cost): for the
+    rack-generated pair the offset solved at one angle (the study's starts), for the ground pinions,
+    whose aligned start drifts from the contact along the path, the offset quadratic in the angle
+    through three solved ones (order=2), and with the study's solver settings."""
     from gearrep.replications.nasa import geometry as ng
     from gearrep.replications.nasa.bench import crowned_pair
     from gearrep.surfaces.novikov import aligned_start
@@ -95,9 +97,8 @@ def novikov_case(rng, n, pinion="rack"):
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
     nominal = {"worm": ng.worm_start, "disk": ng.disk_start, "rack": aligned_start}[pinion]
-    if pinion == "worm":
-        return pair, phi, lambda: nominal(pair, phi), kw
-    return pair, phi, lambda: offset_start(pair, phi, nominal, **kw), kw
+    order = 0 if pinion == "rack" else 2
+    return pair, phi, lambda: offset_start(pair, phi, nominal, order=order, **kw), kw
 
 
 def catt_case(rng, n):
@@ -184,7 +185,7 @@ NOVIKOV = "Novikov-Wildhaber profile-crowned pair (seed 002)"
 # (family, formulation, case, points per single-point run): the surfaces of the ground Novikov
 # pinions and of the hob-cut pair are envelopes solved at every evaluation, so those run on fewer
 # points (the disk-ground pinion's surface is a spline of its grinding line carried by a screw motion,
-# differentiated numerically)
+# the generated kind too: its grinding line is solved from the tool, once, on a grid)
 N_GEN, N_GEN_SINGLE = max(N_VEC // 50, 20), max(N_SINGLE // 20, 5)
 CASES = [
     (README, "reduced", readme_case(rng, N_VEC, "reduced"), N_SINGLE),
@@ -237,8 +238,8 @@ for family, form, (pair, phi, start_of, kw), n_single in CASES:
             scipy_points=min(n_single, 50, len(phi)) if readme else 0,
             solve=own,
         )
-    # the starts' cost, timed once (for the rack-generated and disk-ground Novikov pairs it holds the
-    # reference solve of gearrep.tca.offset_start)
+    # the starts' cost, timed once (for the Novikov pairs it holds the reference solves of
+    # gearrep.tca.offset_start)
     r = {"family": family, **r, "start_elements_per_point": start_s / len(phi) / r["reference_s_per_element"]}
     if readme:
         r["target_vectorised_elements"] = benchmark.THROUGHPUT_TARGETS[form]

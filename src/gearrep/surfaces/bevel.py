@@ -62,6 +62,7 @@ Choices the thesis leaves open (stated here, used by the replication)
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -252,6 +253,7 @@ class SphericalInvoluteFlank(Surface):
         self.side, self.hand, self.crowning, self.relief = _flank_options(side, hand, crowning, relief)
         self.a_b = gear.base_cone_angle
         self.sin_ab = np.sin(self.a_b)
+        self._sa, self._ca = math.sin(self.a_b), math.cos(self.a_b)  # for one point on floats
         self.delta_p = gear.pitch_cone_angle
         self.R_e = gear.outer_cone_distance
         self.R_m = gear.mean_cone_distance
@@ -297,17 +299,22 @@ class SphericalInvoluteFlank(Surface):
             dl, dl1, dl2 = (_shaped(x, u.shape) for x in self.crowning(v))
         else:
             dl = dl1 = dl2 = np.zeros(u.shape)
-        tw, tw1, tw2 = self.twist(v)
-        s, sb = self.side, self.sin_ab
-        d = dp + dl
         with np.errstate(invalid="ignore", divide="ignore"):
-            vsb, vv = v * sb, v * v  # each used more than once (the same products)
-            psi = s * (self.c - inv - d / vsb) + tw
-            psi_u = s * (-i1 - dp1 / vsb)
-            psi_uu = s * (-i2 - dp2 / vsb)
-            psi_v = s * (-(dl1 / v - d / vv) / sb) + tw1
-            psi_uv = s * dp1 / (vv * sb)
-            psi_vv = s * (-(dl2 / v - 2.0 * dl1 / vv + 2.0 * d / v**3) / sb) + tw2
+            return self._azimuth(v, inv, i1, i2, (dp, dp1, dp2), (dl, dl1, dl2), self.twist(v), self.c, self.sin_ab)
+
+    def _azimuth(self, v, inv, i1, i2, profile, lead, twist, c, sb):
+        """psi and its partials (eq B) from I(u) and its derivatives, the profile and lead
+        modifications and the twist (each with its two derivatives): arrays or Python floats."""
+        (dp, dp1, dp2), (dl, dl1, dl2), (tw, tw1, tw2) = profile, lead, twist
+        s = self.side
+        d = dp + dl
+        vsb, vv = v * sb, v * v  # each used more than once (the same products)
+        psi = s * (c - inv - d / vsb) + tw
+        psi_u = s * (-i1 - dp1 / vsb)
+        psi_uu = s * (-i2 - dp2 / vsb)
+        psi_v = s * (-(dl1 / v - d / vv) / sb) + tw1
+        psi_uv = s * dp1 / (vv * sb)
+        psi_vv = s * (-(dl2 / v - 2.0 * dl1 / vv + 2.0 * d / v**3) / sb) + tw2
         return psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv
 
     def azimuth(self, u, v):
@@ -332,11 +339,17 @@ class SphericalInvoluteFlank(Surface):
     def evaluate_components(self, u, v) -> tuple:
         """:meth:`evaluate` by components (structure of arrays, see
         :meth:`gearrep.surface.Surface.evaluate_components`): e_psi and e_rho have no axial
-        component, so the axial components leave out those (zero) terms."""
-        u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
-        psi, pu, pv, puu, puv, pvv = self.azimuth_derivs(u, v)
-        su, cu = np.sin(u), np.cos(u)
-        cp, sp = np.cos(psi), np.sin(psi)
+        component, so the axial components leave out those (zero) terms. For ``u``, ``v`` Python
+        floats (one point) the same expressions are evaluated with :mod:`math` on floats; inside
+        the base cone that raises ValueError (where arrays give NaN)."""
+        if type(u) is float and type(v) is float:
+            psi, pu, pv, puu, puv, pvv = self._azimuth_of_one_point(u, v)
+            su, cu, cp, sp = math.sin(u), math.cos(u), math.cos(psi), math.sin(psi)
+        else:
+            u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
+            psi, pu, pv, puu, puv, pvv = self.azimuth_derivs(u, v)
+            su, cu = np.sin(u), np.cos(u)
+            cp, sp = np.cos(psi), np.sin(psi)
         msp, msu = -sp, -su
         # E, E_u; E_psi = sin u e_psi, E_upsi = cos u e_psi, E_psipsi = -sin u e_rho (x, y only)
         Ex, Ey, Ez = su * cp, su * sp, cu
@@ -364,6 +377,31 @@ class SphericalInvoluteFlank(Surface):
             0.0 * w,
         )
         return r, r_u, r_v, r_uu, r_uv, r_vv
+
+    def _azimuth_of_one_point(self, u: float, v: float) -> tuple:
+        """:meth:`azimuth_derivs` of one point on Python floats: the expressions of
+        :func:`_sigma_derivs`, :meth:`twist` and :meth:`azimuth_derivs` in the same order (the
+        modifications' own functions are called and their values taken as floats)."""
+        sa, ca = self._sa, self._ca
+        cs = math.cos(u) / ca
+        if not cs <= 1.0 + 1e-14:  # inside the base cone (NaN on arrays)
+            raise ValueError(f"u = {u!r} lies inside the base cone {self.a_b!r}")
+        sig = math.acos(min(cs, 1.0))
+        ss, su = math.sin(sig), math.sin(u)
+        inv = sig / sa - math.atan(math.tan(sig) / sa)
+        i1 = ca * ss / (sa * su)
+        i2 = math.cos(sig) / (sa * ss) - ca * ss * math.cos(u) / (sa * su * su)
+        dp = dp1 = dp2 = 0.0
+        for rel in self.relief:
+            a, b, c = rel(u)
+            dp, dp1, dp2 = dp + float(a), dp1 + float(b), dp2 + float(c)
+        if self.crowning is not None:
+            dl, dl1, dl2 = (float(x) for x in self.crowning(v))
+        else:
+            dl = dl1 = dl2 = 0.0
+        k = float(self.hand * self.k_spiral)
+        tw = (k * math.log(float(self.R_m) / v), -k / v, k / (v * v)) if k != 0.0 else (0.0, 0.0, 0.0)
+        return self._azimuth(v, inv, i1, i2, (dp, dp1, dp2), (dl, dl1, dl2), tw, float(self.c), float(self.sin_ab))
 
     def outward_normal(self, u, v) -> np.ndarray:
         return self.outward_sign * self.evaluate(u, v).normal

@@ -259,6 +259,10 @@ class TipRelief:
         _check_finite("amount", self.amount, nonneg=True)
 
     def __call__(self, u):
+        if type(u) is float:  # one point: the same operations on Python floats
+            w = u - float(self.u0)
+            k = float(self.amount) / float(self.length) ** 2
+            return (k * w * w, 2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
         w = np.asarray(u, dtype=float) - self.u0
         on = w > 0
         k = self.amount / self.length**2
@@ -279,6 +283,10 @@ class RootRelief:
         _check_finite("amount", self.amount, nonneg=True)
 
     def __call__(self, u):
+        if type(u) is float:  # one point: the same operations on Python floats
+            w = float(self.u0) - u
+            k = float(self.amount) / float(self.length) ** 2
+            return (k * w * w, -2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
         w = self.u0 - np.asarray(u, dtype=float)
         on = w > 0
         k = self.amount / self.length**2

@@ -52,6 +52,7 @@ report member 2 in the thesis's (u2, v2).
 from __future__ import annotations
 
 import copy
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -142,8 +143,12 @@ def spherical_unknowns(K: dict, derivs: bool = True, v_column: bool = True) -> d
     derivatives (suffix ``_u``, and ``_v`` with ``v_column``) by the chain rule. ``K`` is the
     structure-of-arrays dict of :func:`gearrep.tca._kernels._reduced3`; it is updated in place."""
     rho, z = K["u2"], K["v2"]
-    v = np.hypot(rho, z)
-    K["u2"], K["v2"] = np.arctan2(rho, z), v
+    if type(rho) is float and type(z) is float:  # one point on Python floats
+        v = math.hypot(rho, z)
+        K["u2"], K["v2"] = math.atan2(rho, z), v
+    else:
+        v = np.hypot(rho, z)
+        K["u2"], K["v2"] = np.arctan2(rho, z), v
     if derivs:
         for j in ("_u", "_v") if v_column else ("_u",):
             drho, dz = K["du2" + j], K["dv2" + j]

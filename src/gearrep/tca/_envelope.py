@@ -95,31 +95,18 @@ def member_geometry(flank: Flank, q):
     """Point, d point/dq, hob normal, d normal/dq (generation frame S_2) and the meshing
     functions with their Jacobian at q = (l, phi, theta, psi) (n, 4)."""
     loc = local_geometry(flank.tool, flank.motion, q)
-    R = loc.M[:, :3, :3]
-    p = loc.tool
-    r = np.einsum("nab,nb->na", R, p.r) + loc.M[:, :3, 3]
-    T = np.einsum("nab,nqb->nqa", R, loc.T)
-    n1 = loc.n
-    Nn = np.linalg.norm(loc.N, axis=-1, keepdims=True)
-    N_u = cross(p.r_uu, p.r_v) + cross(p.r_u, p.r_uv)
-    N_v = cross(p.r_uv, p.r_v) + cross(p.r_u, p.r_vv)
-
-    def dn(Nx):
-        return (Nx - n1 * np.sum(n1 * Nx, -1, keepdims=True)) / Nn
-
-    # d n / d m_j = R (omega_j x n1): the normal is carried by the motion's rotation
-    dn1 = np.stack([dn(N_u), dn(N_v), cross(loc.omega[:, 0], n1), cross(loc.omega[:, 1], n1)], 1)
     # f and J copied: the local geometry's arrays may be shared (envelope._local's reuse, read-only)
-    return r, T, np.einsum("nab,nb->na", R, n1), np.einsum("nab,nqb->nqa", R, dn1), np.array(loc.f), np.array(loc.J)
+    return (*loc.in_member_frame, np.array(loc.f), np.array(loc.J))
 
 
 _KEEP = np.array([[1, 2], [0, 2], [0, 1]])
 
 
-def tangency_system(pair, x, phi1, drop, derivs=True):
-    """F (n, 9); with ``derivs`` also F_x (n, 9, 9) and F_phi1 (n, 9). Rows: meshing of the
-    pinion (2) and gear (2), r_f^(p) - r_f^(g) (3), two components of n_f^(p) x n_f^(g)
-    (the component along the largest |n|, index ``drop``, is dropped)."""
+def tangency_system(pair, x, phi1, drop, derivs=True, phi_column=True):
+    """F (n, 9); with ``derivs`` also F_x (n, 9, 9) and F_phi1 (n, 9) (None without
+    ``phi_column``). Rows: meshing of the pinion (2) and gear (2), r_f^(p) - r_f^(g) (3), two
+    components of n_f^(p) x n_f^(g) (the component along the largest |n|, index ``drop``, is
+    dropped)."""
     phi1 = np.asarray(phi1, float)
     rp, Tp, np_, Dnp, fp, Jp = member_geometry(pair.pinion, x[:, 0:4])
     rg, Tg, ng, Dng, fg, Jg = member_geometry(pair.gear, x[:, 4:8])
@@ -145,6 +132,8 @@ def tangency_system(pair, x, phi1, drop, derivs=True):
     J[:, 7:9, 0:4] = np.swapaxes(dc_p, 1, 2)[rows, keep]
     J[:, 7:9, 4:8] = np.swapaxes(dc_g, 1, 2)[rows, keep]
     J[:, 7:9, 8] = dc_2[rows, keep]
+    if not phi_column:
+        return F, J, None
     dAp = pair.pinion_rotation(phi1, deriv=True)
     Fphi = np.zeros((n, 9))
     Fphi[:, 4:7] = np.einsum("nab,nb->na", dAp, rp)
@@ -224,7 +213,7 @@ def _finish(pair, x, phi1, res: SolveResult, drop) -> ContactPath:
     Ap, Ag = pair.pinion_rotation(phi1), pair.gear_rotation(x[:, 8])
     Np = np.einsum("nab,nb->na", Ap, np_)
     Ng = np.einsum("nab,nb->na", Ag, ng)
-    _, J, _ = tangency_system(pair, x, phi1, drop)
+    _, J, _ = tangency_system(pair, x, phi1, drop, phi_column=False)
     ok = np.all(np.isfinite(J), axis=(1, 2))
     cond = np.full(len(x), np.inf)
     if np.any(ok):
@@ -254,8 +243,9 @@ def _finish(pair, x, phi1, res: SolveResult, drop) -> ContactPath:
 
 def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_halvings: int = 12) -> ContactPath:
     """Solve the 9 x 9 TCA system at pinion angles phi1' (n,) [rad] from starts x0 (n, 9), all
-    points at once (:func:`gearrep.solve.newton`, analytic Jacobian, Armijo backtracking with at
-    most ``max_halvings`` halvings per step)."""
+    points at once (:func:`gearrep.solve.newton`, analytic Jacobian, steps by Gauss-Jordan
+    elimination with the SVD for the rows it flags near-singular (``inverse_square``), Armijo
+    backtracking with at most ``max_halvings`` halvings per step)."""
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     x0 = np.array(x0, float).reshape(len(phi1), 9)
     if not np.all(np.isfinite(x0)):
@@ -266,12 +256,22 @@ def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_h
         return tangency_system(pair, x, phi1[idx], drop[idx], derivs=False)[0]
 
     def fun_jac(x, idx):  # F as fun gives it, with its Jacobian from the same evaluation
-        return tangency_system(pair, x, phi1[idx], drop[idx])[:2]
+        return tangency_system(pair, x, phi1[idx], drop[idx], phi_column=False)[:2]
 
     def jac(x, idx):
         return fun_jac(x, idx)[1]
 
-    res = newton(fun, x0, jac, tol=tol, maxiter=maxiter, max_halvings=max_halvings, rows=True, fun_jac=fun_jac)
+    res = newton(
+        fun,
+        x0,
+        jac,
+        tol=tol,
+        maxiter=maxiter,
+        max_halvings=max_halvings,
+        rows=True,
+        fun_jac=fun_jac,
+        inverse_square=True,
+    )
     return _finish(pair, res.x, phi1, res, drop)
 
 

@@ -19,12 +19,12 @@ from ...ellipse import elastic_ellipse_at
 from ...surfaces.novikov import (
     DiskGroundPinion,
     RackGeneratedFlank,
-    WormGeneratedPinion,
     aligned_start,
     member_flank,
     pitch_radius,
 )
 from ...surfaces.rack import vertex_pitch_distance
+from ...surfaces.worm_ground import WormGeneratedPinion
 from ...tca import GearPair, offset_start, solve_contact
 from ...units import DEG
 from .design import design_beta
@@ -201,7 +201,7 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=Non
     """Pinion ground by the plunging worm of sec. 5.4 (r_pw, a_pl, N_w = 1) with the profile-
     crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
     default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda).
-    ``feed``, ``worm_hand``: :class:`gearrep.surfaces.novikov.WormGeneratedPinion`; ``racks``:
+    ``feed``, ``worm_hand``: :class:`gearrep.surfaces.worm_ground.WormGeneratedPinion`; ``racks``:
     :func:`worm_rack_coefficients` (defaults: the settings ``worm_feed``, ``worm_hand``,
     ``worm_rack_coefficients``)."""
     a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"] if racks is None else racks)

@@ -9,7 +9,7 @@
 * :func:`worm`: the pinion ground by the plunging worm (sec. 5.2-5.5, appendix C) with the gear,
   aligned and with +-3 arcmin dgamma / dlambda, in the report's set-up (eq 5.2.1, 5.2.5, 5.3.7:
   translation feed, plunge along the fixed shortest distance, sec. 5.4's printed a_c, a_t;
-  :class:`gearrep.surfaces.novikov.WormGeneratedPinion`); TE_max over the meshing cycle between
+  :class:`gearrep.surfaces.worm_ground.WormGeneratedPinion`); TE_max over the meshing cycle between
   the transfer points, where neighbouring TE curves cross (:func:`.te_envelope.te_envelope`),
   contact limited to the active profile (Table 6.2.2 version 3), the face not limiting; plus the
   lead correction of the dgamma drive (eq 5.4.7 inverted).

@@ -164,7 +164,7 @@ _WORM_TOL_BASIS = (
 def _worm_note(w) -> str:
     a = w.loc["worm_aligned"]
     return (
-        f"TCA of the pinion ground by the plunging worm (gearrep.surfaces.novikov.WormGeneratedPinion; r_pw = 3.82 "
+        f"TCA of the pinion ground by the plunging worm (gearrep.surfaces.worm_ground.WormGeneratedPinion; r_pw = 3.82 "
         f"in, N_w = 1, a_pl = 0.00139 1/in, beta = 19.948 deg, a_c = {a['a_c_per_in']:.3f}, a_t = {a['a_t_per_in']:.3f} "
         f"1/in as printed in sec. 5.4). Set-up as printed: feed by translation l_w along the pinion axis plus "
         f"l_w tan(beta) tangentially, plunge E0 - a_pl l_w^2 along the fixed shortest distance (eq 5.2.5, 5.3.3, "
