@@ -4,7 +4,8 @@ import time
 
 import numpy as np
 import pytest
-from _numerics import assert_rounding_close, assert_same_solve, nudged
+from _gear_pairs import ALPHA, C1, helical_pair, spur_pair
+from _numerics import assert_rounding_close, assert_same_solve
 
 from gearrep.solve import Status
 from gearrep.surface import Surface
@@ -27,31 +28,6 @@ from gearrep.tca import (
 from gearrep.units import ARCMIN, ARCSEC
 
 D = np.radians
-ALPHA = D(20)
-
-
-def spur_pair(n1=52, n2=72, m=1.0, b=11.42, crown1=None, thin1=0.0, thin2=0.0, mis=None):
-    """Thesis sec. 6.2 spur pair (52/72, m = 1, 20 deg, b = 11.42); lengths and angles as the
-    portability check moves them (tests/_numerics.py, ``nudged``)."""
-    m, b, alpha = nudged(m), nudged(b), nudged(ALPHA)
-    g1 = InvoluteGearData(n1, m, alpha, b)
-    g2 = InvoluteGearData(n2, m, alpha, b)
-    c1 = crown1
-    if thin1:
-        c1 = ParabolicCrowning(0.0 if crown1 is None else crown1.c1, 0.0, thin1)
-    c2 = ParabolicCrowning(0.0, 0.0, thin2) if thin2 else None
-    f1, f2 = mating_flanks(g1, g2, crowning1=c1, crowning2=c2)
-    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
-
-
-def helical_pair(form="true", crown1=None, mis=None, n1=40, n2=37):
-    """Thesis Table 2 helical pair (40/37, m_n = 1, 20 deg, beta = 14 deg, b = 20); lengths and
-    angles as the portability check moves them."""
-    m, alpha, b, beta = nudged(1.0), nudged(ALPHA), nudged(20.0), nudged(D(14))
-    g1 = InvoluteGearData(n1, m, alpha, b, helix_angle=beta)
-    g2 = InvoluteGearData(n2, m, alpha, b, helix_angle=beta)
-    f1, f2 = mating_flanks(g1, g2, crowning1=crown1, helix_form=form)
-    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
 
 
 def pitch_angle(pair, v1=0.0):
@@ -151,7 +127,6 @@ def test_thesis_pitch_point_example():
 # ---------------------------------------------------------------------------------------------
 # crowned pinion under a shaft-angle error: closed-form first-order estimate
 # ---------------------------------------------------------------------------------------------
-C1 = 0.002857  # thesis sec. 6.2 crowning of gear 1
 
 
 @pytest.mark.parametrize("dg, rtol", [(1 * ARCMIN, 1e-5), (3 * ARCMIN, 3e-5), (6 * ARCMIN, 1e-4)])
