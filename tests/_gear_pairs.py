@@ -1,9 +1,11 @@
-"""The example pairs of the thesis (seed 003) that the TCA and loaded-contact tests share: the sec. 6.2
-spur pair and the Table 2 helical pair, lengths and angles as the portability check moves them."""
+"""The example pairs of the thesis (seed 003) that several test files share: the sec. 6.2 spur pair
+and the Table 2 helical pair (lengths and angles as the portability check moves them), the Table 5
+straight bevel gears and the sec. 5.2 spiral bevel gears."""
 
 import numpy as np
 from _numerics import nudged
 
+from gearrep.surfaces.bevel import BevelGearData
 from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks, standard_centre_distance
 from gearrep.tca import GearPair
 
@@ -34,3 +36,14 @@ def helical_pair(form="true", crown1=None, mis=None, n1=40, n2=37):
     g2 = InvoluteGearData(n2, m, alpha, b, helix_angle=beta)
     f1, f2 = mating_flanks(g1, g2, crowning1=crown1, helix_form=form)
     return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
+
+
+def straight_bevel(n1=39, n2=32):
+    """Thesis Table 5 straight bevel gears (39/32, m = 2.5, 20 deg, b = 14): (gear 1, gear 2)."""
+    return BevelGearData(n1, n2, 2.5, D(20), 14.0), BevelGearData(n2, n1, 2.5, D(20), 14.0)
+
+
+def spiral_bevel():
+    """Thesis sec. 5.2 spiral bevel gears (17/17, m = 1, 20 deg, b = 4.8, 35 deg spiral): (gear 1, gear 2)."""
+    g = BevelGearData(17, 17, 1.0, D(20), 4.8, spiral_angle=D(35))
+    return g, g

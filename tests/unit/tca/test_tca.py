@@ -1,4 +1,5 @@
-"""Tooth contact analysis: conventional (thesis eq 26-32) and reduced (eq 33-44) formulations."""
+"""Tooth contact analysis of cylindrical pairs: conventional (thesis eq 26-32) and reduced (eq 33-44)
+formulations, per-row Newton solves and the derivatives of the normal."""
 
 import time
 
@@ -20,6 +21,8 @@ from gearrep.tca import (
     GearPair,
     Misalignment,
     default_start,
+    newton_rows,
+    normal_derivatives,
     reduced_unknowns,
     solve_contact,
     trace_path,
@@ -743,3 +746,43 @@ def test_solver_variants_agree_from_seeded_and_robust_starts():
         solve_conventional(pair, 0.01, starts, variant="newton")
     with pytest.raises(ValueError, match="equations"):
         solve_conventional(pair, 0.01, starts, equations="four")
+
+
+def test_newton_rows_solves_each_row_with_its_own_data():
+    # x^2 = p0, y = p1 x: roots (sqrt(p0), p1 sqrt(p0)) from positive starts
+    p = np.array([[4.0, 1.0], [9.0, -2.0], [2.0, 0.5]])
+
+    def F(x, q):
+        return np.column_stack([x[:, 0] ** 2 - q[:, 0], x[:, 1] - q[:, 1] * x[:, 0]])
+
+    def FJ(x, q):
+        J = np.zeros((len(x), 2, 2))
+        J[:, 0, 0] = 2 * x[:, 0]
+        J[:, 1, 0] = -q[:, 1]
+        J[:, 1, 1] = 1.0
+        return F(x, q), J
+
+    exact = np.column_stack([np.sqrt(p[:, 0]), p[:, 1] * np.sqrt(p[:, 0])])
+    for jac in ("analytic", "numeric"):
+        res = newton_rows(F, FJ, np.ones((3, 2)), p, jacobian=jac, tol=1e-12)
+        assert np.all(res.converged), jac
+        np.testing.assert_allclose(res.x, exact, rtol=1e-10)
+        assert np.all(res.residual < 1e-12) and np.all(res.iterations >= 1)
+    with pytest.raises(ValueError, match="params has 2 rows for 3 starts"):
+        newton_rows(F, FJ, np.ones((3, 2)), p[:2])
+    with pytest.raises(ValueError, match="jacobian must be"):
+        newton_rows(F, FJ, np.ones((3, 2)), p, jacobian="complex")
+
+
+def test_normal_derivatives_match_finite_differences():
+    from gearrep.surfaces.analytic import Torus
+
+    surf = Torus(c=5.0, a=1.5)
+    u, v = np.array([0.3, 1.2]), np.array([0.7, -2.0])
+    n, n_u, n_v = normal_derivatives(surf.evaluate(u, v), -1)
+    h = 1e-6
+    for d, (du, dv) in ((n_u, (h, 0.0)), (n_v, (0.0, h))):
+        plus = surf.evaluate(u + du, v + dv).normal
+        minus = surf.evaluate(u - du, v - dv).normal
+        np.testing.assert_allclose(d, -(plus - minus) / (2 * h), atol=1e-8)
+    np.testing.assert_allclose(n, -surf.evaluate(u, v).normal, atol=1e-15)
