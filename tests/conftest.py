@@ -151,7 +151,7 @@ def assert_honest(c, ref=None, tol=1e-12, atol=1e-8):
 
 # Files that take longest (whole files per pytest-xdist worker, --dist loadfile) are handed out
 # first, so the two workers end together: the cold full workflow run, then the Snakemake plans.
-_LONG_FILES = ("tests/unit/test_full_workflow.py", "tests/unit/test_rule_graph.py")
+_LONG_FILES = ("tests/unit/workflow/test_full_workflow.py", "tests/unit/workflow/test_rule_graph.py")
 
 
 def pytest_collection_modifyitems(config, items):

@@ -38,7 +38,7 @@ orthonormal basis e_f, e_h of the tool's principal directions, k_f >= k_h):
   E singular (a_33 = 0) is exactly the singular-point condition of :mod:`gearrep.envelope`.
 
 Errors found in the printed seed 000 equations (evidence: cofactor expansion of 4.34-4.36 and
-the tests in tests/unit/test_curvature_relations.py):
+the tests in tests/unit/core/test_curvature_relations.py):
 
 * eq 4.37-4.39: the numerators have the wrong sign. Expanding the rank condition 4.34 along its
   first row gives b_11 (b_33 b_44 - b_34 b_43) = b_13 (b_31 b_44 - b_34 b_41)

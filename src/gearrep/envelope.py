@@ -66,7 +66,7 @@ of seed 000 Table 4.3/4.4 at l = 4.38148 and 10.354, but the k_s of the concave 
 centre at +R_c makes the upper-sign thread cut the concave side, and k_q at mid-face does not
 depend on the tooth trace while k_s does. The tables' convex flank needs the centre at -R_c;
 :class:`gearrep.surfaces.hob.GeneratedGear` with ``arc_centre=-1`` reproduces both columns, see
-tests/unit/test_hob.py::test_hob_case_is_the_other_arc_centre.)
+tests/unit/surfaces/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 """
 
 from __future__ import annotations

@@ -19,7 +19,7 @@ exceeds the arithmetic: with the batch form, a single-point contact solve of the
 (crowned spur 52/72) costs 1117 instead of 589 reference-kernel elements (reduced) and 1356
 instead of 688 (conventional, measured in one interleaved run). Both forms do the same operations
 in the same order (Gauss-Jordan bit for bit: +, -, x, / and abs only), so one problem gets the
-record its row gets in a batch (tests/unit/test_solve.py).
+record its row gets in a batch (tests/unit/core/test_solve.py).
 """
 
 from __future__ import annotations
@@ -214,7 +214,7 @@ def _newton_one(fun, x, jac, fun_jac, floats, opts: _BatchOptions) -> SolveResul
     """:func:`newton` for a batch of one (``x`` of shape (1, k)), without keep_inside: the same
     arithmetic (steps as :func:`step_batch`, residual norms as :func:`_row_norms`, the same Armijo
     test and statuses) on Python floats, the iterate, residual and Jacobian as lists (on one row
-    numpy's per-call cost exceeds the arithmetic; tests/unit/test_solve.py). ``floats`` (optional)
+    numpy's per-call cost exceeds the arithmetic; tests/unit/core/test_solve.py). ``floats`` (optional)
     evaluates on lists; where it returns None the array callables evaluate."""
     k = x.shape[1]
     use_fj = fun_jac is not None

@@ -183,7 +183,7 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3, *, one_
     Truncation error is O(h^4) and rounding error O(eps/h) for first and O(eps/h^2) for second
     derivatives. For a surface whose parameters vary on a scale L (choose ``h ~ 1e-3 L``), the
     relative error is about 1e-12 for first and 1e-10 for second derivatives, which keeps
-    principal curvatures accurate to ~1e-9 relative (tested in tests/unit/test_surface.py).
+    principal curvatures accurate to ~1e-9 relative (tested in tests/unit/core/test_surface.py).
 
     ``one_call``: evaluate the 25 distinct points of the stencils (centre, 4 along u, 4 along v,
     16 crossed) in ONE call of ``position`` on the stacked parameters instead of one call per

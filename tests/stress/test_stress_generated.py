@@ -132,7 +132,7 @@ def test_hob_trace_radius_sweep_mid_face(flank, l_rows, record_conditions):
         assert_honest_envelope(g, other)
         assert np.all(other.converged)
         np.testing.assert_allclose(other.point, c.result.point, atol=1e-9)
-        # k_q: the mid-face profile curvature, independent of the trace (tests/unit/test_hob.py)
+        # k_q: the mid-face profile curvature, independent of the trace (tests/unit/surfaces/test_hob.py)
         np.testing.assert_allclose(c.k_q, cs.k_q, rtol=1e-9)
         assert np.all(c.k_s != 0)
         rks.append(Rc * c.k_s)

@@ -25,7 +25,7 @@ def _import_nodes(text: str, filename: str) -> list[ast.stmt]:
     """The import statements of ``text``, each parsed alone: a full ``ast.parse`` plus a walk of
     every node costs ~10 ms per module, and the workflow parses ~90 of them at every start. A
     statement is read from a line that starts one, adding lines (parentheses, backslashes) until it
-    parses; a prose line in a docstring that never parses is skipped. tests/unit/test_workflow_lib.py
+    parses; a prose line in a docstring that never parses is skipped. tests/unit/workflow/test_workflow_lib.py
     checks that this finds exactly the imports of a full parse in every module of the project."""
     if "import" not in text:
         return []

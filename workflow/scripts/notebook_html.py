@@ -9,7 +9,7 @@ adds the same attributes to the rendered text directly:
 * ``tabindex="0"`` on every input area (``jp-Cell-inputWrapper``) and output area
   (``jp-OutputArea-output``), so the keyboard reaches them.
 
-Parsed by an HTML parser, the page is the stock exporter's page (tests/unit/test_notebook_html.py
+Parsed by an HTML parser, the page is the stock exporter's page (tests/unit/workflow/test_notebook_html.py
 compares the two on a notebook with every kind of cell and output; the five notebooks of a cold run
 were compared when this was written); only the serialisation of the markup that the parser
 would have rewritten (quoting, void tags) may differ, not what a browser shows.

@@ -59,7 +59,7 @@ angle tan(alpha_t) = tan(alpha) / cos(beta), as on a helical gear: its deviation
 involute falls like 1/R_T^2 (test ``test_straight_trace_limit_is_involute_spur`` checks the
 predicted deviation to 0.2 %).
 
-Corrections to seed 004 (evidence in tests/unit/test_catt_surface.py)
+Corrections to seed 004 (evidence in tests/unit/surfaces/test_catt.py)
 --------------------------------------------------------------------
 * Eq (5)-(6) and the meshing relation are correct as printed: eq (6) equals (C) to rounding and
   the rack normal is orthogonal to the relative velocity at every generated point.

@@ -44,7 +44,7 @@ by +pi/N about Z (``GeneratedGear.frame_rotation_rad``). The mid-face Z_f = 0 is
 
 Parameterisation of the generated surface: (l, psi) free, (phi, theta) solved from the two
 equations of meshing, because the Jacobian of the meshing equations in (theta, psi) is singular
-at mid-face (docs/reading-notes.md, 000-C; tested in tests/unit/test_envelope.py).
+at mid-face (docs/reading-notes.md, 000-C; tested in tests/unit/core/test_envelope.py).
 """
 
 from __future__ import annotations

@@ -38,7 +38,7 @@ Helix (``helix_form``):
 * ``"asin"``: eq (5)/(58) as printed, twist(v) = hand * asin(v sin(beta) / r_b). It is not a
   helicoid (see correction 3).
 
-Corrections to the thesis (evidence in tests/unit/test_involute.py)
+Corrections to the thesis (evidence in tests/unit/surfaces/test_involute.py)
 -------------------------------------------------------------------
 1. Eq (1) and eq (57): the y component must read r_b (sin t - t cos t), not r_b (cos t - t sin t).
    With the printed form the point at t = 0 is (r_b, r_b), at distance sqrt(2) r_b from the axis,

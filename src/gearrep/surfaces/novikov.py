@@ -208,7 +208,7 @@ class RackGeneratedFlank(Surface):
         s = -member_side, T = (s r_p, -r_p phi, 0) (the motion of
         :func:`gearrep.motion.rack_generation_motion`), phi(u, theta) from :meth:`rolling_angle`
         (phi_u_theta = phi_theta_theta = 0). Tested against the envelope solve and
-        :class:`gearrep.envelope.EnvelopeSurface` (tests/unit/test_nasa_surface.py)."""
+        :class:`gearrep.envelope.EnvelopeSurface` (tests/unit/surfaces/test_novikov.py)."""
         return SurfacePoint.from_components(self.evaluate_components(u, v))
 
     def evaluate_components(self, u, v) -> tuple:

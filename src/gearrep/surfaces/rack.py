@@ -11,7 +11,7 @@ the profile,
 with theta = |O_c O_b| the displacement along the tooth direction. The straight rack of an
 involute gear is the same construction with a straight normal profile at the normal pressure
 angle alpha_n (GGAT ch. on involute helical gears: a rack-cutter with a straight normal
-profile generates an involute helicoid, tested in tests/unit/test_envelope.py).
+profile generates an involute helicoid, tested in tests/unit/core/test_envelope.py).
 
 Frames (the figures of seed 002 are not in the text, so they are fixed here and used by
 :func:`gearrep.motion.rack_generation_motion`):

@@ -49,7 +49,7 @@ conjugate placement), so TE is absolute; re-zero it with :func:`transmission_err
     is ~0) makes the 5x5 Jacobian singular, because the kept ones fix it only through n_z^2.
     The sign left free is checked after convergence (WRONG_ROOT if n_f1 + n_f2 != 0). For a crowned
     spur pair, keeping (x, y) instead gives a Jacobian with s_min/s_max ~ 3e-8 and, from starts
-    near the root, ~40 % false roots with n_z1 = +n_z2 (tests/unit/test_tca.py). ``drop=`` overrides.
+    near the root, ~40 % false roots with n_z1 = +n_z2 (tests/unit/tca/test_tca.py). ``drop=`` overrides.
 (b) Reduced formulation (eq 33-44), for member 2 in explicit cylindrical form
     r_2 = (u cos psi(u,v), u sin psi(u,v), v) (u = radius, v = axial coordinate, eq 35-36):
     unknowns (u1, v1) for given phi1; (u2, v2, phi2) follow explicitly from the point

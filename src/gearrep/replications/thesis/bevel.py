@@ -666,7 +666,7 @@ def bevel_errata_rows(design) -> list:
             item="eq (45) u2 from (u1, phi1)",
             finding="the spherical cosine rule holds only with a common apex; under an offset or axial error u2 "
             "follows from the point in gear 2's axis frame (gearrep.tca._bevel)",
-            evidence=f"aligned pair: eq (45) exact (tests/unit/test_bevel.py); Table 6's dE = {d['table6']['d_E']} mm: "
+            evidence=f"aligned pair: eq (45) exact (tests/unit/tca/test_bevel.py); Table 6's dE = {d['table6']['d_E']} mm: "
             f"eq (45) gives u2 = {float(u2_45[0]):.6f} rad, the contact {float(c.u2[0]):.6f} rad",
         )
     )

@@ -4,39 +4,24 @@ and the sweep's shards (split-independent numbers; the workflow's jobs and resou
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import os
 import subprocess
 import sys
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from _command import run, write
+from conftest import ROOT
 
 from gearrep.cli import main
 from gearrep.cli.design import check, json_schema
 
-ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 DESIGNS = sorted(p for p in EXAMPLES.glob("*.yaml") if not p.name.startswith("sweep"))
 ENV = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "MPLBACKEND": "Agg"}
-
-
-def run(*argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = main([str(a) for a in argv])
-    return rc, out.getvalue(), err.getvalue()
-
-
-def write(tmp_path, name, doc) -> Path:
-    p = tmp_path / name
-    p.write_text(yaml.safe_dump(doc, sort_keys=False))
-    return p
 
 
 def example(name) -> dict:

@@ -13,7 +13,8 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from test_cli import run, write
+from _command import run, write
+from conftest import ROOT
 
 from gearrep import settings as st
 from gearrep.cli.design import check, json_schema
@@ -23,7 +24,6 @@ from gearrep.cli.keys import ANALYSIS, MISALIGNMENT, head
 from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
 from gearrep.tca import GearPair
 
-ROOT = Path(__file__).resolve().parents[2]
 CLI = ROOT / "src" / "gearrep" / "cli"
 EXAMPLES = ROOT / "examples"
 

@@ -1,4 +1,5 @@
-"""The digitised published data: format, precision fields, and agreement with the seed texts."""
+"""The digitised published data: format, precision fields, agreement with the seed texts, and
+parameter tables."""
 
 import re
 
@@ -171,3 +172,18 @@ def test_perturbed_params_move_lengths_and_angles_by_a_few_ulps(published, monke
     monkeypatch.setenv(pub.PERTURB_ENV, "few")
     with pytest.raises(ValueError, match="GEARREP_PERTURB_ULPS='few'"):
         pub.load(PUBLISHED_DIR)
+
+
+def test_param_table_selects_file_and_example():
+    params = pd.DataFrame(
+        {
+            "file": ["p_a.csv", "p_a.csv", "p_a.csv", "p_b.csv"],
+            "example": ["e1", "e1", "e2", "e1"],
+            "parameter": ["m", "z", "m", "m"],
+            "value": [2.5, 25.0, 3.0, 1.0],
+        }
+    )
+    assert pub.param_table(params, "p_a.csv", "e1") == {"m": 2.5, "z": 25.0}
+    assert pub.param_table(params, "p_b.csv") == {"m": 1.0}
+    with pytest.raises(KeyError, match="example='e9'"):
+        pub.param_table(params, "p_a.csv", "e9")

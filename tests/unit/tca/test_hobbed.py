@@ -1,7 +1,7 @@
-"""The hob-cut pair of gearrep.tca (hobbed_*: the TCA of a pair cut by one ZA hob) and gearrep.surfaces.hob.PairDesign: bad
-input is refused at the public entry points with a ValueError naming the argument, before any
-solve; the pinion-angle grid and the pair's geometry. (Results: tests/replication/test_tseng_tca.py
-and the hobbed_curvilinear tests of tests/unit/test_cli.py.)"""
+"""The hob-cut pair of gearrep.tca (hobbed_*: the TCA of a pair cut by one ZA hob): bad input is
+refused at the public entry points with a ValueError naming the argument, before any solve; the
+pinion-angle grid and the pair's geometry. (Results: tests/replication/test_tseng_tca.py and the
+hobbed_curvilinear tests of tests/unit/cli/test_cli.py; the pair design: tests/unit/surfaces/test_hob.py.)"""
 
 from __future__ import annotations
 
@@ -9,28 +9,12 @@ import numpy as np
 import pytest
 
 from gearrep import tca
-from gearrep.surfaces.hob import PairDesign, ZAHob, za_hob
+from gearrep.surfaces.hob import PairDesign, za_hob
 
 
 @pytest.fixture(scope="module")
 def design():
     return PairDesign(20, 40, 40.0, za_hob(3.0, 20.0, 30.0))
-
-
-def test_za_hob_and_pair_design():
-    hob = za_hob(3.0, 20.0, 30.0, "printed")
-    assert hob == ZAHob(3.0, float(np.radians(20.0)), 30.0, "printed")
-    with pytest.raises(ValueError, match="pressure_angle_deg"):
-        za_hob(3.0, 95.0, 30.0)
-    with pytest.raises(ValueError, match="n_gear"):
-        PairDesign(20, 3, 40.0, hob)
-    d = PairDesign(20, 40, 40.0, hob)
-    pin, gear = d.cut(110.0, 113.0)
-    assert (pin.n_teeth, pin.R_c_mm, pin.arc_centre) == (20, 110.0, -1)
-    assert (gear.n_teeth, gear.R_c_mm, gear.arc_centre) == (40, 113.0, 1)
-    with pytest.raises(ValueError, match="R_cg_mm"):
-        d.cut(110.0, -1.0)
-    assert d.with_hob(pitch_radius_mm=40.0).hob.pitch_radius_mm == 40.0
 
 
 def test_pair_geometry(design):

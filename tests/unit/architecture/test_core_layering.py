@@ -97,7 +97,7 @@ def test_import_reader_sees_relative_and_nested_imports():
     nov = PKG / "surfaces" / "novikov.py"
     assert {"gearrep.surfaces.rack", "gearrep.curvature_relations"} <= _imports(nov)
     # imports inside functions: ast.walk sees them like any other (the library has none left
-    # outside the command; tests/unit/test_import_graph.py reads them on a toy package)
+    # outside the command; tests/unit/architecture/test_import_graph.py reads them on a toy package)
 
 
 CLI = sorted((PKG / "cli").rglob("*.py"))

@@ -1,10 +1,12 @@
-"""Tooth contact analysis: conventional (thesis eq 26-32) and reduced (eq 33-44) formulations."""
+"""Tooth contact analysis of cylindrical pairs: conventional (thesis eq 26-32) and reduced (eq 33-44)
+formulations, per-row Newton solves and the derivatives of the normal."""
 
 import time
 
 import numpy as np
 import pytest
-from _numerics import assert_rounding_close, assert_same_solve, nudged
+from _gear_pairs import ALPHA, C1, helical_pair, spur_pair
+from _numerics import assert_rounding_close, assert_same_solve
 
 from gearrep.solve import Status
 from gearrep.surface import Surface
@@ -19,6 +21,8 @@ from gearrep.tca import (
     GearPair,
     Misalignment,
     default_start,
+    newton_rows,
+    normal_derivatives,
     reduced_unknowns,
     solve_contact,
     trace_path,
@@ -27,31 +31,6 @@ from gearrep.tca import (
 from gearrep.units import ARCMIN, ARCSEC
 
 D = np.radians
-ALPHA = D(20)
-
-
-def spur_pair(n1=52, n2=72, m=1.0, b=11.42, crown1=None, thin1=0.0, thin2=0.0, mis=None):
-    """Thesis sec. 6.2 spur pair (52/72, m = 1, 20 deg, b = 11.42); lengths and angles as the
-    portability check moves them (tests/_numerics.py, ``nudged``)."""
-    m, b, alpha = nudged(m), nudged(b), nudged(ALPHA)
-    g1 = InvoluteGearData(n1, m, alpha, b)
-    g2 = InvoluteGearData(n2, m, alpha, b)
-    c1 = crown1
-    if thin1:
-        c1 = ParabolicCrowning(0.0 if crown1 is None else crown1.c1, 0.0, thin1)
-    c2 = ParabolicCrowning(0.0, 0.0, thin2) if thin2 else None
-    f1, f2 = mating_flanks(g1, g2, crowning1=c1, crowning2=c2)
-    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
-
-
-def helical_pair(form="true", crown1=None, mis=None, n1=40, n2=37):
-    """Thesis Table 2 helical pair (40/37, m_n = 1, 20 deg, beta = 14 deg, b = 20); lengths and
-    angles as the portability check moves them."""
-    m, alpha, b, beta = nudged(1.0), nudged(ALPHA), nudged(20.0), nudged(D(14))
-    g1 = InvoluteGearData(n1, m, alpha, b, helix_angle=beta)
-    g2 = InvoluteGearData(n2, m, alpha, b, helix_angle=beta)
-    f1, f2 = mating_flanks(g1, g2, crowning1=crown1, helix_form=form)
-    return GearPair(f1, f2, n1, n2, standard_centre_distance(g1, g2), misalignment=mis), g1, g2
 
 
 def pitch_angle(pair, v1=0.0):
@@ -151,7 +130,6 @@ def test_thesis_pitch_point_example():
 # ---------------------------------------------------------------------------------------------
 # crowned pinion under a shaft-angle error: closed-form first-order estimate
 # ---------------------------------------------------------------------------------------------
-C1 = 0.002857  # thesis sec. 6.2 crowning of gear 1
 
 
 @pytest.mark.parametrize("dg, rtol", [(1 * ARCMIN, 1e-5), (3 * ARCMIN, 3e-5), (6 * ARCMIN, 1e-4)])
@@ -768,3 +746,43 @@ def test_solver_variants_agree_from_seeded_and_robust_starts():
         solve_conventional(pair, 0.01, starts, variant="newton")
     with pytest.raises(ValueError, match="equations"):
         solve_conventional(pair, 0.01, starts, equations="four")
+
+
+def test_newton_rows_solves_each_row_with_its_own_data():
+    # x^2 = p0, y = p1 x: roots (sqrt(p0), p1 sqrt(p0)) from positive starts
+    p = np.array([[4.0, 1.0], [9.0, -2.0], [2.0, 0.5]])
+
+    def F(x, q):
+        return np.column_stack([x[:, 0] ** 2 - q[:, 0], x[:, 1] - q[:, 1] * x[:, 0]])
+
+    def FJ(x, q):
+        J = np.zeros((len(x), 2, 2))
+        J[:, 0, 0] = 2 * x[:, 0]
+        J[:, 1, 0] = -q[:, 1]
+        J[:, 1, 1] = 1.0
+        return F(x, q), J
+
+    exact = np.column_stack([np.sqrt(p[:, 0]), p[:, 1] * np.sqrt(p[:, 0])])
+    for jac in ("analytic", "numeric"):
+        res = newton_rows(F, FJ, np.ones((3, 2)), p, jacobian=jac, tol=1e-12)
+        assert np.all(res.converged), jac
+        np.testing.assert_allclose(res.x, exact, rtol=1e-10)
+        assert np.all(res.residual < 1e-12) and np.all(res.iterations >= 1)
+    with pytest.raises(ValueError, match="params has 2 rows for 3 starts"):
+        newton_rows(F, FJ, np.ones((3, 2)), p[:2])
+    with pytest.raises(ValueError, match="jacobian must be"):
+        newton_rows(F, FJ, np.ones((3, 2)), p, jacobian="complex")
+
+
+def test_normal_derivatives_match_finite_differences():
+    from gearrep.surfaces.analytic import Torus
+
+    surf = Torus(c=5.0, a=1.5)
+    u, v = np.array([0.3, 1.2]), np.array([0.7, -2.0])
+    n, n_u, n_v = normal_derivatives(surf.evaluate(u, v), -1)
+    h = 1e-6
+    for d, (du, dv) in ((n_u, (h, 0.0)), (n_v, (0.0, h))):
+        plus = surf.evaluate(u + du, v + dv).normal
+        minus = surf.evaluate(u - du, v - dv).normal
+        np.testing.assert_allclose(d, -(plus - minus) / (2 * h), atol=1e-8)
+    np.testing.assert_allclose(n, -surf.evaluate(u, v).normal, atol=1e-15)

@@ -5,7 +5,7 @@ import itertools
 
 import numpy as np
 import pytest
-from test_tca import C1, helical_pair, spur_pair
+from _gear_pairs import C1, helical_pair, spur_pair
 
 from gearrep.ltca import (
     STEEL,

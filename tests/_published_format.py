@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pandas as pd
-
-PUB = Path(__file__).parents[2] / "data" / "published"
+from conftest import PUBLISHED_DIR as PUB
 
 
 def read_text_csv(name: str) -> pd.DataFrame:

@@ -14,12 +14,12 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import ROOT
 
 from gearrep.cli import main
 
 pytestmark = pytest.mark.cluster
 
-ROOT = Path(__file__).resolve().parents[2]
 
 SUBMIT = """#!/bin/bash
 # A local "cluster": record the submission, run the job script now, print a job id.

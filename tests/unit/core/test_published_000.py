@@ -3,16 +3,12 @@
 Spot values below were typed from seeds/000_4d213f6321cd1ae7.txt, not copied from the CSVs.
 """
 
-from pathlib import Path
-
 import pandas as pd
 import pytest
+from conftest import PUBLISHED_DIR as PUB
 
 from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
 from gearrep.units import KNOWN_UNITS as UNITS
-
-PUB = Path(__file__).parents[2] / "data" / "published"
-
 
 L1_KEYS = {
     f"l1_mm={v}"

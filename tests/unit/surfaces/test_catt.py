@@ -9,7 +9,7 @@
 * straight-trace limit: R_T -> infinity gives the involute spur flank of gearrep.surfaces.involute,
   off the middle section with the predicted 1/R_T^2 (transverse pressure angle) deviation;
 * eq (28)-(29) are eq (6) in a turned-over frame; tooth thickness = its closed form;
-* bad input raises ValueError naming the parameter.
+* bad input raises ValueError naming the parameter; the turn-over is a half turn about x.
 """
 
 from __future__ import annotations
@@ -301,3 +301,12 @@ def test_assembled_pair_refuses_bad_input_naming_the_argument():
         solve_cycle(mesh, np.array([0.0]), {"tol": 1e-12, "maxiter": 50})
     cp = solve_cycle(mesh, np.array([0.0]), {"start_offset_mm": 2.0, "tol": 1e-12, "maxiter": 50})
     assert cp.converged.all() and abs(cp.position[0, 2]) < 1e-6  # the middle section at the pitch point
+
+
+def test_catt_turn_over_is_a_half_turn_about_x():
+    from gearrep.surfaces.catt import turn_over
+
+    T = turn_over()
+    np.testing.assert_array_equal(T @ np.array([1.0, 2.0, 3.0]), [1.0, -2.0, -3.0])
+    np.testing.assert_allclose(T @ T, np.eye(3))
+    assert np.linalg.det(T) == pytest.approx(1.0)  # a rotation, not a mirror

@@ -11,14 +11,14 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
-from test_cli import run, write
+from _command import run, write
+from conftest import ROOT
 
 from gearrep.cli import load_yaml
 from gearrep.cli.design import check
 from gearrep.solve import Status
 from gearrep.tca import ContactPoints, solve_contact
 
-ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 DESIGNS = sorted(p for p in EXAMPLES.glob("*.yaml") if not p.name.startswith("sweep"))
 

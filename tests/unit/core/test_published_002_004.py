@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 import re
-from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -21,7 +20,6 @@ from conftest import seeds_dir
 from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
 from gearrep.units import KNOWN_UNITS as UNITS
 
-PUB = Path(__file__).parents[2] / "data" / "published"
 SEED_DIR = seeds_dir()
 SEED_FILES = {"002": "002_f0171829ee188968.txt", "004": "004_de0fa252fc3e91a7.txt"}
 

@@ -1,5 +1,6 @@
-"""gearrep.surfaces.hob: ZA hob thread (seed 000 eq 4.40-4.48) and the generated curvilinear
-gear (two-parameter envelope)."""
+"""gearrep.surfaces.hob: ZA hob thread (seed 000 eq 4.40-4.48), the generated curvilinear gear
+(two-parameter envelope) and the pair design (one hob, the two gears it cuts); the hob-cut pair's
+TCA is tested in tests/unit/tca/test_hobbed.py."""
 
 import numpy as np
 import pytest
@@ -9,7 +10,7 @@ from gearrep.curvature import principal_curvatures
 from gearrep.curvature_relations import generated_curvatures
 from gearrep.envelope import Envelope
 from gearrep.surface import RotatedSurface, fd_derivatives
-from gearrep.surfaces.hob import FLANK_SIDE, GeneratedGear, HobThread, ZAHob
+from gearrep.surfaces.hob import FLANK_SIDE, GeneratedGear, HobThread, PairDesign, ZAHob, za_hob
 
 L_GRID = np.linspace(4.3814841, 10.354, 5)
 
@@ -196,3 +197,19 @@ def test_wrong_root_is_flagged():
     assert np.all(g.solve(np.array([5.0, 8.0]), 0.0).converged)
     assert GeneratedGear(R_c_mm=50.0).effective_tol == g.tol
     assert GeneratedGear(R_c_mm=5000.0).effective_tol == pytest.approx(50 * g.tol)
+
+
+def test_za_hob_and_pair_design():
+    hob = za_hob(3.0, 20.0, 30.0, "printed")
+    assert hob == ZAHob(3.0, float(np.radians(20.0)), 30.0, "printed")
+    with pytest.raises(ValueError, match="pressure_angle_deg"):
+        za_hob(3.0, 95.0, 30.0)
+    with pytest.raises(ValueError, match="n_gear"):
+        PairDesign(20, 3, 40.0, hob)
+    d = PairDesign(20, 40, 40.0, hob)
+    pin, gear = d.cut(110.0, 113.0)
+    assert (pin.n_teeth, pin.R_c_mm, pin.arc_centre) == (20, 110.0, -1)
+    assert (gear.n_teeth, gear.R_c_mm, gear.arc_centre) == (40, 113.0, 1)
+    with pytest.raises(ValueError, match="R_cg_mm"):
+        d.cut(110.0, -1.0)
+    assert d.with_hob(pitch_radius_mm=40.0).hob.pitch_radius_mm == 40.0

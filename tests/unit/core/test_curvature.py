@@ -1,5 +1,6 @@
 """gearrep.curvature against closed forms (plane, sphere, cylinder, torus, helicoid, involute
-helicoid), with analytic derivatives and with the finite-difference default of gearrep.surface.
+helicoid), with analytic derivatives and with the finite-difference default of gearrep.surface;
+the batched 2x2 eigen-solver and the shape matrix.
 
 Accuracy achieved (documented here and asserted below):
 * analytic derivatives: principal curvatures to ~1e-15 relative (asserted 1e-12);
@@ -367,3 +368,39 @@ def test_second_form_in_basis_is_shape_matrix_and_rotates_with_the_basis():
     np.testing.assert_allclose(np.sort(w, axis=1), np.sort(np.stack([k1, k2], -1), axis=1), rtol=1e-12)
     # the opposite normal flips the form
     np.testing.assert_allclose(cv.second_form_in_basis(p, -n, e1, e2), -K, rtol=0, atol=0)
+
+
+def test_sym2_eig_matches_numpy_eigh():
+    rng = np.random.default_rng(1)
+    a, b, c = rng.normal(size=(3, 500)) * 10.0 ** rng.uniform(-6, 6, size=(3, 500))
+    lam1, lam2, theta = cv.sym2_eig(a, b, c)
+    M = np.stack([np.stack([a, b], -1), np.stack([b, c], -1)], -2)
+    w = np.linalg.eigvalsh(M)
+    scale = np.abs(w).max(axis=1)
+    np.testing.assert_allclose(lam1, w[:, 1], rtol=0, atol=1e-13 * scale.max())
+    assert np.all(np.abs(lam1 - w[:, 1]) <= 1e-12 * scale)
+    assert np.all(np.abs(lam2 - w[:, 0]) <= 1e-12 * scale)
+    e = np.stack([np.cos(theta), np.sin(theta)], -1)
+    Me = np.einsum("nij,nj->ni", M, e)
+    assert np.all(np.linalg.norm(Me - lam1[:, None] * e, axis=1) <= 1e-10 * scale)
+    assert np.all((theta > -np.pi / 2 - 1e-15) & (theta <= np.pi / 2 + 1e-15))
+
+
+def test_sym2_eig_small_eigenvalue_without_cancellation_and_umbilic():
+    # [[1, 1e-8], [1e-8, 1e-16 + 1e-16]]: det = 1e-16 exactly representable -> small eigenvalue 1e-16
+    lam1, lam2, _ = cv.sym2_eig(1.0, 1e-8, 2e-16)
+    assert lam2 == pytest.approx(1e-16, rel=1e-8)
+    l1, l2, th = cv.sym2_eig(np.array([2.0, -3.0]), np.array([0.0, 0.0]), np.array([2.0, -3.0]))
+    np.testing.assert_array_equal(l1, l2)
+    np.testing.assert_array_equal(th, 0.0)
+
+
+@pytest.mark.parametrize("surface, expected", [(Sphere(R=4.0), (-0.25, -0.25)), (Cylinder(R=2.0), (0.0, -0.5))])
+def test_shape_matrix_eigenvalues_are_principal_curvatures(surface, expected):
+    u, v = np.array([0.3, 1.1]), np.array([0.2, -0.4])
+    t1, t2, n, S11, S12, S22 = cv.shape_matrix(surface.evaluate(u, v))
+    np.testing.assert_allclose(np.einsum("...i,...i", t1, t2), 0.0, atol=1e-15)
+    np.testing.assert_allclose(np.einsum("...i,...i", t1, n), 0.0, atol=1e-15)
+    k1, k2, _ = cv.sym2_eig(S11, S12, S22)
+    got = np.sort(np.stack([k1, k2]), axis=0)
+    np.testing.assert_allclose(got, np.sort(np.array(expected))[:, None] * np.ones(2), rtol=1e-12, atol=1e-14)

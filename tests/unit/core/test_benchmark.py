@@ -1,4 +1,5 @@
-"""gearrep.benchmark: timing records, Pareto fronts and the knee against hand-worked cases."""
+"""gearrep.benchmark: timing records, Pareto fronts and the knee against hand-worked cases; the load
+average."""
 
 import math
 
@@ -132,3 +133,8 @@ def test_throughput_of_a_family_with_its_own_solve():
     assert r["mean_iterations"] == solve_contact(pair, phi, start, formulation="reduced").iterations.mean()
     with pytest.raises(ValueError, match="scipy_points"):
         B.tca_throughput(pair, phi, start, formulation="own", n_single=2, scipy_points=1, solve=own)
+
+
+def test_load_average_is_a_nonnegative_number_or_nan():
+    la = B.load_average()
+    assert isinstance(la, float) and (math.isnan(la) or la >= 0.0)

@@ -12,18 +12,17 @@ from __future__ import annotations
 
 import math
 import re
-from pathlib import Path
 
 import pandas as pd
 import pytest
 from _published_format import printed_precision as _precision
 from _published_format import read_text_csv as _read
+from conftest import PUBLISHED_DIR as PUB
 from conftest import seeds_dir
 
 from gearrep.published import CLAIM_COLUMNS, PARAM_COLUMNS, VALUE_COLUMNS
 from gearrep.units import KNOWN_UNITS as UNITS
 
-PUB = Path(__file__).parents[2] / "data" / "published"
 SEED_FILE = seeds_dir() / "003_d9cdb9c4b8be5cb0.txt"
 
 

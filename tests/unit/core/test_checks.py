@@ -1,4 +1,5 @@
-"""Check records: tolerances from printed precision, truncation, statuses, scorecard."""
+"""Check records: tolerances from printed precision, truncation, statuses, scorecard, not-computed
+records, validation of check tables and their CSV round trip."""
 
 import math
 
@@ -169,3 +170,61 @@ def test_values_below_the_resolution_are_recorded_as_zero():
         assert rec["status"] == "reproduced" and "plus" not in rec["tolerance_basis"]
     assert compare_value(row, 2e-12)["computed"] == 2e-12
     assert compare_value(row, 2e-4, extra_tol=1e-3, extra_basis="key")["tolerance"] == pytest.approx(1.5e-3)
+
+
+def _two_printed_values():
+    return pd.DataFrame(
+        {
+            "id": ["x-1", "x-2"],
+            "seed": ["000", "000"],
+            "source": ["Table 1"] * 2,
+            "row": ["a=1", "a=2"],
+            "quantity": ["k", "k"],
+            "unit": ["per_mm"] * 2,
+            "value": ["0.5", "-1.25"],
+        }
+    )
+
+
+def test_not_computed_records_values_and_claims():
+    rec = checks.not_computed(_two_printed_values(), "needs a bevel surface")
+    assert list(rec.columns) == checks.CHECK_COLUMNS
+    assert list(rec["status"]) == ["not-computed"] * 2
+    assert list(rec["published"]) == [0.5, -1.25] and rec["computed"].isna().all()
+    assert (rec["note"] == "needs a bevel surface").all()
+    claims = pd.DataFrame(
+        {
+            "id": ["c-1"],
+            "seed": ["004"],
+            "source": ["sec 4"],
+            "kind": ["trend"],
+            "statement": ["S grows"],
+            "parameters": ["R_T=300"],
+        }
+    )
+    rc = checks.not_computed(claims, "later")
+    assert rc.loc[0, "row"] == "R_T=300" and rc.loc[0, "quantity"] == "trend" and math.isnan(rc.loc[0, "published"])
+    checks.validate_checks(pd.concat([rec, rc], ignore_index=True))
+
+
+def test_validate_checks_rejects_bad_tables():
+    rec = checks.not_computed(_two_printed_values(), "r")
+    with pytest.raises(ValueError, match="lacks columns"):
+        checks.validate_checks(rec.drop(columns=["status"]))
+    bad = rec.copy()
+    bad.loc[0, "status"] = "ok"
+    with pytest.raises(ValueError, match="unknown statuses"):
+        checks.validate_checks(bad)
+    with pytest.raises(ValueError, match="duplicate check ids"):
+        checks.validate_checks(pd.concat([rec, rec.iloc[:1]]))
+
+
+def test_check_csv_round_trip_keeps_seed_text_and_bad_seeds_are_rejected(tmp_path):
+    rec = checks.not_computed(_two_printed_values(), "r")
+    f = tmp_path / "c.csv"
+    rec.to_csv(f, index=False)
+    back = pd.read_csv(f, dtype=checks.TEXT_COLUMNS, keep_default_na=False, na_values=[""])
+    assert list(back["seed"]) == ["000", "000"]
+    checks.validate_checks(back)
+    with pytest.raises(ValueError, match="three-digit string"):
+        checks.validate_checks(pd.read_csv(f, keep_default_na=False, na_values=[""]))

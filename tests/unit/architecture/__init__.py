@@ -1,0 +1,1 @@
+"""The shape of the code: import graph, layering, sizes of functions and files."""

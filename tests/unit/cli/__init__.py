@@ -1,0 +1,1 @@
+"""The `gearrep` command (gearrep.cli): design files, analyses, the family registry, sweeps."""

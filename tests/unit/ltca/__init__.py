@@ -1,0 +1,1 @@
+"""Loaded tooth contact analysis (gearrep.ltca)."""

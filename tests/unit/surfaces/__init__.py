@@ -1,0 +1,1 @@
+"""The tooth surfaces of gearrep.surfaces, one file per family."""

@@ -1,0 +1,1 @@
+"""The Snakemake workflow (Snakefile, workflow/): rules, plans, scripts, notebooks, the full run."""
