@@ -105,7 +105,7 @@ def test_section_contacts_of_the_aligned_spur_pair():
     is 1/(r_p1 sin a) + 1/(r_p2 sin a)."""
     pair, g1, g2 = spur_pair()
     phi = cycle_positions(pair)
-    sep = initial_separations(pair, phi, n_slices=8)
+    sep = initial_separations(pair, phi, n_nodes=8)
     ok = sep.in_contact
     assert np.all(np.isin(ok.sum(axis=2), (0, 8)))  # whole pairs in contact
     assert np.all(np.abs(sep.gap_mm[ok]) < 1e-12) and np.all(np.abs(sep.te_rigid_rad) < 1e-12)
@@ -216,7 +216,7 @@ def test_strip_convergence_of_a_localized_contact():
     loaded TE and mesh stiffness by less than 1 % (the strip model's discretisation error)."""
     pair, _, _ = crowned_misaligned_pair()
     phi = np.linspace(-0.08, 0.0, 5)
-    a, b = (loaded_contact(pair, 50.0, phi, n_slices=n) for n in (40, 80))
+    a, b = (loaded_contact(pair, 50.0, phi, n_nodes=n) for n in (40, 80))
     for q in ("max_pressure_MPa", "lte_urad", "mesh_stiffness_N_per_mm_um"):
         x, y = getattr(a, q), getattr(b, q)
         assert np.max(np.abs(x - y) / np.abs(y)) < 0.01, q
@@ -231,8 +231,8 @@ def test_unloaded_tca_is_recovered():
     pair, _, g2 = crowned_misaligned_pair()
     phi = np.linspace(-0.08, 0.0, 5)
     n = 40
-    full = loaded_contact(pair, 50.0, phi, n_slices=n)
-    tiny = loaded_contact(pair, 1e-6, phi, n_slices=n)
+    full = loaded_contact(pair, 50.0, phi, n_nodes=n)
+    tiny = loaded_contact(pair, 1e-6, phi, n_nodes=n)
     p1 = 2 * np.pi / pair.n1
     pairs = [solve_contact(pair, phi - k * p1) for k in (-1, 0, 1)]  # tooth pairs k (gearrep.meshing)
     assert np.all(pairs[1].converged)
@@ -247,7 +247,7 @@ def test_unloaded_tca_is_recovered():
 
 def test_non_converged_position_is_nan_with_status():
     pair, _, _ = crowned_misaligned_pair()
-    r = loaded_contact(pair, 50.0, np.array([-0.04]), n_slices=20, maxiter=1)
+    r = loaded_contact(pair, 50.0, np.array([-0.04]), n_nodes=20, maxiter=1)
     assert r.status[0] == Status.NOT_CONVERGED
     assert np.isnan(r.lte_urad[0]) and np.isnan(r.max_pressure_MPa[0]) and np.isnan(r.mesh_stiffness_N_per_um[0])
     assert np.isnan(r.summary().max_contact_pressure_MPa)
@@ -256,10 +256,10 @@ def test_non_converged_position_is_nan_with_status():
 def test_pressure_map_carries_the_strip_loads():
     """The semi-elliptic map of each strip integrates (across the line) to its load per length."""
     pair, _, _ = crowned_misaligned_pair()
-    r = loaded_contact(pair, 50.0, np.array([-0.04]), n_slices=20)
+    r = loaded_contact(pair, 50.0, np.array([-0.04]), n_nodes=20)
     pm = r.pressure_map(0, n_across=2001)
     integral = np.trapezoid(np.nan_to_num(pm.pressure_MPa), pm.across_mm, axis=-1)
-    w = np.nan_to_num(r.slice_load_N[0]) / (pair.flank1.gear.face_width / 20)
+    w = np.nan_to_num(r.node_load_N[0]) / (pair.flank1.gear.face_width / 20)
     big = w > 0.05 * w.max()
     assert np.allclose(integral[big], w[big], rtol=2e-3)  # trapezoid error at the ellipse's ends
 
@@ -269,7 +269,7 @@ def test_pressure_map_carries_the_strip_loads():
     [
         (dict(torque_Nm=-1.0), "torque_Nm"),
         (dict(driving="wheel"), "driving"),
-        (dict(materials=Material(206000.0, 0.3), n_slices=0), "n_slices"),
+        (dict(materials=Material(206000.0, 0.3), n_nodes=0), "n_slices"),
     ],
 )
 def test_bad_input_is_refused(kwargs, match):

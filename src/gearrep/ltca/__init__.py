@@ -39,7 +39,7 @@ from ._compliance import (
     weber_contact_approach_mm,
 )
 from ._distribution import ContactLoads, solve_contact_loads
-from ._separation import Separations, face_slices, initial_separations, section_contacts
+from ._separation import KINDS, Separations, face_nodes, initial_separations, section_contacts
 
 __all__ = [
     "iso",
@@ -52,7 +52,8 @@ __all__ = [
     "ContactLoads",
     "solve_contact_loads",
     "Separations",
-    "face_slices",
+    "face_nodes",
+    "KINDS",
     "section_contacts",
     "initial_separations",
     "LoadedContact",
