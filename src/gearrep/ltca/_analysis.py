@@ -12,7 +12,7 @@ from ..solve import Status, check_finite, check_integer
 from ..tca import GearPair
 from . import _compliance as compliance
 from ._compliance import STEEL, Material
-from ._distribution import solve_contact_loads
+from ._distribution import solve_checked
 from ._families import members, pitch_phi1
 from ._nodes import Nodes
 from ._separation import EDGE_KINDS, Separations, initial_separations
@@ -212,7 +212,9 @@ def _one_position(nodes: Nodes, rows, groups, gap, arm, moment, tol, maxiter, gu
     best = np.inf
     for it in range(1, maxiter + 1):
         c = nodes.compliance(rows, x, groups, block)
-        sol = solve_contact_loads(c, gap, arm, moment, working=working)
+        if not np.all(np.isfinite(c)):
+            raise ValueError("the nodes' compliance is not finite (a contact with no defined curvature or depth)")
+        sol = solve_checked(c, gap, arm, moment, working=working)
         if sol.status != Status.CONVERGED:
             return sol, it, sol.status
         change = float(np.max(np.abs(sol.loads_N - F)))
@@ -296,8 +298,8 @@ REFINE_BELOW = 0.7
 
 def _windows(sep: Separations, loads, status, m1):
     """Face windows (n_pos, n_pairs, 2) around each tooth pair's loaded nodes (one node spacing
-    beyond the outermost loaded nodes), the whole face where the loaded span is wide or there is
-    no load; and whether any window is narrower than the face."""
+    beyond the outermost loaded nodes) where the loaded span is narrower than REFINE_BELOW of the
+    face, the present node range elsewhere; and that mask of narrow windows."""
     lo, hi = m1.z_lo, m1.z_hi
     shape = sep.shape
     L = loads.reshape(shape)
@@ -307,10 +309,10 @@ def _windows(sep: Separations, loads, status, m1):
     with np.errstate(invalid="ignore"):
         za = np.min(np.where(loaded, z, np.inf), axis=-1, keepdims=True) - step
         zb = np.max(np.where(loaded, z, -np.inf), axis=-1, keepdims=True) + step
-    za, zb = np.maximum(za, lo), np.minimum(zb, hi)
+    za, zb = np.maximum(za, z[..., :1]), np.minimum(zb, z[..., -1:])
     narrow = np.any(loaded, axis=-1, keepdims=True) & ((zb - za) < REFINE_BELOW * (hi - lo))
-    w = np.concatenate([np.where(narrow, za, lo), np.where(narrow, zb, hi)], axis=-1)
-    return w, bool(np.any(narrow))
+    w = np.concatenate([np.where(narrow, za, z[..., :1]), np.where(narrow, zb, z[..., -1:])], axis=-1)
+    return w, narrow[..., 0]
 
 
 def _reaches_window_end(sep: Separations, loads, status, m1):
@@ -362,19 +364,18 @@ def loaded_contact(
     bore = tuple(bore_radius_mm)
     kw = dict(n_nodes=n_nodes, pairs=pairs, edge_radius_mm=edge_radius_mm)
 
-    def run(windows=None, guess=None):
-        sep = initial_separations(pair, phi1, windows=windows, **kw)
+    def run(windows=None, previous=None, keep=None):
+        sep = initial_separations(pair, phi1, windows=windows, previous=previous, keep=keep, **kw)
         nodes = Nodes(sep, m1, m2, materials, bore, tooth_bending=tooth_bending, coupling=coupling)
-        return sep, nodes, _solve(pair, sep, nodes, T, driving, tol, maxiter, guess)
+        return sep, nodes, _solve(pair, sep, nodes, T, driving, tol, maxiter)
 
     sep, nodes, (loads, out, its, status) = run()
     passes = 1
     if refine:
         windows, narrow = _windows(sep, loads, status, m1)
-        while narrow and passes < 4:
-            sep2, nodes2, res2 = run(windows)
+        while np.any(narrow) and passes < 4:
+            sep, nodes, (loads, out, its, status) = run(windows, sep, ~narrow)
             passes += 1
-            sep, nodes, (loads, out, its, status) = sep2, nodes2, res2
             wide = _reaches_window_end(sep, loads, status, m1)
             if not np.any(wide):
                 break
@@ -382,6 +383,7 @@ def loaded_contact(
             grown = np.concatenate([windows[..., :1] - step, windows[..., 1:] + step], axis=-1)
             grown = np.clip(grown, m1.z_lo, m1.z_hi)
             windows = np.where(wide[..., None], grown, windows)
+            narrow = wide
     return _record(pair, T, driving, sep, nodes, loads, out, its, status, passes, m1)
 
 

@@ -263,15 +263,23 @@ def half_space_segment_mm2_per_N(x1, x2, lateral_mm, depth_mm, material: Materia
     an infinite line with the lateral offset y_e = (b/2) exp(-1/2) this is exactly Weber's
     line-contact approach for a Hertz strip of half-width b (:func:`weber_contact_approach_mm`, to
     O((b/h)^2)): the mean of ln|y| over the semi-elliptic pressure is ln(b/2) - 1/2."""
-    E, nu = material.E_MPa, material.poisson
     a = np.asarray(lateral_mm, dtype=float)
-    h = np.asarray(depth_mm, dtype=float)
+    surf = _surface_coefficient(material) * (np.arcsinh(x2 / a) - np.arcsinh(x1 / a))
+    return surf - _depth_term(x1, x2, a, np.asarray(depth_mm, dtype=float), material)
+
+
+def _surface_coefficient(material: Material) -> float:
+    return (1.0 - material.poisson**2) / (np.pi * material.E_MPa)
+
+
+def _depth_term(x1, x2, a, h, material: Material):
+    """The segment integral of Boussinesq's u_z at depth h (lateral offset a) per unit intensity."""
+    nu = material.poisson
     c2 = a * a + h * h
     c = np.sqrt(c2)
-    surf = (1.0 - nu**2) / (np.pi * E) * (np.arcsinh(x2 / a) - np.arcsinh(x1 / a))
     far = 2.0 * (1.0 - nu) * (np.arcsinh(x2 / c) - np.arcsinh(x1 / c))
     far = far + h * h / c2 * (x2 / np.sqrt(x2 * x2 + c2) - x1 / np.sqrt(x1 * x1 + c2))
-    return surf - (1.0 + nu) / (2.0 * np.pi * E) * far
+    return (1.0 + nu) / (2.0 * np.pi * material.E_MPa) * far
 
 
 #: lateral offset of a line load equivalent to a Hertz strip of half-width b, over b: (1/2) exp(-1/2)

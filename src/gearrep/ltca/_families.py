@@ -124,6 +124,20 @@ class Member:
     def radius(self, p_member):
         return np.hypot(p_member[..., 0], p_member[..., 1])
 
+    def inside(self, u, v, margin: float):
+        """True where (u, v) lies on the working flank at least ``margin`` (a fraction of the
+        profile span and of the face width) from every boundary."""
+        with np.errstate(invalid="ignore"):
+            p = self.flank.position(u, v)
+            r = self.radius(p)
+            dr, dz = margin * (self.r_tip - self.r_form), margin * (self.z_hi - self.z_lo)
+            return (
+                (r >= self.r_form + dr)
+                & (r <= self.r_tip - dr)
+                & (p[..., 2] >= self.z_lo + dz)
+                & (p[..., 2] <= self.z_hi - dz)
+            )
+
     def contains(self, u, v, tol: float = 1e-9):
         """True where (u, v) is on the working flank: radius in [r_form, r_tip] and the axial
         position within the face ends (slack ``tol`` relative to the tip radius)."""

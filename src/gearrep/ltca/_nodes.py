@@ -41,8 +41,9 @@ from ..ellipse import effective_modulus
 from ._compliance import (
     HERTZ_STRIP_OFFSET,
     ToothCompliance,
+    _depth_term,
+    _surface_coefficient,
     contact_half_width_mm,
-    half_space_segment_mm2_per_N,
     plate_kernel,
     weber_contact_approach_mm,
 )
@@ -103,17 +104,18 @@ class Nodes:
         (block-diagonal over ``groups``, the tooth pair of each row), or its diagonal when not
         coupled. ``block``: the geometry of :meth:`prepare` for these rows (made here if None)."""
         L = self.L[rows]
-        tooth = self.lam[rows] / L
         if not self.coupling:
             dH = weber_contact_approach_mm(F / L, self.k[rows], self.h1[rows], self.h2[rows], *self.materials)
-            return tooth + dH / F
+            return self.lam[rows] / L + dH / F
         blk = self.prepare(rows, groups) if block is None else block
         ye = HERTZ_STRIP_OFFSET * self.strip_width(rows, F, blk)
-        lat = np.sqrt(blk["lat2"] + ye[blk["j"]] ** 2)
-        G = half_space_segment_mm2_per_N(blk["x1"], blk["x2"], lat, blk["h1"], self.materials[0])
-        G += half_space_segment_mm2_per_N(blk["x1"], blk["x2"], lat, blk["h2"], self.materials[1])
+        lat = np.sqrt(blk["lat2"] + ye[blk["j"]] ** 2)  # (n_images, E)
+        m1, m2 = self.materials
+        surface = (_surface_coefficient(m1) + _surface_coefficient(m2)) * (
+            np.arcsinh(blk["x2"] / lat) - np.arcsinh(blk["x1"] / lat)
+        )
         C = np.zeros((rows.size, rows.size))
-        np.add.at(C, (blk["i"], blk["j"]), (G + blk["plate"]) / L[blk["j"]])
+        C[blk["i"], blk["j"]] = (surface.sum(axis=0) + blk["fixed"]) / L[blk["j"]]
         return 0.5 * (C + C.T)
 
     def strip_width(self, rows, F, blk):
@@ -124,51 +126,67 @@ class Nodes:
         does not cycle)."""
         w = F / self.L[rows]
         b = contact_half_width_mm(w, self.k[rows], self.Estar)
-        i, j, d = blk["ni"], blk["nj"], blk["nd"]
+        i, j, d = blk["i"], blk["j"], blk["dist"]
         kern = np.maximum(1.0 - d / b[i], 0.0)  # a triangle of half-width b_i (continuous in the loads)
-        kern[i == j] = 1.0
+        kern[blk["self"]] = 1.0
         n = rows.size
         wbar = np.bincount(i, weights=kern * w[j], minlength=n) / np.bincount(i, weights=kern, minlength=n)
         return contact_half_width_mm(wbar, self.k[rows], self.Estar)
 
     def prepare(self, rows, groups):
         """The load-independent geometry of the influence coefficients of ``rows`` (module
-        docstring): for every (node i, source j) of one tooth pair, and the sources' mirror images in
-        member 1's face-end planes, the source segment's ends x1, x2 along node i's line, the squared
-        lateral offset and node i's depths."""
-        out = {k: [] for k in ("i", "j", "x1", "x2", "lat2", "h1", "h2", "plate", "ni", "nj", "nd")}
-        lam1, lam2, H1, H2 = self.lam1[rows], self.lam2[rows], self.H1[rows], self.H2[rows]
-        nu1, nu2 = self.materials[0].poisson, self.materials[1].poisson
-        p, line, across = self.p[rows], self.line[rows], self.across[rows]
-        left, right = self.left[rows], self.right[rows]
+        docstring): for every (node i, source j) of one tooth pair (``i``, ``j``: E pairs), and for
+        the source itself and its mirror images in member 1's face-end planes (first axis), the
+        source segment's ends x1, x2 along node i's line and the squared lateral offset; node i's
+        depths; the plate part of the tooth compliance (summed over the images); the distances
+        along the line (``dist``, for :meth:`strip_width`)."""
+        Is, Js = [], []
         for g in np.unique(groups):
             sel = np.flatnonzero(groups == g)
             I, J = np.meshgrid(sel, sel, indexing="ij")
-            I, J = I.ravel(), J.ravel()
-            for image in (None, *self.ends):
-                q, lo, hi = p[J], left[J], right[J]
-                if image is not None:  # the mirror image: z -> 2 z_end - z, the segment reversed
-                    q = q.copy()
-                    q[:, 2] = 2.0 * image - q[:, 2]
-                    lo, hi = hi, lo
-                d = q - p[I]
-                a = np.sum(d * line[I], axis=1)
-                out["i"].append(I)
-                out["j"].append(J)
-                out["x1"].append(a - lo)
-                out["x2"].append(a + hi)
-                out["lat2"].append(np.sum(d * across[I], axis=1) ** 2)
-                # the teeth as cantilever plates along the face (z): the source's tributary interval
-                cz = np.abs(line[J, 2])
-                z1, z2 = d[:, 2] - lo * cz, d[:, 2] + hi * cz
-                out["plate"].append(
-                    lam1[I] * (plate_kernel(z2 / H1[I], nu1) - plate_kernel(z1 / H1[I], nu1))
-                    + lam2[I] * (plate_kernel(z2 / H2[I], nu2) - plate_kernel(z1 / H2[I], nu2))
-                )
-                if image is None:  # the distances along the line within the tooth pair
-                    out["ni"].append(I)
-                    out["nj"].append(J)
-                    out["nd"].append(np.abs(a))
-                out["h1"].append(self.h1[rows][I])
-                out["h2"].append(self.h2[rows][I])
-        return {k: np.concatenate(v) for k, v in out.items()}
+            Is.append(I.ravel())
+            Js.append(J.ravel())
+        I, J = np.concatenate(Is), np.concatenate(Js)
+        p, line, across = self.p[rows], self.line[rows], self.across[rows]
+        left, right = self.left[rows], self.right[rows]
+        x1, x2, lat2, z1, z2 = [], [], [], [], []
+        cz = np.abs(line[J, 2])
+        for image in (None, *self.ends):
+            q, lo, hi = p[J], left[J], right[J]
+            if image is not None:  # the mirror image: z -> 2 z_end - z, the segment reversed
+                q = q.copy()
+                q[:, 2] = 2.0 * image - q[:, 2]
+                lo, hi = hi, lo
+            d = q - p[I]
+            a = np.einsum("ij,ij->i", d, line[I])
+            x1.append(a - lo)
+            x2.append(a + hi)
+            lat2.append(np.einsum("ij,ij->i", d, across[I]) ** 2)
+            # the teeth as cantilever plates along the face (z): the source's tributary interval
+            z1.append(d[:, 2] - lo * cz)
+            z2.append(d[:, 2] + hi * cz)
+        z1, z2 = np.array(z1), np.array(z2)
+        plate = 0.0
+        for lam, H, mat in ((self.lam1, self.H1, self.materials[0]), (self.lam2, self.H2, self.materials[1])):
+            Hi = H[rows][I]
+            P = plate_kernel(np.concatenate([z2, z1]) / Hi, mat.poisson)
+            plate = plate + lam[rows][I] * (P[: z2.shape[0]] - P[z2.shape[0] :]).sum(axis=0)
+        x1, x2, lat2 = np.array(x1), np.array(x2), np.array(lat2)
+        # the depth terms with the strip's lateral smearing left out: it moves them by O((b/h)^2),
+        # the order to which the coupling sums to Weber's approach anyway, and so they do not change
+        # with the loads
+        lat0 = np.sqrt(lat2)
+        depth = sum(
+            _depth_term(x1, x2, lat0, h[rows][I], m).sum(axis=0)
+            for h, m in ((self.h1, self.materials[0]), (self.h2, self.materials[1]))
+        )
+        return dict(
+            i=I,
+            j=J,
+            x1=x1,
+            x2=x2,
+            lat2=lat2,
+            fixed=plate - depth,
+            dist=np.abs(x1[0] + left[J]),
+            self=I == J,
+        )

@@ -40,9 +40,9 @@ arm about member 2's axis (first order in TE_0 - TE_kj; exact for involute flank
 acts along the normal of the smooth surface: member 1's outward normal, except at member 1's tip
 edge (member 2's normal).
 
-Across the contact the relative normal curvature is taken in member 1's principal direction of
-larger curvature (the profile direction of a cylindrical-gear flank), or, at a tip edge, that of
-the mating flank plus 1/r_edge (a tip edge is a corner: its Hertz pressure is finite only for the
+Across the contact the relative normal curvature is taken in member 1's principal direction
+nearest the transverse section (the profile direction of a cylindrical-gear flank), or, at a tip
+edge, in that of the mating flank plus 1/r_edge (a tip edge is a corner: its Hertz pressure is finite only for the
 stated edge radius). The contact line runs across that direction in the tangent plane; a node's
 line length is its tributary face width over the cosine of the line's angle to the axis.
 """
@@ -119,6 +119,81 @@ def _equations(pair: GearPair, m1: Member, m2: Member, kind: int, phi1, z, x, v1
     return np.concatenate(eqs, axis=1)
 
 
+_K = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])  # d Rz / d angle = Rz K
+
+
+def _unit_normal_derivs(P):
+    """Unit normal N = unit(r_u x r_v) and its derivatives dN/du, dN/dv of a SurfacePoint."""
+    m = np.cross(P.r_u, P.r_v)
+    mu = np.linalg.norm(m, axis=1, keepdims=True)
+    N = m / mu
+
+    def d(dm):
+        return (dm - N * np.sum(N * dm, axis=1, keepdims=True)) / mu
+
+    return N, d(np.cross(P.r_uu, P.r_v) + np.cross(P.r_u, P.r_uv)), d(np.cross(P.r_uv, P.r_v) + np.cross(P.r_u, P.r_vv))
+
+
+def _mv(R, v):
+    return np.einsum("nij,nj->ni", R, v)
+
+
+def _fun_jac(pair: GearPair, m1: Member, m2: Member, kind: int, phi1, z, x, v1_is_z: bool):
+    """Residual of :func:`_equations` and its analytic Jacobian (columns u1, v1, u2, v2, phi2, the
+    v1 column left out when v1 = z)."""
+    if v1_is_z:
+        u1, u2, v2, phi2 = x.T
+        v1 = z
+    else:
+        u1, v1, u2, v2, phi2 = x.T
+    n = u1.size
+    P1, P2 = pair.flank1.evaluate(u1, v1), pair.flank2.evaluate(u2, v2)
+    R1, R2 = pair.R1(phi1), pair.R2(phi2)
+    r2f = _mv(R2, P2.r)
+    rows, jac = [_mv(R1, P1.r) - pair.O2 - r2f], []
+    jp = np.zeros((n, 3, 5))
+    jp[:, :, 0], jp[:, :, 1] = _mv(R1, P1.r_u), _mv(R1, P1.r_v)
+    jp[:, :, 2], jp[:, :, 3] = -_mv(R2, P2.r_u), -_mv(R2, P2.r_v)
+    jp[:, :, 4] = _mv(R2, P2.r @ _K.T)
+    jac.append(jp)
+    if not v1_is_z and kind not in _FACE2:
+        rows.append((P1.r[:, 2] - z)[:, None])
+        js = np.zeros((n, 1, 5))
+        js[:, 0, 0], js[:, 0, 1] = P1.r_u[:, 2], P1.r_v[:, 2]
+        jac.append(js)
+    e = np.zeros((n, 1, 5))
+    if kind == _INTERIOR or kind in _FACE2:
+        N1, N1u, N1v = _unit_normal_derivs(P1)
+        N2, N2u, N2v = _unit_normal_derivs(P2)
+        n1, n2 = _mv(R1, N1), _mv(R2, N2)
+        t = np.column_stack([-n1[:, 1], n1[:, 0], np.zeros(n)])
+        tn = np.linalg.norm(t, axis=1, keepdims=True)
+        g = t / tn
+        rows.append(np.sum(n2 * g, axis=1)[:, None])
+        for col, dN in ((0, N1u), (1, N1v)):
+            dn = _mv(R1, dN)
+            dt = np.column_stack([-dn[:, 1], dn[:, 0], np.zeros(n)])
+            dg = (dt - g * np.sum(g * dt, axis=1, keepdims=True)) / tn
+            e[:, 0, col] = np.sum(n2 * dg, axis=1)
+        e[:, 0, 2], e[:, 0, 3] = np.sum(_mv(R2, N2u) * g, axis=1), np.sum(_mv(R2, N2v) * g, axis=1)
+        e[:, 0, 4] = -np.sum(_mv(R2, N2 @ _K.T) * g, axis=1)
+        jac.append(e.copy())
+        e[:] = 0.0
+    if kind in (2, 3):
+        P, col, tip = (P1, 0, m1.r_tip) if kind == 2 else (P2, 2, m2.r_tip)
+        rho = np.hypot(P.r[:, 0], P.r[:, 1])
+        rows.append((rho - tip)[:, None])
+        e[:, 0, col] = (P.r[:, 0] * P.r_u[:, 0] + P.r[:, 1] * P.r_u[:, 1]) / rho
+        e[:, 0, col + 1] = (P.r[:, 0] * P.r_v[:, 0] + P.r[:, 1] * P.r_v[:, 1]) / rho
+        jac.append(e)
+    elif kind in _FACE2:
+        rows.append((P2.r[:, 2] - (m2.z_lo if kind == _FACE2[0] else m2.z_hi))[:, None])
+        e[:, 0, 2], e[:, 0, 3] = P2.r_u[:, 2], P2.r_v[:, 2]
+        jac.append(e)
+    J = np.concatenate(jac, axis=1)
+    return np.concatenate(rows, axis=1), (J[:, :, [0, 2, 3, 4]] if v1_is_z else J)
+
+
 def _solve_kind(pair, m1, m2, kind, phi1, z, x0, tol, maxiter, v1_is_z):
     """Newton on the system of ``kind`` for the rows of (phi1, z, x0 (n, 5)); returns x (n, 5) and
     the status (CONVERGED only for a root with both points on the working flanks)."""
@@ -137,6 +212,7 @@ def _solve_kind(pair, m1, m2, kind, phi1, z, x0, tol, maxiter, v1_is_z):
         sr = newton(
             lambda xx, rows: _equations(pair, m1, m2, kind, p_[rows], z_[rows], xx, v1_is_z),
             x0[idx][:, cols],
+            fun_jac=lambda xx, rows: _fun_jac(pair, m1, m2, kind, p_[rows], z_[rows], xx, v1_is_z),
             tol=tol,
             maxiter=maxiter,
             lower=lo,
@@ -351,16 +427,35 @@ def _drive_sense(arm1, arm2) -> int:
 
 def _across(pair, c: ContactPoints, kind, edge_radius_mm):
     """Relative curvature across the contact line [1/mm] and the across direction (module docstring;
-    curvature signs of :func:`gearrep.tca.contact_curvatures`: convex-convex positive)."""
+    curvature signs of :func:`gearrep.tca.contact_curvatures`: convex-convex positive). The across
+    direction is the principal direction nearest the transverse section's tangent e_z x n (the
+    profile direction of a cylindrical-gear flank, whose other principal direction runs along the
+    face even where a crown's lengthwise curvature is the larger)."""
     pc1, pc2 = contact_curvatures(pair, c)
-    d1 = np.where((np.abs(pc1.k1) >= np.abs(pc1.k2))[:, None], pc1.e1, pc1.e2)
-    d2 = np.where((np.abs(pc2.k1) >= np.abs(pc2.k2))[:, None], pc2.e1, pc2.e2)
+    t = np.column_stack([-c.normal[:, 1], c.normal[:, 0], np.zeros(len(c))])
+    t /= np.linalg.norm(t, axis=1, keepdims=True)
+
+    def nearest(pc):
+        first = np.abs(np.sum(pc.e1 * t, axis=1)) >= np.abs(np.sum(pc.e2 * t, axis=1))
+        return np.where(first[:, None], pc.e1, pc.e2)
+
+    d1, d2 = nearest(pc1), nearest(pc2)
     k = euler_normal_curvature(pc2, d1) - euler_normal_curvature(pc1, d1)
     e = 1.0 / edge_radius_mm
     k = np.where(kind == 2, e + euler_normal_curvature(pc2, d2), k)
     k = np.where(kind == 3, e - euler_normal_curvature(pc1, d1), k)
     d = np.where((kind == 2)[:, None], d2, d1)
     return k, d
+
+
+def _merge(mask, a: ContactPoints, b: ContactPoints) -> ContactPoints:
+    """Rows of ``b`` where ``mask``, of ``a`` elsewhere."""
+    fields = {}
+    for name in ContactPoints.ARRAYS:
+        x, y = getattr(a, name), getattr(b, name)
+        m = mask[:, None] if np.ndim(x) == 2 else mask
+        fields[name] = np.where(m, y, x)
+    return ContactPoints(**fields, formulation=a.formulation)
 
 
 def initial_separations(
@@ -373,12 +468,16 @@ def initial_separations(
     edge_radius_mm=None,
     tol: float = 1e-10,
     margin: float = 0.02,
+    previous: Separations | None = None,
+    keep=None,
 ) -> Separations:
     """First touches and initial separations of tooth pairs ``pairs`` (offsets k, default -4 ... 4)
     at ``n_nodes`` nodes over member 1's face, or over ``windows`` (n_pos, n_pairs, 2) of it, at
     member-1 angles ``phi1`` [rad] (module docstring). ``edge_radius_mm``: radius of the tip edges
-    (default a tenth of member 1's module); ``margin``: fraction of each flank's profile span inside
-    which a closed-form start counts as an expected contact."""
+    (default a tenth of member 1's module); ``margin``: fraction of each flank's profile span and
+    face width inside which a closed-form start counts as an expected contact. ``previous`` and
+    ``keep`` (n_pos, n_pairs): the tooth pairs whose nodes are those of ``previous`` (their windows
+    its node ranges) are taken from it, not solved again."""
     m1, m2 = members(pair)
     phi1 = np.atleast_1d(np.asarray(phi1, dtype=float))
     if phi1.ndim != 1 or not np.all(np.isfinite(phi1)):
@@ -403,26 +502,36 @@ def initial_separations(
         start, r1, r2 = section_starts(pair, m1, m2, phi_eff, Z.ravel())
         with np.errstate(invalid="ignore"):
             near = np.ones(phi_eff.size, dtype=bool)
-            expected = np.ones(phi_eff.size, dtype=bool)
             for r, m in ((r1, m1), (r2, m2)):
                 span = m.r_tip - m.r_form
                 near &= (r >= m.r_form - 0.5 * span) & (r <= m.r_tip + 0.5 * span)
-                expected &= (r >= m.r_form + margin * span) & (r <= m.r_tip - margin * span)
         start[~near] = np.nan  # far from the flanks: out of mesh, not solved
+        expected = near & m1.inside(start[:, 0], start[:, 1], margin) & m2.inside(start[:, 2], start[:, 3], margin)
         return Z, W, start, expected
 
     Z, W, start, expected = place(face)
+    kept = np.zeros(phi_eff.size, dtype=bool)
+    if previous is not None:
+        if previous.shape != shape or np.shape(keep) != (n_pos, n_pairs):
+            raise ValueError(f"previous must have shape {shape} and keep {(n_pos, n_pairs)}")
+        kept = np.broadcast_to(np.asarray(keep, dtype=bool)[..., None], shape).ravel()
+        start[kept] = np.nan  # taken from previous
     x, st = _solve_kind(pair, m1, m2, _INTERIOR, phi_eff, Z.ravel(), start, tol, 30, v1_is_z)
     face, moved = _common_face(pair, m1, m2, phi_eff, face, x, st, tol, 30)
     redo = np.broadcast_to(np.any(moved, axis=-1)[..., None], shape).ravel()
     if np.any(redo):
         Z, W, start, expected = place(face)
+        start[kept] = np.nan
         xr, sr = _solve_kind(pair, m1, m2, _INTERIOR, phi_eff[redo], Z.ravel()[redo], start[redo], tol, 30, v1_is_z)
         x[redo], st[redo] = xr, sr
     c, kind, sense = _first_touch(pair, m1, m2, phi_eff, Z.ravel(), start, tol, 30, interior=(x, st))
     at_face2 = np.zeros(shape, dtype=bool)
     at_face2[..., 0], at_face2[..., -1] = moved[..., 0], moved[..., 1]
     kind = np.where(at_face2.ravel() & (kind == _INTERIOR), _FACE2[0], kind)
+    if previous is not None:
+        c = _merge(kept, c, previous.contacts)
+        kind = np.where(kept, previous.kind.ravel(), kind)
+        expected = np.where(kept, previous.expected.ravel(), expected)
     ok = c.status == Status.CONVERGED
     arm1, arm2 = _arms(pair, c)
     _drive_sense(arm1[ok], arm2[ok])  # the edge contacts push the same way

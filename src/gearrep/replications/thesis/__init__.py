@@ -135,6 +135,13 @@ SETTINGS = st.declare(
         ge=5,
         le=2001,
     ),
+    stress_loaded_positions=st.integer(
+        21,
+        "1",
+        "stress ratios, loaded reading (sec 4.2; gearrep.ltca): mesh positions per cycle of the loaded analysis",
+        ge=5,
+        le=2001,
+    ),
     bevel_n_starts=st.integer(
         1000, "1", "Tables 11-12 random starts per bevel pair (as in the thesis)", ge=10, le=100000
     ),
