@@ -34,11 +34,15 @@ from ._compliance import (
     STEEL,
     Material,
     ToothCompliance,
+    cantilever_plate_ratio,
     contact_half_width_mm,
+    half_space_segment_mm2_per_N,
     line_contact_pressure_MPa,
+    plate_kernel,
     weber_contact_approach_mm,
 )
 from ._distribution import ContactLoads, solve_contact_loads
+from ._families import SUPPORTED
 from ._separation import KINDS, Separations, face_nodes, initial_separations, section_contacts
 
 __all__ = [
@@ -49,6 +53,10 @@ __all__ = [
     "contact_half_width_mm",
     "line_contact_pressure_MPa",
     "weber_contact_approach_mm",
+    "half_space_segment_mm2_per_N",
+    "cantilever_plate_ratio",
+    "plate_kernel",
+    "SUPPORTED",
     "ContactLoads",
     "solve_contact_loads",
     "Separations",

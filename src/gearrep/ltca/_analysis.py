@@ -212,8 +212,10 @@ def _one_position(nodes: Nodes, rows, groups, gap, arm, moment, tol, maxiter, gu
     best = np.inf
     for it in range(1, maxiter + 1):
         c = nodes.compliance(rows, x, groups, block)
-        if not np.all(np.isfinite(c)):
-            raise ValueError("the nodes' compliance is not finite (a contact with no defined curvature or depth)")
+        if not np.all(np.isfinite(c)) or np.any((np.diag(c) if c.ndim == 2 else c) <= 0):
+            raise ValueError(
+                "the nodes' compliance is not finite and positive (a contact with no defined curvature or depth)"
+            )
         sol = solve_checked(c, gap, arm, moment, working=working)
         if sol.status != Status.CONVERGED:
             return sol, it, sol.status
@@ -242,7 +244,7 @@ def _one_position(nodes: Nodes, rows, groups, gap, arm, moment, tol, maxiter, gu
     return sol, it, status
 
 
-def _solve(pair, sep: Separations, nodes: Nodes, T, driving, tol, maxiter, guess_loads=None):
+def _solve(pair, sep: Separations, nodes: Nodes, T, driving, tol, maxiter):
     """Loads at every position of ``sep``; returns (loads (n_pos, n_pairs n_nodes), results dict,
     iterations, status)."""
     shape = sep.shape
@@ -266,10 +268,9 @@ def _solve(pair, sep: Separations, nodes: Nodes, T, driving, tol, maxiter, guess
             status[i] = int(Status.NOT_CONVERGED)  # a section expected on the flanks was not found
             continue
         rows = i * cand.size + rows_local
-        guess = None
-        if guess_loads is not None and np.any(guess_loads[i, rows_local] > 0):
-            guess = guess_loads[i, rows_local]
-        elif i and status[i - 1] == Status.CONVERGED and np.any(loads[i - 1, rows_local] > 0):
+        guess = None  # the previous position's loads, where its nodes are these (the same windows)
+        same = i and status[i - 1] == Status.CONVERGED and np.array_equal(sep.z_mm[i], sep.z_mm[i - 1])
+        if same and np.any(loads[i - 1, rows_local] > 0):
             guess = loads[i - 1, rows_local]
         sol, its[i], status[i] = _one_position(
             nodes,

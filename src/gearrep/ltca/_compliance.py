@@ -298,13 +298,16 @@ def cantilever_plate_ratio(q, nu: float) -> np.ndarray:
     0 <= y <= H: D (d^2/dy^2 - k^2)^2 w = 0, clamped at y = 0 (w = w_y = 0), free and loaded at
     y = H (M_y = -D (w_yy - nu k^2 w) = 0, V_y = -D (w_yyy - (2 - nu) k^2 w_y) = q). The general
     solution in the edge-decaying basis e^{-k (H - y)}, (H - y) e^{-k (H - y)}, e^{-k y}, y e^{-k y}
-    (no overflow for large k) gives w(H); this is the Fourier form of Jaramillo's concentrated load
+    (no overflow for large k; below q = 0.05, where it degenerates, the quadratic Taylor form) gives w(H); this is the Fourier form of Jaramillo's concentrated load
     on a cantilever plate of infinite length (J. Appl. Mech. 17 (1950) 67-72), applied to gear
     teeth by Wellauer & Seireg (J. Eng. Ind. 82 (1960) 213-222). R(0) = 1, R ~ 6 / ((1 - nu)(3 + nu) q^3)
     for large q."""
     q = np.atleast_1d(np.asarray(q, dtype=float))
     out = np.ones_like(q)
-    k = q[q > 0]
+    small = q < _Q_SMALL  # the basis degenerates as q -> 0: R is even in q, R = 1 + (R(q_s) - 1) (q/q_s)^2
+    if np.any(small):
+        out[small] = 1.0 + (cantilever_plate_ratio(np.array([_Q_SMALL]), nu)[0] - 1.0) * (q[small] / _Q_SMALL) ** 2
+    k = q[~small]
     if k.size == 0:
         return out
     kk = k[:, None]
@@ -331,8 +334,12 @@ def cantilever_plate_ratio(q, nu: float) -> np.ndarray:
     rhs = np.zeros((k.size, 4, 1))
     rhs[:, 3, 0] = -1.0
     c = np.linalg.solve(A, rhs)[..., 0]
-    out[q > 0] = 3.0 * np.sum(phi(1.0, 0) * c, axis=1)
+    out[~small] = 3.0 * np.sum(phi(1.0, 0) * c, axis=1)
     return out
+
+
+#: below this q the edge-decaying basis is ill-conditioned (R is then its quadratic Taylor form, error O(q^4))
+_Q_SMALL = 0.05
 
 
 _PLATE_TABLES: dict = {}

@@ -80,7 +80,8 @@ class Member:
     (base frame) of the tabulated transverse sections (one for a section that does not change
     along the face); r_table : radii of the tables; half_angle : (n_sections, n_r) tooth half
     angle; centre : (n_sections,) polar angle of the tooth centre line (base frame);
-    side : +1 or -1, the flank's side (for the sense of its polar angle)
+    twist : for a section the same along the face, the polar angle [rad] of its centre line at z
+        (the helix twist), a function of z; None: constant
     """
 
     flank: object
@@ -97,6 +98,7 @@ class Member:
     r_table: np.ndarray
     half_angle: np.ndarray
     centre: np.ndarray
+    twist: object = None
 
     @property
     def z_independent(self) -> bool:
@@ -106,8 +108,9 @@ class Member:
         """(half-angle tables (n, n_r), centre angles (n,)) at base-frame axial positions ``z_base``
         (linear interpolation between the tabulated sections)."""
         z = np.asarray(z_base, dtype=float)
-        if self.z_independent:
-            return np.broadcast_to(self.half_angle[0], z.shape + self.r_table.shape), np.full(z.shape, self.centre[0])
+        if self.z_independent:  # the same section, turned by the helix (twist) along the face
+            centre = self.centre[0] + (0.0 if self.twist is None else self.twist(z))
+            return np.broadcast_to(self.half_angle[0], z.shape + self.r_table.shape), np.broadcast_to(centre, z.shape)
         zs = self.sections
         j = np.clip(np.searchsorted(zs, z) - 1, 0, zs.size - 2)
         f = np.clip((z - zs[j]) / (zs[j + 1] - zs[j]), 0.0, 1.0)
@@ -172,6 +175,7 @@ def _involute_member(flank, n_r: int) -> Member:
         r,
         theta[None, :],
         np.zeros(1),
+        lambda z: flank.twist(np.asarray(z, dtype=float))[0],
     )
 
 

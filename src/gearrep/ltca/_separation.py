@@ -524,7 +524,8 @@ def initial_separations(
         start[kept] = np.nan
         xr, sr = _solve_kind(pair, m1, m2, _INTERIOR, phi_eff[redo], Z.ravel()[redo], start[redo], tol, 30, v1_is_z)
         x[redo], st[redo] = xr, sr
-    c, kind, sense = _first_touch(pair, m1, m2, phi_eff, Z.ravel(), start, tol, 30, interior=(x, st))
+    given = None if previous is None else previous.sense  # the rows solved again may all be at edges
+    c, kind, sense = _first_touch(pair, m1, m2, phi_eff, Z.ravel(), start, tol, 30, given, interior=(x, st))
     at_face2 = np.zeros(shape, dtype=bool)
     at_face2[..., 0], at_face2[..., -1] = moved[..., 0], moved[..., 1]
     kind = np.where(at_face2.ravel() & (kind == _INTERIOR), _FACE2[0], kind)
