@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from test_tca import C1, helical_pair, spur_pair
 
+from gearrep.ellipse import effective_modulus
 from gearrep.ltca import (
     STEEL,
     SUPPORTED,
@@ -24,7 +25,6 @@ from gearrep.ltca import (
     weber_contact_approach_mm,
 )
 from gearrep.ltca._compliance import HERTZ_STRIP_OFFSET, contact_half_width_mm
-from gearrep.ellipse import effective_modulus
 from gearrep.replications.ltca.checks import PRESSURE_RTOL
 from gearrep.solve import Status
 from gearrep.surfaces.catt import assemble
