@@ -62,10 +62,8 @@ def _job(fn, *names, priority=0):
 
 
 JOBS = {
-    "iso_pressure": _job(_studies.iso_pressure, "iso_pressure"),
-    "iso_stiffness": _job(_studies.iso_stiffness, "iso_stiffness", "stiffness_terms", priority=5),
-    "properties": _job(_studies.properties, "balance", "limits", priority=3),
-    "convergence": _job(_studies.convergence, "convergence", priority=3),
+    "iso": _job(_studies.iso, "iso_pressure", "iso_stiffness", "stiffness_terms", priority=5),
+    "properties": _job(_studies.properties, "balance", "limits", "convergence", priority=5),
     "cycle": _job(_studies.cycle, "cycle", "pressure_map", priority=3),
 }
 

@@ -27,8 +27,9 @@ def _err(res, ref) -> float:
 
 def bench_cases(settings: dict, design: Design) -> dict:
     """``nodes``: knob n_nodes over one cycle of the README pair; error of :func:`_err`; target
-    a tenth of the 1 % grid-convergence criterion of the validation. ``items`` = positions, so that
-    the sweep reports the time per position too."""
+    the 1 % accuracy the loaded analysis is declared to hold (the validation's grid-convergence
+    criterion; no published tolerance applies). ``items`` = positions, so that the sweep reports the
+    time per position too."""
     pair = readme_pair(design)
     phi = ltca.cycle_positions(pair, BENCH_POSITIONS)
 
@@ -42,7 +43,7 @@ def bench_cases(settings: dict, design: Design) -> dict:
             "reference": {"n_nodes": 161},
             "error": _err,
             "error_unit": "1 (relative)",
-            "error_target": 1e-3,
+            "error_target": 1e-2,
             "current": {"n_nodes": settings["n_nodes"]},
             "items": BENCH_POSITIONS,
         }

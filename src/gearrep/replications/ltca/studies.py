@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ... import ltca
-from ...ltca import iso
+from ...ltca import iso as iso6336
 from ...meshing import contact_ratio_closed_form
 from ...tca import contact_hertz, solve_contact
 from .design import (
@@ -27,7 +27,7 @@ from .design import (
     symmetric_pair,
 )
 
-__all__ = ["iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
+__all__ = ["iso", "iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
 
 #: nominal tangential load per face width of the ISO comparisons [N/mm] (ISO 6336-1 states c' for
 #: F_t K_A / b >= 100 N/mm)
@@ -50,6 +50,12 @@ def _pitch(pair) -> np.ndarray:
     return ltca.cycle_positions(pair, 3)[[1]]
 
 
+def iso(s: dict, design: Design) -> dict:
+    """Job ``iso``: the comparisons with ISO 6336's closed forms (:func:`iso_pressure`,
+    :func:`iso_stiffness`)."""
+    return iso_pressure(s, design) | iso_stiffness(s, design)
+
+
 def iso_pressure(s: dict, design: Design) -> dict:
     """Pitch-point Hertz pressure of unmodified spur pairs with one tooth pair carrying the load,
     against ISO 6336-2's sigma_H0 (Z_eps = Z_beta = 1); beside it the pressure with every tooth
@@ -62,8 +68,13 @@ def iso_pressure(s: dict, design: Design) -> dict:
         one = ltca.loaded_contact(pair, T, _pitch(pair), pairs=[0], **_kw(s))
         every = ltca.loaded_contact(pair, T, _pitch(pair), **_kw(s))
         Ft = 1000.0 * T / g1.r_p
-        ref = iso.pitch_point_stress_MPa(
-            Ft, 2.0 * g1.r_p, g1.face_width, z2 / z1, iso.zone_factor(g1.alpha_t), iso.elasticity_factor(206000.0, 0.3)
+        ref = iso6336.pitch_point_stress_MPa(
+            Ft,
+            2.0 * g1.r_p,
+            g1.face_width,
+            z2 / z1,
+            iso6336.zone_factor(g1.alpha_t),
+            iso6336.elasticity_factor(206000.0, 0.3),
         )
         rows.append(
             _design_row(z1, z2, m, g1, T)
@@ -110,8 +121,8 @@ def iso_stiffness(s: dict, design: Design) -> dict:
         cyc = ltca.loaded_contact(pair, T, ltca.cycle_positions(pair, int(s["n_positions"])), **_kw(s))
         summ = cyc.summary()
         eps = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, pair.centre_distance, g1.base_pitch))
-        c_th = iso.single_stiffness_theoretical(z1, z2)
-        c_ga = iso.mesh_stiffness_c_gamma_alpha(c_th, eps)
+        c_th = iso6336.single_stiffness_theoretical(z1, z2)
+        c_ga = iso6336.mesh_stiffness_c_gamma_alpha(c_th, eps)
         rows.append(
             _design_row(z1, z2, m, g1, T)
             | dict(
@@ -164,8 +175,9 @@ def _balance(name, r, normal_N=None) -> dict:
 
 
 def properties(s: dict, design: Design) -> dict:
-    """Load balance of every converged position (spur, crowned and misaligned, helical, CATT),
-    symmetry of an equal pair, the unloaded limit and the rigid-tooth (Hertz) limit."""
+    """Job ``properties``: load balance of every converged position (spur, crowned and misaligned,
+    helical, CATT), symmetry of an equal pair, the unloaded limit, the rigid-tooth (Hertz) limit and
+    the grid convergence (:func:`convergence`)."""
     kw = _kw(s)
     n = int(s["n_positions"])
     rows = []
@@ -196,7 +208,7 @@ def properties(s: dict, design: Design) -> dict:
     rows.append(_balance("catt_sec4_B", r))
     out = {"balance": pd.DataFrame(rows)}
     out["limits"] = pd.DataFrame([_symmetry(kw), *_unloaded(crowned, kw), _hertz_limit(design, kw)])
-    return out
+    return out | convergence(s, design)
 
 
 def _symmetry(kw) -> dict:
