@@ -295,6 +295,15 @@ def _solve(pair, sep: Separations, nodes: Nodes, T, driving, tol, maxiter):
 
 #: a loaded span narrower than this fraction of the face is solved again on nodes over it
 REFINE_BELOW = 0.7
+#: a node counts as loaded for the node placement above this fraction of its position's largest
+#: node load (a load at rounding level must not move the nodes from one machine to another)
+LOADED_RTOL = 1e-9
+
+
+def _loaded(L, status):
+    """(n_pos, n_pairs, n_nodes) mask of the nodes loaded above LOADED_RTOL at converged positions."""
+    top = np.max(np.where(np.isfinite(L), L, 0.0), axis=(1, 2), keepdims=True)
+    return (L > LOADED_RTOL * top) & (status == Status.CONVERGED)[:, None, None]
 
 
 def _windows(sep: Separations, loads, status, m1):
@@ -303,8 +312,7 @@ def _windows(sep: Separations, loads, status, m1):
     face, the present node range elsewhere; and that mask of narrow windows."""
     lo, hi = m1.z_lo, m1.z_hi
     shape = sep.shape
-    L = loads.reshape(shape)
-    loaded = (L > 0) & (status == Status.CONVERGED)[:, None, None]
+    loaded = _loaded(loads.reshape(shape), status)
     z = sep.z_mm
     step = np.diff(z, axis=-1)[..., :1]
     with np.errstate(invalid="ignore"):
@@ -319,12 +327,11 @@ def _windows(sep: Separations, loads, status, m1):
 def _reaches_window_end(sep: Separations, loads, status, m1):
     """True where a tooth pair's load reaches a window end that is not a face end (the window was
     too narrow)."""
-    L = loads.reshape(sep.shape)
-    ok = (status == Status.CONVERGED)[:, None]
+    loaded = _loaded(loads.reshape(sep.shape), status)
     z = sep.z_mm
     inner_lo = z[..., 0] > m1.z_lo + 1e-9 * (m1.z_hi - m1.z_lo)
     inner_hi = z[..., -1] < m1.z_hi - 1e-9 * (m1.z_hi - m1.z_lo)
-    return ok & (((L[..., 0] > 0) & inner_lo) | ((L[..., -1] > 0) & inner_hi))
+    return (loaded[..., 0] & inner_lo) | (loaded[..., -1] & inner_hi)
 
 
 def loaded_contact(

@@ -1,5 +1,6 @@
-"""Materials, tooth compliance (Weber-Banaschek beam and Sainsot fillet foundation) and the Hertz
-line-contact approach and pressure.
+"""Materials, tooth compliance (Weber-Banaschek beam and Sainsot fillet foundation), the Hertz
+line-contact approach and pressure, and the kernels that couple the nodes along the face (the
+Boussinesq half-space relative to depth, the cantilever plate).
 
 Sources
 -------
@@ -10,15 +11,21 @@ Sources
 * P. Sainsot, P. Velex, O. Duverger, "Contribution of gear body to tooth deflections - a new
   bidimensional analytical formula", J. Mech. Design 126 (2004) 748-752: the fillet-foundation
   deflection (the fit of its Table 1, coefficients below).
-* K. L. Johnson, "Contact Mechanics", CUP 1985, sect. 4.3 and 5.2: line contact half-width and
-  maximum pressure (also :func:`gearrep.ellipse.hertz_line_max_pressure_MPa`).
+* K. L. Johnson, "Contact Mechanics", CUP 1985, sect. 3.2, 4.3 and 5.2: Boussinesq's point load,
+  line contact half-width and maximum pressure (also :func:`gearrep.ellipse.hertz_line_max_pressure_MPa`).
+* T. J. Jaramillo, "Deflections and moments due to a concentrated load on a cantilever plate of
+  infinite length", J. Appl. Mech. 17 (1950) 67-72; L. E. Wellauer, A. Seireg, "Bending strength of
+  gear teeth by cantilever-plate theory", J. Eng. Ind. 82 (1960) 213-222: the cantilever plate of
+  :func:`cantilever_plate_ratio`.
 
 Model (per unit length of contact line, plane strain; load F along the profile normal)
 -----------------------------------------------------------------------------------------
-The tooth section is read from the flank surface itself: the half tooth angle theta(u) at radius u
-is the flank's polar angle at mid-face (the tooth is symmetric about its x axis), continued
-radially below the base circle down to the root circle (the root fillet is not modelled). The
-centre line is the x axis; y = u cos(theta) runs along it and x(y) = u sin(theta) is the half
+The tooth section is read from the flank surface itself (:mod:`gearrep.ltca._families`): the half
+tooth angle theta(u) at radius u about the section's centre line (an involute flank's polar angle at
+mid-face, its centre line turned by the helix along the face; a CATT tooth's half thickness between
+its convex and concave flanks in each section), continued radially below the lowest point of the
+working profile down to the root circle (the root fillet is not modelled). The centre line is the x
+axis of the section; y = u cos(theta) runs along it and x(y) = u sin(theta) is the half
 thickness. At a contact radius r_c with half angle theta_c and transverse outward normal n, the
 load angle alpha_F (between the load line and the normal to the centre line) has
 cos(alpha_F) = |n_y| / |n_t|; the load line meets the centre line at y_F = r_c cos(theta_c) -
@@ -38,7 +45,8 @@ Contact approach of the two flanks under the load w per unit length (Weber):
 b_H = sqrt(4 w / (pi E* k)) the Hertz half-width, k the relative curvature across the contact line,
 h_i the distance from the contact point to member i's tooth centre line along the load line.
 The approach is non-linear in w (logarithmic); the load distribution solves it by fixed-point
-iteration on the secant compliance (:mod:`gearrep.ltca._analysis`).
+iteration on the secant compliance (:mod:`gearrep.ltca._analysis`). With the nodes coupled
+(:mod:`gearrep.ltca._nodes`) it is the plane limit of :func:`half_space_segment_mm2_per_N`.
 """
 
 from __future__ import annotations
