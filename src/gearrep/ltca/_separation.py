@@ -458,6 +458,43 @@ def _merge(mask, a: ContactPoints, b: ContactPoints) -> ContactPoints:
     return ContactPoints(**fields, formulation=a.formulation)
 
 
+def _place(pair, m1: Member, m2: Member, phi_eff, n_nodes, windows, margin):
+    """Nodes (Z, W) over the windows, the family's starts of their section contacts (NaN far from
+    the flanks: not solved) and which are expected on the flanks."""
+    Z, W = face_nodes(m1, n_nodes, windows)
+    start, r1, r2 = section_starts(pair, m1, m2, phi_eff, Z.ravel())
+    with np.errstate(invalid="ignore"):
+        near = np.ones(phi_eff.size, dtype=bool)
+        for r, m in ((r1, m1), (r2, m2)):
+            span = m.r_tip - m.r_form
+            near &= (r >= m.r_form - 0.5 * span) & (r <= m.r_tip + 0.5 * span)
+    start[~near] = np.nan  # far from the flanks: out of mesh, not solved
+    expected = near & m1.inside(start[:, 0], start[:, 1], margin) & m2.inside(start[:, 2], start[:, 3], margin)
+    return Z, W, start, expected
+
+
+def _geometry(pair, c: ContactPoints, kind, W, shape, sense, r_edge):
+    """TE, rigid TE, separations, arms, curvature across, across direction and line length of the
+    first touches ``c`` (flattened rows of ``shape``)."""
+    ok = c.status == Status.CONVERGED
+    arm1, arm2 = _arms(pair, c)
+    _drive_sense(arm1[ok], arm2[ok])  # the edge contacts push the same way
+    te = np.where(ok, c.te, np.nan).reshape(shape)
+    with np.errstate(invalid="ignore"):
+        te_rigid = sense * np.nanmax(np.where(ok.reshape(shape), sense * te, -np.inf), axis=(1, 2))
+    te_rigid = np.where(np.isfinite(te_rigid), te_rigid, np.nan)
+    gap = (te_rigid[:, None, None] - te) * arm2.reshape(shape)
+    k_rel = np.full(len(c), np.nan)
+    across = np.full((len(c), 3), np.nan)
+    length = np.full(len(c), np.nan)
+    if np.any(ok):
+        k_rel[ok], across[ok] = _across(pair, c.take(ok), kind[ok], r_edge)
+        line = np.cross(c.normal[ok], across[ok])
+        line /= np.linalg.norm(line, axis=1, keepdims=True)
+        length[ok] = W.ravel()[ok] / np.abs(line[:, 2])
+    return te, te_rigid, gap, arm1, arm2, k_rel, across, length
+
+
 def initial_separations(
     pair: GearPair,
     phi1,
@@ -498,16 +535,7 @@ def initial_separations(
     v1_is_z = m1.family == "involute"
 
     def place(win):
-        Z, W = face_nodes(m1, n_nodes, win)
-        start, r1, r2 = section_starts(pair, m1, m2, phi_eff, Z.ravel())
-        with np.errstate(invalid="ignore"):
-            near = np.ones(phi_eff.size, dtype=bool)
-            for r, m in ((r1, m1), (r2, m2)):
-                span = m.r_tip - m.r_form
-                near &= (r >= m.r_form - 0.5 * span) & (r <= m.r_tip + 0.5 * span)
-        start[~near] = np.nan  # far from the flanks: out of mesh, not solved
-        expected = near & m1.inside(start[:, 0], start[:, 1], margin) & m2.inside(start[:, 2], start[:, 3], margin)
-        return Z, W, start, expected
+        return _place(pair, m1, m2, phi_eff, n_nodes, win, margin)
 
     Z, W, start, expected = place(face)
     kept = np.zeros(phi_eff.size, dtype=bool)
@@ -534,21 +562,7 @@ def initial_separations(
         kind = np.where(kept, previous.kind.ravel(), kind)
         expected = np.where(kept, previous.expected.ravel(), expected)
     ok = c.status == Status.CONVERGED
-    arm1, arm2 = _arms(pair, c)
-    _drive_sense(arm1[ok], arm2[ok])  # the edge contacts push the same way
-    te = np.where(ok, c.te, np.nan).reshape(shape)
-    with np.errstate(invalid="ignore"):
-        te_rigid = sense * np.nanmax(np.where(ok.reshape(shape), sense * te, -np.inf), axis=(1, 2))
-    te_rigid = np.where(np.isfinite(te_rigid), te_rigid, np.nan)
-    gap = (te_rigid[:, None, None] - te) * arm2.reshape(shape)
-    k_rel = np.full(len(c), np.nan)
-    across = np.full((len(c), 3), np.nan)
-    length = np.full(len(c), np.nan)
-    if np.any(ok):
-        k_rel[ok], across[ok] = _across(pair, c.take(ok), kind[ok], r_edge)
-        line = np.cross(c.normal[ok], across[ok])
-        line /= np.linalg.norm(line, axis=1, keepdims=True)
-        length[ok] = W.ravel()[ok] / np.abs(line[:, 2])
+    te, te_rigid, gap, arm1, arm2, k_rel, across, length = _geometry(pair, c, kind, W, shape, sense, r_edge)
     return Separations(
         phi1_rad=phi1,
         pairs=pairs,

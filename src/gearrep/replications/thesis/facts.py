@@ -342,6 +342,19 @@ def _te_facts(tables: dict) -> dict:
     return f
 
 
+def _loaded_note(r, same_loaded) -> str:
+    """The loaded reading's numbers in a stress-ratio note (the row ``r`` of the stress table)."""
+    return (
+        f"loaded reading (gearrep.ltca, the value compared): the largest flank pressure over a meshing cycle "
+        f"{r.p_max_loaded_MPa:.0f} MPa under {r.torque_loaded_Nm:.4g} N m shared by up to {r.pairs_loaded_max} "
+        f"tooth pairs (tip edges loaded at {r.tip_edge_positions_loaded} of {int(r.loaded_positions)} positions) over "
+        f"the aligned unmodified pair's {r.p0_loaded_MPa:.0f} MPa under the same torque: SR "
+        f"{r.stress_ratio_loaded:.4f}; loaded SR at this angle: "
+        + ", ".join(f"{k} {x:.4f}" for k, x in same_loaded.items())
+        + f". Hertz reading (one contact carries 200 N): SR {r.stress_ratio:.4f}; "
+    )
+
+
 def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
     """Sec 4.2 stress ratios (Fig 29) from the ``stress`` table (:mod:`.stress`): row-1 amounts,
     the loaded reading (largest flank pressure of the loaded cycle over the aligned pair's), the
@@ -394,19 +407,9 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
             else ""
         )
         angle_only = pmax(lo_ang, r.crown_kind) / pmax(0.05, r.crown_kind) - 1 if lo_ang < 0.05 else np.nan
-        loaded_txt = (
-            f"loaded reading (gearrep.ltca, the value compared): the largest flank pressure over a meshing cycle "
-            f"{r.p_max_loaded_MPa:.0f} MPa under {r.torque_loaded_Nm:.4g} N m shared by up to {r.pairs_loaded_max} "
-            f"tooth pairs (tip edges loaded at {r.tip_edge_positions_loaded} of {int(r.loaded_positions)} positions) over "
-            f"the aligned unmodified pair's {r.p0_loaded_MPa:.0f} MPa under the same torque: SR "
-            f"{r.stress_ratio_loaded:.4f}; loaded SR at this angle: "
-            + ", ".join(f"{k} {x:.4f}" for k, x in same_loaded.items())
-            + ". Hertz reading (one contact carries 200 N): SR "
-            f"{r.stress_ratio:.4f}; "
-        )
         f[key] = dict(
             value=float(r.stress_ratio_loaded),
-            note=loaded_txt
+            note=_loaded_note(r, same_loaded)
             + (
                 f"Hertz p_max along the path {r.p_max_MPa:.0f} MPa ({r.crown_kind} crown {r.crown_amount:g} from "
                 f"{r.amount_source}, log a2 {r.log_a2:g}; out-of-plane {r.misalignment_deg:g} deg; 200 N on one contact, "
