@@ -39,6 +39,8 @@ from .published import printed_precision
 from .units import TO_INTERNAL
 
 __all__ = [
+    "VALIDATION",
+    "compare_reference",
     "STATUSES",
     "RESULT_STATUSES",
     "INPUT_STATUSES",
@@ -58,6 +60,10 @@ __all__ = [
     "scorecard",
     "summary",
 ]
+
+#: the ``seed`` of a validation study's records: computed against a closed form or a property of the
+#: model, not against a printed number of a paper (no scorecard row of it comes from data/published)
+VALIDATION = "validation"
 
 #: statuses of a result (computed against published, or not computed)
 RESULT_STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
@@ -206,6 +212,60 @@ def claim_verdict(confirm: bool, refute: bool, evidence: str) -> tuple[bool, str
     return bool(confirm), evidence + tail
 
 
+def compare_reference(
+    id: str,
+    source: str,
+    row: str,
+    quantity: str,
+    unit: str,
+    reference: float,
+    computed: float,
+    tolerance: float,
+    basis: str,
+    note: str = "",
+) -> dict:
+    """Check record of a validation study (seed :data:`VALIDATION`): ``computed`` against a
+    ``reference`` that is no printed number (a closed form, an exact property, another solution of
+    the same problem) within ``tolerance`` (absolute, in ``unit``), whose ``basis`` states its
+    physical or numerical reason. ``reproduced`` when |computed - reference| <= tolerance, else
+    ``deviates``; a non-finite computed value deviates."""
+    if not basis:
+        raise ValueError("a validation tolerance needs its stated basis")
+    tol = float(tolerance)
+    if not (np.isfinite(tol) and tol >= 0):
+        raise ValueError(f"tolerance must be a finite number >= 0, got {tolerance!r}")
+    ref = float(reference)
+    rec = dict(
+        id=id,
+        seed=VALIDATION,
+        source=source,
+        row=row,
+        quantity=quantity,
+        unit=unit,
+        published=ref,
+        tolerance=tol,
+        tolerance_basis=basis,
+        note=note,
+    )
+    if computed is None or not np.isfinite(computed):
+        return rec | dict(
+            computed=np.nan,
+            abs_err=np.nan,
+            rel_err=np.nan,
+            status="deviates",
+            note=(note + "; " if note else "") + "computation returned no finite value",
+        )
+    c = float(computed)
+    err = c - ref
+    ok = abs(err) <= tol * (1.0 + _FP_SLACK)
+    return rec | dict(
+        computed=c,
+        abs_err=err,
+        rel_err=err / abs(ref) if ref != 0 else np.nan,
+        status="reproduced" if ok else "deviates",
+    )
+
+
 def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
     """Check record for a claim row, with the numbers behind the verdict in ``evidence``."""
     if not evidence:
@@ -278,18 +338,24 @@ def validate_checks(checks: pd.DataFrame) -> pd.DataFrame:
         raise ValueError(f"unknown statuses {bad}; allowed {STATUSES}")
     if checks["id"].duplicated().any():
         raise ValueError(f"duplicate check ids: {sorted(set(checks['id'][checks['id'].duplicated()]))[:10]}")
-    bad_seed = [s for s in checks["seed"].unique() if not (isinstance(s, str) and len(s) == 3 and s.isdigit())]
+    bad_seed = [
+        s
+        for s in checks["seed"].unique()
+        if not (isinstance(s, str) and (s == VALIDATION or (len(s) == 3 and s.isdigit())))
+    ]
     if bad_seed:
         raise ValueError(
-            f"seed must be a three-digit string such as '003', got {bad_seed[:5]} "
-            "(read check CSVs with dtype=checks.TEXT_COLUMNS)"
+            f"seed must be a three-digit string such as '003' (or {VALIDATION!r} for a validation study), "
+            f"got {bad_seed[:5]} (read check CSVs with dtype=checks.TEXT_COLUMNS)"
         )
     return checks
 
 
 def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claims: pd.DataFrame) -> pd.DataFrame:
     """One row per published value and claim: the replication's check where there is one,
-    ``not-computed`` otherwise. ``check_tables`` maps replication name -> check table."""
+    ``not-computed`` otherwise, then the records of the validation studies (seed :data:`VALIDATION`,
+    whose ids are their own, none of them a published id). ``check_tables`` maps replication name
+    -> check table."""
     frames = []
     for name, tab in check_tables.items():
         tab = validate_checks(tab).copy()
@@ -299,9 +365,13 @@ def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claim
     if done["id"].duplicated().any():
         raise ValueError(f"ids checked by two replications: {sorted(set(done['id'][done['id'].duplicated()]))[:10]}")
     known = set(values["id"]) | set(claims["id"])
-    stray = sorted(set(done["id"]) - known)
+    own = done["seed"] == VALIDATION
+    stray = sorted(set(done.loc[~own, "id"]) - known)
     if stray:
         raise ValueError(f"check ids not in the published data: {stray[:10]}")
+    taken = sorted(set(done.loc[own, "id"]) & known)
+    if taken:
+        raise ValueError(f"validation records use published ids: {taken[:10]}")
     reason = "no replication has computed this yet"
     rest_v = values[~values["id"].isin(done["id"])]
     rest_c = claims[~claims["id"].isin(done["id"])]

@@ -4,7 +4,8 @@
 
 # The parity plots of one paper (seed), drawn as soon as the checks of its studies exist, so that
 # the report job at the end of a run only assembles the page.
-PARITY_SEEDS = sorted({study.seed for study in REGISTRY.values()})
+# (a validation study is no paper: its records have no parity plots)
+PARITY_SEEDS = sorted({study.seed for study in REGISTRY.values() if not study.validation})
 #: the check files of each seed's studies
 SEED_CHECKS = {
     seed: [

@@ -5,7 +5,9 @@ The study's package defines ``bench_cases(settings, design) -> dict[case, dict]`
 setting, computed in the same run), ``error`` ((result, reference_result) -> float, in
 ``error_unit``), ``error_unit`` and optionally ``error_target`` (e.g. a tenth of the tightest
 published tolerance; the default is then the fastest setting meeting it) and ``current`` (the
-setting in config/config.yaml). Writes the sweep table, one figure and the chosen defaults.
+setting in config/config.yaml) and ``items`` (what one run computes, e.g. mesh positions: the
+sweep then reports the time per item too). Writes the sweep table, one figure and the chosen
+defaults.
 """
 
 from pathlib import Path
@@ -38,6 +40,9 @@ for case, c in cases.items():
     sw["knee"] = np.arange(len(sw)) == k
     sw.insert(0, "case", case)
     sw["error_unit"] = c["error_unit"]
+    if "items" in c:
+        sw["items"] = int(c["items"])
+        sw["time_per_item_s"] = sw["time_s"] / int(c["items"])
     frames.append(sw)
     row = sw.iloc[k]
     chosen.append(

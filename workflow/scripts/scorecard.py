@@ -5,6 +5,7 @@ from pathlib import Path
 import pandas as pd
 
 from gearrep import checks, published
+from gearrep.replications import REGISTRY
 
 smk = snakemake  # noqa: F821  (provided by Snakemake)
 
@@ -15,10 +16,12 @@ tables = {
     for f in smk.input.checks
 }
 card = checks.scorecard(tables, pub.values, pub.claims)
-card["paper"] = card["seed"].map(published.PAPERS)
+# the paper of each row; a validation study's rows carry the study's title
+titles = {s.key: s.document for s in REGISTRY.values() if s.validation}
+card["paper"] = card["seed"].map(published.PAPERS).fillna(card["replication"].map(titles))
 # every published value and claim of the manifest has its row: nothing dropped silently
 expected = published.scored_rows_per_seed(published.verify_manifest(data_dir))
-got = card.groupby("seed").size().to_dict()
+got = card[card["seed"] != checks.VALIDATION].groupby("seed").size().to_dict()
 if {s: n for s, n in expected.items() if n} != got:
     raise RuntimeError(f"scorecard rows per seed {got} differ from the manifest's {expected} ({smk.input.manifest})")
 
@@ -34,7 +37,7 @@ def md_table(df: pd.DataFrame) -> str:
 
 is_result = card["status"].isin(checks.RESULT_STATUSES)
 by_paper = checks.summary(card, by=("seed",))
-by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS))
+by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS).fillna("validation of the library (not a paper)"))
 by_source = checks.summary(card, by=("seed", "source"))
 rows = card[
     [

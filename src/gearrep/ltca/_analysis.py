@@ -8,14 +8,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..ellipse import effective_modulus
 from ..inputs import check_finite, check_integer
 from ..solve import Status
 from ..tca import GearPair
 from . import _compliance as compliance
 from ._compliance import STEEL, Material
-from ._distribution import solve_contact_loads
-from ._separation import Separations, initial_separations
+from ._distribution import solve_checked
+from ._families import members, pitch_phi1
+from ._nodes import Nodes
+from ._separation import EDGE_KINDS, Separations, initial_separations
 
 __all__ = ["LoadedContact", "CycleSummary", "PressureMap", "cycle_positions", "loaded_contact"]
 
@@ -27,29 +28,34 @@ def cycle_positions(pair: GearPair, n_positions: int = 41) -> np.ndarray:
     centred on the position where tooth pair 0's mid-face section is at the pitch point (the middle
     position for odd ``n_positions``)."""
     n = check_integer("n_positions", n_positions, 2)
-    side = getattr(pair.flank1, "side", 1)
-    tw = float(np.asarray(pair.flank1.twist(np.zeros(1))[0])[0]) if hasattr(pair.flank1, "twist") else 0.0
-    pitch = -side * np.pi / (2 * pair.n1) - tw
-    return pitch + (2.0 * np.pi / pair.n1) * np.linspace(-0.5, 0.5, n)
+    m1, _ = members(pair)
+    return pitch_phi1(pair, m1) + (2.0 * np.pi / pair.n1) * np.linspace(-0.5, 0.5, n)
 
 
 @dataclass(frozen=True)
 class PressureMap:
-    """Hertz pressure over the contact strips of one position: ``pressure_MPa`` (n_pairs, n_slices,
-    n_across) at face coordinates ``v1_mm`` (n_slices,) and offsets ``across_mm`` (n_across,) across
-    the contact line from the section contact point at radius ``u1_mm`` (n_pairs, n_slices) of
-    member 1 (NaN where the strip is not a candidate contact)."""
+    """Hertz pressure over the contact nodes of one position: ``pressure_MPa`` (n_pairs, n_nodes,
+    n_across) at the nodes' axial positions ``z_mm`` (n_pairs, n_nodes) and offsets ``across_mm``
+    (n_across,) across the contact line from each node's contact point ``position_mm`` (n_pairs,
+    n_nodes, 3; fixed frame), whose across direction is ``across`` (n_pairs, n_nodes, 3); ``kind``
+    the node's contact kind (:data:`gearrep.ltca.KINDS`, 0 none; NaN pressure there)."""
 
     pairs: np.ndarray
-    v1_mm: np.ndarray
+    z_mm: np.ndarray
     across_mm: np.ndarray
-    u1_mm: np.ndarray
+    position_mm: np.ndarray
+    across: np.ndarray
+    kind: np.ndarray
     pressure_MPa: np.ndarray
 
 
 @dataclass(frozen=True)
 class CycleSummary:
-    """One row of cycle results (units in the names); ``n_failed``: positions not converged."""
+    """One row of cycle results (units in the names); ``n_failed``: positions not converged;
+    ``max_contact_pressure_MPa``: on the flanks (tip edges apart); ``tip_edge_*``: positions where
+    a tip edge carries load, the largest share of the normal load it carries and its Hertz pressure
+    (for the stated edge radius); ``face_end_contact_positions``: positions where the load reaches
+    a face end (of member 1, or member 2's inside member 1's face)."""
 
     torque_Nm: float
     normal_load_N: float
@@ -60,6 +66,10 @@ class CycleSummary:
     max_contact_pressure_MPa: float
     load_share_max: float
     load_share_min: float
+    tip_edge_contact_positions: int
+    tip_edge_load_share_max: float
+    max_tip_edge_pressure_MPa: float
+    face_end_contact_positions: int
     n_positions: int
     n_failed: int
 
@@ -70,12 +80,16 @@ class LoadedContact:
 
     phi1_rad; te_unloaded_rad (rigid TCA); te_loaded_rad; lte_urad, lte_um (loaded TE in micro-radians
     of member 2 and in micrometres along the transverse line of action, r_b2 TE); normal_load_N (sum of
-    the loads); pair_load_N (n_pos, n_pairs) per tooth pair; pairs_loaded; max_pressure_MPa;
+    the loads); pair_load_N (n_pos, n_pairs) per tooth pair; pairs_loaded; max_pressure_MPa (on
+    the flanks, tip edges apart); tip_edge_load_N and tip_edge_pressure_MPa (load carried at tip
+    edges and its largest Hertz pressure for the edge radius ``separations.edge_radius_mm``; a sharp
+    edge has none); face_end_load_N (load carried by nodes at a face end);
     mesh_stiffness_N_per_um (transverse base tangential force / elastic transverse approach r_b2
     (TE_unloaded - TE_loaded)) and per face width ``_N_per_mm_um``; moment_residual (relative torque
     balance); iterations (fixed-point iterations); status (:class:`gearrep.solve.Status`; NaN results
-    where not CONVERGED). Per strip (n_pos, n_pairs, n_slices): slice_load_N, pressure_MPa (peak),
-    half_width_mm. ``separations`` holds the geometry (:class:`Separations`).
+    where not CONVERGED). Per node (n_pos, n_pairs, n_nodes): node_load_N, pressure_MPa (peak of
+    the Hertz strip), half_width_mm. ``separations`` holds the geometry of the last refinement
+    (:class:`Separations`); ``passes`` the number of node placements (1 + refinements).
     """
 
     torque_Nm: float
@@ -91,14 +105,18 @@ class LoadedContact:
     pair_load_N: np.ndarray
     pairs_loaded: np.ndarray
     max_pressure_MPa: np.ndarray
+    tip_edge_load_N: np.ndarray
+    tip_edge_pressure_MPa: np.ndarray
+    face_end_load_N: np.ndarray
     mesh_stiffness_N_per_um: np.ndarray
     mesh_stiffness_N_per_mm_um: np.ndarray
     moment_residual: np.ndarray
     iterations: np.ndarray
     status: np.ndarray
-    slice_load_N: np.ndarray
+    node_load_N: np.ndarray
     pressure_MPa: np.ndarray
     half_width_mm: np.ndarray
+    passes: int
 
     @property
     def converged(self) -> np.ndarray:
@@ -113,7 +131,9 @@ class LoadedContact:
             a = np.asarray(a)[ok]
             return float(f(a)) if a.size else nan
 
-        share = self.pair_load_N / self.normal_load_N[:, None]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            share = self.pair_load_N / self.normal_load_N[:, None]
+            edge_share = self.tip_edge_load_N / self.normal_load_N
         single = ok & (self.pairs_loaded == 1)
         return CycleSummary(
             torque_Nm=self.torque_Nm,
@@ -127,12 +147,16 @@ class LoadedContact:
             max_contact_pressure_MPa=ext(self.max_pressure_MPa, np.max),
             load_share_max=ext(np.max(share, axis=1), np.max),
             load_share_min=ext(np.max(share, axis=1), np.min),
+            tip_edge_contact_positions=int(np.sum(ok & (self.tip_edge_load_N > 0))),
+            tip_edge_load_share_max=ext(edge_share, np.max),
+            max_tip_edge_pressure_MPa=ext(np.nan_to_num(self.tip_edge_pressure_MPa), np.max),
+            face_end_contact_positions=int(np.sum(ok & (self.face_end_load_N > 0))),
             n_positions=int(ok.size),
             n_failed=int(np.sum(~ok)),
         )
 
     def pressure_map(self, position: int, n_across: int = 21) -> PressureMap:
-        """Semi-elliptic Hertz pressure across every loaded strip of position ``position`` (index)."""
+        """Semi-elliptic Hertz pressure across every loaded node of position ``position`` (index)."""
         i = int(position)
         n = check_integer("n_across", n_across, 3)
         b = self.half_width_mm[i]
@@ -141,14 +165,13 @@ class LoadedContact:
         with np.errstate(invalid="ignore", divide="ignore"):
             q = 1.0 - (x / b[..., None]) ** 2
             p = np.where(q > 0, self.pressure_MPa[i][..., None] * np.sqrt(np.maximum(q, 0.0)), 0.0)
-        p = np.where(self.separations.in_contact[i][..., None], p, np.nan)
-        u1 = self.separations.contacts.u1.reshape(self.separations.shape)[i]
-        return PressureMap(
-            self.separations.pairs, self.separations.v1_mm, x, np.where(self.separations.in_contact[i], u1, np.nan), p
-        )
+        sep = self.separations
+        p = np.where(sep.in_contact[i][..., None], p, np.nan)
+        pos = sep.contacts.position.reshape(sep.shape + (3,))[i]
+        return PressureMap(sep.pairs, sep.z_mm[i], x, pos, sep.across[i], sep.kind[i], p)
 
 
-def _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter):
+def _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter, bore_radius_mm):
     if not isinstance(pair, GearPair):
         raise ValueError(f"pair must be a gearrep.tca.GearPair, got {type(pair).__name__}")
     T = check_finite("torque_Nm", torque_Nm, positive=True)
@@ -161,52 +184,40 @@ def _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter):
         raise ValueError("materials must be a gearrep.ltca.Material or a pair of them (member 1, member 2)")
     check_finite("tol", tol, positive=True)
     check_integer("maxiter", maxiter, 1)
+    if np.ndim(bore_radius_mm) != 1 or len(bore_radius_mm) != 2:
+        raise ValueError(
+            f"bore_radius_mm must be a pair (member 1, member 2) of radii [mm] or None, got {bore_radius_mm!r}"
+        )
     return T, materials
 
 
-class _Strips:
-    """Per-candidate data of all positions, flattened: compliances and Hertz inputs."""
-
-    def __init__(self, pair, sep: Separations, materials, bore_radius_mm):
-        c = sep.contacts
-        ok = sep.in_contact.ravel()
-        t1 = compliance.ToothCompliance(pair.flank1, materials[0], bore_radius_mm[0])
-        t2 = compliance.ToothCompliance(pair.flank2, materials[1], bore_radius_mm[1])
-        beta_b = float(pair.flank1.gear.beta_b)
-        self.length_mm = sep.slice_width_mm / np.cos(beta_b)  # contact-line length of a strip
-        n = ok.size
-        self.lam = np.full(n, np.nan)
-        self.h1 = np.full(n, np.nan)
-        self.h2 = np.full(n, np.nan)
-        if np.any(ok):
-            self.lam[ok] = t1.compliance(c.u1[ok]) + t2.compliance(c.u2[ok])
-            self.h1[ok] = t1.load_geometry(c.u1[ok])[2]
-            self.h2[ok] = t2.load_geometry(c.u2[ok])[2]
-        self.k = sep.k_rel_per_mm.ravel()
-        self.materials = materials
-        self.Estar = float(
-            effective_modulus(materials[0].E_MPa, materials[0].poisson, materials[1].E_MPa, materials[1].poisson)
-        )
-
-    def compliance(self, rows, F):
-        """Secant compliance [mm/N] of strips ``rows`` at loads F [N] (tooth + Weber approach)."""
-        L = self.length_mm
-        dH = compliance.weber_contact_approach_mm(F / L, self.k[rows], self.h1[rows], self.h2[rows], *self.materials)
-        return self.lam[rows] / L + dH / F
-
-
-def _one_position(strips: _Strips, rows, gap, arm, moment, tol, maxiter, guess=None):
+def _one_position(nodes: Nodes, rows, groups, gap, arm, moment, tol, maxiter, guess=None, history: int = 3):
     """Loads of one position by fixed-point iteration on the secant compliance, from the loads
     ``guess`` (e.g. the previous position's; default an even share); returns (ContactLoads,
-    iterations, status)."""
-    F_ref = moment / float(np.sum(arm))  # an even share: the linearisation point of unloaded strips
+    iterations, status).
+
+    The map from the loads at which the compliance is evaluated to the loads of the contact problem
+    it gives is iterated with Anderson acceleration over the last ``history`` steps (Walker & Ni,
+    SIAM J. Numer. Anal. 49 (2011) 1715-1735; 0: plain iteration); it converges when two successive
+    contact solutions differ by less than ``tol`` of the normal load. Every iterate is a solution of
+    the contact problem, so the loads balance the torque whatever the iteration count."""
+    F_ref = moment / float(np.sum(arm))  # an even share: the first linearisation point
     F = np.full(rows.size, F_ref) if guess is None else guess
+    x = np.where(F > 0, F, F_ref)
     working = None if guess is None or not np.any(guess > 0) else np.flatnonzero(guess > 0)
     status = int(Status.NOT_CONVERGED)
     sol = None
+    it = 0
+    block = nodes.prepare(rows, groups) if nodes.coupling else None
+    xs, gs = [], []
+    best = np.inf
     for it in range(1, maxiter + 1):
-        c = strips.compliance(rows, np.where(F > 0, F, F_ref))
-        sol = solve_contact_loads(c, gap, arm, moment, working=working)
+        c = nodes.compliance(rows, x, groups, block)
+        if not np.all(np.isfinite(c)) or np.any((np.diag(c) if c.ndim == 2 else c) <= 0):
+            raise ValueError(
+                "the nodes' compliance is not finite and positive (a contact with no defined curvature or depth)"
+            )
+        sol = solve_checked(c, gap, arm, moment, working=working)
         if sol.status != Status.CONVERGED:
             return sol, it, sol.status
         change = float(np.max(np.abs(sol.loads_N - F)))
@@ -215,39 +226,28 @@ def _one_position(strips: _Strips, rows, gap, arm, moment, tol, maxiter, guess=N
         if change <= tol * float(np.sum(F)):
             status = int(Status.CONVERGED)
             break
+        # an unloaded node keeps the compliance of its last load: linearised at an even share again
+        # it would re-enter and leave the contact in turn
+        g = np.where(F > 0, F, x)
+        if change > best:  # not contracting (e.g. the contact set changed): restart the history
+            xs, gs = [], []
+        best = min(best, change)
+        xs.append(x)
+        gs.append(g)
+        xs, gs = xs[-(history + 1) :], gs[-(history + 1) :]
+        x = g
+        if len(xs) > 1:
+            f = np.array(gs) - np.array(xs)  # residuals of the kept steps
+            dF, dG = np.diff(f, axis=0).T, np.diff(np.array(gs), axis=0).T
+            gamma = np.linalg.lstsq(dF, f[-1], rcond=None)[0]
+            x = g - dG @ gamma
+            x = np.where(x > 0, x, g)
     return sol, it, status
 
 
-def loaded_contact(
-    pair: GearPair,
-    torque_Nm: float,
-    phi1=None,
-    *,
-    driving: str = "pinion",
-    materials=STEEL,
-    n_slices: int = 20,
-    bore_radius_mm=(None, None),
-    pairs=None,
-    tol: float = 1e-10,
-    maxiter: int = 100,
-) -> LoadedContact:
-    """Loaded tooth contact analysis of ``pair`` under ``torque_Nm`` [N m] on the driving member at
-    member-1 angles ``phi1`` [rad] (default :func:`cycle_positions`, 41 positions).
-
-    ``materials``: one :class:`Material` for both members or (member 1, member 2), default steel;
-    ``n_slices``: face strips; ``bore_radius_mm``: (member 1, member 2) gear-body bores for the
-    foundation term (None: half the root radius); ``pairs``: tooth-pair offsets (default -4 ... 4);
-    ``tol``: relative load change that ends the fixed-point iteration; ``maxiter`` its limit.
-    Needs involute flanks for the tooth compliance (ValueError otherwise).
-    """
-    T, materials = _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter)
-    if np.ndim(bore_radius_mm) != 1 or len(bore_radius_mm) != 2:
-        raise ValueError(
-            f"bore_radius_mm must be a pair (member 1, member 2) of radii [mm] or None, got {bore_radius_mm!r}"
-        )
-    phi1 = cycle_positions(pair) if phi1 is None else phi1
-    sep = initial_separations(pair, phi1, n_slices=n_slices, pairs=pairs)
-    strips = _Strips(pair, sep, materials, tuple(bore_radius_mm))
+def _solve(pair, sep: Separations, nodes: Nodes, T, driving, tol, maxiter):
+    """Loads at every position of ``sep``; returns (loads (n_pos, n_pairs n_nodes), results dict,
+    iterations, status)."""
     shape = sep.shape
     n_pos = shape[0]
     moment = 1000.0 * T  # N mm
@@ -255,10 +255,11 @@ def loaded_contact(
     arm_all = sep.sense * (sep.arm1_mm if driving == "pinion" else sep.arm2_mm).reshape(n_pos, -1)
     te_factor = sep.sense * (pair.ratio if driving == "pinion" else 1.0)
     F_bt = moment / float(g1.r_b if driving == "pinion" else g2.r_b)
-    out = {k: np.full(n_pos, np.nan) for k in ("te_loaded", "residual", "k_mesh", "pmax")}
+    out = {k: np.full(n_pos, np.nan) for k in ("te_loaded", "residual", "k_mesh")}
     loads = np.zeros((n_pos, shape[1] * shape[2]))
     its = np.zeros(n_pos, dtype=int)
     status = np.full(n_pos, int(Status.OFF_FLANK), dtype=int)
+    group_of = np.repeat(np.arange(shape[1]), shape[2])
     for i in range(n_pos):
         cand = sep.in_contact[i].ravel()
         rows_local = np.flatnonzero(cand)
@@ -268,9 +269,20 @@ def loaded_contact(
             status[i] = int(Status.NOT_CONVERGED)  # a section expected on the flanks was not found
             continue
         rows = i * cand.size + rows_local
-        guess = loads[i - 1, rows_local] if i and status[i - 1] == Status.CONVERGED else None
+        guess = None  # the previous position's loads, where its nodes are these (the same windows)
+        same = i and status[i - 1] == Status.CONVERGED and np.array_equal(sep.z_mm[i], sep.z_mm[i - 1])
+        if same and np.any(loads[i - 1, rows_local] > 0):
+            guess = loads[i - 1, rows_local]
         sol, its[i], status[i] = _one_position(
-            strips, rows, sep.gap_mm[i].ravel()[rows_local], arm_all[i, rows_local], moment, tol, maxiter, guess
+            nodes,
+            rows,
+            group_of[rows_local],
+            sep.gap_mm[i].ravel()[rows_local],
+            arm_all[i, rows_local],
+            moment,
+            tol,
+            maxiter,
+            guess,
         )
         if status[i] != Status.CONVERGED:
             continue
@@ -279,36 +291,144 @@ def loaded_contact(
         out["residual"][i] = sol.moment_residual
         approach = sep.sense * (sep.te_rigid_rad[i] - out["te_loaded"][i]) * float(g2.r_b) * 1000.0  # um
         out["k_mesh"][i] = F_bt / approach
-    return _record(pair, T, driving, sep, strips, loads, out, its, status)
+    return loads, out, its, status
 
 
-def _record(pair, T, driving, sep, strips: _Strips, loads, out, its, status) -> LoadedContact:
+#: a loaded span narrower than this fraction of the face is solved again on nodes over it
+REFINE_BELOW = 0.7
+#: a node counts as loaded for the node placement above this fraction of its position's largest
+#: node load (a load at rounding level must not move the nodes from one machine to another)
+LOADED_RTOL = 1e-9
+
+
+def _loaded(L, status):
+    """(n_pos, n_pairs, n_nodes) mask of the nodes loaded above LOADED_RTOL at converged positions."""
+    top = np.max(np.where(np.isfinite(L), L, 0.0), axis=(1, 2), keepdims=True)
+    return (L > LOADED_RTOL * top) & (status == Status.CONVERGED)[:, None, None]
+
+
+def _windows(sep: Separations, loads, status, m1):
+    """Face windows (n_pos, n_pairs, 2) around each tooth pair's loaded nodes (one node spacing
+    beyond the outermost loaded nodes) where the loaded span is narrower than REFINE_BELOW of the
+    face, the present node range elsewhere; and that mask of narrow windows."""
+    lo, hi = m1.z_lo, m1.z_hi
+    shape = sep.shape
+    loaded = _loaded(loads.reshape(shape), status)
+    z = sep.z_mm
+    step = np.diff(z, axis=-1)[..., :1]
+    with np.errstate(invalid="ignore"):
+        za = np.min(np.where(loaded, z, np.inf), axis=-1, keepdims=True) - step
+        zb = np.max(np.where(loaded, z, -np.inf), axis=-1, keepdims=True) + step
+    za, zb = np.maximum(za, z[..., :1]), np.minimum(zb, z[..., -1:])
+    narrow = np.any(loaded, axis=-1, keepdims=True) & ((zb - za) < REFINE_BELOW * (hi - lo))
+    w = np.concatenate([np.where(narrow, za, z[..., :1]), np.where(narrow, zb, z[..., -1:])], axis=-1)
+    return w, narrow[..., 0]
+
+
+def _reaches_window_end(sep: Separations, loads, status, m1):
+    """True where a tooth pair's load reaches a window end that is not a face end (the window was
+    too narrow)."""
+    loaded = _loaded(loads.reshape(sep.shape), status)
+    z = sep.z_mm
+    inner_lo = z[..., 0] > m1.z_lo + 1e-9 * (m1.z_hi - m1.z_lo)
+    inner_hi = z[..., -1] < m1.z_hi - 1e-9 * (m1.z_hi - m1.z_lo)
+    return (loaded[..., 0] & inner_lo) | (loaded[..., -1] & inner_hi)
+
+
+def loaded_contact(
+    pair: GearPair,
+    torque_Nm: float,
+    phi1=None,
+    *,
+    driving: str = "pinion",
+    materials=STEEL,
+    n_nodes: int = 21,
+    refine: bool = True,
+    coupling: bool = True,
+    tooth_bending: bool = True,
+    edge_radius_mm=None,
+    bore_radius_mm=(None, None),
+    pairs=None,
+    tol: float = 1e-10,
+    maxiter: int = 100,
+) -> LoadedContact:
+    """Loaded tooth contact analysis of ``pair`` under ``torque_Nm`` [N m] on the driving member at
+    member-1 angles ``phi1`` [rad] (default :func:`cycle_positions`, 41 positions).
+
+    ``driving``: "pinion" (member 1) or "gear"; ``materials``: one :class:`Material` for both
+    members or (member 1, member 2), default steel; ``n_nodes``: nodes along the face (over the
+    whole face, then, with ``refine``, over each tooth pair's loaded span where it is narrower than
+    REFINE_BELOW of the face: the localized contact gets the same number of nodes as a line);
+    ``coupling``: the half-space coupling of the nodes' contact deformation (False: Weber's approach
+    per node, independent strips); ``tooth_bending``: False leaves the tooth compliance out (the
+    rigid-tooth limit, Hertz's contact); ``edge_radius_mm``: tip-edge radius (default 0.1 module);
+    ``bore_radius_mm``: (member 1, member 2) gear-body bores for the foundation term (None: half
+    the root radius); ``pairs``: tooth-pair offsets (default -4 ... 4); ``tol``: relative load
+    change that ends the fixed-point iteration; ``maxiter`` its limit. The flanks must be of a
+    family of :data:`gearrep.ltca.SUPPORTED` (ValueError otherwise).
+    """
+    T, materials = _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter, bore_radius_mm)
+    m1, m2 = members(pair)
+    phi1 = cycle_positions(pair) if phi1 is None else phi1
+    bore = tuple(bore_radius_mm)
+    kw = dict(n_nodes=n_nodes, pairs=pairs, edge_radius_mm=edge_radius_mm)
+
+    def run(windows=None, previous=None, keep=None):
+        sep = initial_separations(pair, phi1, windows=windows, previous=previous, keep=keep, **kw)
+        nodes = Nodes(sep, m1, m2, materials, bore, tooth_bending=tooth_bending, coupling=coupling)
+        return sep, nodes, _solve(pair, sep, nodes, T, driving, tol, maxiter)
+
+    sep, nodes, (loads, out, its, status) = run()
+    passes = 1
+    if refine:
+        windows, narrow = _windows(sep, loads, status, m1)
+        while np.any(narrow) and passes < 4:
+            sep, nodes, (loads, out, its, status) = run(windows, sep, ~narrow)
+            passes += 1
+            wide = _reaches_window_end(sep, loads, status, m1)
+            if not np.any(wide):
+                break
+            step = np.diff(sep.z_mm, axis=-1)[..., :1] * (sep.z_mm.shape[-1] - 1) / 4.0
+            grown = np.concatenate([windows[..., :1] - step, windows[..., 1:] + step], axis=-1)
+            grown = np.clip(grown, m1.z_lo, m1.z_hi)
+            windows = np.where(wide[..., None], grown, windows)
+            narrow = wide
+    return _record(pair, T, driving, sep, nodes, loads, out, its, status, passes, m1)
+
+
+def _record(pair, T, driving, sep, nodes: Nodes, loads, out, its, status, passes, m1) -> LoadedContact:
     shape = sep.shape
     ok = status == Status.CONVERGED
-    slice_load = np.where(ok[:, None], loads, np.nan).reshape(shape)
-    w = slice_load / strips.length_mm
-    k = sep.k_rel_per_mm
-    p0 = np.where(
-        sep.in_contact,
-        compliance.line_contact_pressure_MPa(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar),
-        np.nan,
-    )
-    b = np.where(
-        sep.in_contact,
-        compliance.contact_half_width_mm(np.nan_to_num(w), np.where(sep.in_contact, k, 1.0), strips.Estar),
-        np.nan,
-    )
+    node_load = np.where(ok[:, None], loads, np.nan).reshape(shape)
+    L = nodes.L.reshape(shape)
+    w = node_load / L
+    k = np.where(sep.in_contact, sep.k_rel_per_mm, 1.0)
+    p0 = np.where(sep.in_contact, compliance.line_contact_pressure_MPa(np.nan_to_num(w), k, nodes.Estar), np.nan)
+    b = np.where(sep.in_contact, compliance.contact_half_width_mm(np.nan_to_num(w), k, nodes.Estar), np.nan)
     p0 = np.where(ok[:, None, None], p0, np.nan)
     b = np.where(ok[:, None, None], b, np.nan)
-    pair_load = np.nansum(slice_load, axis=2)
-    pair_load = np.where(ok[:, None], pair_load, np.nan)
+    pair_load = np.where(ok[:, None], np.nansum(node_load, axis=2), np.nan)
     normal = np.where(ok, np.nansum(pair_load, axis=1), np.nan)
     loaded_pairs = np.where(ok, np.sum(pair_load > 0, axis=1), 0)
-    with np.errstate(invalid="ignore"):
-        pmax = np.where(ok, np.nanmax(np.where(np.isfinite(p0), p0, -np.inf), axis=(1, 2)), np.nan)
+    tip = np.isin(sep.kind, EDGE_KINDS)
+    span = m1.z_hi - m1.z_lo
+    at_end = (sep.kind == 4) | (np.abs(sep.z_mm - m1.z_lo) < 1e-9 * span) | (np.abs(sep.z_mm - m1.z_hi) < 1e-9 * span)
+    loaded = np.nan_to_num(node_load) > 0
+
+    def total(mask):
+        return np.where(ok, np.nansum(np.where(mask, node_load, 0.0), axis=(1, 2)), np.nan)
+
+    def peak(mask):
+        with np.errstate(invalid="ignore"):
+            v = np.nanmax(np.where(mask & loaded & np.isfinite(p0), p0, -np.inf), axis=(1, 2))
+        return np.where(ok & np.isfinite(v), v, np.nan)
+
+    tip_load, face_end_load = total(tip), total(at_end & loaded)
+    pmax = np.where(ok, np.nan_to_num(peak(~tip), nan=0.0), np.nan)
+    tip_p = peak(tip)
     te_l = np.where(ok, out["te_loaded"], np.nan)
     r_b2 = float(pair.flank2.gear.r_b)
-    face = float(pair.upper1[1] - pair.lower1[1])
+    face = float(m1.z_hi - m1.z_lo)
     k_mesh = np.where(ok, out["k_mesh"], np.nan)
     return LoadedContact(
         torque_Nm=T,
@@ -324,12 +444,16 @@ def _record(pair, T, driving, sep, strips: _Strips, loads, out, its, status) -> 
         pair_load_N=pair_load,
         pairs_loaded=loaded_pairs,
         max_pressure_MPa=pmax,
+        tip_edge_load_N=tip_load,
+        tip_edge_pressure_MPa=tip_p,
+        face_end_load_N=face_end_load,
         mesh_stiffness_N_per_um=k_mesh,
         mesh_stiffness_N_per_mm_um=k_mesh / face,
         moment_residual=np.where(ok, out["residual"], np.nan),
         iterations=its,
         status=status,
-        slice_load_N=slice_load,
+        node_load_N=node_load,
         pressure_MPa=p0,
         half_width_mm=b,
+        passes=passes,
     )

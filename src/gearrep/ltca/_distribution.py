@@ -28,7 +28,7 @@ import numpy as np
 from ..inputs import check_positive
 from ..solve import Status
 
-__all__ = ["ContactLoads", "solve_contact_loads"]
+__all__ = ["ContactLoads", "solve_contact_loads", "solve_checked"]
 
 
 @dataclass(frozen=True)
@@ -78,14 +78,11 @@ def _working_set_solve(C, s, h, moment, P):
         c, hP, sP = C[P], h[P], s[P]
         theta = (moment + float(np.sum(hP * sP / c))) / float(np.sum(hP * hP / c))
         return (theta * hP - sP) / c, theta
-    k = P.size
-    A = np.zeros((k + 1, k + 1))
-    A[:k, :k] = C[np.ix_(P, P)]
-    A[:k, k] = -h[P]
-    A[k, :k] = h[P]
-    rhs = np.concatenate([-s[P], [moment]])
-    x = np.linalg.solve(A, rhs)
-    return x[:k], float(x[k])
+    # the bordered system by its Schur complement: C_PP [a, b] = [h_P, s_P], theta = (M + h.b) / (h.a)
+    hP = h[P]
+    ab = np.linalg.solve(C[P][:, P], np.column_stack([hP, s[P]]))
+    theta = (moment + float(hP @ ab[:, 1])) / float(hP @ ab[:, 0])
+    return theta * ab[:, 0] - ab[:, 1], theta
 
 
 def _apply(C, F, P=None):
@@ -107,21 +104,29 @@ def solve_contact_loads(
     the whole load on the point of smallest s/h, a feasible start).
     """
     C, s, h = _check(C, s, h, moment)
+    return solve_checked(C, s, h, float(moment), tol=tol, maxiter=maxiter, working=working)
+
+
+def solve_checked(C, s, h, moment: float, *, tol: float = 1e-12, maxiter=None, working=None) -> ContactLoads:
+    """:func:`solve_contact_loads` on inputs already checked (float arrays of the right shapes:
+    the loaded analysis checks its problems once, when it builds them)."""
     n = s.size
     maxiter = 3 * n + 10 if maxiter is None else int(maxiter)
     F = np.zeros(n)
     start = None
     if working is None:  # the points of smallest separation (all of them for line contact)
         working = np.flatnonzero(s / h <= np.min(s / h) + tol * max(float(np.max(np.abs(s))), 1e-300) / np.max(h))
+    known = None  # the working-set solution of the start, not solved twice
     if len(working):
         P0 = np.unique(np.asarray(working, dtype=int))
         try:
-            FP, _ = _working_set_solve(C, s, h, moment, P0)
+            FP, th0 = _working_set_solve(C, s, h, moment, P0)
         except np.linalg.LinAlgError:
             FP = None
         if FP is not None and np.all(FP >= 0):
             start = P0
             F[P0] = FP
+            known = (FP, th0)
     if start is None:
         j = int(np.argmin(s / h))
         start = np.array([j])
@@ -136,10 +141,11 @@ def solve_contact_loads(
     for it in range(1, maxiter + 1):  # noqa: B007 (the count is reported)
         Pa = np.flatnonzero(inP)
         try:
-            FP, theta = _working_set_solve(C, s, h, moment, Pa)
+            FP, theta = _working_set_solve(C, s, h, moment, Pa) if known is None else known
         except np.linalg.LinAlgError:
             status = int(Status.SINGULAR)
             break
+        known = None
         if np.all(FP >= 0):
             F[:] = 0.0
             F[Pa] = FP

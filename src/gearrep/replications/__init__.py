@@ -12,6 +12,7 @@ import importlib
 from dataclasses import dataclass
 from types import ModuleType
 
+from ..checks import VALIDATION
 from ..published import PAPERS
 
 __all__ = ["Study", "REGISTRY", "load"]
@@ -24,11 +25,18 @@ class Study:
     key: str
     seed: str
     scope: str
+    title: str = ""
+
+    @property
+    def validation(self) -> bool:
+        """A validation study (no paper): its seed is :data:`gearrep.checks.VALIDATION`."""
+        return self.seed == VALIDATION
 
     @property
     def document(self) -> str:
-        """Title of the replicated document (one per seed, :data:`gearrep.published.PAPERS`)."""
-        return PAPERS[self.seed]
+        """Title of the replicated document (one per seed, :data:`gearrep.published.PAPERS`), or
+        a validation study's own title."""
+        return self.title if self.validation else PAPERS[self.seed]
 
 
 REGISTRY: dict[str, Study] = {
@@ -39,6 +47,12 @@ REGISTRY: dict[str, Study] = {
         Study("nasa", "002", "curvatures, contact ellipses, TCA and TE under misalignment, worm-plunged pinion"),
         Study("thesis", "003", "convergence of conventional vs reduced TCA, TE of crowned gears"),
         Study("catt", "004", "contact-ellipse area along the path and every stated trend"),
+        Study(
+            "ltca",
+            VALIDATION,
+            "loaded TCA against ISO 6336 closed forms, load balance, symmetry, convergence and its limits",
+            "Validation of the loaded tooth contact analysis (gearrep.ltca)",
+        ),
     )
 }
 

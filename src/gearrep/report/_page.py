@@ -179,7 +179,7 @@ def _paper_parity(seed: str, grp: pd.DataFrame, parity) -> dict[str, bytes]:
     return given
 
 
-def _head(card: pd.DataFrame, runtime_s: float | None) -> list[str]:
+def _head(card: pd.DataFrame, runtime_s: float | None, validation: bool = False) -> list[str]:
     parts = [
         "<!doctype html><html><head><meta charset='utf-8'><title>gearrep replication report</title>"
         f"<style>{_CSS}</style></head><body>",
@@ -190,7 +190,8 @@ def _head(card: pd.DataFrame, runtime_s: float | None) -> list[str]:
         "parity plot per table with computed numbers. Contents: "
         + ", ".join(f"<a href='#paper-{s}'>seed {s}</a>" for s in sorted(card["seed"].unique()))
         + ", <a href='#statuses'>statuses and verdicts</a>, <a href='#figures'>key figures</a>, "
-        "<a href='#errata'>errata</a>, <a href='#environment'>environment</a>.</p>",
+        + ("<a href='#validation'>validation of the library</a>, " if validation else "")
+        + "<a href='#errata'>errata</a>, <a href='#environment'>environment</a>.</p>",
     ]
     if runtime_s is not None:
         parts.append(f"<p>Total workflow run time (sum of job wall times): {runtime_s:.1f} s.</p>")
@@ -419,9 +420,11 @@ def render(
     card = _checked_card(card)
     notebooks = notebooks or {}
     errata = errata if errata is not None else pd.DataFrame(columns=["seed", "location"])
+    validation = card[card["seed"] == _checks.VALIDATION]
+    card = card[card["seed"] != _checks.VALIDATION]
     papers = dict(list(card.groupby("seed", sort=True)))
     verdicts = paper_verdicts(card)
-    parts = _head(card, runtime_s) + _summary(papers, verdicts) + _legend() + _key_figures(figures)
+    parts = _head(card, runtime_s, len(validation) > 0) + _summary(papers, verdicts) + _legend() + _key_figures(figures)
     for seed, grp in papers.items():
         srcs = ordered_sources(grp, order)
         specs = (highlights or {}).get(seed, [])
@@ -429,4 +432,23 @@ def render(
         parts += _design_section(seed, design)
         parts += _sources_section(seed, grp, srcs, notebooks, _paper_parity(seed, grp, parity))
         parts.append(_all_rows(grp, srcs, notebooks))
+    parts += _validation_section(validation, notebooks)
     return "\n".join(parts + _errata_and_environment(errata, environment))
+
+
+def _validation_section(rows: pd.DataFrame, notebooks) -> list[str]:
+    """The validation studies' records: no paper, no verdict; a table per source and every row."""
+    if rows.empty:
+        return []
+    srcs = [(_checks.VALIDATION, s) for s in dict.fromkeys(rows["source"])]
+    counts = _counts(rows)
+    agree = sum(counts[s] for s in AGREE)
+    parts = [
+        "<h2 id='validation'>Validation of the library (not a paper)</h2>",
+        f"<p>{len(rows)} checks of gearrep's own models against closed forms, exact properties and limits "
+        "(no printed number of a paper: no verdict, and the papers' counts above leave them out). Each row's "
+        f"tolerance basis states its reason. {agree} of {len(rows)} agree.</p>",
+    ]
+    parts += _sources_section(_checks.VALIDATION, rows, srcs, notebooks, {})[:2]
+    parts.append(_all_rows(rows, srcs, notebooks))
+    return parts

@@ -168,8 +168,10 @@ def verdict(grp: pd.DataFrame) -> tuple[str, str]:
 
 def paper_verdicts(card: pd.DataFrame) -> dict[str, tuple[str, str]]:
     """{seed: (verdict, one-line reason)} of every paper of the scorecard, in seed order ("no
-    results" for a paper without a row of a result status)."""
+    results" for a paper without a row of a result status); the validation studies' rows (seed
+    :data:`gearrep.checks.VALIDATION`) are no paper and have no verdict."""
     card = _checked_card(card)
+    card = card[card["seed"] != _checks.VALIDATION]
     return {
         seed: verdict(grp) if grp["status"].isin(result_statuses()).any() else ("no results", "")
         for seed, grp in card.groupby("seed", sort=True)

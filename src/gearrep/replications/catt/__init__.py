@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from ... import settings as _s
 from .._face import FACE, Job, run_jobs
+from . import loaded as _loaded
 from . import studies as _studies
 from .assembly import (  # noqa: F401  (the names tests and the stress suite use)
     PAIR_NAMES,
@@ -121,6 +122,14 @@ SETTINGS = _s.declare(
         ),
         n_points=_s.integer(41, "1", "profile points per section, form to tip", ge=5, le=1000),
     ),
+    loaded_positions=_s.integer(
+        9,
+        "1",
+        "mesh positions of the sec 4 pair's loaded cycle (claim 004-S4-FE_elliptic_contact, gearrep.ltca): "
+        "the footprint is read at the position of the largest flank pressure",
+        ge=3,
+        le=401,
+    ),
     gap_check=_s.group(
         "exact <= delta separation region against the ellipse at a few TCA points",
         design=_s.text("sec4_3d_model", "the design checked: the sec 4 model pair (validate: must be a design)"),
@@ -155,6 +164,7 @@ JOBS = {
     "equations": _job(_studies.equations, "equations"),
     "gap_check": _job(_studies.gap_check, "gap_check"),
     "settings": _job(_studies.settings_table, "settings"),
+    "loaded_footprint": _job(_loaded.loaded_footprint, "loaded_footprint"),
 }
 
 CHECK_OUTPUTS = {"checks": "checks/catt.csv", "claim_readings": "catt/claim_readings.csv"}

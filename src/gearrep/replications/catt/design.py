@@ -18,13 +18,15 @@ __all__ = ["Design", "params_from_published", "validate", "prm"]
 
 _COMMON = "figs12-15_common"
 _TOOL = "sec4_3d_model"
+_FEA = "sec4_fea"
 
 
 @dataclass(frozen=True)
 class Design:
     """The paper's design data: ``designs`` (dicts name, group, z1, z2, module [mm], R_T [mm],
     face_width [mm]), ``delta_mm`` (elastic approach), ``window_deg`` (phi1 window of Figs 12-15),
-    ``pressure_angle_deg``, ``addendum`` and ``clearance`` (coefficients, of every pair)."""
+    ``pressure_angle_deg``, ``addendum`` and ``clearance`` (coefficients, of every pair);
+    ``fea``: the sec 4 FE model's material and torque (``E_MPa``, ``poisson``, ``torque_Nm``)."""
 
     designs: tuple
     delta_mm: float
@@ -32,6 +34,7 @@ class Design:
     pressure_angle_deg: float
     addendum: float
     clearance: float
+    fea: dict
 
     def by_name(self, name: str) -> dict:
         for d in self.designs:
@@ -100,6 +103,11 @@ def params_from_published(published) -> Design:
         get(_TOOL, "pressure_angle", 5, 40),
         get(_TOOL, "addendum_coefficient", 0, 2),
         get(_TOOL, "clearance_coefficient", 0, 1),
+        {
+            "E_MPa": 1000.0 * get(_FEA, "young_modulus_GPa", 1, 1000),
+            "poisson": get(_FEA, "poisson_ratio", 0, 0.5),
+            "torque_Nm": get(_FEA, "torque_Nm", 1e-6, 1e9),
+        },
     )
 
 

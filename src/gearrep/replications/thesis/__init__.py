@@ -135,6 +135,15 @@ SETTINGS = st.declare(
         ge=5,
         le=2001,
     ),
+    stress_loaded_positions=st.integer(
+        41,
+        "1",
+        "stress ratios, loaded reading (sec 4.2; gearrep.ltca): mesh positions per cycle of the loaded analysis; "
+        "the largest pressures lie where the load passes between tooth pairs, so a coarse grid misses them "
+        "(p_o 335, 384, 419 MPa with 5, 21, 41 positions)",
+        ge=5,
+        le=2001,
+    ),
     bevel_n_starts=st.integer(
         1000, "1", "Tables 11-12 random starts per bevel pair (as in the thesis)", ge=10, le=100000
     ),

@@ -449,7 +449,8 @@ def _log_highest_stress_ratio(c: Context):
     if st is None or not len(st):
         return None
     r1 = st[st["table_row"] == 1]
-    at = {a: d.set_index("crown_kind")["stress_ratio"] for a, d in r1.groupby("misalignment_deg")}
+    at = {a: d.set_index("crown_kind")["stress_ratio_loaded"] for a, d in r1.groupby("misalignment_deg")}
+    hertz = {a: d.set_index("crown_kind")["stress_ratio"] for a, d in r1.groupby("misalignment_deg")}
     top = max(at)
     sr = at[top]
     others = sr.drop("logarithmic")
@@ -457,11 +458,13 @@ def _log_highest_stress_ratio(c: Context):
     return claim_verdict(
         bool(sr["logarithmic"] > 1.1 * others.max() and all(v < 0.05 for v in spread.values())),
         bool(sr["logarithmic"] < others.max()),
-        f"Hertz SR (largest p_max along the path / line-contact p_o; Table 4 row-1 amounts, log a2 "
-        f"{float(r1['log_a2'].iloc[0]):g}): at {top:g} deg "
+        "loaded SR (gearrep.ltca: largest flank pressure of a loaded cycle over the aligned unmodified pair's "
+        f"under the same torque; Table 4 row-1 amounts, log a2 {float(r1['log_a2'].iloc[0]):g}): at {top:g} deg "
         + ", ".join(f"{k} {x:.3f}" for k, x in sr.items())
         + "; spread (max/min - 1) at "
         + ", ".join(f"{a:g} deg {100 * v:.2f} %" for a, v in spread.items())
+        + f"; the Hertz reading at {top:g} deg: "
+        + ", ".join(f"{k} {x:.3f}" for k, x in hertz[top].items())
         + f". The printed logarithmic amount at {top:g} deg (a1 = "
         f"{float(r1[(r1['misalignment_deg'] == top) & (r1['crown_kind'] == 'logarithmic')]['crown_amount'].iloc[0]):g}"
         " mm) is a much flatter crown than the circular and parabolic ones, so its contact ellipse is longer and "

@@ -343,9 +343,23 @@ def _te_facts(tables: dict) -> dict:
     return f
 
 
+def _loaded_note(r, same_loaded) -> str:
+    """The loaded reading's numbers in a stress-ratio note (the row ``r`` of the stress table)."""
+    return (
+        f"loaded reading (gearrep.ltca, the value compared): the largest flank pressure over a meshing cycle "
+        f"{r.p_max_loaded_MPa:.0f} MPa under {r.torque_loaded_Nm:.4g} N m shared by up to {r.pairs_loaded_max} "
+        f"tooth pairs (tip edges loaded at {r.tip_edge_positions_loaded} of {int(r.loaded_positions)} positions) over "
+        f"the aligned unmodified pair's {r.p0_loaded_MPa:.0f} MPa under the same torque: SR "
+        f"{r.stress_ratio_loaded:.4f}; loaded SR at this angle: "
+        + ", ".join(f"{k} {x:.4f}" for k, x in same_loaded.items())
+        + f". Hertz reading (one contact carries 200 N): SR {r.stress_ratio:.4f}; "
+    )
+
+
 def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
     """Sec 4.2 stress ratios (Fig 29) from the ``stress`` table (:mod:`.stress`): row-1 amounts,
-    largest pressure along the path over the line-contact p_o."""
+    the loaded reading (largest flank pressure of the loaded cycle over the aligned pair's), the
+    Hertz reading (largest pressure along the path over the line-contact p_o) in the note."""
     st = tables.get("stress")
     if st is None or not len(st):
         return {}
@@ -365,6 +379,9 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
     for r in r1.itertuples():
         key = f"sr_out_{r.misalignment_deg:g}_{r.crown_kind}"
         same = r1[np.isclose(r1["misalignment_deg"], r.misalignment_deg)].set_index("crown_kind")["stress_ratio"]
+        same_loaded = r1[np.isclose(r1["misalignment_deg"], r.misalignment_deg)].set_index("crown_kind")[
+            "stress_ratio_loaded"
+        ]
         pr = {k: printed[(r.misalignment_deg, k)] for k in same.index if (r.misalignment_deg, k) in printed}
         others = st[
             np.isclose(st["misalignment_deg"], r.misalignment_deg)
@@ -372,7 +389,12 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
             & (st["table_row"] > 1)
         ]
         p_pub = printed.get((r.misalignment_deg, r.crown_kind))
-        implied = f"; the printed SR implies p_o = p_max / SR = {r.p_max_MPa / p_pub:.0f} MPa" if p_pub else ""
+        implied = (
+            f"; the printed SR implies p_o = p_max / SR = {r.p_max_MPa / p_pub:.0f} MPa (Hertz), "
+            f"{r.p_max_loaded_MPa / p_pub:.0f} MPa (loaded)"
+            if p_pub
+            else ""
+        )
         ratio_txt = ", ".join(f"{k} {x:.4f}" for k, x in same.items())
         pub_txt = (
             "; printed at this angle: "
@@ -387,8 +409,9 @@ def _stress_facts(tables: dict, vals: pd.DataFrame) -> dict:
         )
         angle_only = pmax(lo_ang, r.crown_kind) / pmax(0.05, r.crown_kind) - 1 if lo_ang < 0.05 else np.nan
         f[key] = dict(
-            value=float(r.stress_ratio),
-            note=(
+            value=float(r.stress_ratio_loaded),
+            note=_loaded_note(r, same_loaded)
+            + (
                 f"Hertz p_max along the path {r.p_max_MPa:.0f} MPa ({r.crown_kind} crown {r.crown_amount:g} from "
                 f"{r.amount_source}, log a2 {r.log_a2:g}; out-of-plane {r.misalignment_deg:g} deg; 200 N on one contact, "
                 f"E 206 GPa, nu 0.3; at phi1 = 0 {r.p_at_phi1_0_MPa:.0f} MPa, semi-axes {r.a_at_phi1_0_mm:.3f} x "

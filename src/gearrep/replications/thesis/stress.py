@@ -21,6 +21,13 @@ Choices the thesis does not print (stated in every check note):
 * the logarithmic crown's a2 (eq 12, setting ``crowning_log_a2``);
 * "SR at an angle" read as the largest pressure along the path of contact (the value at
   phi1 = 0 is in the table too).
+
+The loaded reading (columns ``*_loaded``; :func:`loaded_pressure`): the loaded tooth contact
+analysis :func:`gearrep.ltca.loaded_contact` of the crowned pair over a meshing cycle under the
+torque that puts the 200 N normal load on the aligned unmodified pair, the load shared by the tooth
+pairs in mesh, over the same analysis of the aligned, unmodified pair (its largest flank pressure
+over the cycle: a finite p_o of the line contact, without a choice of contact-line length). These
+are the stress ratios the checks compare (row 1 of Table 4); the Hertz reading stands beside them.
 """
 
 from __future__ import annotations
@@ -28,6 +35,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ... import ltca
 from ...curvature import relative_curvature
 from ...ellipse import effective_modulus, hertz_line_max_pressure_MPa
 from ...solve import Status
@@ -120,6 +128,30 @@ def path_pressure(pair, n_points: int, load_N: float, E_MPa: float, nu: float, t
     )
 
 
+def loaded_pressure(pair, design: Design, n_positions: int) -> dict:
+    """Largest flank pressure of ``pair`` over one meshing cycle of the loaded analysis under the
+    torque T = 200 N x r_b1 cos(beta_b) (the Table 2 load as the normal load of the aligned pair),
+    Table 2's material; with the torque, failed positions and the positions where a tip edge carries
+    load."""
+    d = design.pairs["helical_40_37"]
+    g1 = pair.flank1.gear
+    T = d["load_N"] * float(g1.r_b * np.cos(g1.beta_b)) / 1000.0
+    r = ltca.loaded_contact(
+        pair,
+        T,
+        ltca.cycle_positions(pair, n_positions),
+        materials=ltca.Material(d["young_modulus_MPa"], d["poisson_ratio"]),
+    )
+    sm = r.summary()
+    return dict(
+        p_max_loaded_MPa=sm.max_contact_pressure_MPa,
+        torque_loaded_Nm=T,
+        failed_loaded=sm.n_failed,
+        tip_edge_positions_loaded=sm.tip_edge_contact_positions,
+        pairs_loaded_max=int(np.max(r.pairs_loaded)),
+    )
+
+
 def stress_table(s: dict, design: Design) -> dict:
     """Job ``stress``: stress ratios of the crowned 40/37 pair at the Fig 29 out-of-plane angles,
     each crown kind and each Table 4 row of ``crowning_rows`` (see the module docstring)."""
@@ -128,6 +160,8 @@ def stress_table(s: dict, design: Design) -> dict:
     a2 = float(s["crowning_log_a2"])
     ref = reference_pressure(design, tol=float(s["tol"]))
     base = pair_40_37(design)
+    n_loaded = int(s["stress_loaded_positions"])
+    p0_loaded = loaded_pressure(base, design, n_loaded)["p_max_loaded_MPa"]
     rows = []
     for ang in FIG29_ANGLES_DEG:
         amounts, source = crown_amounts(ang)
@@ -138,6 +172,8 @@ def stress_table(s: dict, design: Design) -> dict:
                     continue
                 pair = pair_40_37(design, crowning_object(kind, amount, d["face_width"], a2), mis)
                 r = path_pressure(pair, n, d["load_N"], d["young_modulus_MPa"], d["poisson_ratio"])
+                loaded = loaded_pressure(pair, design, n_loaded) if i == 0 else {}  # row 1: the checked one
+                p_l = loaded.get("p_max_loaded_MPa", np.nan)
                 rows.append(
                     dict(
                         plane="out",
@@ -150,6 +186,10 @@ def stress_table(s: dict, design: Design) -> dict:
                         **r,
                         stress_ratio=r["p_max_MPa"] / ref["p0_line_MPa"],
                         stress_ratio_at_phi1_0=r["p_at_phi1_0_MPa"] / ref["p0_line_MPa"],
+                        **loaded,
+                        p0_loaded_MPa=p0_loaded,
+                        loaded_positions=n_loaded,
+                        stress_ratio_loaded=p_l / p0_loaded,
                         load_N=d["load_N"],
                         young_modulus_MPa=d["young_modulus_MPa"],
                         poisson_ratio=d["poisson_ratio"],
