@@ -290,6 +290,7 @@ def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma, umbilic_tol: floa
 
     kappa^(12)(q) = kappa^(1)(q) - kappa^(2)(q)
                   = (kS1 - kS2)/2 + (1/2) sqrt(g1^2 - 2 g1 g2 cos 2sigma + g2^2) cos 2(q - alpha)
+
     with kS_i = kI_i + kII_i and g_i = kI_i - kII_i (seed 002 eq 2.6.6), so
     k_rel = (kS1 - kS2 +- sqrt(g1^2 - 2 g1 g2 cos 2sigma + g2^2)) / 2 = 2B, 2A of seed 002
     eq 2.6.4-2.6.5, and cos 2alpha = (g1 - g2 cos 2sigma)/R, sin 2alpha = -g2 sin 2sigma/R

@@ -316,10 +316,13 @@ class MeshingCycle:
     contact_ratio : (phi_1E - phi_1B) / (2 pi / N1) (eq 5.13 corrected)
     path : contact points of the reference pair on a grid over [phi_1B, phi_1E]
     transfer_in, transfer_out : real-cycle limits (transfer points), NaN if indeterminate
+
     transfer_kind : "crossing", "at_engagement" (next pair leads at once), "at_exit" (pair leads
         until it leaves its flank) or "indeterminate"
+
     phi1, te, pair_index : the TE envelope over the real cycle (or over [phi_1B, phi_1B + p1] when
         indeterminate): angle, TE [rad], and which pair (k = -1, 0, 1) is in contact
+
     te_peak_to_peak : max - min of ``te`` [rad]
     """
 
@@ -559,6 +562,7 @@ class SampledCycle:
 
     phi1 : the cycle's angles [rad], from -pitch/2 to +pitch/2
     te : the transmitted TE [rad] (upper envelope of the pairs), NaN where no pair is engaged
+
     jump : the largest TE step at a hand-over [rad] (:func:`handover_jump` or :func:`handover_gap`),
         NaN when pair 0 has fewer than two finite TE samples
     """

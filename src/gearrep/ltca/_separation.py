@@ -137,12 +137,16 @@ class Separations:
     pairs : (n_pairs,) tooth-pair offsets k; v1_mm : (n_slices,) slice mid-planes; slice_width_mm
     contacts : :class:`gearrep.tca.ContactPoints` of all rows (flattened in that order)
     in_contact : candidate contact (section contact converged on both flanks)
+
     expected : the involute line-of-action start lies inside both flanks with a margin (a section
         that should be found; a failure there makes the position NOT_CONVERGED)
+
     sense : +1 if member 1 drives these flanks turning by increasing phi1 (the loads' moment arms
         about both axes positive), -1 if by decreasing phi1 (both negative: e.g. ``side=-1`` flanks)
+
     te_rad : TE at which the section touches; te_rigid_rad : (n_pos,) unloaded TE (the first touch:
         max over candidates, min for sense -1)
+
     gap_mm : initial separation (NaN where not a candidate); arm1_mm, arm2_mm : signed moment arms of
     the normal about member 1's and member 2's axes; k_rel_per_mm : relative curvature across the contact line
     """

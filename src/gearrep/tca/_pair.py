@@ -239,9 +239,12 @@ class ContactPoints:
     phi1, phi2 : rotation angles [rad]
     position : contact point in S_f; normal : outward unit normal of member 1 in S_f
     te : transmission error [rad] (eq 14 with the pair's nominal reference); ``te_arcsec``
+
     residual, iterations, status : from :func:`gearrep.solve.newton`, with OFF_FLANK (member-2
         parameters outside its flank, reduced form) and WRONG_ROOT (normals not opposite) added
+
     formulation : "reduced" or "conventional"
+
     condition : condition number of the Newton Jacobian at the last iteration (see
         :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve
     """
