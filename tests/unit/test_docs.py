@@ -28,6 +28,7 @@ CHECKED = (
     "gearrep.solve",
     "gearrep.surface",
     "gearrep.surfaces.involute",
+    "gearrep.meshing",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
@@ -87,7 +88,7 @@ def _missing_sections(obj, doc, *, example: bool) -> list[str]:
         params = []  # members, not constructor arguments
     documented = {n.strip() for p in doc["Parameters"] + doc["Other Parameters"] for n in p.name.split(",")}
     if inspect.isclass(obj) and not documented:
-        documented = {p.name for p in doc["Attributes"]}
+        documented = {n.strip() for p in doc["Attributes"] for n in p.name.split(",")}
     undocumented = [p for p in params if p not in documented and p.lstrip("*") not in documented]
     if undocumented:
         missing.append(f"Parameters {undocumented}")
