@@ -29,6 +29,7 @@ CHECKED = (
     "gearrep.surface",
     "gearrep.surfaces.involute",
     "gearrep.meshing",
+    "gearrep.curvature",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
