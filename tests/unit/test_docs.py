@@ -30,6 +30,7 @@ CHECKED = (
     "gearrep.surfaces.involute",
     "gearrep.meshing",
     "gearrep.curvature",
+    "gearrep.ellipse",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
