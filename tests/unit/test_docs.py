@@ -31,6 +31,7 @@ CHECKED = (
     "gearrep.meshing",
     "gearrep.curvature",
     "gearrep.ellipse",
+    "gearrep.frames",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
@@ -88,7 +89,7 @@ def _missing_sections(obj, doc, *, example: bool) -> list[str]:
     params = [] if sig is None else [p for p in sig.parameters if p not in ("self", "cls")]
     if inspect.isclass(obj) and issubclass(obj, enum.Enum):
         params = []  # members, not constructor arguments
-    documented = {n.strip() for p in doc["Parameters"] + doc["Other Parameters"] for n in p.name.split(",")}
+    documented = {n.strip().lstrip("*") for p in doc["Parameters"] + doc["Other Parameters"] for n in p.name.split(",")}
     if inspect.isclass(obj) and not documented:
         documented = {n.strip() for p in doc["Attributes"] for n in p.name.split(",")}
     undocumented = [p for p in params if p not in documented and p.lstrip("*") not in documented]
