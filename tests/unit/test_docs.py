@@ -32,6 +32,7 @@ CHECKED = (
     "gearrep.curvature",
     "gearrep.ellipse",
     "gearrep.frames",
+    "gearrep.surfaces.analytic",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
