@@ -33,6 +33,7 @@ CHECKED = (
     "gearrep.ellipse",
     "gearrep.frames",
     "gearrep.surfaces.analytic",
+    "gearrep.surfaces.rack",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
