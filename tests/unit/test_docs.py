@@ -34,6 +34,7 @@ CHECKED = (
     "gearrep.frames",
     "gearrep.surfaces.analytic",
     "gearrep.surfaces.rack",
+    "gearrep.plotting",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
