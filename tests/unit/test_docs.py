@@ -35,6 +35,7 @@ CHECKED = (
     "gearrep.surfaces.analytic",
     "gearrep.surfaces.rack",
     "gearrep.plotting",
+    "gearrep.settings",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
