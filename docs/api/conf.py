@@ -17,7 +17,7 @@ autodoc_default_options = {"members": True, "member-order": "bysource", "show-in
 autodoc_typehints = "none"
 autodoc_preserve_defaults = True
 numpydoc_show_class_members = False
-numpydoc_attributes_as_param_list = False
+numpydoc_attributes_as_param_list = True
 add_module_names = False
 
 html_theme = "alabaster"

@@ -130,15 +130,15 @@ from ._formulations import (
     check_formulation,
     conventional_system,
     default_start,
-    newton_rows,
     reduced_unknowns,
     solve_contact,
-    trace_path,
 )
 from ._hobbed import KE_COLUMNS, ke_table
 from ._kernels import normal_derivatives, reduced_system
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
+from ._path import trace_path
 from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
+from ._rows import newton_rows
 from ._starts import (
     CONVENTIONAL_VARIANTS,
     FALLBACK_GRID,

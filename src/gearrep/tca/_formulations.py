@@ -1,6 +1,7 @@
 """The public contact solves of the two TCA formulations (conventional eq 26-32, reduced eq 33-44;
-their equations and Jacobians in :mod:`gearrep.tca._kernels`), Newton with per-row data and the
-contact record (see :mod:`gearrep.tca`)."""
+their equations and Jacobians in :mod:`gearrep.tca._kernels`) and the contact record (see
+:mod:`gearrep.tca`); Newton with per-row data is in ``_rows``, the path by continuation in
+``_path``."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 
 from ..frames import rotate_z
 from ..inputs import check_integer, real_or_nan
-from ..solve import SolveResult, Status, finite_rows, newton
+from ..solve import Status, finite_rows, newton
 from ..surface import cross3, dot3
 from ._kernels import (
     _SCALAR_ERRORS,
@@ -22,16 +23,15 @@ from ._kernels import (
     _wrap_any,
 )
 from ._pair import ContactPoints, GearPair, _wrap, transmission_error
+from ._rows import newton_rows  # noqa: F401 - its home is _rows; the start strategies import it from here
 
 __all__ = [
     "conventional_system",
-    "newton_rows",
     "check_formulation",
     "MAX_CONTACT_TOL",
     "default_start",
     "solve_contact",
     "reduced_unknowns",
-    "trace_path",
 ]
 
 
@@ -98,100 +98,6 @@ def _conventional_callables(pair: GearPair, phi1: float, drop: int | None):
             return _conventional_FJ(pair, x, phi1, d, derivs=derivs)
 
     return (lambda x: FJ(x, derivs=False)[0]), (lambda x: FJ(x)[1]), (lambda x: FJ(x, derivs=_LAZY))
-
-
-# ----------------------------------------------------------------------------------------------
-# newton with frozen per-row parameters
-# ----------------------------------------------------------------------------------------------
-def newton_rows(
-    F,
-    FJ,
-    x0,
-    params,
-    *,
-    lower=None,
-    upper=None,
-    jacobian="analytic",
-    tol=1e-12,
-    maxiter=50,
-    damped=True,
-    inverse_square=False,
-) -> SolveResult:
-    """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
-
-    ``F(x, p) -> (n, m)``; ``FJ(x, p) -> (F, J)`` with J (n, m, k) (analytic; ignored when
-    ``jacobian="numeric"``, which differentiates F by central differences; its F must equal
-    ``F(x, p)``: the solver takes the residual at each full step from it, ``fun_jac`` of
-    :func:`gearrep.solve.newton`). Each row's parameters follow it through the solve
-    (``newton(..., rows=True)``). ``inverse_square``: as :func:`gearrep.solve.newton` (the
-    contact solves of :func:`solve_contact` use it).
-
-    Parameters
-    ----------
-    F, FJ : callable
-        Residual, and residual with Jacobian, of ``(x, p)``.
-    x0 : (n, k) array_like
-        Starts.
-    params : (n, q) array_like
-        Per-row data.
-    lower, upper : (k,) array_like, optional
-        Bounds, as :func:`gearrep.solve.newton`.
-    jacobian : {"analytic", "numeric"}, optional
-        Use ``FJ``, or central differences of ``F``.
-    tol, maxiter, damped, inverse_square : optional
-        As :func:`gearrep.solve.newton`.
-
-    Returns
-    -------
-    gearrep.solve.SolveResult
-        One record per row.
-
-    Raises
-    ------
-    ValueError
-        If ``params`` has not one row per start, or ``jacobian`` is unknown.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from gearrep.tca import newton_rows
-    >>> F = lambda x, p: x * x - p  # x^2 = p, one p per row
-    >>> FJ = lambda x, p: (x * x - p, 2.0 * x[:, :, None])
-    >>> r = newton_rows(F, FJ, [[1.0], [1.0]], [[4.0], [9.0]])
-    >>> np.round(r.x[:, 0], 12).tolist()
-    [2.0, 3.0]
-    """
-    x0 = np.atleast_2d(np.asarray(x0, float))
-    params = np.atleast_2d(np.asarray(params, float))
-    n = x0.shape[0]
-    if params.shape[0] != n:
-        raise ValueError(f"params has {params.shape[0]} rows for {n} starts")
-    if jacobian not in ("analytic", "numeric"):
-        raise ValueError(f"jacobian must be 'analytic' or 'numeric', got {jacobian!r}")
-
-    def fun(x, idx):
-        return F(x, params[idx])
-
-    def jac(x, idx):
-        return FJ(x, params[idx])[1]
-
-    def fun_jac(x, idx):
-        return FJ(x, params[idx])
-
-    analytic = jacobian == "analytic"
-    return newton(
-        fun,
-        x0,
-        jac if analytic else None,
-        tol=tol,
-        maxiter=maxiter,
-        damped=damped,
-        lower=lower,
-        upper=upper,
-        rows=True,
-        fun_jac=fun_jac if analytic else None,
-        inverse_square=inverse_square,
-    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -953,110 +859,3 @@ def reduced_unknowns(pair: GearPair, u1, v1, phi1):
     shape = u1.shape
     K = _reduced_kernel(pair, u1.ravel(), v1.ravel(), phi1.ravel(), derivs=False)
     return K["u2"].reshape(shape), K["v2"].reshape(shape), K["phi2"].reshape(shape)
-
-
-def trace_path(
-    pair: GearPair,
-    phi1,
-    start=None,
-    *,
-    formulation: str = "reduced",
-    v1=None,
-    jacobian: str = "analytic",
-    tol: float = 1e-12,
-    maxiter: int = 50,
-    phi10: float = 0.0,
-    phi20: float = 0.0,
-    predictor: bool = True,
-) -> ContactPoints:
-    """Path of contact over the angles ``phi1`` (in order) by continuation (Litvin & Fuentes ch. 9).
-
-    Each position starts from the previous converged solution (linearly extrapolated from the last
-    two when ``predictor``); ``start`` (one row, as for :func:`solve_contact`) is used for the first
-    position. A failed position does not seed the next one.
-
-    Parameters
-    ----------
-    pair : GearPair
-        The pair.
-    phi1 : (n,) array_like
-        Angles of member 1 [rad], in the order they are traced.
-    start : (2,) or (5,) array_like, optional
-        Start of the first position, as for :func:`solve_contact` (default :func:`default_start`).
-    formulation, v1, jacobian, tol, maxiter, phi10, phi20 : optional
-        As :func:`solve_contact`.
-    predictor : bool, optional
-        Extrapolate the next start linearly from the last two solutions.
-
-    Returns
-    -------
-    ContactPoints
-        In the order of ``phi1``.
-
-    Raises
-    ------
-    ValueError
-        As :func:`solve_contact`, before any solve; and if ``start`` is not one row.
-
-    Examples
-    --------
-    >>> import math
-    >>> import numpy as np
-    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
-    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
-    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
-    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
-    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
-    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
-    >>> from gearrep.tca import trace_path
-    >>> path = trace_path(pair, np.linspace(-0.05, 0.05, 11))  # rad
-    >>> bool(path.converged.all()), round(float(np.ptp(path.te_arcsec)), 6)  # TE [arcsec]
-    (True, 0.0)
-    """
-    check_formulation(formulation)
-    _check_knobs(tol, maxiter, phi10, phi20)
-    phi1 = _angles(phi1)
-    width = 2 if formulation == "reduced" else 5
-    x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
-    if x.shape != (width,):
-        raise ValueError(f"start must have {width} entries, got shape {x.shape}")
-    v1a = None if v1 is None else _face_coordinates(v1, len(phi1))
-    out, hist = [], []  # hist: (phi1, solution) of converged points
-    for i, p in enumerate(phi1):
-        guess = x
-        if predictor and len(hist) >= 2 and hist[-1][0] != hist[-2][0]:
-            (pa, xa), (pb, xb) = hist[-2], hist[-1]
-            guess = xb + (xb - xa) * (p - pb) / (pb - pa)
-        elif hist:
-            guess = hist[-1][1]
-        c = solve_contact(
-            pair,
-            p,
-            guess[None, :],
-            formulation=formulation,
-            v1=None if v1a is None else v1a[i],
-            jacobian=jacobian,
-            tol=tol,
-            maxiter=maxiter,
-            phi10=phi10,
-            phi20=phi20,
-        )
-        if c.status[0] != Status.CONVERGED and len(hist) >= 1 and predictor:
-            c2 = solve_contact(
-                pair,
-                p,
-                hist[-1][1][None, :],
-                formulation=formulation,
-                v1=None if v1a is None else v1a[i],
-                jacobian=jacobian,
-                tol=tol,
-                maxiter=maxiter,
-                phi10=phi10,
-                phi20=phi20,
-            )
-            if c2.status[0] == Status.CONVERGED:
-                c = c2
-        out.append(c)
-        if c.status[0] == Status.CONVERGED:
-            hist.append((p, c.unknowns(formulation)[0]))
-    return ContactPoints.concatenate(out)

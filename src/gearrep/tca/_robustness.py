@@ -17,8 +17,9 @@ import numpy as np
 
 from ..inputs import check_integer
 from ..solve import Status
-from ._formulations import check_formulation, trace_path
+from ._formulations import check_formulation
 from ._pair import ContactPoints, GearPair, _wrap
+from ._path import trace_path
 from ._starts import _solve_projected, flank_sense, meshing_sense
 
 __all__ = ["ROBUSTNESS_COLUMNS", "reference_contacts", "classify_contacts", "start_robustness"]
