@@ -36,6 +36,7 @@ CHECKED = (
     "gearrep.surfaces.rack",
     "gearrep.plotting",
     "gearrep.settings",
+    "gearrep.motion",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
