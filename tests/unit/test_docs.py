@@ -37,6 +37,7 @@ CHECKED = (
     "gearrep.plotting",
     "gearrep.settings",
     "gearrep.motion",
+    "gearrep.checks",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
