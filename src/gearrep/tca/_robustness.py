@@ -231,6 +231,11 @@ def start_robustness(
     dict
         The :data:`ROBUSTNESS_COLUMNS` of the row.
 
+    Raises
+    ------
+    ValueError
+        If ``n_per_angle`` is not an integer >= 1.
+
     Examples
     --------
     >>> import math
