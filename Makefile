@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed-stamp
 CORES  ?= 2
 export MPLBACKEND := Agg
 
-# The pinned environment: exact versions and hashes of every dependency (core + test extras)
+# The pinned environment: exact versions and hashes of every dependency (core + test + docs extras)
 # and of the build backend that installs gearrep itself (setuptools, wheel).
 LOCK   := requirements.lock
 # the tool that writes it (installed only into a throwaway venv by `make lock`)
@@ -15,7 +15,7 @@ PIP_TOOLS := pip-tools==7.6.2
 LOCK_PYTHON ?= python3.11
 PIP    := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-.PHONY: setup bytecode reproduce test test-all test-portability test-cluster lint format schema stress bench screenshot clean lock
+.PHONY: setup bytecode reproduce test docs test-all test-portability test-cluster lint format schema stress bench screenshot clean lock
 
 $(STAMP): $(LOCK) pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -31,7 +31,7 @@ lock:
 	$(LOCK_PYTHON) -m venv "$$tmp/venv"; \
 	"$$tmp/venv/bin/python" -m pip install --quiet --disable-pip-version-check $(PIP_TOOLS); \
 	"$$tmp/venv/bin/pip-compile" --quiet --generate-hashes --allow-unsafe --strip-extras \
-	    --extra test --build-deps-for editable --no-emit-index-url --no-emit-find-links $(if $(UPGRADE),--upgrade) \
+	    --extra test --extra docs --build-deps-for editable --no-emit-index-url --no-emit-find-links $(if $(UPGRADE),--upgrade) \
 	    --output-file $(LOCK) pyproject.toml
 
 setup: $(STAMP)
@@ -48,6 +48,12 @@ reproduce: bytecode
 
 test: lint bytecode
 	$(BIN)/python -m pytest
+
+# The API reference (Sphinx, numpydoc docstrings) as HTML in build/docs/html; a warning fails the
+# build (tests/unit/test_docs.py builds it too, so `make test` fails on one).
+docs: $(STAMP)
+	$(BIN)/sphinx-build -W --keep-going -q -b html docs/api build/docs/html
+	@echo "API reference: build/docs/html/index.html"
 
 # Formatting and lint (configured in pyproject.toml): checked by `make test`, applied by `make format`.
 lint: $(STAMP)

@@ -5,7 +5,13 @@ replications. Library code is pure: it never reads files or the workflow config.
 Angles are radians and lengths are in the unit of the design data inside the library (mm in the
 examples and the ``gearrep`` command); conversions happen at the edges with :mod:`gearrep.units`.
 
-The names a library user needs first are here (each loaded when first used):
+The names a library user starts with are here, each loaded when first used (so ``import gearrep``
+itself stays light: a few milliseconds, numpy not imported): the gear data and flanks of an involute pair
+(:class:`InvoluteGearData`, :func:`mating_flanks`, :class:`ParabolicCrowning`,
+:func:`standard_centre_distance`), the pair in mesh (:class:`GearPair`, :class:`Misalignment`),
+its contact (:func:`solve_contact`, :func:`trace_path`, :func:`robust_contact`, the record
+:class:`ContactPoints`, :func:`contact_ellipse`), the meshing cycle (:func:`meshing_cycle`) and
+curvatures (:func:`principal_curvatures`):
 
 >>> import math, gearrep
 >>> g1 = gearrep.InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
@@ -16,7 +22,8 @@ The names a library user needs first are here (each loaded when first used):
 1.6517
 >>> k = gearrep.principal_curvatures(f1.evaluate(33.0, 0.0))  # k1, k2 [1/mm]
 
-``tca``, ``meshing``, ``curvature`` and ``surfaces`` are the modules behind them.
+``tca``, ``meshing``, ``curvature``, ``surfaces`` and ``units`` are the modules behind them (and the
+unit conversions).
 """
 
 __version__ = "0.1.0"
@@ -26,16 +33,20 @@ _LAZY = {
     "GearPair": "gearrep.tca",
     "Misalignment": "gearrep.tca",
     "solve_contact": "gearrep.tca",
+    "trace_path": "gearrep.tca",
+    "robust_contact": "gearrep.tca",
+    "ContactPoints": "gearrep.tca",
     "contact_ellipse": "gearrep.tca",
     "InvoluteGearData": "gearrep.surfaces.involute",
     "mating_flanks": "gearrep.surfaces.involute",
     "ParabolicCrowning": "gearrep.surfaces.involute",
+    "standard_centre_distance": "gearrep.surfaces.involute",
     "meshing_cycle": "gearrep.meshing",
     "principal_curvatures": "gearrep.curvature",
 }
 
 #: the modules behind them, also loaded on first use
-_MODULES = ("tca", "meshing", "curvature", "surfaces")
+_MODULES = ("tca", "meshing", "curvature", "surfaces", "units")
 
 __all__ = ["__version__", *_LAZY, *_MODULES]
 

@@ -69,10 +69,12 @@ VALIDATION = "validation"
 RESULT_STATUSES = ("reproduced", "deviates", "qualitative-holds", "qualitative-fails", "not-computed")
 #: a printed design input: used as printed, not a result and not a gap
 INPUT = "input"
+#: the statuses of a printed input
 INPUT_STATUSES = (INPUT,)
 #: every status a check record may have
 STATUSES = RESULT_STATUSES + INPUT_STATUSES
 
+#: the columns of a check table, in order
 CHECK_COLUMNS = [
     "id",
     "seed",
@@ -106,7 +108,24 @@ RESOLUTION_INTERNAL = 1e-12
 def resolution(unit: str) -> float:
     """Absolute resolution of a computed value given in ``unit`` (:data:`RESOLUTION_INTERNAL`
     converted: 2.06e-7 arcsec, 5.73e-11 deg; 1e-12 for lengths, ratios and units it does not
-    know). A computed value of smaller magnitude is recorded as 0 (see the module docstring)."""
+    know). A computed value of smaller magnitude is recorded as 0 (see the module docstring).
+
+    Parameters
+    ----------
+    unit : str
+        A unit of the published data ('arcsec', 'deg', 'mm', ...).
+
+    Returns
+    -------
+    float
+        The resolution in that unit.
+
+    Examples
+    --------
+    >>> from gearrep.checks import resolution
+    >>> f"{resolution('arcsec'):.3g}", resolution("mm")
+    ('2.06e-07', 1e-12)
+    """
     return RESOLUTION_INTERNAL / TO_INTERNAL.get(unit, 1.0)
 
 
@@ -114,6 +133,30 @@ def printed_interval(printed: str, rounding: str = "round") -> tuple[float, floa
     """Interval ``[lo, hi]`` of true values that print as ``printed``, and its basis.
 
     For truncation the end away from zero is open.
+
+    Parameters
+    ----------
+    printed : str
+        The number as printed.
+    rounding : {"round", "truncate"}, optional
+        How the paper shortened it.
+
+    Returns
+    -------
+    tuple
+        (lo, hi, basis in words).
+
+    Raises
+    ------
+    ValueError
+        For an unknown rounding, or truncation of a number given to significant digits.
+
+    Examples
+    --------
+    >>> from gearrep.checks import printed_interval
+    >>> lo, hi, basis = printed_interval("0.0123")
+    >>> round(lo, 12), round(hi, 12), basis
+    (0.01225, 0.01235, 'printed to 4 decimals, rounded: +-5e-05')
     """
     p = float(printed)
     kind, prec = printed_precision(printed)
@@ -138,7 +181,43 @@ def printed_interval(printed: str, rounding: str = "round") -> tuple[float, floa
 def compare_value(
     pub: pd.Series, computed: float, extra_tol: float = 0.0, extra_basis: str = "", note: str = ""
 ) -> dict:
-    """One check record for a published value row (a row of ``Published.values``)."""
+    """One check record for a published value row (a row of ``Published.values``).
+
+    Parameters
+    ----------
+    pub : pandas.Series
+        The published value's row (``printed``, ``rounding``, ``value``, ``unit``, ids).
+    computed : float
+        The computed value, in the row's unit (None or NaN: the computation gave none).
+    extra_tol : float, optional
+        A widening of the printed interval [the row's unit], >= 0, only with ``extra_basis``.
+    extra_basis : str, optional
+        The stated physical reason for ``extra_tol``.
+    note : str, optional
+        A note for the record.
+
+    Returns
+    -------
+    dict
+        The record (:data:`CHECK_COLUMNS`).
+
+    Raises
+    ------
+    ValueError
+        If ``extra_tol`` is negative or has no stated reason.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> pub = pd.Series({"id": "v1", "seed": "000", "source": "Table 4.2", "row": "1", "quantity": "k1",
+    ...                  "unit": "per_mm", "value": 0.0123, "printed": "0.0123", "rounding": "round"})
+    >>> rec = checks.compare_value(pub, 0.01232)
+    >>> rec["status"], round(rec["tolerance"], 9), rec["tolerance_basis"]
+    ('reproduced', 5e-05, 'printed to 4 decimals, rounded: +-5e-05')
+    >>> checks.compare_value(pub, 0.0125)["status"]
+    'deviates'
+    """
     lo, hi, basis = printed_interval(pub["printed"], pub["rounding"])
     if extra_tol < 0:
         raise ValueError(f"extra_tol must be >= 0, got {extra_tol}")
@@ -182,6 +261,33 @@ def check_values(published_values: pd.DataFrame, computed: pd.DataFrame) -> pd.D
 
     ``computed`` has columns ``id``, ``computed`` and optionally ``extra_tol``, ``extra_basis``,
     ``note``. Ids not in ``published_values`` raise KeyError (a typo must not pass silently).
+
+    Parameters
+    ----------
+    published_values : pandas.DataFrame
+        Published value rows.
+    computed : pandas.DataFrame
+        ``id``, ``computed`` (and optional ``extra_tol``, ``extra_basis``, ``note``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One check record per computed id.
+
+    Raises
+    ------
+    KeyError
+        For an id that is not published.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> pub = pd.Series({"id": "v1", "seed": "000", "source": "Table 4.2", "row": "1", "quantity": "k1",
+    ...                  "unit": "per_mm", "value": 0.0123, "printed": "0.0123", "rounding": "round"})
+    >>> table = checks.check_values(pd.DataFrame([pub]), pd.DataFrame({"id": ["v1"], "computed": [0.01232]}))
+    >>> table[["id", "status"]].values.tolist()
+    [['v1', 'reproduced']]
     """
     pub = published_values.set_index("id", drop=False)
     unknown = sorted(set(computed["id"]) - set(pub.index))
@@ -205,7 +311,31 @@ def claim_verdict(confirm: bool, refute: bool, evidence: str) -> tuple[bool, str
     """(holds, evidence) of a claim from the outcomes of its ``confirm_if`` and ``refute_if``
     criteria (data/published/claims_*.csv): it holds only if the confirm criterion is met; when
     neither is met it is not confirmed (fails) and the evidence says so. ValueError if both are
-    met (the criteria on file contradict each other)."""
+    met (the criteria on file contradict each other).
+
+    Parameters
+    ----------
+    confirm, refute : bool
+        Whether each criterion is met.
+    evidence : str
+        The numbers behind the verdict.
+
+    Returns
+    -------
+    tuple
+        (holds, evidence).
+
+    Raises
+    ------
+    ValueError
+        If both criteria are met.
+
+    Examples
+    --------
+    >>> from gearrep.checks import claim_verdict
+    >>> claim_verdict(True, False, "TE 0.1 arcsec < 1 arcsec")
+    (True, 'TE 0.1 arcsec < 1 arcsec')
+    """
     if confirm and refute:
         raise ValueError(f"claim criteria contradict each other: {evidence}")
     tail = "" if (confirm or refute) else " [confirm criterion not met; refute criterion not met either]"
@@ -228,7 +358,42 @@ def compare_reference(
     ``reference`` that is no printed number (a closed form, an exact property, another solution of
     the same problem) within ``tolerance`` (absolute, in ``unit``), whose ``basis`` states its
     physical or numerical reason. ``reproduced`` when |computed - reference| <= tolerance, else
-    ``deviates``; a non-finite computed value deviates."""
+    ``deviates``; a non-finite computed value deviates.
+
+    Parameters
+    ----------
+    id, source, row, quantity, unit : str
+        The record's id (a validation study's own, no published id), where the check comes from,
+        its row key, the quantity and its unit.
+    reference : float
+        The reference value, in ``unit``.
+    computed : float or None
+        The computed value, in ``unit`` (None or non-finite: the computation gave none).
+    tolerance : float
+        Absolute tolerance in ``unit``, finite and >= 0.
+    basis : str
+        The tolerance's stated reason (required).
+    note : str, optional
+        A note carried into the record.
+
+    Returns
+    -------
+    dict
+        A check record (the columns of :data:`CHECK_COLUMNS`), seed :data:`VALIDATION`.
+
+    Raises
+    ------
+    ValueError
+        For an empty ``basis`` or a tolerance that is negative or not finite.
+
+    Examples
+    --------
+    >>> from gearrep.checks import compare_reference
+    >>> rec = compare_reference("val-1", "closed form", "case=a", "p_max", "MPa", 1000.0, 1000.4, 1.0,
+    ...                         "discretisation error of the grid")
+    >>> rec["status"], round(rec["abs_err"], 6)
+    ('reproduced', 0.4)
+    """
     if not basis:
         raise ValueError("a validation tolerance needs its stated basis")
     tol = float(tolerance)
@@ -267,7 +432,35 @@ def compare_reference(
 
 
 def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
-    """Check record for a claim row, with the numbers behind the verdict in ``evidence``."""
+    """Check record for a claim row, with the numbers behind the verdict in ``evidence``.
+
+    Parameters
+    ----------
+    claim : pandas.Series
+        The claim's row (ids, ``source``).
+    holds : bool
+        The verdict.
+    evidence : str
+        The numbers behind it.
+
+    Returns
+    -------
+    dict
+        The record, status ``qualitative-holds`` or ``qualitative-fails``.
+
+    Raises
+    ------
+    ValueError
+        If ``evidence`` is empty.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.checks import qualitative
+    >>> claim = pd.Series({"id": "c1", "seed": "000", "source": "sec. 5.4", "kind": "qualitative"})
+    >>> qualitative(claim, False, "TE 3.2 arcsec")["status"]
+    'qualitative-fails'
+    """
     if not evidence:
         raise ValueError("a qualitative verdict needs its evidence (the numbers behind it)")
     return {
@@ -289,13 +482,62 @@ def qualitative(claim: pd.Series, holds: bool, evidence: str) -> dict:
 
 
 def not_computed(rows: pd.DataFrame, reason: str) -> pd.DataFrame:
-    """``not-computed`` records for published values or claims, with the reason."""
+    """``not-computed`` records for published values or claims, with the reason.
+
+    Parameters
+    ----------
+    rows : pandas.DataFrame
+        Published value or claim rows.
+    reason : str
+        Why they are not computed.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One record per row.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> pub = pd.Series({"id": "v1", "seed": "000", "source": "Table 4.2", "row": "1", "quantity": "k1",
+    ...                  "unit": "per_mm", "value": 0.0123, "printed": "0.0123", "rounding": "round"})
+    >>> checks.not_computed(pd.DataFrame([pub]), "needs the loaded model")[["status", "note"]].values.tolist()
+    [['not-computed', 'needs the loaded model']]
+    """
     return _uncompared(rows, reason, "not-computed")
 
 
 def printed_input(rows: pd.DataFrame, use: str) -> pd.DataFrame:
     """``input`` records for published values that are design inputs of the paper (not results):
-    ``use`` says why the number is an input and where the replication uses it as printed."""
+    ``use`` says why the number is an input and where the replication uses it as printed.
+
+    Parameters
+    ----------
+    rows : pandas.DataFrame
+        Published value rows.
+    use : str
+        Why they are inputs and where they are used.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One ``input`` record per row.
+
+    Raises
+    ------
+    ValueError
+        If ``use`` is empty or the rows are claims.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> pub = pd.Series({"id": "v1", "seed": "000", "source": "Table 4.2", "row": "1", "quantity": "k1",
+    ...                  "unit": "per_mm", "value": 0.0123, "printed": "0.0123", "rounding": "round"})
+    >>> checks.printed_input(pd.DataFrame([pub]), "the design's curvature")["status"].tolist()
+    ['input']
+    """
     if not use:
         raise ValueError("an input record needs its note: why the number is an input and where it is used")
     if "statement" in rows.columns:
@@ -329,7 +571,32 @@ def _uncompared(rows: pd.DataFrame, reason: str, status: str) -> pd.DataFrame:
 
 
 def validate_checks(checks: pd.DataFrame) -> pd.DataFrame:
-    """Raise ValueError unless ``checks`` has the check columns, known statuses, unique ids."""
+    """Raise ValueError unless ``checks`` has the check columns, known statuses, unique ids.
+
+    Parameters
+    ----------
+    checks : pandas.DataFrame
+        A check table.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``checks``.
+
+    Raises
+    ------
+    ValueError
+        Naming the missing column, unknown status or repeated id.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> checks.validate_checks(pd.DataFrame({"id": ["v1"]}))
+    Traceback (most recent call last):
+        ...
+    ValueError: ...
+    """
     missing = [c for c in CHECK_COLUMNS if c not in checks.columns]
     if missing:
         raise ValueError(f"check table lacks columns {missing}")
@@ -355,7 +622,39 @@ def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claim
     """One row per published value and claim: the replication's check where there is one,
     ``not-computed`` otherwise, then the records of the validation studies (seed :data:`VALIDATION`,
     whose ids are their own, none of them a published id). ``check_tables`` maps replication name
-    -> check table."""
+    -> check table.
+
+    Parameters
+    ----------
+    check_tables : dict
+        Replication name -> check table.
+    values, claims : pandas.DataFrame
+        Every published value and claim.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The scorecard, with a ``replication`` column.
+
+    Raises
+    ------
+    ValueError
+        For a bad check table, an id checked twice or an id that is not published.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> values = pd.DataFrame({"id": ["v1", "v2"], "seed": "000", "source": "Table 4.2", "row": ["1", "2"],
+    ...                        "quantity": "k1", "unit": "per_mm", "value": 0.0123, "printed": "0.0123",
+    ...                        "rounding": "round"})
+    >>> claims = pd.DataFrame({"id": ["c1"], "seed": ["000"], "source": ["sec. 5.4"], "kind": ["qualitative"],
+    ...                        "statement": ["the TE is small"]})
+    >>> checked = checks.check_values(values.iloc[:1], pd.DataFrame({"id": ["v1"], "computed": [0.01232]}))
+    >>> card = checks.scorecard({"tseng_curvature": checked}, values, claims)
+    >>> card[["id", "status"]].values.tolist()
+    [['v1', 'reproduced'], ['v2', 'not-computed'], ['c1', 'not-computed']]
+    """
     frames = []
     for name, tab in check_tables.items():
         tab = validate_checks(tab).copy()
@@ -384,7 +683,35 @@ def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claim
 
 def summary(card: pd.DataFrame, by=("seed",)) -> pd.DataFrame:
     """Counts by status (columns, in :data:`STATUSES` order) for each group in ``by``, then
-    ``results`` (rows with a result status: every row but the printed inputs) and ``total``."""
+    ``results`` (rows with a result status: every row but the printed inputs) and ``total``.
+
+    Parameters
+    ----------
+    card : pandas.DataFrame
+        A scorecard (:func:`scorecard`).
+    by : tuple of str, optional
+        The grouping columns.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per group.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep import checks
+    >>> values = pd.DataFrame({"id": ["v1", "v2"], "seed": "000", "source": "Table 4.2", "row": ["1", "2"],
+    ...                        "quantity": "k1", "unit": "per_mm", "value": 0.0123, "printed": "0.0123",
+    ...                        "rounding": "round"})
+    >>> claims = pd.DataFrame({"id": ["c1"], "seed": ["000"], "source": ["sec. 5.4"], "kind": ["qualitative"],
+    ...                        "statement": ["the TE is small"]})
+    >>> checked = checks.check_values(values.iloc[:1], pd.DataFrame({"id": ["v1"], "computed": [0.01232]}))
+    >>> card = checks.scorecard({"tseng_curvature": checked}, values, claims)
+    >>> row = checks.summary(card).iloc[0]
+    >>> int(row["reproduced"]), int(row["not-computed"]), int(row["total"])
+    (1, 2, 3)
+    """
     counts = card.groupby(list(by))["status"].value_counts().unstack(fill_value=0)
     for s in STATUSES:
         if s not in counts.columns:

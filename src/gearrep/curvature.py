@@ -65,13 +65,31 @@ __all__ = [
     "second_form_in_basis",
 ]
 
+#: relative eigenvalue gap below which a point counts as umbilic (isotropic curvature)
 DEFAULT_UMBILIC_TOL = 1e-8
 
 
 class FundamentalForms(NamedTuple):
     """Coefficients of I = E du^2 + 2F du dv + G dv^2 and II = L du^2 + 2M du dv + N dv^2.
 
-    L, M, N use the unit normal n = unit(r_u x r_v) (L = r_uu . n, ...)."""
+    L, M, N use the unit normal n = unit(r_u x r_v) (L = r_uu . n, ...).
+
+    Attributes
+    ----------
+    E, F, G : numpy.ndarray
+        First form [length^2 per parameter units squared].
+    L, M, N : numpy.ndarray
+        Second form [length per parameter units squared].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import fundamental_forms
+    >>> [round(float(x), 12) for x in fundamental_forms(p)]
+    [4.0, 0.0, 1.0, -2.0, 0.0, 0.0]
+    """
 
     E: np.ndarray
     F: np.ndarray
@@ -83,7 +101,27 @@ class FundamentalForms(NamedTuple):
 
 class PrincipalCurvatures(NamedTuple):
     """Principal curvatures k1 >= k2 (w.r.t. ``normal``), unit directions e1, e2 (e1 x e2 =
-    normal). Scalars (...), vectors (..., 3)."""
+    normal). Scalars (...), vectors (..., 3).
+
+    Attributes
+    ----------
+    k1, k2 : numpy.ndarray
+        Principal curvatures, k1 >= k2 [1/length].
+    e1, e2 : numpy.ndarray
+        Unit principal directions (..., 3).
+    normal : numpy.ndarray
+        The unit normal the signs refer to (..., 3).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import principal_curvatures
+    >>> pc = principal_curvatures(p)
+    >>> round(float(pc.k1), 12), round(float(pc.k2), 12), round(float(abs(pc.e1[2])), 12)  # 1/mm
+    (0.0, -0.5, 1.0)
+    """
 
     k1: np.ndarray
     k2: np.ndarray
@@ -106,7 +144,27 @@ class RelativeCurvature(NamedTuple):
     """Principal relative curvatures of kappa^(12) = kappa^(1) - kappa^(2) (k1 >= k2).
 
     sigma: signed angle e_I^(1) -> e_I^(2) about ``normal``; alpha: signed angle e_I^(1) -> e1.
-    e1, e2 (unit, e1 x e2 = normal) and normal are None when only angles were given."""
+    e1, e2 (unit, e1 x e2 = normal) and normal are None when only angles were given.
+
+    Attributes
+    ----------
+    k1, k2 : numpy.ndarray
+        Principal relative curvatures, k1 >= k2 [1/length].
+    alpha : numpy.ndarray
+        Signed angle e_I^(1) -> e1 [rad].
+    sigma : numpy.ndarray
+        Signed angle e_I^(1) -> e_I^(2) [rad].
+    e1, e2, normal : numpy.ndarray or None
+        Directions and common normal (..., 3).
+
+    Examples
+    --------
+    See :func:`relative_curvature`.
+
+    >>> from gearrep.curvature import RelativeCurvature
+    >>> RelativeCurvature(0.2, -0.3, 0.0, 0.0).e1 is None
+    True
+    """
 
     k1: np.ndarray
     k2: np.ndarray
@@ -125,7 +183,28 @@ def fundamental_forms(p: SurfacePoint) -> FundamentalForms:
     """First and second fundamental forms (E, F, G, L, M, N) at a surface point.
 
     Litvin ch. 7: E = r_u.r_u, F = r_u.r_v, G = r_v.r_v; L = r_uu.n, M = r_uv.n, N = r_vv.n
-    with n = unit(r_u x r_v) (seed 004 eq (9)-(13), same quantities)."""
+    with n = unit(r_u x r_v) (seed 004 eq (9)-(13), same quantities).
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+
+    Returns
+    -------
+    FundamentalForms
+        E, F, G, L, M, N of the shape of the point.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import fundamental_forms
+    >>> ff = fundamental_forms(p)
+    >>> round(float(ff.E), 12), round(float(ff.L), 12)  # R^2 [mm^2], -R [mm]
+    (4.0, -2.0)
+    """
     n = p.normal
     return FundamentalForms(
         _dot(p.r_u, p.r_u),
@@ -164,7 +243,28 @@ def shape_matrix(p: SurfacePoint):
     (unit(r_u), n x unit(r_u)); returns (t1, t2, n, S11, S12, S22).
 
     This is I^-1 II (Weingarten map, Litvin ch. 7) written in an orthonormal tangent basis,
-    where it becomes symmetric; its eigenvalues are the principal curvatures."""
+    where it becomes symmetric; its eigenvalues are the principal curvatures.
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+
+    Returns
+    -------
+    tuple
+        (t1, t2, n) unit vectors (..., 3) and S11, S12, S22 [1/length].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import shape_matrix
+    >>> t1, t2, n, S11, S12, S22 = shape_matrix(p)
+    >>> [round(float(x), 12) for x in (S11, S12, S22)]  # 1/mm
+    [-0.5, 0.0, 0.0]
+    """
     return _tangent_frame(p)
 
 
@@ -174,7 +274,27 @@ def sym2_eig(a, b, c, umbilic_tol: float = DEFAULT_UMBILIC_TOL):
     Returns (lam1 >= lam2, theta) with theta in (-pi/2, pi/2] the angle of the lam1
     eigenvector (cos theta, sin theta). The smaller-magnitude eigenvalue is computed as
     det/(larger) to avoid cancellation. Where the eigenvalue gap 2d satisfies
-    d <= umbilic_tol * max(|a|, |b|, |c|) (isotropic case), theta = 0."""
+    d <= umbilic_tol * max(``|a|, |b|, |c|``) (isotropic case), theta = 0.
+
+    Parameters
+    ----------
+    a, b, c : float or array_like
+        Matrix entries (any unit).
+    umbilic_tol : float, optional
+        Relative gap below which the matrix counts as isotropic.
+
+    Returns
+    -------
+    tuple
+        (lam1, lam2, theta [rad]).
+
+    Examples
+    --------
+    >>> from gearrep.curvature import sym2_eig
+    >>> lam1, lam2, theta = sym2_eig(2.0, 1.0, 2.0)
+    >>> round(float(lam1), 12), round(float(lam2), 12), round(float(theta), 12)  # theta = pi/4
+    (3.0, 1.0, 0.785398163397)
+    """
     a, b, c = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a, b, c)))
     m = 0.5 * (a + c)
     h = 0.5 * (a - c)
@@ -202,7 +322,32 @@ def second_form_in_basis(p: SurfacePoint, n, e1, e2) -> np.ndarray:
     M = r_uv . n, N = r_vv . n (Litvin ch. 7). ``n`` may be either unit normal (the form
     changes sign with it), so two surfaces in tangency can be written in one common basis;
     with n = unit(r_u x r_v) and (e1, e2) = (t1, t2) of :func:`shape_matrix` this is that
-    shape matrix. Eigenvalues: the principal curvatures w.r.t. ``n``."""
+    shape matrix. Eigenvalues: the principal curvatures w.r.t. ``n``.
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+    n : (..., 3) array_like
+        The unit normal of the form.
+    e1, e2 : (..., 3) array_like
+        An orthonormal tangent basis.
+
+    Returns
+    -------
+    numpy.ndarray
+        II (..., 2, 2) [1/length].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import principal_curvatures, second_form_in_basis
+    >>> pc = principal_curvatures(p)
+    >>> (np.round(second_form_in_basis(p, pc.normal, pc.e1, pc.e2), 12) + 0.0).tolist()
+    [[0.0, 0.0], [0.0, -0.5]]
+    """
     E, F, G = _dot(p.r_u, p.r_u), _dot(p.r_u, p.r_v), _dot(p.r_v, p.r_v)
     L, M, N = _dot(p.r_uu, n), _dot(p.r_uv, n), _dot(p.r_vv, n)
     det = E * G - F * F
@@ -227,7 +372,28 @@ def principal_curvatures(p: SurfacePoint, umbilic_tol: float = DEFAULT_UMBILIC_T
     corrected seed 004 eq (14)-(16)), computed from the symmetric shape matrix in the
     orthonormal basis (unit(r_u), n x unit(r_u)) so no non-symmetric eigenproblem is solved.
     Sign: k > 0 where the surface bends toward n = unit(r_u x r_v). At an umbilic
-    (|k1 - k2| <= 2 umbilic_tol max|S_ij|) e1 = unit(r_u)."""
+    (``|k1 - k2| <= 2 umbilic_tol max|S_ij|``) e1 = unit(r_u).
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+    umbilic_tol : float, optional
+        Relative eigenvalue gap below which the point counts as umbilic.
+
+    Returns
+    -------
+    PrincipalCurvatures
+        k1 >= k2 [1/length], e1, e2 and the normal.
+
+    Examples
+    --------
+    >>> from gearrep.curvature import principal_curvatures
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> pc = principal_curvatures(Sphere(R=4.0).evaluate(0.3, 0.2))  # outward normal
+    >>> round(float(pc.k1), 12), round(float(pc.k2), 12)  # 1/mm
+    (-0.25, -0.25)
+    """
     t1, t2, n, S11, S12, S22 = _tangent_frame(p)
     k1, k2, th = sym2_eig(S11, S12, S22, umbilic_tol)
     c, s = np.cos(th)[..., None], np.sin(th)[..., None]
@@ -240,7 +406,29 @@ def normal_curvature(p: SurfacePoint, direction) -> np.ndarray:
     """Normal curvature k_n = II(d)/I(d) in the tangent direction ``direction`` (..., 3).
 
     Litvin ch. 7. The component of ``direction`` along the normal is discarded; its length
-    does not matter. Sign as in :func:`principal_curvatures`."""
+    does not matter. Sign as in :func:`principal_curvatures`.
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+    direction : (..., 3) array_like
+        A tangent direction (any length).
+
+    Returns
+    -------
+    numpy.ndarray
+        k_n [1/length].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import normal_curvature
+    >>> round(float(normal_curvature(p, p.r_u + 2.0 * p.r_v)), 12)  # 45 deg between z and around
+    -0.25
+    """
     t1, t2, n, S11, S12, S22 = _tangent_frame(p)
     d = np.asarray(direction, dtype=float)
     x, y = _dot(d, t1), _dot(d, t2)
@@ -249,20 +437,81 @@ def normal_curvature(p: SurfacePoint, direction) -> np.ndarray:
 
 def euler_normal_curvature(pc: PrincipalCurvatures, direction) -> np.ndarray:
     """Euler's formula k_n = k1 cos^2 q + k2 sin^2 q, q the angle from e1 to ``direction``
-    (Litvin ch. 7). The normal component of ``direction`` is discarded."""
+    (Litvin ch. 7). The normal component of ``direction`` is discarded.
+
+    Parameters
+    ----------
+    pc : PrincipalCurvatures
+        The principal curvatures and directions.
+    direction : (..., 3) array_like
+        A tangent direction (any length).
+
+    Returns
+    -------
+    numpy.ndarray
+        k_n [1/length].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import euler_normal_curvature, principal_curvatures
+    >>> pc = principal_curvatures(p)
+    >>> round(float(euler_normal_curvature(pc, pc.e1 + pc.e2)), 12)  # 1/mm
+    -0.25
+    """
     d = np.asarray(direction, dtype=float)
     x, y = _dot(d, pc.e1), _dot(d, pc.e2)
     return (pc.k1 * x * x + pc.k2 * y * y) / (x * x + y * y)
 
 
 def gaussian_curvature(p: SurfacePoint) -> np.ndarray:
-    """K = (LN - M^2)/(EG - F^2) (Litvin ch. 7; independent of the normal's orientation)."""
+    """K = (LN - M^2)/(EG - F^2) (Litvin ch. 7; independent of the normal's orientation).
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+
+    Returns
+    -------
+    numpy.ndarray
+        K [1/length^2].
+
+    Examples
+    --------
+    >>> from gearrep.curvature import gaussian_curvature
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> round(float(gaussian_curvature(Sphere(R=2.0).evaluate(0.3, 0.2))), 12)  # 1/R^2 [1/mm^2]
+    0.25
+    """
     f = fundamental_forms(p)
     return (f.L * f.N - f.M**2) / (f.E * f.G - f.F**2)
 
 
 def mean_curvature(p: SurfacePoint) -> np.ndarray:
-    """H = (EN - 2FM + GL) / (2(EG - F^2)) = (k1 + k2)/2 (Litvin ch. 7; sign follows n)."""
+    """H = (EN - 2FM + GL) / (2(EG - F^2)) = (k1 + k2)/2 (Litvin ch. 7; sign follows n).
+
+    Parameters
+    ----------
+    p : gearrep.surface.SurfacePoint
+        Surface point(s) with first and second derivatives.
+
+    Returns
+    -------
+    numpy.ndarray
+        H [1/length].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import mean_curvature
+    >>> round(float(mean_curvature(p)), 12)  # 1/mm
+    -0.25
+    """
     f = fundamental_forms(p)
     return (f.E * f.N - 2.0 * f.F * f.M + f.G * f.L) / (2.0 * (f.E * f.G - f.F**2))
 
@@ -271,13 +520,54 @@ def with_opposite_normal(pc: PrincipalCurvatures) -> PrincipalCurvatures:
     """The same curvature data expressed with the normal -n.
 
     Every normal curvature changes sign, so k1' = -k2, k2' = -k1 (keeping k1' >= k2'); the
-    directions swap, e1' = e2, e2' = e1, which keeps e1' x e2' = -n = n'."""
+    directions swap, e1' = e2, e2' = e1, which keeps e1' x e2' = -n = n'.
+
+    Parameters
+    ----------
+    pc : PrincipalCurvatures
+        Curvatures with the normal n.
+
+    Returns
+    -------
+    PrincipalCurvatures
+        The same with -n.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> p = Cylinder(R=2.0).evaluate(0.3, 1.0)  # radius 2 mm: k = 0 along z, -1/2 around
+    >>> from gearrep.curvature import principal_curvatures, with_opposite_normal
+    >>> flipped = with_opposite_normal(principal_curvatures(p))
+    >>> round(float(flipped.k1), 12), round(float(flipped.k2), 12) + 0.0  # 1/mm
+    (0.5, 0.0)
+    """
     return PrincipalCurvatures(-pc.k2, -pc.k1, pc.e2, pc.e1, -pc.normal)
 
 
 def signed_angle(a, b, n) -> np.ndarray:
     """Signed angle from tangent vector a to tangent vector b, counter-clockwise about n, in
-    (-pi, pi]."""
+    (-pi, pi].
+
+    Parameters
+    ----------
+    a, b : (..., 3) array_like
+        Tangent vectors.
+    n : (..., 3) array_like
+        The unit normal the angle turns about.
+
+    Returns
+    -------
+    numpy.ndarray
+        The angle [rad].
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.curvature import signed_angle
+    >>> round(float(signed_angle([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])), 12) == round(math.pi / 2, 12)
+    True
+    """
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
     return np.arctan2(_dot(np.asarray(n, dtype=float), cross(a, b)), _dot(a, b))
@@ -290,6 +580,7 @@ def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma, umbilic_tol: floa
 
     kappa^(12)(q) = kappa^(1)(q) - kappa^(2)(q)
                   = (kS1 - kS2)/2 + (1/2) sqrt(g1^2 - 2 g1 g2 cos 2sigma + g2^2) cos 2(q - alpha)
+
     with kS_i = kI_i + kII_i and g_i = kI_i - kII_i (seed 002 eq 2.6.6), so
     k_rel = (kS1 - kS2 +- sqrt(g1^2 - 2 g1 g2 cos 2sigma + g2^2)) / 2 = 2B, 2A of seed 002
     eq 2.6.4-2.6.5, and cos 2alpha = (g1 - g2 cos 2sigma)/R, sin 2alpha = -g2 sin 2sigma/R
@@ -297,7 +588,29 @@ def relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma, umbilic_tol: floa
     sin 2alpha^(1) = +g2 sin 2sigma/R measures alpha^(1) the other way round).
     Computed as the eigen-decomposition of the relative curvature tensor in the basis
     (e_I^(1), e_II^(1)), which avoids the cancellation in kS1 - kS2 - R when the smaller
-    relative curvature is a small difference of large numbers."""
+    relative curvature is a small difference of large numbers.
+
+    Parameters
+    ----------
+    kI1, kII1, kI2, kII2 : float or array_like
+        Principal curvatures of surfaces 1 and 2 [1/length], with the common normal.
+    sigma : float or array_like
+        Angle from e_I^(1) to e_I^(2) [rad].
+    umbilic_tol : float, optional
+        As :func:`sym2_eig`.
+
+    Returns
+    -------
+    tuple
+        (k1_rel >= k2_rel [1/length], alpha [rad]).
+
+    Examples
+    --------
+    >>> from gearrep.curvature import relative_principal_curvatures
+    >>> k1, k2, alpha = relative_principal_curvatures(-0.5, 0.0, 0.1, 0.0, 0.0)  # 1/mm, rad
+    >>> round(float(k1), 12), round(float(k2), 12), round(float(abs(alpha)), 9)
+    (0.0, -0.6, 1.570796327)
+    """
     kI1, kII1, kI2, kII2, sigma = np.broadcast_arrays(
         *(np.asarray(x, dtype=float) for x in (kI1, kII1, kI2, kII2, sigma))
     )
@@ -324,7 +637,40 @@ def relative_curvature(
     Returns principal relative curvatures k1 >= k2, unit directions e1, e2 (e1 x e2 = n,
     n = c1.normal), sigma and alpha (signed, about n). Litvin ch. 9 / seed 002 eq 2.6.1-2.6.6;
     see :func:`relative_principal_curvatures`. If the relative curvature is isotropic,
-    e1 = e_I^(1)."""
+    e1 = e_I^(1).
+
+    Parameters
+    ----------
+    c1, c2 : PrincipalCurvatures
+        The two surfaces' curvatures, with a common normal.
+    normal_tol : float, optional
+        Angle [rad] the two normals may differ by.
+    umbilic_tol : float, optional
+        As :func:`sym2_eig`.
+
+    Returns
+    -------
+    RelativeCurvature
+        k1 >= k2 [1/length], alpha, sigma [rad], e1, e2 and the normal.
+
+    Raises
+    ------
+    ValueError
+        If the normals differ by more than ``normal_tol``.
+
+    Examples
+    --------
+    A cylinder of radius 2 mm against a sphere of radius 5 mm, both with the outward normal
+    (1, 0, 0):
+
+    >>> from gearrep.curvature import principal_curvatures, relative_curvature
+    >>> from gearrep.surfaces.analytic import Cylinder, Sphere
+    >>> c1 = principal_curvatures(Cylinder(R=2.0).evaluate(0.0, 0.0))
+    >>> c2 = principal_curvatures(Sphere(R=5.0).evaluate(0.0, 0.0))
+    >>> rel = relative_curvature(c1, c2)
+    >>> round(float(rel.k1), 12), round(float(rel.k2), 12)  # 1/mm
+    (0.2, -0.3)
+    """
     n = np.asarray(c1.normal, dtype=float)
     cosang = np.clip(_dot(n, c2.normal), -1.0, 1.0)
     bad = ~(cosang >= np.cos(normal_tol))

@@ -18,14 +18,21 @@ orthonormal basis e_f, e_h of the tool's principal directions, k_f >= k_h):
   angular velocity per unit m_j, i.e. the twist W_j = M_21^{-1} dM_21/dm_j. Its velocity over
   the generated surface is y = v_r^(2) = x + sum_j w_j mu_j (seed 000 eq 4.13/4.15), and the
   normal, fixed in S_2, satisfies dn^(2) = dn^(1) + sum_j (omega_j x n) mu_j (eq 4.14/4.16).
+
 * Rodrigues' formula on both surfaces, dn^(i) = -K_i v_r^(i) (K_i the symmetric shape operator;
   seed 000 eq 4.9-4.10 with K_1 = -diag(k_f, k_h)), gives (K_2 - K_1) y = C mu with columns
+
       c_j = -K_1 w_j + (n x omega_j)          (GGAT: a_13 = c_j . e_f, a_23 = c_j . e_h)
+
   which is seed 000 eq 4.17-4.20 (B = K_2 - K_1 = K_1^seed - L_12 K_2^seed L_21).
+
 * Differentiating the equations of meshing n . w_j = 0 along the motion (seed 000 eq 4.6,
   GGAT's differentiated equation of meshing) gives c_j . y = sum_i E_ji mu_i with
+
       E_ij = -II_1(w_i, w_j) + n . (omega_i x w_j) + n . (omega_j x w_i) - n . (M^{-1} d2M_ij r_1)
+
   (symmetric; for k = 1 this is GGAT's a_33; seed 000 eq 4.27-4.32 are the same rows).
+
 * For every mu (the contact path is free in two-parameter enveloping; for one-parameter
   enveloping y ranges over the line c . y = E) the two must hold together, so the (2+k)-square
   matrix [[K_2 - K_1, C], [C^T, E]] has rank k (seed 000: rank of 4.33 equals two; GGAT: the
@@ -47,11 +54,15 @@ the tests in tests/unit/core/test_curvature_relations.py):
   opposite sign. The same holds for b_12 (4.38, from 4.36) and b_22 (4.39, from 4.35). With the
   printed signs K_2 = K_1 - C E^{-1} C^T, which disagrees with the directly computed curvatures
   of the generated surface (tested); with the corrected signs they agree to ~1e-10.
+
 * eq 4.23: the last form lacks the factor 0.5: -k_h + 0.5 (k_s + k_q) - 0.5 (k_s - k_q) cos 2 sigma
   (the first form, -k_h + k_q cos^2 sigma + k_s sin^2 sigma, is right; possibly lost in OCR).
+
 * eq 4.36 as printed repeats the row (b_32, b_33, b_34); it must be the determinant of
   [[b_12, b_13, b_14], [b_32, b_33, b_34], [b_42, b_43, b_44]] (OCR).
+
 * eq 4.24 prints "= 2 b_12 / b_12" after the correct first form (OCR).
+
 * eq 4.25-4.26 are right but divide by sin 2 sigma; :func:`two_parameter_principal_curvatures` uses
   the equivalent k_s - k_q = 2 b_12 / sin 2 sigma = sign * hypot(2 b_12, D), exact also at
   b_12 = 0.
@@ -86,9 +97,11 @@ class GeneratedCurvatures:
 
     k1, k2 : principal curvatures of the generated surface, k1 >= k2 (k_s, k_q of seed 000
         in the algebraic order; see :func:`two_parameter_principal_curvatures` for the seed's labels)
+
     e1, e2 : its principal directions (unit, e1 x e2 = normal)
     k_f, k_h, e_f, e_h : tool principal curvatures (k_f >= k_h) and directions
     sigma : angle from e_f to e1 about ``normal``, in (-pi/2, pi/2]
+
     A : (n, 2+k, 2+k) [[K_2 - K_1, C], [C^T, E]] in the basis (e_f, e_h); rank k. For k = 1
         A = [[a11, a12, a13], [a12, a22, a23], [a13, a23, a33]] (GGAT ch. 8 notation)
     """

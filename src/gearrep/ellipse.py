@@ -72,8 +72,31 @@ class ContactEllipse(NamedTuple):
 
     a, b: semi-major / semi-minor axis; alpha: angle e_I^(1) -> minor axis (about n, sense of
     sigma); A, B: Litvin's coefficients (A <= B algebraically); area = pi a b; elliptic: A B > 0 and
-    min(|A|, |B|) > LINE_CONTACT_RTOL max(|A|, |B|) (else a line contact, whose a is no contact length).
-    major_axis, minor_axis: unit 3-vectors (only from :func:`elastic_ellipse_at`)."""
+    ``min(|A|, |B|) > LINE_CONTACT_RTOL max(|A|, |B|)`` (else a line contact, whose a is no contact
+    length). major_axis, minor_axis: unit 3-vectors (only from :func:`elastic_ellipse_at`).
+
+    Attributes
+    ----------
+    a, b : numpy.ndarray
+        Semi-major and semi-minor axis [length].
+    alpha : numpy.ndarray
+        Angle e_I^(1) -> minor axis [rad].
+    A, B : numpy.ndarray
+        Litvin's coefficients [1/length].
+    area : numpy.ndarray
+        pi a b [length^2].
+    elliptic : numpy.ndarray of bool
+        Whether the contact is an ellipse (not a line contact).
+    major_axis, minor_axis : numpy.ndarray or None
+        Unit 3-vectors of the axes.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import elastic_ellipse_from_relative
+    >>> el = elastic_ellipse_from_relative(0.02, 0.07, 0.001)  # 1/mm, 1/mm, mm
+    >>> round(float(el.a), 6), round(float(el.b), 6), round(float(el.ratio), 6)  # mm, mm, 1
+    (0.316228, 0.169031, 1.870829)
+    """
 
     a: np.ndarray
     b: np.ndarray
@@ -87,7 +110,7 @@ class ContactEllipse(NamedTuple):
 
     @property
     def ratio(self) -> np.ndarray:
-        """a / b (>= 1)."""
+        """a / b (>= 1) [1]."""
         return self.a / self.b
 
 
@@ -107,7 +130,27 @@ def litvin_coefficients(kI1, kII1, kI2, kII2, sigma):
     the B direction (largest algebraic relative curvature).
 
     Computed as 2A, 2B = principal relative curvatures (gearrep.curvature), algebraically equal
-    to the printed formulas but free of the cancellation in kS1 - kS2 - R."""
+    to the printed formulas but free of the cancellation in kS1 - kS2 - R.
+
+    Parameters
+    ----------
+    kI1, kII1, kI2, kII2 : float or array_like
+        Principal curvatures of surfaces 1 and 2 w.r.t. the common normal [1/length].
+    sigma : float or array_like
+        Angle from e_I^(1) to e_I^(2) [rad].
+
+    Returns
+    -------
+    tuple
+        (A, B [1/length], alpha [rad]).
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import litvin_coefficients
+    >>> A, B, alpha = litvin_coefficients(-0.05, 0.0, 0.02, 0.02, 0.0)  # 1/mm, rad
+    >>> round(float(A), 12), round(float(B), 12)
+    (-0.035, -0.01)
+    """
     k1, k2, alpha = relative_principal_curvatures(kI1, kII1, kI2, kII2, sigma)
     return 0.5 * k2, 0.5 * k1, alpha
 
@@ -140,7 +183,34 @@ def elastic_ellipse(kI1, kII1, kI2, kII2, sigma, delta) -> ContactEllipse:
     (> 0). Seed 002 eq 2.6.1-2.6.6 = seed 000 eq 5.14-5.17 = seed 004 eq 21-27.
 
     Only cos 2sigma enters a and b, so an unsigned sigma = arccos(e_I^(1).e_I^(2)) (seed 000
-    eq 5.15) gives the right axes; alpha's sign then follows that sigma's sense."""
+    eq 5.15) gives the right axes; alpha's sign then follows that sigma's sense.
+
+    Parameters
+    ----------
+    kI1, kII1, kI2, kII2 : float or array_like
+        Principal curvatures of surfaces 1 and 2 w.r.t. the common normal [1/length].
+    sigma : float or array_like
+        Angle from e_I^(1) to e_I^(2) [rad].
+    delta : float or array_like
+        Elastic approach [length], > 0.
+
+    Returns
+    -------
+    ContactEllipse
+        Semi-axes [length], angle, coefficients, area (no axis vectors).
+
+    Raises
+    ------
+    ValueError
+        If ``delta`` is not finite and > 0.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import elastic_ellipse
+    >>> el = elastic_ellipse(-0.05, 0.0, 0.02, 0.02, 0.0, 0.001)  # 1/mm, rad, mm
+    >>> round(float(el.a), 6), round(float(el.b), 6), bool(el.elliptic)  # mm
+    (0.316228, 0.169031, True)
+    """
     A, B, alpha = litvin_coefficients(kI1, kII1, kI2, kII2, sigma)
     return _ellipse_from_AB(A, B, alpha, delta)
 
@@ -149,7 +219,34 @@ def elastic_ellipse_from_relative(k1_rel, k2_rel, delta, alpha=0.0) -> ContactEl
     """Elastic-approach ellipse from the two principal relative curvatures (any order) and
     delta: A = min/2, B = max/2 (seed 002 eq 2.6.3-2.6.5 with 2A, 2B the principal relative
     curvatures). ``alpha`` is the angle of the max-relative-curvature direction from the
-    reference direction (default 0); the returned alpha refers to the minor axis."""
+    reference direction (default 0); the returned alpha refers to the minor axis.
+
+    Parameters
+    ----------
+    k1_rel, k2_rel : float or array_like
+        Principal relative curvatures [1/length].
+    delta : float or array_like
+        Elastic approach [length], > 0.
+    alpha : float or array_like, optional
+        Angle of the max-relative-curvature direction [rad].
+
+    Returns
+    -------
+    ContactEllipse
+        Semi-axes [length], angle, coefficients, area.
+
+    Raises
+    ------
+    ValueError
+        If ``delta`` is not finite and > 0.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import elastic_ellipse_from_relative
+    >>> el = elastic_ellipse_from_relative(0.07, 0.02, 0.001)  # any order
+    >>> round(float(el.A), 12), round(float(el.B), 12)  # 1/mm
+    (0.01, 0.035)
+    """
     k1_rel, k2_rel = np.broadcast_arrays(np.asarray(k1_rel, float), np.asarray(k2_rel, float))
     alpha = np.asarray(alpha, dtype=float)
     swap = k2_rel > k1_rel
@@ -165,7 +262,39 @@ def elastic_ellipse_at(
     """Elastic-approach ellipse from both surfaces' :class:`PrincipalCurvatures` at the
     contact point (same unit normal; see gearrep.curvature.with_opposite_normal), including
     the unit 3-vectors of the major and minor axes. Seed 002 eq 2.6.1-2.6.6 with the true
-    signed sigma (gearrep.curvature.relative_curvature)."""
+    signed sigma (gearrep.curvature.relative_curvature).
+
+    Parameters
+    ----------
+    c1, c2 : gearrep.curvature.PrincipalCurvatures
+        Both surfaces at the contact point, with the same unit normal.
+    delta : float or array_like
+        Elastic approach [length], > 0.
+    normal_tol : float, optional
+        Angle [rad] the two normals may differ by.
+
+    Returns
+    -------
+    ContactEllipse
+        With the axes' unit vectors.
+
+    Raises
+    ------
+    ValueError
+        If the normals differ or ``delta`` is bad.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.curvature import principal_curvatures, with_opposite_normal
+    >>> from gearrep.surfaces.analytic import Cylinder, Sphere
+    >>> c1 = principal_curvatures(Cylinder(R=20.0).evaluate(0.0, 0.0))  # mm; normal (1, 0, 0)
+    >>> c2 = with_opposite_normal(principal_curvatures(Sphere(R=50.0).evaluate(np.pi, 0.0)))  # facing it
+    >>> from gearrep.ellipse import elastic_ellipse_at
+    >>> el = elastic_ellipse_at(c1, c2, 0.001)  # delta [mm]
+    >>> round(float(el.a), 6), round(float(el.b), 6), np.round(np.abs(el.major_axis), 12).tolist()
+    (0.316228, 0.169031, [0.0, 0.0, 1.0])
+    """
     rel = relative_curvature(c1, c2, normal_tol=normal_tol)
     el = _ellipse_from_AB(0.5 * rel.k2, 0.5 * rel.k1, rel.alpha, delta)
     b_is_minor = (np.abs(el.B) >= np.abs(el.A))[..., None]
@@ -185,7 +314,32 @@ class HertzContact(NamedTuple):
     e: eccentricity sqrt(1 - b^2/a^2); A, B: gap coefficients (gap = A x^2 + B y^2, A <= B);
     Estar: effective modulus; residual, iterations, status: the eccentricity solve
     (gearrep.solve record; Status.SINGULAR where the relative curvatures are not both of one
-    sign, outputs NaN there)."""
+    sign, outputs NaN there).
+
+    Attributes
+    ----------
+    a, b : numpy.ndarray
+        Semi-axes, a >= b [length].
+    p0 : numpy.ndarray
+        Maximum pressure [force/length^2, MPa for N and mm].
+    approach : numpy.ndarray
+        Mutual approach of distant points [length].
+    e : numpy.ndarray
+        Eccentricity [1].
+    A, B : numpy.ndarray
+        Gap coefficients [1/length].
+    Estar : numpy.ndarray
+        Effective modulus [force/length^2].
+    residual, iterations, status : numpy.ndarray
+        The eccentricity solve's record.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import hertz_contact
+    >>> h = hertz_contact(0.02, 0.07, 1000.0, 210e3, 0.3)  # 1/mm, N, MPa
+    >>> round(float(h.a), 4), round(float(h.b), 4), round(float(h.e), 4)  # mm, mm, 1
+    (0.8273, 0.3609, 0.8998)
+    """
 
     a: np.ndarray
     b: np.ndarray
@@ -201,12 +355,37 @@ class HertzContact(NamedTuple):
 
     @property
     def converged(self) -> np.ndarray:
+        """Boolean mask of the rows whose eccentricity solve converged."""
         return self.status == Status.CONVERGED
 
 
 def effective_modulus(E1, nu1, E2=None, nu2=None) -> np.ndarray:
     """E* with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Johnson eq 4.22); the second body
-    defaults to the first material. E must be > 0 and -1 < nu <= 0.5."""
+    defaults to the first material. E must be > 0 and -1 < nu <= 0.5.
+
+    Parameters
+    ----------
+    E1, nu1 : float or array_like
+        Young's modulus [any unit, MPa in the library] and Poisson's ratio of body 1.
+    E2, nu2 : float or array_like, optional
+        Those of body 2 (default body 1's).
+
+    Returns
+    -------
+    numpy.ndarray
+        E* [the unit of E].
+
+    Raises
+    ------
+    ValueError
+        If a modulus is not finite and > 0 or a Poisson's ratio is outside (-1, 0.5].
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import effective_modulus
+    >>> round(float(effective_modulus(210e3, 0.3)), 3)  # steel on steel [MPa]
+    115384.615
+    """
     E2 = E1 if E2 is None else E2
     nu2 = nu1 if nu2 is None else nu2
     for name, E in (("E1", E1), ("E2", E2)):
@@ -232,7 +411,24 @@ def hertz_ratio(b_over_a) -> np.ndarray:
     """B/A of the Hertz gap for an ellipse of aspect b/a (Johnson eq 4.32-4.33):
     B/A = [(a/b)^2 E(e) - K(e)] / [K(e) - E(e)] = R_D(0, 1, p) / R_D(0, p, 1), p = (b/a)^2.
     (scipy's ellipk/ellipe take the parameter m = e^2; the Carlson form avoids the 0/0 at
-    e -> 0.)"""
+    e -> 0.)
+
+    Parameters
+    ----------
+    b_over_a : float or array_like
+        Aspect b/a of the ellipse, in (0, 1].
+
+    Returns
+    -------
+    numpy.ndarray
+        B/A [1].
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import hertz_ratio
+    >>> round(float(hertz_ratio(1.0)), 12), round(float(hertz_ratio(0.5)), 6)
+    (1.0, 2.842753)
+    """
     p = np.asarray(b_over_a, dtype=float) ** 2
     from scipy.special import elliprd
 
@@ -269,6 +465,36 @@ def hertz_contact(
     A row whose smaller |relative curvature| is at most ``line_rtol`` times the larger is a line
     contact (no finite ellipse; :func:`hertz_line_max_pressure_MPa` applies): NaN, status SINGULAR,
     not a tiny rounding-made pressure.
+
+    Parameters
+    ----------
+    k1_rel, k2_rel : float or array_like
+        Principal relative curvatures [1/length], both of one sign.
+    load : float or array_like
+        Normal load [force], > 0.
+    E1, nu1, E2, nu2 : float
+        Elastic constants (as :func:`effective_modulus`; force/length^2).
+    tol, maxiter : optional
+        Newton settings of the eccentricity solve.
+    line_rtol : float, optional
+        Ratio of the relative curvatures below which the contact is a line.
+
+    Returns
+    -------
+    HertzContact
+        Semi-axes [length], p0 [force/length^2], approach [length], ... and the solve's record.
+
+    Raises
+    ------
+    ValueError
+        If the load or an elastic constant is bad.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import hertz_contact
+    >>> h = hertz_contact(0.1, 0.1, 1000.0, 210e3, 0.3)  # 1/mm, N, MPa: a ball of radius 20 mm on a flat
+    >>> round(float(h.a), 6), round(float(h.p0), 2), int(h.status)  # mm, MPa
+    (0.402073, 2953.47, 0)
     """
     load = _check_positive("load", load)
     Estar = effective_modulus(E1, nu1, E2, nu2)
@@ -333,7 +559,41 @@ def hertz_contact_at(
     :func:`hertz_contact`. Returns a, b [mm], p0 [MPa] (the maximum contact pressure, equal to
     :func:`hertz_max_pressure_MPa` of the load and the semi-axes), approach [mm]. This is the route
     of thesis eq 15-24 (seed 003), which adds the principal curvatures of equal index (eq 19) and
-    so holds only where the principal directions of both surfaces coincide (sigma = 0)."""
+    so holds only where the principal directions of both surfaces coincide (sigma = 0).
+
+    Parameters
+    ----------
+    c1, c2 : gearrep.curvature.PrincipalCurvatures
+        Both surfaces at the contact point (1/mm), with the same unit normal.
+    load_N : float or array_like
+        Normal load [N].
+    E1_MPa, nu1, E2_MPa, nu2 : float
+        Elastic constants [MPa] (body 2 defaults to body 1).
+    normal_tol, tol, maxiter : optional
+        As :func:`gearrep.curvature.relative_curvature` and :func:`hertz_contact`.
+
+    Returns
+    -------
+    HertzContact
+        a, b [mm], p0 [MPa], approach [mm], ...
+
+    Raises
+    ------
+    ValueError
+        If the normals differ, or the load or an elastic constant is bad.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.curvature import principal_curvatures, with_opposite_normal
+    >>> from gearrep.surfaces.analytic import Cylinder, Sphere
+    >>> c1 = principal_curvatures(Cylinder(R=20.0).evaluate(0.0, 0.0))  # mm; normal (1, 0, 0)
+    >>> c2 = with_opposite_normal(principal_curvatures(Sphere(R=50.0).evaluate(np.pi, 0.0)))  # facing it
+    >>> from gearrep.ellipse import hertz_contact_at
+    >>> h = hertz_contact_at(c1, c2, 1000.0, 210e3, 0.3)  # N, MPa
+    >>> round(float(h.a), 4), round(float(h.b), 4), round(float(h.p0), 1)  # mm, mm, MPa
+    (0.8273, 0.3609, 1599.1)
+    """
     rel = relative_curvature(c1, c2, normal_tol=normal_tol)
     return hertz_contact(rel.k1, rel.k2, load_N, E1_MPa, nu1, E2_MPa, nu2, tol=tol, maxiter=maxiter)
 
@@ -342,7 +602,31 @@ def hertz_max_pressure_MPa(load_N, a_mm, b_mm) -> np.ndarray:
     """Maximum pressure [MPa = N/mm^2] of a Hertz (ellipsoidal) pressure distribution carrying the
     normal load ``load_N`` [N] on an ellipse of semi-axes ``a_mm``, ``b_mm`` [mm]:
     p_max = 3 P / (2 pi a b) (Johnson eq 3.63-3.64; seed 003 eq 24). The load is the integral of
-    p_max sqrt(1 - x^2/a^2 - y^2/b^2) over the ellipse."""
+    p_max sqrt(1 - x^2/a^2 - y^2/b^2) over the ellipse.
+
+    Parameters
+    ----------
+    load_N : float or array_like
+        Normal load [N], > 0.
+    a_mm, b_mm : float or array_like
+        Semi-axes [mm], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        p_max [MPa].
+
+    Raises
+    ------
+    ValueError
+        If a value is not finite and > 0.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import hertz_max_pressure_MPa
+    >>> round(float(hertz_max_pressure_MPa(1000.0, 1.0, 0.5)), 4)  # N, mm, mm -> MPa
+    954.9297
+    """
     P = _check_positive("load_N", load_N)
     a = _check_positive("a_mm (semi-axis)", a_mm)
     b = _check_positive("b_mm (semi-axis)", b_mm)
@@ -355,7 +639,33 @@ def hertz_line_max_pressure_MPa(load_per_length_N_per_mm, k_rel_per_mm, Estar_MP
     [N/mm], k = 1/R the relative curvature across the line [1/mm] and E* the effective modulus
     [MPa] (:func:`effective_modulus`); the contact half-width is 2 P' / (pi p_max). The limit of
     the elliptical contact when one relative curvature vanishes (line contact of conjugate
-    flanks), where :func:`hertz_contact` has no finite ellipse."""
+    flanks), where :func:`hertz_contact` has no finite ellipse.
+
+    Parameters
+    ----------
+    load_per_length_N_per_mm : float or array_like
+        P' [N/mm], > 0.
+    k_rel_per_mm : float or array_like
+        Relative curvature across the line [1/mm], > 0.
+    Estar_MPa : float or array_like
+        E* [MPa], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        p_max [MPa].
+
+    Raises
+    ------
+    ValueError
+        If a value is not finite and > 0.
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import effective_modulus, hertz_line_max_pressure_MPa
+    >>> round(float(hertz_line_max_pressure_MPa(100.0, 0.1, effective_modulus(210e3, 0.3))), 3)  # MPa
+    606.037
+    """
     w = _check_positive("load_per_length_N_per_mm", load_per_length_N_per_mm)
     k = np.abs(np.asarray(k_rel_per_mm, dtype=float))
     _check_positive("|k_rel_per_mm| (relative curvature across the line)", k)

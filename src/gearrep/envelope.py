@@ -13,6 +13,7 @@ tool point relative to the generated member when m_j alone varies. Sources:
 * one-parameter family: Litvin & Fuentes, *Gear Geometry and Applied Theory* (GGAT), 2nd ed.,
   ch. 6 (family of surfaces, equation of meshing n . v^(12) = 0); seed 002 eq 2.2.6-2.2.9 and
   2.3.5-2.3.6 (rack-cutter generation, where (E) reduces to (r_p psi - y) N_x + x N_y = 0);
+
 * two-parameter family: seed 000 eq 4.3-4.5 (the hob surface moved by (theta, psi)).
 
 All vectors are evaluated in S_1 (the tool frame) and rotated into S_2 at the end. With
@@ -55,7 +56,9 @@ Usage (the two-parameter hob set-up of seed 000; tool parameters are always call
                           translation((1, 0, 0), [0, 0], offset=E),        # centre distance
                           rotation((1, 0, 0), [0, 0], offset=-pi / 2 + lam),
                           rotation((0, 0, 1), [1, 0])],                    # hob spin theta
+
                          names=("theta", "psi"))
+
     env = Envelope(hob, motion, free=("u", "psi"))    # generated surface r(l, psi)
     rec = env.solve(l, psi, guess=[pi, 0.0])          # EnvelopeResult (status per point)
     surf = env.surface(guess=[pi, 0.0])               # a Surface of (l, psi)

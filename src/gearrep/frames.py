@@ -31,6 +31,8 @@ import math
 
 import numpy as np
 
+from ._applier import apply_matrix, matrix_applier
+
 __all__ = [
     "rot_x",
     "rot_y",
@@ -73,17 +75,71 @@ def _rot(a, i, j):
 
 
 def rot_x(a) -> np.ndarray:
-    """Active rotation by ``a`` about x: [[1, 0, 0], [0, c, -s], [0, s, c]] (Litvin ch. 1)."""
+    """Active rotation by ``a`` about x: [[1, 0, 0], [0, c, -s], [0, s, c]] (Litvin ch. 1).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotation matrices.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_x
+    >>> (np.round(rot_x(np.pi / 2), 12) + 0.0).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]
+    """
     return _rot(a, 1, 2)
 
 
 def rot_y(a) -> np.ndarray:
-    """Active rotation by ``a`` about y: [[c, 0, s], [0, 1, 0], [-s, 0, c]] (Litvin ch. 1)."""
+    """Active rotation by ``a`` about y: [[c, 0, s], [0, 1, 0], [-s, 0, c]] (Litvin ch. 1).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotation matrices.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_y
+    >>> (np.round(rot_y(np.pi / 2), 12) + 0.0).tolist()
+    [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]
+    """
     return _rot(a, 2, 0)
 
 
 def rot_z(a) -> np.ndarray:
-    """Active rotation by ``a`` about z: [[c, -s, 0], [s, c, 0], [0, 0, 1]] (Litvin ch. 1)."""
+    """Active rotation by ``a`` about z: [[c, -s, 0], [s, c, 0], [0, 0, 1]] (Litvin ch. 1).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotation matrices.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_z
+    >>> (np.round(rot_z(np.pi / 2), 12) + 0.0).tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    """
     return _rot(a, 0, 1)
 
 
@@ -108,24 +164,124 @@ def _drot(a, i, j, order):
 
 def drot_x(a, order: int = 1) -> np.ndarray:
     """Derivative d^order rot_x(a) / da^order (order 1 or 2), batched like :func:`rot_x`:
-    order 1 [[0, 0, 0], [0, -s, -c], [0, c, -s]]."""
+    order 1 [[0, 0, 0], [0, -s, -c], [0, c, -s]].
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+    order : {1, 2}, optional
+        The order of the derivative.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) derivatives [1/rad^order].
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not 1 or 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import drot_x
+    >>> (np.round(drot_x(0.0), 12) + 0.0).tolist()
+    [[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]
+    """
     return _drot(a, 1, 2, order)
 
 
 def drot_y(a, order: int = 1) -> np.ndarray:
     """Derivative d^order rot_y(a) / da^order (order 1 or 2), batched like :func:`rot_y`:
-    order 1 [[-s, 0, c], [0, 0, 0], [-c, 0, -s]]."""
+    order 1 [[-s, 0, c], [0, 0, 0], [-c, 0, -s]].
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+    order : {1, 2}, optional
+        The order of the derivative.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) derivatives [1/rad^order].
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not 1 or 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import drot_y
+    >>> (np.round(drot_y(0.0), 12) + 0.0).tolist()
+    [[0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]
+    """
     return _drot(a, 2, 0, order)
 
 
 def drot_z(a, order: int = 1) -> np.ndarray:
     """Derivative d^order rot_z(a) / da^order (order 1 or 2), batched like :func:`rot_z`:
-    order 1 [[-s, -c, 0], [c, -s, 0], [0, 0, 0]]."""
+    order 1 [[-s, -c, 0], [c, -s, 0], [0, 0, 0]].
+
+    Parameters
+    ----------
+    a : float or array_like
+        Angle [rad]; an array of shape S gives a stack (S, 3, 3).
+    order : {1, 2}, optional
+        The order of the derivative.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) derivatives [1/rad^order].
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not 1 or 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import drot_z
+    >>> (np.round(drot_z(0.0), 12) + 0.0).tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]]
+    """
     return _drot(a, 0, 1, order)
 
 
 def rotation(axis: str, a) -> np.ndarray:
-    """``rot_x``/``rot_y``/``rot_z`` selected by ``axis`` in {'x', 'y', 'z'}."""
+    """``rot_x``/``rot_y``/``rot_z`` selected by ``axis`` in {'x', 'y', 'z'}.
+
+    Parameters
+    ----------
+    axis : {"x", "y", "z"}
+        The axis.
+    a : float or array_like
+        Angle [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotation matrices.
+
+    Raises
+    ------
+    ValueError
+        If ``axis`` is not 'x', 'y' or 'z'.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_y, rotation
+    >>> bool((rotation("y", 0.3) == rot_y(0.3)).all())
+    True
+    """
     try:
         return {"x": rot_x, "y": rot_y, "z": rot_z}[axis](a)
     except KeyError:
@@ -155,7 +311,32 @@ def _axis_generator(axis):
 def rotation_about_axis(axis, a) -> np.ndarray:
     """Active rotation by ``a`` about the unit direction of ``axis`` (..., 3) (Rodrigues:
     R = I + sin a K + (1 - cos a) K^2, K the cross-product matrix of the unit axis). Batch
-    dimensions of ``axis`` (without its last) and ``a`` broadcast."""
+    dimensions of ``axis`` (without its last) and ``a`` broadcast.
+
+    Parameters
+    ----------
+    axis : (..., 3) array_like
+        Direction of the axis (any non-zero length).
+    a : float or array_like
+        Angle [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotation matrices.
+
+    Raises
+    ------
+    ValueError
+        If an axis is the zero vector.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_z, rotation_about_axis
+    >>> bool(np.allclose(rotation_about_axis([0.0, 0.0, 2.0], 0.4), rot_z(0.4), rtol=0, atol=1e-15))
+    True
+    """
     K = _axis_generator(axis)
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
@@ -164,7 +345,34 @@ def rotation_about_axis(axis, a) -> np.ndarray:
 
 def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
     """Derivative d^order R / da^order (order 1 or 2) of :func:`rotation_about_axis`:
-    dR/da = cos a K + sin a K^2, d2R/da2 = -sin a K + cos a K^2."""
+    dR/da = cos a K + sin a K^2, d2R/da2 = -sin a K + cos a K^2.
+
+    Parameters
+    ----------
+    axis : (..., 3) array_like
+        Direction of the axis.
+    a : float or array_like
+        Angle [rad].
+    order : {1, 2}, optional
+        The order of the derivative.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) derivatives [1/rad^order].
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not 1 or 2, or an axis is zero.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import drot_z, drotation_about_axis
+    >>> bool(np.allclose(drotation_about_axis([0.0, 0.0, 1.0], 0.4), drot_z(0.4), rtol=0, atol=1e-15))
+    True
+    """
     if order not in (1, 2):
         raise ValueError(f"order must be 1 or 2, got {order!r}")
     return rotation_about_axis_with_derivatives(axis, a)[order]
@@ -173,7 +381,31 @@ def drotation_about_axis(axis, a, order: int = 1) -> np.ndarray:
 def axis_generators(axis):
     """(K, K^2): the cross-product matrix K of the unit direction of ``axis`` and its square, as
     :func:`rotation_about_axis_with_derivatives` forms them (pass them as ``generators`` where the
-    same axis turns again and again, e.g. a factor of a motion chain)."""
+    same axis turns again and again, e.g. a factor of a motion chain).
+
+    Parameters
+    ----------
+    axis : (..., 3) array_like
+        Direction of the axis.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (K, K^2), each (..., 3, 3).
+
+    Raises
+    ------
+    ValueError
+        If an axis is zero.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import axis_generators
+    >>> K, K2 = axis_generators([0.0, 0.0, 1.0])
+    >>> K.tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, -0.0], [-0.0, 0.0, 0.0]]
+    """
     K = _axis_generator(axis)
     return K, K @ K
 
@@ -182,7 +414,30 @@ def rotation_about_axis_with_derivatives(axis, a, generators=None):
     """(R, dR/da, d2R/da2) of :func:`rotation_about_axis` in one evaluation (one generator K,
     one K^2, one sine and cosine): what a chain of rotations differentiated by the product rule
     needs at every step. ``generators``: :func:`axis_generators` of ``axis``, if the caller keeps
-    them (the same values)."""
+    them (the same values).
+
+    Parameters
+    ----------
+    axis : (..., 3) array_like
+        Direction of the axis.
+    a : float or array_like
+        Angle [rad].
+    generators : tuple, optional
+        :func:`axis_generators` of ``axis``.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (R, dR/da, d2R/da2), each (..., 3, 3).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rotation_about_axis_with_derivatives
+    >>> R, dR, d2R = rotation_about_axis_with_derivatives([1.0, 0.0, 0.0], 0.0)
+    >>> (np.round(dR, 12) + 0.0).tolist()  # the generator of x
+    [[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]
+    """
     K, K2 = axis_generators(axis) if generators is None else generators
     a = np.asarray(a, dtype=float)
     s, c = np.sin(a)[..., None, None], np.cos(a)[..., None, None]
@@ -192,50 +447,57 @@ def rotation_about_axis_with_derivatives(axis, a, generators=None):
 def rotate_z(c, s, v):
     """rot_z(a) applied to a vector given by components (structure of arrays), with c = cos a and
     s = sin a given (computed once by the caller): (c v0 - s v1, s v0 + c v1, v2). ``v`` is a
-    3-tuple of broadcastable arrays or floats; returns a 3-tuple."""
+    3-tuple of broadcastable arrays or floats; returns a 3-tuple.
+
+    Parameters
+    ----------
+    c, s : float or array_like
+        cos a and sin a.
+    v : tuple
+        (x, y, z) components.
+
+    Returns
+    -------
+    tuple
+        The rotated components.
+
+    Examples
+    --------
+    >>> from gearrep.frames import rotate_z
+    >>> rotate_z(0.0, 1.0, (1.0, 0.0, 5.0))  # a quarter turn
+    (0.0, 1.0, 5.0)
+    """
     v0, v1, v2 = v
     return (c * v0 - s * v1, s * v0 + c * v1, v2)
 
 
-def matrix_applier(M, t=None):
-    """The map v -> M v (+ t) for ONE fixed 3 x 3 matrix ``M`` (the mounting of a member, say) on
-    vectors given by components (3-tuples of broadcastable arrays or floats): each component the
-    sum of its three products left to right (plus t), no (n, 3, 3) stack built. Prepared once (the
-    matrix is checked here), applied many times; floats in give floats out. ``t``: optional fixed
-    3-vector. (Leaving out the zero and +-1 entries, by a function built from a string, saved
-    0.4-2.8 % of a single-point contact solve of the README pair at load 0.2 and nothing
-    measurable at load 4.6 (0.95-1.11 both ways), with the same contacts bit for bit.)"""
-    M = np.asarray(M, dtype=float)
-    if M.shape != (3, 3) or not np.all(np.isfinite(M)):
-        raise ValueError(f"M must be one finite 3x3 matrix, got shape {M.shape}")
-    tt = (0.0, 0.0, 0.0) if t is None else tuple(float(x) for x in np.asarray(t, dtype=float).reshape(3))
-    if not all(math.isfinite(x) for x in tt):
-        raise ValueError(f"t must be a finite 3-vector, got {t!r}")
-    (a, b, c), (d, e, f), (g, h, i) = M.tolist()
-    if not any(tt):
-
-        def apply(v):
-            x, y, z = v
-            return (a * x + b * y + c * z, d * x + e * y + f * z, g * x + h * y + i * z)
-
-        return apply
-    t0, t1, t2 = tt
-
-    def apply_shifted(v):
-        x, y, z = v
-        return (a * x + b * y + c * z + t0, d * x + e * y + f * z + t1, g * x + h * y + i * z + t2)
-
-    return apply_shifted
-
-
-def apply_matrix(M, v, t=None):
-    """M v (+ t) for one fixed 3 x 3 matrix and a vector by components (:func:`matrix_applier`)."""
-    return matrix_applier(M, t)(v)
-
-
 def homogeneous(R=None, t=None) -> np.ndarray:
     """4x4 homogeneous matrix [[R, t], [0 0 0 1]] (Litvin ch. 1). R (..., 3, 3) defaults to
-    the identity, t (..., 3) to zero; batch dimensions broadcast."""
+    the identity, t (..., 3) to zero; batch dimensions broadcast.
+
+    Parameters
+    ----------
+    R : (..., 3, 3) array_like, optional
+        Rotation block.
+    t : (..., 3) array_like, optional
+        Translation [length].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 4, 4) matrices.
+
+    Raises
+    ------
+    ValueError
+        If ``R`` or ``t`` has the wrong shape.
+
+    Examples
+    --------
+    >>> from gearrep.frames import homogeneous
+    >>> homogeneous(t=[1.0, 2.0, 3.0])[:3, 3].tolist()
+    [1.0, 2.0, 3.0]
+    """
     R = np.eye(3) if R is None else np.asarray(R, dtype=float)
     t = np.zeros(3) if t is None else np.asarray(t, dtype=float)
     if R.shape[-2:] != (3, 3):
@@ -251,14 +513,54 @@ def homogeneous(R=None, t=None) -> np.ndarray:
 
 
 def translation(t) -> np.ndarray:
-    """Pure translation homogeneous(None, t)."""
+    """Pure translation homogeneous(None, t).
+
+    Parameters
+    ----------
+    t : (..., 3) array_like
+        Translation [length].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 4, 4) matrices.
+
+    Examples
+    --------
+    >>> from gearrep.frames import transform_points, translation
+    >>> transform_points(translation([1.0, 0.0, 0.0]), [0.0, 0.0, 0.0]).tolist()
+    [1.0, 0.0, 0.0]
+    """
     return homogeneous(None, t)
 
 
 def compose(*M) -> np.ndarray:
     """Matrix product left to right: compose(M_ij, M_jk, M_kl) = M_il (Litvin ch. 1).
 
-    Works for 4x4 or 3x3 stacks with broadcasting batch dimensions."""
+    Works for 4x4 or 3x3 stacks with broadcasting batch dimensions.
+
+    Parameters
+    ----------
+    *M : array_like
+        (..., 4, 4) or (..., 3, 3) matrices, at least one.
+
+    Returns
+    -------
+    numpy.ndarray
+        Their product.
+
+    Raises
+    ------
+    ValueError
+        If no matrix is given.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import compose, rot_z
+    >>> bool(np.allclose(compose(rot_z(0.1), rot_z(0.2)), rot_z(0.3), rtol=0, atol=1e-15))
+    True
+    """
     if not M:
         raise ValueError("compose needs at least one matrix")
     out = np.asarray(M[0], dtype=float)
@@ -269,7 +571,28 @@ def compose(*M) -> np.ndarray:
 
 def transform_points(M, p) -> np.ndarray:
     """r_i = M_ij r_j for points p (..., 3) given in S_j; M (..., 4, 4) (or (..., 3, 3)
-    for a pure rotation). Batch dimensions broadcast."""
+    for a pure rotation). Batch dimensions broadcast.
+
+    Parameters
+    ----------
+    M : (..., 4, 4) or (..., 3, 3) array_like
+        M_ij.
+    p : (..., 3) array_like
+        Points in S_j [length].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3) points in S_i.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import homogeneous, rot_z, transform_points
+    >>> M = homogeneous(rot_z(np.pi / 2), [10.0, 0.0, 0.0])
+    >>> np.round(transform_points(M, [[1.0, 0.0, 0.0]]), 12).tolist()
+    [[10.0, 1.0, 0.0]]
+    """
     M = np.asarray(M, dtype=float)
     p = np.asarray(p, dtype=float)
     out = np.einsum("...ij,...j->...i", M[..., :3, :3], p)
@@ -280,14 +603,54 @@ def transform_points(M, p) -> np.ndarray:
 
 def transform_vectors(M, v) -> np.ndarray:
     """Free vectors (normals, tangents, velocities): v_i = L_ij v_j with L_ij the 3x3 block of
-    M_ij (Litvin ch. 1); the translation is ignored."""
+    M_ij (Litvin ch. 1); the translation is ignored.
+
+    Parameters
+    ----------
+    M : (..., 4, 4) or (..., 3, 3) array_like
+        M_ij.
+    v : (..., 3) array_like
+        Free vectors in S_j.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3) vectors in S_i.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import homogeneous, rot_z, transform_vectors
+    >>> M = homogeneous(rot_z(np.pi / 2), [10.0, 0.0, 0.0])
+    >>> (np.round(transform_vectors(M, [1.0, 0.0, 0.0]), 12) + 0.0).tolist()
+    [0.0, 1.0, 0.0]
+    """
     M = np.asarray(M, dtype=float)
     return np.einsum("...ij,...j->...i", M[..., :3, :3], np.asarray(v, dtype=float))
 
 
 def is_rigid(M, tol: float = 1e-10) -> np.ndarray:
     """True where the 3x3 block of M is a proper rotation (R^T R = I, det R = +1 within tol)
-    and the last row is (0, 0, 0, 1)."""
+    and the last row is (0, 0, 0, 1).
+
+    Parameters
+    ----------
+    M : (..., 4, 4) or (..., 3, 3) array_like
+        Matrices.
+    tol : float, optional
+        Absolute tolerance of the entries.
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        One per matrix.
+
+    Examples
+    --------
+    >>> from gearrep.frames import is_rigid, rot_x
+    >>> bool(is_rigid(rot_x(0.7))), bool(is_rigid(2.0 * rot_x(0.7)))
+    (True, False)
+    """
     M = np.asarray(M, dtype=float)
     R = M[..., :3, :3]
     orth = np.max(np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)), axis=(-2, -1)) <= tol
@@ -301,7 +664,35 @@ def inverse(M, check: bool = True, tol: float = 1e-10) -> np.ndarray:
     """Inverse of a rigid transform: M_ji = M_ij^-1 = [[R^T, -R^T t], [0, 1]] (Litvin ch. 1).
 
     3x3 input returns R^T. With ``check`` a ValueError is raised if M is not rigid (use
-    numpy.linalg.inv for general matrices)."""
+    numpy.linalg.inv for general matrices).
+
+    Parameters
+    ----------
+    M : (..., 4, 4) or (..., 3, 3) array_like
+        Rigid transforms.
+    check : bool, optional
+        Check that M is rigid first.
+    tol : float, optional
+        Tolerance of that check.
+
+    Returns
+    -------
+    numpy.ndarray
+        M^-1, of the shape of M.
+
+    Raises
+    ------
+    ValueError
+        With ``check``, if M is not rigid.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import compose, homogeneous, inverse, rot_y
+    >>> M = homogeneous(rot_y(0.3), [1.0, 2.0, 3.0])
+    >>> bool(np.allclose(compose(inverse(M), M), np.eye(4), rtol=0, atol=1e-15))
+    True
+    """
     M = np.asarray(M, dtype=float)
     if check and not np.all(is_rigid(M, tol)):
         raise ValueError("inverse: M is not a rigid transform (R^T R != I, det R != 1 or bad last row)")
@@ -313,7 +704,35 @@ def inverse(M, check: bool = True, tol: float = 1e-10) -> np.ndarray:
 
 def rotation_about_line(point, axis, a) -> np.ndarray:
     """Homogeneous active rotation by ``a`` about the line through ``point`` with direction
-    ``axis``: x -> R (x - point) + point."""
+    ``axis``: x -> R (x - point) + point.
+
+    Parameters
+    ----------
+    point : (..., 3) array_like
+        A point of the line [length].
+    axis : (..., 3) array_like
+        Its direction.
+    a : float or array_like
+        Angle [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 4, 4) matrices.
+
+    Raises
+    ------
+    ValueError
+        If an axis is zero.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rotation_about_line, transform_points
+    >>> M = rotation_about_line([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], np.pi)  # half a turn about x = 1
+    >>> (np.round(transform_points(M, [0.0, 0.0, 0.0]), 12) + 0.0).tolist()
+    [2.0, 0.0, 0.0]
+    """
     R = rotation_about_axis(axis, a)
     point = np.asarray(point, dtype=float)
     return homogeneous(R, point - np.einsum("...ij,...j->...i", R, point))
@@ -326,7 +745,33 @@ def misalignment_rotation(gamma_h=0.0, gamma_v=0.0, axes: str = "xy") -> np.ndar
 
     ``axes`` = two letters naming the axes of the first and second rotation (default 'xy'
     as in seed 000); callers decide which is the "horizontal" / "vertical" one for their
-    frames. Vectorised over angle arrays."""
+    frames. Vectorised over angle arrays.
+
+    Parameters
+    ----------
+    gamma_h, gamma_v : float or array_like, optional
+        The two angles [rad].
+    axes : str, optional
+        Two different letters of 'xyz'.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3, 3) rotations L_fv.
+
+    Raises
+    ------
+    ValueError
+        If ``axes`` is not two different letters of 'xyz'.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import misalignment_rotation, rot_x, rot_y
+    >>> L = misalignment_rotation(0.01, 0.02)
+    >>> bool(np.allclose(L, rot_x(0.01) @ rot_y(0.02), rtol=0, atol=1e-15))
+    True
+    """
     if len(axes) != 2 or axes[0] == axes[1]:
         raise ValueError(f"axes must be two different letters of 'xyz', got {axes!r}")
     return rotation(axes[0], gamma_h) @ rotation(axes[1], gamma_v)
@@ -357,6 +802,35 @@ def gear_mounting(
     Which of the two angles a paper calls "horizontal" or "vertical" depends on its frame
     (seed 000 rotates about X_h then Y_h, see :func:`misalignment_rotation`); state it in the
     caller. Vectorised over array arguments.
+
+    Parameters
+    ----------
+    center_distance : float or array_like
+        C [length].
+    d_center, d_axial : float or array_like, optional
+        dC and dZ [length].
+    gamma_in_plane, gamma_out_of_plane : float or array_like, optional
+        The angular errors [rad].
+    center_axis : {"x", "y"}, optional
+        The centre-distance line e_c.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 4, 4) matrices M_fq.
+
+    Raises
+    ------
+    ValueError
+        If ``center_axis`` is not 'x' or 'y'.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import gear_mounting
+    >>> M = gear_mounting(100.0, d_center=0.05)  # mm
+    >>> M[:3, 3].tolist(), bool(np.allclose(M[:3, :3], np.eye(3)))
+    ([100.05, 0.0, 0.0], True)
     """
     if center_axis not in ("x", "y"):
         raise ValueError(f"center_axis must be 'x' or 'y', got {center_axis!r}")

@@ -36,10 +36,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._te_envelope import SampledCycle, handover_gap, handover_jump, pair_te_curves, sampled_cycle, upper_envelope
 from .inputs import check_positive
 from .solve import SolveResult, Status, newton
 from .tca import ContactPoints, GearPair, newton_rows, reduced_system, solve_contact, trace_path
-from .units import ARCSEC
 
 __all__ = [
     "contact_ratio",
@@ -61,7 +61,32 @@ __all__ = [
 def contact_ratio(phi1_begin, phi1_end, n1):
     """Contact ratio from the engagement limits of one tooth pair, seed 000 eq (5.13) corrected:
     m_c = (phi_1E - phi_1B) / (2 pi / N1) (angles in rad; negative when phi1 decreases through the
-    mesh, e.g. for the opposite sense of rotation). Vectorised."""
+    mesh, e.g. for the opposite sense of rotation). Vectorised.
+
+    Parameters
+    ----------
+    phi1_begin, phi1_end : float or array_like
+        Engagement limits of one tooth pair [rad].
+    n1 : float
+        Teeth of member 1, > 0.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The contact ratio [1].
+
+    Raises
+    ------
+    ValueError
+        If ``n1`` is not a finite number > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.meshing import contact_ratio
+    >>> round(float(contact_ratio(-0.2, 0.2, 23)), 6)  # 0.4 rad of a 2 pi / 23 pitch
+    1.464225
+    """
     check_positive("n1", n1)
     return (np.asarray(phi1_end, float) - np.asarray(phi1_begin, float)) * n1 / (2.0 * np.pi)
 
@@ -71,6 +96,36 @@ def contact_ratio_closed_form(r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitc
     (sqrt(r_a1^2 - r_b1^2) + sqrt(r_a2^2 - r_b2^2) - a sin(alpha_w)) / p_b, cos(alpha_w) = (r_b1 + r_b2)/a.
 
     For the standard centre distance alpha_w = alpha and p_b = pi m cos(alpha). Vectorised.
+
+    Parameters
+    ----------
+    r_a1, r_b1, r_a2, r_b2 : float or array_like
+        Tip and base radii of both members [mm].
+    centre_distance : float or array_like
+        Operating centre distance a [mm], >= r_b1 + r_b2.
+    base_pitch : float or array_like
+        Transverse base pitch p_b [mm].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The transverse contact ratio [1].
+
+    Raises
+    ------
+    ValueError
+        If a radius or the pitch is not a finite number > 0, or the centre distance is below
+        r_b1 + r_b2.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.meshing import contact_ratio_closed_form
+    >>> from gearrep.surfaces.involute import InvoluteGearData
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> round(float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, 96.0, g1.base_pitch)), 4)
+    1.655
     """
     names = ("r_a1", "r_b1", "r_a2", "r_b2", "centre_distance", "base_pitch")
     values = (r_a1, r_b1, r_a2, r_b2, centre_distance, base_pitch)
@@ -113,7 +168,40 @@ def centre_distance_limits(r_a1, r_b1, r_lo1, r_a2, r_b2, r_lo2, base_pitch, ove
     next tooth pair engages after the last one left, a gap in the meshing. Returns a dict: ``a_min``
     (the larger of ``a_min_tip2`` and ``a_min_tip1``, the centre distance at which member 2's or
     member 1's tip reaches the other member's lowest involute point) and ``a_max`` (total contact
-    ratio 1)."""
+    ratio 1).
+
+    Parameters
+    ----------
+    r_a1, r_b1, r_lo1 : float
+        Tip and base radius of member 1 and the radius where its involute flank begins [mm].
+    r_a2, r_b2, r_lo2 : float
+        The same for member 2 [mm].
+    base_pitch : float
+        Transverse base pitch [mm].
+    overlap_ratio : float, optional
+        The overlap (face) contact ratio added to the transverse one (0 for spur gears).
+
+    Returns
+    -------
+    dict
+        ``a_min``, ``a_min_tip2``, ``a_min_tip1``, ``a_max`` [mm].
+
+    Raises
+    ------
+    ValueError
+        If a radius or the pitch is not a finite number > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.meshing import centre_distance_limits
+    >>> from gearrep.surfaces.involute import InvoluteGearData
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> lim = centre_distance_limits(g1.r_a, g1.r_b, max(g1.r_b, g1.r_f), g2.r_a, g2.r_b, max(g2.r_b, g2.r_f), g1.base_pitch)
+    >>> round(lim["a_min"], 4), round(lim["a_max"], 4)  # mm, about the standard 96 mm
+    (94.6487, 98.1354)
+    """
     R = float(r_b1) + float(r_b2)
     g1 = float(np.sqrt(r_a1**2 - r_b1**2))
     g2 = float(np.sqrt(r_a2**2 - r_b2**2))
@@ -148,7 +236,34 @@ def _margins(pair: GearPair, vals):
 
 @dataclass(frozen=True)
 class EngagementLimit:
-    """One end of the engagement interval: angle, the contact there, and which flank boundary."""
+    """One end of the engagement interval: angle, the contact there, and which flank boundary.
+
+    Attributes
+    ----------
+    phi1 : float
+        The angle of member 1 [rad].
+    contact : gearrep.tca.ContactPoints
+        The contact there (one row).
+    boundary : str
+        The flank boundary reached, e.g. "u2_max" (tip of member 2), "u1_max", "v1_min".
+    solve : gearrep.solve.SolveResult
+        The solve of the boundary system.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.meshing import engagement_limits
+    >>> begin, end = engagement_limits(pair)
+    >>> round(begin.phi1, 6), begin.boundary, round(end.phi1, 6), end.boundary  # rad
+    (-0.302387, 'u2_max', 0.148817, 'u1_max')
+    """
 
     phi1: float
     contact: ContactPoints
@@ -227,8 +342,50 @@ def engagement_limits(
     Walks the path of contact by continuation from ``phi1_start`` (a position inside the
     engagement interval, default 0) in both directions with ``step`` (default p1/10) until the
     contact leaves the flank domain, then solves for the exact angle at which the contact is on the
-    boundary that was crossed (reduced formulation, eq 33-44). Returns (begin, end) as
-    :class:`EngagementLimit`; raises ValueError if the start position has no contact.
+    boundary that was crossed (reduced formulation, eq 33-44).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1_start : float, optional
+        An angle inside the engagement interval [rad].
+    start : array_like, optional
+        The (u1, v1) start there (default :func:`gearrep.tca.default_start`).
+    v1 : float, optional
+        Fixed face-width coordinate of member 1 [mm] for line contact (None: point contact).
+    step : float, optional
+        Continuation step [rad] (default a tenth of the angular pitch 2 pi / N1).
+    max_steps : int, optional
+        Steps allowed in each direction.
+    tol : float, optional
+        Residual tolerance of the solves.
+
+    Returns
+    -------
+    tuple of EngagementLimit
+        (begin, end), phi_1B < phi_1E.
+
+    Raises
+    ------
+    ValueError
+        Before any solve for a bad argument or an undercut gear; and if the start position has no
+        contact or the contact does not leave the flanks within ``max_steps``.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.meshing import contact_ratio, engagement_limits
+    >>> begin, end = engagement_limits(pair)
+    >>> round(float(contact_ratio(begin.phi1, end.phi1, 23)), 4)
+    1.6517
     """
     phi1_start = _one_angle(phi1_start)
     if v1 is not None and (np.ndim(v1) != 0 or not np.isfinite(float(v1))):
@@ -312,15 +469,38 @@ def engagement_limits(
 class MeshingCycle:
     """Meshing cycle of a gear pair.
 
-    begin, end : engagement limits of one tooth pair (phi_1B, phi_1E) with the boundary reached
-    contact_ratio : (phi_1E - phi_1B) / (2 pi / N1) (eq 5.13 corrected)
-    path : contact points of the reference pair on a grid over [phi_1B, phi_1E]
-    transfer_in, transfer_out : real-cycle limits (transfer points), NaN if indeterminate
-    transfer_kind : "crossing", "at_engagement" (next pair leads at once), "at_exit" (pair leads
-        until it leaves its flank) or "indeterminate"
-    phi1, te, pair_index : the TE envelope over the real cycle (or over [phi_1B, phi_1B + p1] when
-        indeterminate): angle, TE [rad], and which pair (k = -1, 0, 1) is in contact
-    te_peak_to_peak : max - min of ``te`` [rad]
+    Attributes
+    ----------
+    begin, end : EngagementLimit
+        Engagement limits of one tooth pair (phi_1B, phi_1E) with the boundary reached.
+    contact_ratio : float
+        (phi_1E - phi_1B) / (2 pi / N1) (eq 5.13 corrected) [1].
+    path : gearrep.tca.ContactPoints
+        Contact points of the reference pair on a grid over [phi_1B, phi_1E].
+    transfer_in, transfer_out : float
+        Real-cycle limits (transfer points) [rad], NaN if indeterminate.
+    transfer_kind : str
+        "crossing", "at_engagement" (next pair leads at once), "at_exit" (pair leads until it
+        leaves its flank) or "indeterminate".
+    phi1, te, pair_index : numpy.ndarray
+        The TE envelope over the real cycle (or over [phi_1B, phi_1B + p1] when indeterminate):
+        angle [rad], TE [rad], and which pair (k = -1, 0, 1) is in contact; ``te_peak_to_peak``
+        is max - min of ``te`` [rad].
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.meshing import meshing_cycle
+    >>> cycle = meshing_cycle(pair, n_points=21)
+    >>> cycle.begin.boundary, cycle.end.boundary, bool(cycle.path.converged.all())
+    ('u2_max', 'u1_max', True)
     """
 
     begin: EngagementLimit
@@ -336,6 +516,7 @@ class MeshingCycle:
 
     @property
     def te_peak_to_peak(self) -> float:
+        """max - min of the real cycle's TE [rad]."""
         return float(np.nanmax(self.te) - np.nanmin(self.te))
 
 
@@ -372,9 +553,45 @@ def meshing_cycle(
     real meshing cycle (upper envelope of neighbouring pairs' TE, see module docstring). Angles
     and TE in rad (member 2's angle for the TE), the contact ratio dimensionless.
 
-    ``phi1_start``/``start``: a position with contact inside the flanks; ``v1``: fixed face-width
-    coordinate for line contact (None for point contact); ``n_points``: grid size of the path and
-    of the real-cycle TE.
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1_start, start : optional
+        A position with contact inside the flanks: angle [rad] and (u1, v1) start.
+    v1 : float, optional
+        Fixed face-width coordinate [mm] for line contact (None for point contact).
+    n_points : int, optional
+        Grid size of the path and of the real-cycle TE, >= 5.
+    tol : float, optional
+        Residual tolerance of the solves.
+
+    Returns
+    -------
+    MeshingCycle
+        Limits, contact ratio, path, transfer points and the real cycle's TE.
+
+    Raises
+    ------
+    ValueError
+        As :func:`engagement_limits`, and if ``n_points`` is not an integer >= 5.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.meshing import meshing_cycle
+    >>> cycle = meshing_cycle(pair, n_points=21)
+    >>> round(cycle.contact_ratio, 4), cycle.transfer_kind, len(cycle.phi1)
+    (1.6517, 'indeterminate', 21)
+    >>> cycle.te_peak_to_peak < 1e-9  # d_E alone: the crowned involute pair stays conjugate [rad]
+    True
     """
     if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or n_points < 5:
         raise ValueError(f"n_points must be an integer >= 5, got {n_points!r}")
@@ -436,178 +653,3 @@ def meshing_cycle(
         te=te,
         pair_index=k,
     )
-
-
-# ----------------------------------------------------------------------------------------------
-# upper envelope of sampled per-tooth TE curves
-# ----------------------------------------------------------------------------------------------
-def pair_te_curves(
-    phi1, te, pitch: float, at, pairs=range(-2, 3), *, interpolation: str = "linear", tol: float = 1e-12, engaged=None
-) -> np.ndarray:
-    """TE of neighbouring tooth pairs from one pair's TE sampled on a grid.
-
-    Tooth pair k engages one angular pitch (``pitch`` = 2 pi / N1) after pair k - 1, so with
-    identical teeth TE_k(phi1) = TE_0(phi1 - k pitch). ``phi1``, ``te``: pair 0's TE [rad] on a
-    grid (NaN where that pair has no contact on the flanks); ``at``: the angles where the curves
-    are wanted. Returns (len(pairs), len(at)): TE_k interpolated (``"linear"`` or ``"cubic"``
-    spline) inside pair 0's engagement interval [min, max] of the finite samples (+- ``tol``),
-    -inf outside it (a pair that is not engaged cannot lead). ``engaged``: optional callable
-    q -> bool mask at pair-0 angles q (e.g. the contact point inside the face width) that further
-    restricts where a pair is in contact. Needs >= 2 finite samples.
-    """
-    phi1, te, at = (np.asarray(x, float) for x in (phi1, te, at))
-    if phi1.ndim != 1 or te.shape != phi1.shape:
-        raise ValueError(
-            f"phi1 and te must be 1-D arrays of the same length (pair 0's TE on a grid), got shapes "
-            f"{phi1.shape} and {te.shape}"
-        )
-    if at.ndim > 1:
-        raise ValueError(f"at must be a scalar or a 1-D array of angles [rad], got shape {at.shape}")
-    ok = np.isfinite(te) & np.isfinite(phi1)
-    if ok.sum() < 2:
-        raise ValueError(f"pair_te_curves needs >= 2 finite TE samples, got {int(ok.sum())}")
-    if not (np.isfinite(pitch) and pitch > 0):
-        raise ValueError(f"pitch must be > 0 rad, got {pitch!r}")
-    if interpolation not in ("linear", "cubic"):
-        raise ValueError(f"interpolation must be 'linear' or 'cubic', got {interpolation!r}")
-    if not (np.isfinite(tol) and tol >= 0):
-        raise ValueError(f"tol must be a finite number >= 0 [rad], got {tol!r}")
-    pairs = list(pairs)
-    if not pairs or any(isinstance(k, bool) or not isinstance(k, (int, np.integer)) for k in pairs):
-        raise ValueError(f"pairs must be one or more integers (tooth-pair offsets), got {pairs!r}")
-    x, y = phi1[ok], te[ok]
-    if np.any(np.diff(x) <= 0):
-        raise ValueError("phi1 must increase strictly along the grid (at its finite TE samples)")
-    lo, hi = x.min(), x.max()
-    if interpolation == "cubic":
-        from scipy.interpolate import CubicSpline
-
-        spline = CubicSpline(x, y)
-
-        def f(q):
-            return spline(np.clip(q, lo, hi))
-    else:
-
-        def f(q):
-            return np.interp(q, x, y)
-
-    out = []
-    for k in pairs:
-        q = at - k * pitch
-        inside = (q >= lo - tol) & (q <= hi + tol)
-        if engaged is not None:
-            inside &= np.asarray(engaged(np.clip(q, lo, hi)), bool)
-        out.append(np.where(inside, f(q), -np.inf))
-    return np.stack(out)
-
-
-def upper_envelope(curves) -> tuple[np.ndarray, np.ndarray]:
-    """TE actually transmitted and the leading pair: (max over the rows of ``curves`` (pairs, n)
-    as given by :func:`pair_te_curves`, index of the leading row). Member 2 is driven, so it is
-    pushed to the most advanced position any engaged pair demands (for the opposite drive
-    direction pass ``-curves`` and negate the envelope). NaN where no pair is engaged."""
-    curves = np.asarray(curves, float)
-    lead = np.argmax(curves, axis=0)
-    env = curves[lead, np.arange(curves.shape[1])]
-    return np.where(np.isfinite(env), env, np.nan), lead
-
-
-def handover_jump(curves, lead, envelope) -> float:
-    """Largest TE jump [rad] where the leading pair changes between neighbouring grid angles.
-
-    A hand-over between angles i and i + 1 is a crossing when both pairs are engaged on one side
-    with (nearly) equal TE; otherwise the TE jumps (a pair leaves or enters its flank while the
-    other still leads): the jump is the smallest |TE_a - TE_b| where both are engaged, or the step
-    of the envelope if they never are. 0 without a hand-over."""
-    curves = np.asarray(curves, float)
-    jump = 0.0
-    for i in np.flatnonzero(lead[1:] != lead[:-1]):
-        a, b = lead[i], lead[i + 1]
-        both = [
-            abs(curves[a, j] - curves[b, j])
-            for j in (i, i + 1)
-            if np.isfinite(curves[a, j]) and np.isfinite(curves[b, j])
-        ]
-        jump = max(jump, min(both) if both else abs(envelope[i + 1] - envelope[i]))
-    return jump
-
-
-def handover_gap(curves, lead, envelope) -> float:
-    """Largest TE jump [rad] of the transmitted TE at a hand-over that is not a crossing.
-
-    Sign-aware companion of :func:`handover_jump`: where the leading pair changes from a to b
-    between neighbouring grid angles i and i + 1 and both pairs are engaged at both angles, their
-    (continuous) TE curves have crossed between the samples (TE_a - TE_b changes sign), so the
-    transmitted TE is continuous there: gap 0, however steep the curves (e.g. near tip relief).
-    Otherwise a pair entered or left its flank while the other still led: the gap is the step of
-    the envelope |env[i + 1] - env[i]|. 0 without a hand-over."""
-    curves = np.asarray(curves, float)
-    envelope = np.asarray(envelope, float)
-    gap = 0.0
-    for i in np.flatnonzero(lead[1:] != lead[:-1]):
-        a, b = lead[i], lead[i + 1]
-        if np.all(np.isfinite(curves[[a, b]][:, [i, i + 1]])):
-            continue
-        gap = max(gap, abs(envelope[i + 1] - envelope[i]))
-    return gap
-
-
-@dataclass(frozen=True)
-class SampledCycle:
-    """The TE transmitted over one mesh cycle, built from one tooth pair's sampled TE
-    (:func:`sampled_cycle`).
-
-    phi1 : the cycle's angles [rad], from -pitch/2 to +pitch/2
-    te : the transmitted TE [rad] (upper envelope of the pairs), NaN where no pair is engaged
-    jump : the largest TE step at a hand-over [rad] (:func:`handover_jump` or :func:`handover_gap`),
-        NaN when pair 0 has fewer than two finite TE samples
-    """
-
-    phi1: np.ndarray
-    te: np.ndarray
-    jump: float
-
-    @property
-    def jump_arcsec(self) -> float:
-        """:attr:`jump` in arcsec (NaN stays NaN)."""
-        return self.jump / ARCSEC if np.isfinite(self.jump) else np.nan
-
-    def continuous(self, jump_tol_arcsec: float) -> bool:
-        """A pair is engaged at every cycle angle and no hand-over steps by more than
-        ``jump_tol_arcsec`` [arcsec]."""
-        return bool(np.isfinite(self.te).all() and self.jump_arcsec <= jump_tol_arcsec)
-
-    @property
-    def te_extreme(self) -> float:
-        """The transmitted TE of largest magnitude [rad] (NaN if none is finite)."""
-        fin = np.isfinite(self.te)
-        return float(self.te[fin][np.argmax(np.abs(self.te[fin]))]) if fin.any() else np.nan
-
-    @property
-    def te_peak_to_peak(self) -> float:
-        """max - min of the finite transmitted TE [rad] (NaN if none is finite)."""
-        fin = np.isfinite(self.te)
-        return float(np.ptp(self.te[fin])) if fin.any() else np.nan
-
-
-def sampled_cycle(phi1, te, pitch: float, n_points: int, pairs=range(-2, 3), *, handover: str = "jump") -> SampledCycle:
-    """TE transmitted over one mesh cycle of ``n_points`` angles from -pitch/2 to +pitch/2, from
-    pair 0's TE sampled on a grid (``phi1``, ``te`` [rad], NaN where pair 0 has no contact on the
-    flanks): the upper envelope (:func:`upper_envelope`) of the neighbouring pairs' curves
-    (:func:`pair_te_curves`, pairs k in ``pairs``) and its largest hand-over step, measured by
-    :func:`handover_jump` (``handover="jump"``) or by the sign-aware :func:`handover_gap`
-    (``"gap"``: a crossing between grid angles is continuous). With fewer than two finite samples
-    the envelope is NaN everywhere and the step NaN."""
-    if handover not in ("jump", "gap"):
-        raise ValueError(f"handover must be 'jump' or 'gap', got {handover!r}")
-    if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or n_points < 2:
-        raise ValueError(f"n_points must be an integer >= 2, got {n_points!r}")
-    if not (np.isfinite(pitch) and pitch > 0):
-        raise ValueError(f"pitch must be > 0 rad, got {pitch!r}")
-    at = np.linspace(-0.5 * pitch, 0.5 * pitch, int(n_points))
-    if np.count_nonzero(np.isfinite(np.asarray(te, float))) < 2:
-        return SampledCycle(at, np.full(at.shape, np.nan), np.nan)
-    curves = pair_te_curves(phi1, te, pitch, at, pairs)
-    env, lead = upper_envelope(curves)
-    step = handover_gap if handover == "gap" else handover_jump
-    return SampledCycle(at, env, float(step(curves, lead, env)))

@@ -71,10 +71,27 @@ def _check_names(names, k):
 
 @dataclass(frozen=True)
 class MotionTwists:
-    """A motion's first and second derivatives in the tool frame at n parameter points (module doc):
-    ``M`` (n, 4, 4); ``omega``, ``v`` (n, k, 3), M^-1 dM/dm_j = (omega_j x) + v_j (the velocity
-    of a tool point r is omega_j x r + v_j); ``second(r)`` (n, k, k, 3) = M^-1 d^2M/dm_i dm_j
-    applied to the tool points r (n, 3)."""
+    """A motion's first and second derivatives in the tool frame at n parameter points (module doc).
+
+    Parameters
+    ----------
+    M : (n, 4, 4) numpy.ndarray
+        The motion's matrices.
+    omega, v : (n, k, 3) numpy.ndarray
+        Angular and translational velocity of each parameter in the tool frame:
+        M^-1 dM/dm_j = (omega_j x) + v_j, so a tool point r moves at omega_j x r + v_j per unit of
+        m_j (rad or length per parameter unit).
+    second : callable
+        ``second(r)`` -> (n, k, k, 3): M^-1 d^2M/dm_i dm_j applied to the tool points r (n, 3).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.motion import ChainMotion, rotation
+    >>> tw = ChainMotion([rotation((0.0, 0.0, 1.0))]).twists(np.array([[0.3]]))
+    >>> tw.omega.round(12).tolist()
+    [[[0.0, 0.0, 1.0]]]
+    """
 
     M: np.ndarray
     omega: np.ndarray
@@ -87,18 +104,51 @@ class Motion:
 
     Subclasses implement :meth:`matrices`. ``n_params`` is k (1 or 2) and ``names`` names the
     motion parameters (e.g. ``("phi",)`` or ``("theta", "psi")``).
+
+    Examples
+    --------
+    >>> from gearrep.motion import ChainMotion, Motion, rotation
+    >>> isinstance(ChainMotion([rotation((0.0, 0.0, 1.0))]), Motion)
+    True
     """
 
-    n_params: int = 1
-    names: tuple[str, ...] = ("phi",)
+    n_params: int = 1  #: k, the number of motion parameters (1 or 2)
+    names: tuple[str, ...] = ("phi",)  #: the motion parameters' names
 
     def matrices(self, m):  # pragma: no cover - abstract
         """(M, dM, d2M) at parameters m (..., k): shapes (..., 4, 4), (..., k, 4, 4) and
-        (..., k, k, 4, 4); dM[..., j] = dM/dm_j, d2M[..., i, j] = d^2 M / dm_i dm_j."""
+        (..., k, k, 4, 4); dM[..., j] = dM/dm_j, d2M[..., i, j] = d^2 M / dm_i dm_j.
+
+        Parameters
+        ----------
+        m : (..., k) array_like
+            Motion parameters (rad for angles, the design's length unit for feeds).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (M, dM, d2M).
+
+        Raises
+        ------
+        NotImplementedError
+            On the base class.
+        """
         raise NotImplementedError
 
     def twists(self, m) -> MotionTwists:
-        """:class:`MotionTwists` at parameters m (n, k) (module doc), here from :meth:`matrices`."""
+        """:class:`MotionTwists` at parameters m (module doc), here from :meth:`matrices`.
+
+        Parameters
+        ----------
+        m : (n, k) array_like
+            Motion parameters (rad for angles, the design's length unit for feeds).
+
+        Returns
+        -------
+        MotionTwists
+            The motion's matrices and its twists in the tool frame.
+        """
         M, dM, d2M = self.matrices(m)
         M = M.reshape(-1, 4, 4)
         k = self.n_params
@@ -132,6 +182,34 @@ class FunctionMotion(Motion):
     O(h^4) + O(eps/h) for dM and O(eps/h^2) for d2M: with h = 1e-3 and O(1) parameters about
     1e-12 and 1e-10 relative, enough for curvatures to ~1e-9). Prefer :class:`ChainMotion`
     (exact derivatives) when the motion is a product of rotations and translations.
+
+    Parameters
+    ----------
+    M : callable
+        m (..., k) -> (..., 4, 4).
+    n_params : int, optional
+        k, 1 or 2.
+    names : sequence of str, optional
+        The parameters' names (not 'u' or 'v').
+    dM, d2M : callable, optional
+        The derivatives, as :meth:`Motion.matrices` returns them.
+    fd_step : float, optional
+        Finite-difference step in parameter units, > 0.
+
+    Raises
+    ------
+    ValueError
+        If ``n_params``, ``names`` or ``fd_step`` is bad.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import homogeneous, rot_z
+    >>> from gearrep.motion import FunctionMotion
+    >>> turn = FunctionMotion(lambda m: homogeneous(rot_z(m[..., 0])))
+    >>> M, dM, d2M = turn.matrices([[0.0]])  # rad
+    >>> (np.round(dM[0, 0, :2, :2], 9) + 0.0).tolist()  # the generator of z
+    [[0.0, -1.0], [1.0, 0.0]]
     """
 
     def __init__(
@@ -261,14 +339,70 @@ def _coeffs(coeffs):
 
 def rotation(axis, coeffs=1.0, offset: float = 0.0, point=(0.0, 0.0, 0.0)) -> _Factor:
     """Factor of a :class:`ChainMotion`: rotation about ``axis`` through ``point`` by the angle
-    s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form)."""
+    s = offset + coeffs . m (right-hand rule; GGAT ch. 2 rotation matrices, Rodrigues' form).
+
+    Parameters
+    ----------
+    axis : (3,) array_like
+        Direction of the axis (finite, non-zero).
+    coeffs : float or sequence of float, optional
+        The angle's rate per motion parameter [rad per parameter unit].
+    offset : float, optional
+        Constant part of the angle [rad].
+    point : (3,) array_like, optional
+        A point of the axis [length].
+
+    Returns
+    -------
+    object
+        The factor.
+
+    Raises
+    ------
+    ValueError
+        If ``axis`` is zero or not finite, or ``coeffs`` is not 1 or 2 finite numbers.
+
+    Examples
+    --------
+    >>> from gearrep.motion import ChainMotion, rotation
+    >>> M, _, _ = ChainMotion([rotation((0.0, 0.0, 1.0), point=(1.0, 0.0, 0.0))]).matrices([[3.141592653589793]])
+    >>> (M[0, :3, 3].round(12) + 0.0).tolist()  # half a turn about the line x = 1 moves the origin
+    [2.0, 0.0, 0.0]
+    """
     k, p = _unit3(axis, "axis"), np.asarray(point, dtype=float).reshape(3)
     return _Factor("rot", k, p, _coeffs(coeffs), float(offset), generators=frames.axis_generators(k))
 
 
 def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
     """Factor of a :class:`ChainMotion`: translation by s * direction, s = offset + coeffs . m
-    (``direction`` is used as given, not normalised, so s may be an angle times a radius)."""
+    (``direction`` is used as given, not normalised, so s may be an angle times a radius).
+
+    Parameters
+    ----------
+    direction : (3,) array_like
+        The direction (its length scales s).
+    coeffs : float or sequence of float, optional
+        The rate of s per motion parameter.
+    offset : float, optional
+        Constant part of s.
+
+    Returns
+    -------
+    object
+        The factor.
+
+    Raises
+    ------
+    ValueError
+        If ``direction`` is not a finite 3-vector or ``coeffs`` is bad.
+
+    Examples
+    --------
+    >>> from gearrep.motion import ChainMotion, translation
+    >>> M, dM, _ = ChainMotion([translation((0.0, 2.0, 0.0))]).matrices([[1.5]])
+    >>> M[0, :3, 3].tolist(), dM[0, 0, :3, 3].tolist()  # s = 1.5 times (0, 2, 0); ds/dm
+    ([0.0, 3.0, 0.0], [0.0, 2.0, 0.0])
+    """
     d = np.asarray(direction, dtype=float).reshape(-1)
     if d.shape != (3,) or not np.all(np.isfinite(d)):
         raise ValueError(f"direction must be a finite 3-vector, got {direction!r}")
@@ -276,7 +410,31 @@ def translation(direction, coeffs=1.0, offset: float = 0.0) -> _Factor:
 
 
 def fixed(M) -> _Factor:
-    """Factor of a :class:`ChainMotion`: a constant 4 x 4 homogeneous matrix."""
+    """Factor of a :class:`ChainMotion`: a constant 4 x 4 homogeneous matrix.
+
+    Parameters
+    ----------
+    M : (4, 4) array_like
+        A finite matrix.
+
+    Returns
+    -------
+    object
+        The factor.
+
+    Raises
+    ------
+    ValueError
+        If ``M`` is not a finite 4 x 4 matrix.
+
+    Examples
+    --------
+    >>> from gearrep.frames import translation as shift
+    >>> from gearrep.motion import ChainMotion, fixed
+    >>> M, dM, _ = ChainMotion([fixed(shift([0.0, 0.0, 5.0]))]).matrices([[0.7]])
+    >>> float(M[0, 2, 3]), float(abs(dM).max())  # constant: no derivative
+    (5.0, 0.0)
+    """
     M = np.asarray(M, dtype=float)
     if M.shape != (4, 4) or not np.all(np.isfinite(M)):
         raise ValueError(f"M must be a finite 4x4 matrix, got shape {M.shape}")
@@ -286,7 +444,29 @@ def fixed(M) -> _Factor:
 class ChainMotion(Motion):
     """M_21(m) = F_1 F_2 ... F_n, each factor a :func:`rotation`, :func:`translation` or
     :func:`fixed` matrix (Litvin's chain M_21 = M_2f M_fh ... of GGAT ch. 2), with exact first
-    and second derivatives by the product rule. Factor parameters are affine in m."""
+    and second derivatives by the product rule. Factor parameters are affine in m.
+
+    Parameters
+    ----------
+    factors : sequence
+        :func:`rotation`, :func:`translation` and :func:`fixed` factors, left to right.
+    names : sequence of str, optional
+        The motion parameters' names (1 or 2; not 'u' or 'v').
+
+    Raises
+    ------
+    ValueError
+        If ``names`` is bad or a factor's coefficients do not match the parameters.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.motion import ChainMotion, rotation, translation
+    >>> m = ChainMotion([rotation((0.0, 0.0, 1.0)), translation((1.0, 0.0, 0.0), 0.0, offset=10.0)])
+    >>> M, dM, d2M = m.matrices([[np.pi / 2]])  # phi [rad]: turn, then the fixed 10 mm offset
+    >>> (np.round(M[0, :3, 3], 12) + 0.0).tolist(), dM.shape, d2M.shape
+    ([0.0, 10.0, 0.0], (1, 1, 4, 4), (1, 1, 1, 4, 4))
+    """
 
     def __init__(self, factors: Sequence[_Factor], names: Sequence[str] = ("phi",)):
         names = tuple(names)
@@ -338,7 +518,18 @@ class ChainMotion(Motion):
         """M, dM and d2M by the product rule, factor by factor. The blocks that are zero are not
         formed: a constant factor has no derivatives, and one that moves with a single parameter j
         adds to dP only in column j and to d2P only in row and column j (the sums that remain are
-        those of the full product rule, in the same order)."""
+        those of the full product rule, in the same order).
+
+        Parameters
+        ----------
+        m : (..., k) array_like
+            Motion parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (M, dM, d2M), as :meth:`Motion.matrices`.
+        """
         m = self._params(m)
         shape = m.shape[:-1]
         k = self.n_params
@@ -389,7 +580,18 @@ class ChainMotion(Motion):
     def twists(self, m) -> MotionTwists:
         """:class:`MotionTwists` from the factors' twists (module doc): the products S_i of the
         factors after each moving one, built from the tool side, carry each twist into the tool
-        frame; no derivative matrices are formed."""
+        frame; no derivative matrices are formed.
+
+        Parameters
+        ----------
+        m : (n, k) array_like
+            Motion parameters (rad for angles, the design's length unit for feeds).
+
+        Returns
+        -------
+        MotionTwists
+            The motion's matrices and its twists in the tool frame.
+        """
         m = self._params(m).reshape(-1, self.n_params)
         n, k = m.shape
         oms, vs = [], []  # omega~, v~ of the moving factors, from the last one
@@ -438,7 +640,7 @@ def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi")
     x_c = member_side * r_p (``member_side`` = -1, the default, puts the member on the side
     x_c < 0; +1 on x_c > 0, e.g. the gear of seed 002, generated by the rigidly connected rack on
     the other side from the pinion). The rack translates by s_c = r_p phi (along -y in the fixed
-    frame) while the member turns by phi (clockwise for member_side = -1):
+    frame) while the member turns by phi (clockwise for member_side = -1)::
 
         member_side = -1:  M_1c = Rot_z(phi)  Trans(r_p, -r_p phi, 0)
         member_side = +1:  M_1c = Rot_z(-phi) Trans(-r_p, -r_p phi, 0)
@@ -449,6 +651,33 @@ def rack_generation_motion(r_p: float, member_side: int = -1, name: str = "phi")
     helix angle beta > 0 (:mod:`gearrep.surfaces.rack`) generates a right-hand member; with
     member_side = +1 a left-hand one (seed 002 sec. 2.1: one rack generates a left-hand pinion
     and a right-hand gear).
+
+    Parameters
+    ----------
+    r_p : float
+        Pitch radius of the member [length], > 0.
+    member_side : {-1, 1}, optional
+        The side of the pitch plane the member lies on.
+    name : str, optional
+        The motion parameter's name.
+
+    Returns
+    -------
+    ChainMotion
+        M_1c(phi).
+
+    Raises
+    ------
+    ValueError
+        If ``r_p`` is not finite and > 0 or ``member_side`` is not +-1.
+
+    Examples
+    --------
+    >>> from gearrep.motion import rack_generation_motion
+    >>> motion = rack_generation_motion(10.0)  # mm
+    >>> M, _, _ = motion.matrices([[0.0]])
+    >>> M[0, :3, 3].tolist(), motion.names  # at phi = 0 the member's axis is 10 mm from the pitch plane
+    ([10.0, 0.0, 0.0], ('phi',))
     """
     if not (np.isfinite(r_p) and r_p > 0):
         raise ValueError(f"r_p (pitch radius) must be finite and > 0, got {r_p!r}")

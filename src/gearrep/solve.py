@@ -46,7 +46,14 @@ __all__ = [
 
 
 class Status(IntEnum):
-    """Outcome of one solve."""
+    """Outcome of one solve: the code stored per row in :attr:`SolveResult.status`.
+
+    Examples
+    --------
+    >>> from gearrep.solve import Status
+    >>> int(Status.OFF_FLANK), Status(3).name
+    (2, 'SINGULAR')
+    """
 
     CONVERGED = 0  #: residual below tolerance (and inside the bounds, when bounds are given)
     NOT_CONVERGED = 1  #: iteration limit reached, or the line search could not reduce the residual
@@ -56,6 +63,7 @@ class Status(IntEnum):
     DIVERGED = 5  #: the iterate or residual became non-finite
 
 
+#: status code -> lower-case name (``0: "converged"``, ...), as tables write the status
 STATUS_NAMES = {s.value: s.name.lower() for s in Status}
 
 #: the codes as ints for the one-row loop (an IntEnum member looked up on its class is slow there)
@@ -65,7 +73,24 @@ _S_CONVERGED, _S_NOT_CONVERGED, _S_OFF_FLANK, _S_SINGULAR, _S_DIVERGED = (
 
 
 def status_names(status) -> np.ndarray:
-    """Array of lower-case status names (``converged``, ``off_flank``, ...) for status codes."""
+    """Array of lower-case status names (``converged``, ``off_flank``, ...) for status codes.
+
+    Parameters
+    ----------
+    status : int or array_like of int
+        :class:`Status` codes.
+
+    Returns
+    -------
+    numpy.ndarray
+        Object array of the names, of the shape of ``status``.
+
+    Examples
+    --------
+    >>> from gearrep.solve import status_names
+    >>> status_names([0, 2, 5]).tolist()
+    ['converged', 'off_flank', 'diverged']
+    """
     status = np.asarray(status)
     out = np.empty(status.shape, dtype=object)
     for code, name in STATUS_NAMES.items():
@@ -88,6 +113,17 @@ class SolveResult:
         ``newton(inverse_square=True)``, for square systems larger than 2 x 2, the Frobenius
         condition number ||J||_F ||J^-1||_F instead (an upper bound, at most k times the 2-norm
         one), except in rows the SVD examined as nearly singular
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.solve import newton
+    >>> a = np.array([4.0, -1.0])  # x^2 = 4 and x^2 = -1, one problem per row
+    >>> r = newton(lambda x, i: x**2 - a[i, None], [[1.0], [1.0]], rows=True)
+    >>> r.status_name.tolist(), bool(r.converged[0]), round(float(r.x[0, 0]), 12)
+    (['converged', 'not_converged'], True, 2.0)
+    >>> len(r), r.with_status([True, False], 4).status_name.tolist()
+    (2, ['wrong_root', 'not_converged'])
     """
 
     x: np.ndarray
@@ -103,10 +139,24 @@ class SolveResult:
 
     @property
     def status_name(self) -> np.ndarray:
+        """Lower-case status name of each point (:func:`status_names` of ``status``)."""
         return status_names(self.status)
 
     def with_status(self, mask, status: Status) -> SolveResult:
-        """Copy with ``status`` set where ``mask`` holds (e.g. WRONG_ROOT after verification)."""
+        """Copy with ``status`` set where ``mask`` holds (e.g. WRONG_ROOT after verification).
+
+        Parameters
+        ----------
+        mask : (n,) array_like of bool
+            The points to mark.
+        status : Status
+            The status they get.
+
+        Returns
+        -------
+        SolveResult
+            The same solutions, residuals, iterations and conditions; the new statuses.
+        """
         st = self.status.copy()
         st[np.asarray(mask, dtype=bool)] = int(status)
         return SolveResult(self.x, self.residual, self.iterations, st, self.condition)
@@ -118,9 +168,32 @@ class SolveResult:
 def numeric_jacobian(fun: Callable, x: np.ndarray, f0: np.ndarray | None = None, rel_step=1e-7):
     """Central-difference Jacobian of a batched function.
 
-    ``fun`` maps (n, k) -> (n, m); returns (n, m, k). Step ``h = rel_step * max(1, |x_j|)``;
-    the truncation error is O(h^2) and the rounding error O(eps / h), so 1e-7 gives about
-    8-9 correct digits for smooth, O(1)-scaled functions.
+    Step ``h = rel_step * max(1, abs(x_j))``; the truncation error is O(h^2) and the rounding
+    error O(eps / h), so 1e-7 gives about 8-9 correct digits for smooth, O(1)-scaled functions.
+
+    Parameters
+    ----------
+    fun : callable
+        Maps a batch of points (n, k) to residuals (n, m), row by row.
+    x : (n, k) array_like
+        The points (in the unknowns' own units).
+    f0 : (n, m) array_like, optional
+        ``fun(x)``, unused (central differences do not need it); accepted so callers can pass it.
+    rel_step : float, optional
+        Step relative to ``max(1, abs(x_j))``.
+
+    Returns
+    -------
+    (n, m, k) numpy.ndarray
+        The Jacobians, ``J[i, a, j] = d fun_a / d x_j`` at row ``i``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.solve import numeric_jacobian
+    >>> J = numeric_jacobian(lambda x: np.stack([x[:, 0] * x[:, 1], np.sin(x[:, 0])], -1), [[1.0, 2.0]])
+    >>> J.shape, np.round(J, 6).tolist()
+    ((1, 2, 2), [[[2.0, 1.0], [0.540302, 0.0]]])
     """
     x = np.asarray(x, dtype=float)
     n, k = x.shape
@@ -166,7 +239,25 @@ def _all_finite(a) -> bool:
 
 
 def finite_rows(a) -> np.ndarray:
-    """Per row (first axis) of the array ``a``, whether every entry is finite (one pass when all are)."""
+    """Per row (first axis) of the array ``a``, whether every entry is finite (one pass when all are).
+
+    Parameters
+    ----------
+    a : numpy.ndarray
+        An array of at least one dimension.
+
+    Returns
+    -------
+    (len(a),) numpy.ndarray of bool
+        True where every entry of the row is finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.solve import finite_rows
+    >>> finite_rows(np.array([[1.0, 2.0], [np.nan, 0.0], [0.0, np.inf]])).tolist()
+    [True, False, False]
+    """
     if len(a) == 1:
         return np.array([_all_finite(a)])
     fin = np.isfinite(a)
@@ -351,22 +442,36 @@ def newton(
 
     Parameters
     ----------
-    fun : callable (n, k) -> (n, m), m >= k; rows are independent problems
-    x0 : (n, k) or (k,) starting points
-    jac : callable (n, k) -> (n, m, k), optional; central differences when omitted (it may return
-        a lazy Jacobian as ``fun_jac`` may; it is formed for every row at once)
-    tol : convergence when the Euclidean residual norm is below ``tol``
-    maxiter : iteration limit (an integer >= 1)
-    damped : Armijo backtracking on the residual norm (step halved up to ``max_halvings``
-        times); with ``damped=False`` the full Newton step is always taken (plain Newton)
-    lower, upper : (k,) bounds of the parameter domain (use +-inf for none). A converged root
-        outside them gets status OFF_FLANK.
-    keep_inside : project every iterate onto the bounds (the "domain-kept" variant)
-    rcond : relative singular-value threshold below which the Jacobian counts as singular
-    rows : if True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
+    fun : callable
+        (n, k) -> (n, m), m >= k; rows are independent problems (residuals in the unit of the
+        equations, e.g. mm for the contact equations of TCA).
+    x0 : (n, k) or (k,) array_like
+        Starting points (in the unknowns' units: rad for angles, the design's length unit).
+    jac : callable, optional
+        (n, k) -> (n, m, k); central differences when omitted (it may return a lazy Jacobian as
+        ``fun_jac`` may; it is formed for every row at once).
+    tol : float, optional
+        Convergence when the Euclidean residual norm is below ``tol`` (unit of the residual).
+    maxiter : int, optional
+        Iteration limit (an integer >= 1).
+    damped : bool, optional
+        Armijo backtracking on the residual norm (step halved up to ``max_halvings``
+        times); with ``damped=False`` the full Newton step is always taken (plain Newton).
+    max_halvings : int, optional
+        Halvings of the step the line search tries (an integer >= 0).
+    lower, upper : (k,) array_like, optional
+        Bounds of the parameter domain (use +-inf for none). A converged root outside them gets
+        status OFF_FLANK.
+    keep_inside : bool, optional
+        Project every iterate onto the bounds (the "domain-kept" variant).
+    rcond : float, optional
+        Relative singular-value threshold below which the Jacobian counts as singular, in [0, 1).
+    rows : bool, optional
+        If True, ``fun`` and ``jac`` are called as ``fun(x, idx)`` with ``idx`` the indices
         (into the batch, increasing) of the rows of ``x``: the solver passes only the active rows,
-        so per-problem data (e.g. fixed parameters) can be looked up by ``idx``
-    fun_jac : callable x -> (F, J), optional (called like ``fun``): residual and Jacobian in one
+        so per-problem data (e.g. fixed parameters) can be looked up by ``idx``.
+    fun_jac : callable, optional
+        x -> (F, J), called like ``fun``: residual and Jacobian in one
         evaluation, used at the start and at every full Newton step instead of ``fun`` followed by
         ``jac`` at the next iteration (the work they share is done once; the Jacobian of a row
         whose step the line search shortened is computed afresh). F must equal ``fun(x)``. J may
@@ -374,11 +479,13 @@ def newton(
         (indices into them, increasing; None: all), which the solver calls at most once, at the
         next step, for the rows that step (a row's last evaluation, at its root, then costs no
         Jacobian).
-    inverse_square : square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
+    inverse_square : bool, optional
+        Square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
         elimination over the batch (:func:`step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
         the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
-    floats : callable (x, derivs) -> (F, J) or None, optional, with ``fun_jac``: the same
+    floats : callable, optional
+        (x, derivs) -> (F, J) or None, with ``fun_jac``: the same
         evaluation for ONE problem on Python floats (x a list of k floats; F a list of m floats,
         J a list of m rows of k floats with ``derivs``, or a function of no argument returning
         it when needed, else None), used when the batch has one
@@ -387,8 +494,31 @@ def newton(
 
     Returns
     -------
-    SolveResult; ``status`` is CONVERGED only for a finite root with residual < tol that lies
-    inside the bounds.
+    SolveResult
+        Solution, residual, iterations, status and condition per row; ``status`` is CONVERGED only
+        for a finite root with residual < tol that lies inside the bounds.
+
+    Raises
+    ------
+    ValueError
+        Before any iteration, if ``tol`` is not a finite number > 0, ``rcond`` is outside [0, 1),
+        ``maxiter`` or ``max_halvings`` is not an integer in range, a bound is NaN or ``lower``
+        exceeds ``upper``; and if ``fun`` returns fewer equations than unknowns.
+
+    Examples
+    --------
+    Two circles cut by a line, solved from two starts at once; the second root lies outside the
+    bounds, so its row is not called converged:
+
+    >>> import numpy as np
+    >>> from gearrep.solve import newton
+    >>> def fun(x):
+    ...     return np.stack([x[:, 0] ** 2 + x[:, 1] ** 2 - 1.0, x[:, 0] - x[:, 1]], -1)
+    >>> r = newton(fun, [[0.5, 0.6], [-0.5, -0.6]], lower=[0.0, 0.0], upper=[1.0, 1.0])
+    >>> np.round(r.x, 9).tolist(), r.status_name.tolist()
+    ([[0.707106781, 0.707106781], [-0.707106781, -0.707106781]], ['converged', 'off_flank'])
+    >>> bool(r.residual.max() < 1e-12), r.iterations.tolist()
+    (True, [4, 4])
     """
     check_positive("tol", tol)
     if isinstance(rcond, bool) or not (0.0 <= real_or_nan(rcond) < 1.0):

@@ -38,14 +38,50 @@ __all__ = [
 
 
 def unit(v: np.ndarray, axis: int = -1) -> np.ndarray:
-    """Vectors scaled to unit length along ``axis``."""
+    """Vectors scaled to unit length along ``axis``.
+
+    Parameters
+    ----------
+    v : array_like
+        Vectors (any unit).
+    axis : int, optional
+        The axis of the components.
+
+    Returns
+    -------
+    numpy.ndarray
+        The unit vectors [1] (NaN for a zero vector).
+
+    Examples
+    --------
+    >>> from gearrep.surface import unit
+    >>> unit([[3.0, 0.0, 4.0]]).tolist()
+    [[0.6, 0.0, 0.8]]
+    """
     v = np.asarray(v, dtype=float)
     return v / np.linalg.norm(v, axis=axis, keepdims=True)
 
 
 def cross(a, b) -> np.ndarray:
     """Cross product along the last axis with broadcasting, written out by components (same
-    result as ``np.cross(a, b)``, several times faster on small batches)."""
+    result as ``np.cross(a, b)``, several times faster on small batches).
+
+    Parameters
+    ----------
+    a, b : (..., 3) array_like
+        Vectors; batch dimensions broadcast.
+
+    Returns
+    -------
+    (..., 3) numpy.ndarray
+        a x b.
+
+    Examples
+    --------
+    >>> from gearrep.surface import cross
+    >>> cross([1.0, 0.0, 0.0], [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]).tolist()
+    [[0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]
+    """
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
@@ -59,7 +95,24 @@ def cross(a, b) -> np.ndarray:
 
 def cross3(a, b):
     """Cross product of two vectors given by components (structure of arrays): ``a`` and ``b`` are
-    3-tuples of broadcastable arrays or floats; returns the 3-tuple of components (no stacking)."""
+    3-tuples of broadcastable arrays or floats; returns the 3-tuple of components (no stacking).
+
+    Parameters
+    ----------
+    a, b : tuple
+        (x, y, z) components, arrays or floats.
+
+    Returns
+    -------
+    tuple
+        The components of a x b.
+
+    Examples
+    --------
+    >>> from gearrep.surface import cross3
+    >>> cross3((1.0, 0.0, 0.0), (0.0, 1.0, 0.0))
+    (0.0, 0.0, 1.0)
+    """
     a0, a1, a2 = a
     b0, b1, b2 = b
     return (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
@@ -93,7 +146,26 @@ def cross3_sparse(a, b):
     components 0.0 and 1.0 of a cylindrical flank's derivatives, see
     :meth:`Surface.evaluate_components`): products with a float 0.0 are left out and a float 1.0
     factor is not multiplied, so the same values (up to the sign of an exact zero) cost fewer array
-    operations; a component that is structurally zero comes back as the float 0.0."""
+    operations; a component that is structurally zero comes back as the float 0.0.
+
+    Parameters
+    ----------
+    a, b : tuple
+        (x, y, z) components, arrays or floats.
+
+    Returns
+    -------
+    tuple
+        The components of a x b.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surface import cross3_sparse
+    >>> x = np.array([1.0, 2.0])
+    >>> cross3_sparse((x, x, 0.0), (0.0, 0.0, 1.0))  # (x, x, 0) x z
+    (array([1., 2.]), array([-1., -2.]), 0.0)
+    """
     a0, a1, a2 = a
     b0, b1, b2 = b
     return (
@@ -104,7 +176,24 @@ def cross3_sparse(a, b):
 
 
 def add3(a, b):
-    """a + b of vectors by components, a float 0.0 component adding nothing (see :func:`cross3_sparse`)."""
+    """a + b of vectors by components, a float 0.0 component adding nothing (see :func:`cross3_sparse`).
+
+    Parameters
+    ----------
+    a, b : tuple
+        (x, y, z) components, arrays or floats.
+
+    Returns
+    -------
+    tuple
+        The components of a + b.
+
+    Examples
+    --------
+    >>> from gearrep.surface import add3
+    >>> add3((1.0, 0.0, 2.0), (0.0, 3.0, 1.0))
+    (1.0, 3.0, 3.0)
+    """
     return tuple(
         y if (type(x) is float and x == 0.0) else (x if (type(y) is float and y == 0.0) else x + y)
         for x, y in zip(a, b)
@@ -112,13 +201,50 @@ def add3(a, b):
 
 
 def dot3(a, b):
-    """Dot product of two vectors given by components (3-tuples, as :func:`cross3`)."""
+    """Dot product of two vectors given by components (3-tuples, as :func:`cross3`).
+
+    Parameters
+    ----------
+    a, b : tuple
+        (x, y, z) components, arrays or floats.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        a . b.
+
+    Examples
+    --------
+    >>> from gearrep.surface import dot3
+    >>> dot3((1.0, 2.0, 3.0), (4.0, 5.0, 6.0))
+    32.0
+    """
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
 @dataclass(frozen=True)
 class SurfacePoint:
-    """Position and partial derivatives of a surface at parameters (u, v); each (..., 3)."""
+    """Position and partial derivatives of a surface at parameters (u, v); each (..., 3).
+
+    Parameters
+    ----------
+    r : (..., 3) numpy.ndarray
+        Position [length].
+    r_u, r_v : (..., 3) numpy.ndarray
+        First partial derivatives [length per unit of u, v].
+    r_uu, r_uv, r_vv : (..., 3) numpy.ndarray
+        Second partial derivatives.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> p = Sphere(R=2.0).evaluate(0.0, 0.0)  # longitude, latitude [rad]
+    >>> np.round(p.r, 12).tolist(), np.round(p.normal, 12).tolist()
+    ([2.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+    >>> float(p.flipped().normal[0])  # (v, u): the other orientation
+    -1.0
+    """
 
     r: np.ndarray
     r_u: np.ndarray
@@ -129,14 +255,30 @@ class SurfacePoint:
 
     @property
     def normal(self) -> np.ndarray:
-        """Unit normal n = (r_u x r_v) / |r_u x r_v| (the orientation every curvature uses)."""
+        """Unit normal n = (r_u x r_v) / ``|r_u x r_v|`` (the orientation every curvature uses)."""
         return unit(cross(self.r_u, self.r_v))
 
     @classmethod
     def from_components(cls, comps) -> SurfacePoint:
         """The point of :meth:`Surface.evaluate_components`'s six vectors ``comps`` (3-tuples of
         broadcastable arrays or floats): each stacked into a (..., 3) array (the inverse of
-        :meth:`components`; a float component is broadcast to the arrays' shape)."""
+        :meth:`components`; a float component is broadcast to the arrays' shape).
+
+        Parameters
+        ----------
+        comps : tuple
+            The six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each a 3-tuple of components.
+
+        Returns
+        -------
+        SurfacePoint
+            The stacked point.
+
+        Raises
+        ------
+        ValueError
+            If ``comps`` is not six 3-tuples or their shapes do not broadcast.
+        """
         if len(comps) != 6 or any(len(vec) != 3 for vec in comps):
             raise ValueError(
                 "comps must be the six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each a 3-tuple of "
@@ -156,13 +298,25 @@ class SurfacePoint:
 
     def components(self) -> tuple:
         """The six vectors (r, r_u, r_v, r_uu, r_uv, r_vv), each as a 3-tuple of component arrays
-        (views, no copies): the structure-of-arrays form of :meth:`Surface.evaluate_components`."""
+        (views, no copies): the structure-of-arrays form of :meth:`Surface.evaluate_components`.
+
+        Returns
+        -------
+        tuple
+            Six 3-tuples of component arrays.
+        """
         return tuple(
             (x[..., 0], x[..., 1], x[..., 2]) for x in (self.r, self.r_u, self.r_v, self.r_uu, self.r_uv, self.r_vv)
         )
 
     def flipped(self) -> SurfacePoint:
-        """The same point with the parameters swapped (v, u): the normal changes sign."""
+        """The same point with the parameters swapped (v, u): the normal changes sign.
+
+        Returns
+        -------
+        SurfacePoint
+            The point with r_u and r_v, r_uu and r_vv exchanged.
+        """
         return SurfacePoint(self.r, self.r_v, self.r_u, self.r_vv, self.r_uv, self.r_uu)
 
 
@@ -190,6 +344,32 @@ def fd_derivatives(position, u, v, h_u: float = 1e-3, h_v: float = 1e-3, *, one_
     offset (33 calls, the axial offsets twice): the same values with a fraction of the calls. Only
     for a ``position`` whose value at a point does not depend on the other points of the call
     (no iteration with a common stopping test; :attr:`Surface.pointwise`).
+
+    Parameters
+    ----------
+    position : callable
+        (u, v) -> (..., 3) points, vectorised.
+    u, v : float or array_like
+        Parameters where the derivatives are wanted (broadcast).
+    h_u, h_v : float, optional
+        Steps in parameter units.
+    one_call : bool, optional
+        Evaluate every stencil point in one call of ``position``.
+
+    Returns
+    -------
+    SurfacePoint
+        Position and the five partial derivatives.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surface import fd_derivatives
+    >>> def saddle(u, v):
+    ...     return np.stack(np.broadcast_arrays(u, v, u * v), -1)
+    >>> p = fd_derivatives(saddle, 0.5, 2.0)
+    >>> np.round(p.r_u, 9).tolist(), round(float(p.r_uv[2]), 6)  # r_uv = (0, 0, 1)
+    ([1.0, 0.0, 2.0], 1.0)
     """
     u = np.asarray(u, dtype=float)
     v = np.asarray(v, dtype=float)
@@ -239,29 +419,98 @@ class Surface:
 
     Subclasses implement :meth:`position` and may override :meth:`evaluate` with analytic
     derivatives. ``fd_step`` sets the finite-difference steps (h_u, h_v) in parameter units.
+
+    Examples
+    --------
+    A surface defined by its position alone, differentiated by finite differences:
+
+    >>> import numpy as np
+    >>> from gearrep.surface import Surface
+    >>> class Paraboloid(Surface):
+    ...     pointwise = True
+    ...     def position(self, u, v):
+    ...         u, v = np.broadcast_arrays(u, v)
+    ...         return np.stack([u, v, 0.5 * (u * u + v * v)], -1)
+    >>> p = Paraboloid().evaluate(0.0, 0.0)
+    >>> np.round(p.r_uu, 6).tolist(), np.round(Paraboloid().normal(0.0, 0.0), 12).tolist()
+    ([0.0, 0.0, 1.0], [0.0, 0.0, 1.0])
     """
 
-    fd_step: tuple[float, float] = (1e-3, 1e-3)
+    fd_step: tuple[float, float] = (1e-3, 1e-3)  #: finite-difference steps (h_u, h_v) in parameter units
     #: True where ``position`` gives each point's value independently of the other points of a
     #: call (closed forms, interpolation; not an iteration with a common stopping test): the finite
     #: differences then evaluate all their points in one call (:func:`fd_derivatives` ``one_call``)
     pointwise: bool = False
 
     def position(self, u, v) -> np.ndarray:  # pragma: no cover - abstract
+        """Points r(u, v) of the surface (implemented by each family).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters (units of the family: a length, or an angle in rad), broadcast
+            against each other to a shape S.
+
+        Returns
+        -------
+        numpy.ndarray
+            Points of shape S + (3,) [length].
+
+        Raises
+        ------
+        NotImplementedError
+            On the base class.
+        """
         raise NotImplementedError
 
     def evaluate(self, u, v) -> SurfacePoint:
-        """Position and first/second derivatives at (u, v)."""
+        """Position and first/second derivatives at (u, v).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters (units of the family: a length, or an angle in rad), broadcast
+            against each other to a shape S.
+
+        Returns
+        -------
+        SurfacePoint
+            r, r_u, r_v, r_uu, r_uv, r_vv, each of shape S + (3,).
+        """
         return fd_derivatives(self.position, u, v, *self.fd_step, one_call=self.pointwise)
 
     def evaluate_components(self, u, v) -> tuple:
         """:meth:`evaluate` in structure-of-arrays form: (r, r_u, r_v, r_uu, r_uv, r_vv), each a
         3-tuple of components (arrays, or floats for components that are constant). Families whose
-        equations allow it override this to skip the (..., 3) arrays (the TCA kernels use it)."""
+        equations allow it override this to skip the (..., 3) arrays (the TCA kernels use it).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters (units of the family: a length, or an angle in rad), broadcast
+            against each other to a shape S.
+
+        Returns
+        -------
+        tuple
+            Six 3-tuples of components, each an array of shape S or a float.
+        """
         return self.evaluate(u, v).components()
 
     def normal(self, u, v) -> np.ndarray:
-        """Unit normal (r_u x r_v)/|r_u x r_v| at (u, v)."""
+        """Unit normal (r_u x r_v) / ``|r_u x r_v|`` at (u, v).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters (units of the family: a length, or an angle in rad), broadcast
+            against each other to a shape S.
+
+        Returns
+        -------
+        numpy.ndarray
+            Unit normals of shape S + (3,).
+        """
         return self.evaluate(u, v).normal
 
 
@@ -271,6 +520,30 @@ class RotatedSurface(Surface):
     Derivatives rotate with Q, so the normal unit(r_u x r_v) rotates too and curvatures are
     unchanged. The attributes ``outward_sign``, ``lower``, ``upper``, ``gear``, ``side`` and
     ``fd_step`` of the wrapped surface, where present, and :meth:`contains` pass through.
+
+    Parameters
+    ----------
+    surface : Surface
+        The surface carried.
+    Q : (3, 3) array_like
+        A proper rotation.
+    t : (3,) array_like, optional
+        A translation [length].
+
+    Raises
+    ------
+    ValueError
+        If ``Q`` is not a 3 x 3 proper rotation (within 1e-12).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.frames import rot_z
+    >>> from gearrep.surface import RotatedSurface
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> s = RotatedSurface(Sphere(R=2.0), rot_z(np.pi / 2), t=(0.0, 0.0, 1.0))
+    >>> np.round(s.position(0.0, 0.0), 12).tolist()
+    [0.0, 2.0, 1.0]
     """
 
     _PASSED = ("outward_sign", "lower", "upper", "gear", "side", "fd_step")
@@ -305,7 +578,21 @@ class RotatedSurface(Surface):
         return (self._apply_r(P[0]),) + tuple(self._apply(x) for x in P[1:])
 
     def contains(self, u, v, tol: float = 1e-9):
-        """The wrapped surface's ``contains`` (parameters are unchanged by the motion)."""
+        """The wrapped surface's ``contains`` (parameters are unchanged by the motion).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Parameters of the wrapped surface (units of the family: a length, or an angle in rad), broadcast
+            against each other to a shape S.
+        tol : float, optional
+            Slack passed on.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            Where (u, v) lies in the wrapped surface's domain.
+        """
         return self.surface.contains(u, v, tol)
 
 
@@ -320,6 +607,30 @@ class AxialForm(Surface):
     u_rho = z/v^2, u_z = -rho/v^2, v_rho = rho/v, v_z = z/v,
     u_rhorho = -2 rho z/v^4, u_rhoz = (rho^2 - z^2)/v^4, u_zz = 2 rho z/v^4,
     v_rhorho = z^2/v^3, v_rhoz = -rho z/v^3, v_zz = rho^2/v^3.
+
+    Parameters
+    ----------
+    flank : Surface
+        A spherical flank (``flank.spherical`` true).
+
+    Raises
+    ------
+    ValueError
+        If ``flank`` is not spherical.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surface import AxialForm
+    >>> from gearrep.surfaces.bevel import BevelGearData, SphericalInvoluteFlank
+    >>> g = BevelGearData(20, 40, 3.0, math.radians(20), 10.0)  # teeth, mate's teeth, mm, rad, mm
+    >>> flank = SphericalInvoluteFlank(g)
+    >>> axial = AxialForm(flank)
+    >>> u, v = 0.5 * (flank.lower + flank.upper)
+    >>> rho, z = v * math.sin(u), v * math.cos(u)
+    >>> bool(np.allclose(axial.position(rho, z), flank.position(u, v), rtol=0, atol=1e-12))
+    True
     """
 
     cylindrical = True

@@ -401,18 +401,24 @@ def render(
     """HTML of the report.
 
     card : the scorecard (columns of gearrep.checks.scorecard plus ``replication``)
+
     figures : {caption: PNG bytes}, embedded in order (the caption says what the figure shows and
         whether it agrees)
+
     errata : columns seed, location, printed, correction, evidence
     environment : {name: value} (versions, git commit, config hash)
     notebooks : {replication: relative href of its rendered notebook}
     runtime_s : total workflow run time in seconds (sum of the jobs' benchmarks)
+
     order : {(seed, source): line of the seed text}, the paper's order of its tables
         (gearrep.published.document_order); without it sources sort as strings
+
     design : gearrep.published.design_table of every paper (one row per example)
+
     parity : the parity plot of every source with computed numbers: True draws them here, False
         leaves them out, and {seed: {source: PNG}} embeds plots drawn beforehand by
         :func:`parity_pngs` (exactly one per source of :func:`parity_rows`, else ValueError)
+
     highlights : {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each
         checked against its records by :func:`highlight`; the findings of a paper are these
         followed by :func:`findings`, five at most

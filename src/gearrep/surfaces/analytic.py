@@ -58,7 +58,19 @@ class _Analytic(Surface):
 
 
 class Plane(_Analytic):
-    """r(u, v) = origin + u a + v b (a, b need not be orthonormal). k1 = k2 = 0."""
+    """r(u, v) = origin + u a + v b (a, b need not be orthonormal). k1 = k2 = 0.
+
+    Parameters
+    ----------
+    origin, a, b : (3,) array_like, optional
+        A point [length] and two independent directions.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import Plane
+    >>> Plane(origin=(0.0, 0.0, 1.0)).position(2.0, 3.0).tolist()
+    [2.0, 3.0, 1.0]
+    """
 
     def __init__(self, origin=(0.0, 0.0, 0.0), a=(1.0, 0.0, 0.0), b=(0.0, 1.0, 0.0)):
         self.origin = np.asarray(origin, float)
@@ -78,6 +90,18 @@ class Plane(_Analytic):
         )
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         n = unit(np.cross(self.a, self.b))
         e1 = np.broadcast_to(unit(self.a), u.shape + (3,))
@@ -88,7 +112,20 @@ class Plane(_Analytic):
 class Sphere(_Analytic):
     """r(u, v) = R (cos v cos u, cos v sin u, sin v): u longitude, v latitude (|v| < pi/2).
 
-    n = unit(r_u x r_v) is the OUTWARD normal, so k1 = k2 = -1/R (umbilic everywhere)."""
+    n = unit(r_u x r_v) is the OUTWARD normal, so k1 = k2 = -1/R (umbilic everywhere).
+
+    Parameters
+    ----------
+    R : float, optional
+        Radius [length].
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> k1, k2, e1, e2 = Sphere(R=2.0).exact_principal(0.3, 0.2)
+    >>> float(k1), float(k2)  # 1/length
+    (-0.5, -0.5)
+    """
 
     def __init__(self, R: float = 1.0):
         self.R = float(R)
@@ -106,6 +143,18 @@ class Sphere(_Analytic):
         return r, r_u, r_v, r_uu, r_uv, r_vv
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         p = self.evaluate(u, v)
         k = np.full(u.shape, -1.0 / self.R)
@@ -116,7 +165,20 @@ class Sphere(_Analytic):
 class Cylinder(_Analytic):
     """r(u, v) = (R cos u, R sin u, v): circular cylinder about z, outward normal.
 
-    k1 = 0 along the generator (e1 = +-z), k2 = -1/R around (e2 = circumferential)."""
+    k1 = 0 along the generator (e1 = +-z), k2 = -1/R around (e2 = circumferential).
+
+    Parameters
+    ----------
+    R : float, optional
+        Radius [length].
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import Cylinder
+    >>> k1, k2, e1, e2 = Cylinder(R=2.0).exact_principal(0.0, 0.0)
+    >>> float(k1), float(k2), e1.tolist()
+    (0.0, -0.5, [0.0, 0.0, 1.0])
+    """
 
     def __init__(self, R: float = 1.0):
         self.R = float(R)
@@ -132,6 +194,18 @@ class Cylinder(_Analytic):
         return r, r_u, r_v, r_uu, _vec(z, z, z), _vec(z, z, z)
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         p = self.evaluate(u, v)
         e1 = unit(p.r_v)
@@ -143,7 +217,25 @@ class Torus(_Analytic):
 
     Along the parallel (e1 = unit(r_u)): k1 = -cos v / (c + a cos v); along the meridian
     (e2 = unit(r_v)): k2 = -1/a. Outer equator v = 0: k1 = -1/(c + a); inner equator v = pi:
-    k1 = +1/(c - a) (hyperbolic points)."""
+    k1 = +1/(c - a) (hyperbolic points).
+
+    Parameters
+    ----------
+    c, a : float, optional
+        Radius of the centre circle and of the tube [length], c > a > 0.
+
+    Raises
+    ------
+    ValueError
+        Unless c > a > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.analytic import Torus
+    >>> [round(float(k), 12) for k in Torus(3.0, 1.0).exact_principal(0.0, math.pi)[:2]]  # inner equator
+    [0.5, -1.0]
+    """
 
     def __init__(self, c: float = 3.0, a: float = 1.0):
         if not (c > a > 0):
@@ -165,6 +257,18 @@ class Torus(_Analytic):
         return r, r_u, r_v, r_uu, r_uv, r_vv
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         p = self.evaluate(u, v)
         k1 = -np.cos(v) / (self.c + self.a * np.cos(v))
@@ -177,7 +281,24 @@ class Helicoid(_Analytic):
     """Right helicoid r(u, v) = (u cos v, u sin v, c v): u = rho (radius), v = theta.
 
     Minimal surface: k1 = -k2 = |c|/(rho^2 + c^2); principal directions bisect the
-    (orthogonal) parameter lines: e1 = (t1 - sgn(c) t2)/sqrt 2, t1 = unit(r_u), t2 = unit(r_v)."""
+    (orthogonal) parameter lines: e1 = (t1 - sgn(c) t2)/sqrt 2, t1 = unit(r_u), t2 = unit(r_v).
+
+    Parameters
+    ----------
+    c : float, optional
+        Pitch: axial advance per radian [length], non-zero.
+
+    Raises
+    ------
+    ValueError
+        If ``c`` is 0.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import Helicoid
+    >>> [round(float(k), 12) for k in Helicoid(1.0).exact_principal(1.0, 0.0)[:2]]  # |c|/(rho^2 + c^2)
+    [0.5, -0.5]
+    """
 
     def __init__(self, c: float = 1.0):
         if c == 0:
@@ -197,6 +318,18 @@ class Helicoid(_Analytic):
         return r, r_u, r_v, r_uu, r_uv, r_vv
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         p = self.evaluate(u, v)
         k = abs(self.c) / (u**2 + self.c**2)
@@ -214,7 +347,26 @@ class InvoluteHelicoid(_Analytic):
     base helix angle beta_b with tan beta_b = r_b/|p|. Transverse sections are involutes of the
     base circle. With n = unit(r_u x r_v) = sgn(u) (p sin v, -p cos v, r_b)/w:
     one principal curvature 0 along the generator T, the other p/(r_b |u|) across it
-    (= cos beta_b / rho_t with rho_t = |u| sin beta_b the transverse radius of curvature)."""
+    (= cos beta_b / rho_t with rho_t = ``|u|`` sin beta_b the transverse radius of curvature).
+
+    Parameters
+    ----------
+    rb : float, optional
+        Base radius r_b [length], > 0.
+    p : float, optional
+        Screw parameter lead / (2 pi) [length per rad], non-zero.
+
+    Raises
+    ------
+    ValueError
+        If ``rb`` <= 0 or ``p`` = 0.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import InvoluteHelicoid
+    >>> [round(float(k), 12) for k in InvoluteHelicoid(1.0, 1.0).exact_principal(-1.0, 0.0)[:2]]
+    [1.0, 0.0]
+    """
 
     def __init__(self, rb: float = 1.0, p: float = 1.0):
         if not (rb > 0):
@@ -244,6 +396,18 @@ class InvoluteHelicoid(_Analytic):
         return r, r_u, r_v, r_uu, r_uv, r_vv
 
     def exact_principal(self, u, v):
+        """Principal curvatures and directions in closed form (the reference the tests compare with).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Surface parameters.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (k1, k2 [1/length], e1, e2 (..., 3)), signed w.r.t. n = unit(r_u x r_v).
+        """
         u, v = _uv(u, v)
         p = self.evaluate(u, v)
         kn = self.p / (self.rb * np.abs(u))
@@ -257,7 +421,26 @@ class InvoluteHelicoid(_Analytic):
 
 def finite_difference_version(surface: Surface, fd_step=None) -> Surface:
     """A :class:`Surface` with the same ``position`` whose ``evaluate`` is the base-class
-    fourth-order finite-difference default (optionally with steps ``fd_step`` = (h_u, h_v))."""
+    fourth-order finite-difference default (optionally with steps ``fd_step`` = (h_u, h_v)).
+
+    Parameters
+    ----------
+    surface : Surface
+        The surface whose ``position`` is used.
+    fd_step : tuple of float, optional
+        (h_u, h_v) in parameter units (default the surface's own).
+
+    Returns
+    -------
+    Surface
+        The finite-difference twin.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.analytic import Sphere, finite_difference_version
+    >>> round(float(finite_difference_version(Sphere(R=2.0)).evaluate(0.0, 0.0).r_uu[0]), 9)
+    -2.0
+    """
 
     class _FD(Surface):
         def position(self, u, v):

@@ -7,7 +7,7 @@ eq (8)-(9) = eq (51); the crowning and relief of the cylindrical family (eq 10-1
 section "Temirkhan thesis (seed 003)".
 
 Parameters (the thesis's spherical coordinates, sec 3.3)
--------------------------------------------------------
+--------------------------------------------------------
 ``u`` is the polar angle between the gear axis z_i and the flank point (rad) and ``v`` the distance
 of the point from the cone apex (the cone distance, eq 50: R_i = v_i). In the gear's own frame S_i
 (apex at the origin)
@@ -31,13 +31,16 @@ about the +x_i axis; ``side = +1`` is the flank on its +y_i side. ``v`` runs ove
 
 Properties used by the tests and the TCA:
 * every point lies on the sphere |r| = v about the apex (A);
+
 * the great circle normal to the profile at a point is tangent to the base cone
   (|((r x n) / |r|) . z| = sin a_b), which is what makes the profile a spherical involute, and two
   such flanks with equal pressure angle on rolling pitch cones are conjugate (line contact along a
   generatrix through the apex, zero TE);
+
 * turning the profile about the axis by dpsi moves it along its normal by v sin(a_b) dpsi (the
   spherical counterpart of the base-pitch property), so ``delta`` in (B) is an offset along the
   normal in length units (exact for constant delta, first order otherwise);
+
 * the spiral (eq 51): at cone distance v the profile is turned by theta(v); the curve it traces on
   the base cone crosses the generatrices at the constant angle Phi, i.e. Phi is the spiral angle
   on the base cone (the angle in the tangent plane of action), not on the pitch cone. Two flanks of
@@ -45,17 +48,21 @@ Properties used by the tests and the TCA:
   one logarithmic spiral drawn in the plane of action, which rolls on both base cones.
 
 Choices the thesis leaves open (stated here, used by the replication)
---------------------------------------------------------------------
+---------------------------------------------------------------------
+
 * Base cones: from the pitch cones and the pressure angle, sin a_b = sin delta_p cos alpha (the
   pressure angle is the angle at the pitch point between the profile normal great circle and the
   meridian's normal). Table 5's "base cone angles" 47.79 / 36.53 deg are the root cones
   (delta_p - atan(1.25 m / R_e)); used as base cones the pair is not conjugate.
+
 * Tooth depth tapers to the apex: addendum angle atan(h_a m / R_e), dedendum angle
   atan(h_f m / R_e) (m = module at the outer cone distance R_e = N m / (2 sin delta_p)).
+
 * Tip/root relief: eq (13) in the polar angle u (``TipRelief(u0, length, amount)`` with u0 and
   length in rad, the amount in length along the normal); :func:`relief_from_length` converts a
   relief length L (length units along the profile at the mean cone distance) into the angle
   L / R_m starting L / R_m below the tip.
+
 * Longitudinal crowning (parabolic, circular, logarithmic, eq 10-12 via the classes of
   :mod:`gearrep.surfaces.involute`) is a function of the cone distance v with v0 = R_m.
 """

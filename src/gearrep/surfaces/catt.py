@@ -60,7 +60,7 @@ involute falls like 1/R_T^2 (test ``test_straight_trace_limit_is_involute_spur``
 predicted deviation to 0.2 %).
 
 Corrections to seed 004 (evidence in tests/unit/surfaces/test_catt.py)
---------------------------------------------------------------------
+----------------------------------------------------------------------
 * Eq (5)-(6) and the meshing relation are correct as printed: eq (6) equals (C) to rounding and
   the rack normal is orthogonal to the relative velocity at every generated point.
 * Eq (8): the normal must be divided by |r_theta x r_phi|, not |r_theta . r_phi|; the dot

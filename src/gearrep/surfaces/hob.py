@@ -190,14 +190,18 @@ class FlankCurvatures(NamedTuple):
 
     k_s, e_s : the principal direction nearest the gear axis Z_f (along Z_f at mid-face), with
         e_s . Z_f >= 0
+
     k_q, e_q : the other one; e_q = n_out x e_s (n_out the normal pointing out of the tooth):
         the orientation the printed tables use for both flanks (see the replication module)
+
     Curvatures are signed w.r.t. ``normal`` = the hob normal unit(r_l x r_phi) of eq 4.41
     carried into S_f (the tables' convention: k > 0 where the flank bends toward it).
     normal_out : n_out; point : the flank point (mm) in S_f
+
     k_s_two_parameter, k_q_two_parameter, sigma_two_parameter : the same pair from the
         two-parameter-envelope system of seed 000 (eq 4.33-4.39 with the corrected signs, then
         4.24-4.26; e_s nearest the hob direction e_f)
+
     result : the :class:`gearrep.envelope.EnvelopeResult` (generation frame) with the statuses
     """
 
@@ -221,12 +225,16 @@ class GeneratedGear:
 
     hob : :class:`ZAHob`
     n_teeth : N of the work gear (>= 4)
+
     R_c_mm : nominal radius of the circular-arc tooth trace (> 0); ``np.inf`` gives the spur-gear
         limit, where the swivel becomes a translation along the gear axis and psi is that axial
         feed in mm (Z_f = psi for arc_centre = -1)
+
     side : thread side (+1 upper sign of eq 4.40, -1 lower sign); with arc_centre = -1,
         +1 generates Sigma_2R (convex) and -1 Sigma_2L (concave): see :data:`FLANK_SIDE`
+
     arc_centre : side of the arc centre, -1 (default, the tables' convention) or +1
+
     tol, maxiter : Newton settings of the meshing solve (tol on the meshing residual, mm, for
         R_c <= 100 mm; see :attr:`effective_tol`)
     """

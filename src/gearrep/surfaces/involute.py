@@ -9,11 +9,11 @@ the thesis, as printed, is wrong; every correction is listed below with its evid
 Parameters (as in the thesis, eq (35)-(36))
 -------------------------------------------
 ``u`` is the distance of the flank point from the gear axis (the involute "radius") and ``v`` its
-axial coordinate (face-width coordinate), so that in the gear's own frame S_i
+axial coordinate (face-width coordinate), so that in the gear's own frame S_i::
 
     r(u, v) = ( u cos psi(u, v),  u sin psi(u, v),  v )                                    (A)
 
-with the polar angle
+with the polar angle::
 
     psi(u, v) = side * ( c - inv(u) - delta(u, v) / r_b ) + twist(v),                      (B)
     inv(u)    = tan(a_u) - a_u = sqrt(u^2 - r_b^2)/r_b - atan(sqrt(u^2 - r_b^2)/r_b),
@@ -32,6 +32,7 @@ exact normal offset for constant delta and a first-order one for delta varying w
 helical flank the offset along the 3-D surface normal is delta * cos(beta_b).
 
 Helix (``helix_form``):
+
 * ``"true"`` (default): the involute helicoid, twist(v) = hand * v * tan(beta) / r_p, i.e. a
   constant lead 2 pi r_p / tan(beta) = 2 pi r_b / tan(beta_b). Two helicoids of opposite hands with
   equal normal module/pressure/helix angle are conjugate on parallel axes (line contact, TE = 0).
@@ -39,7 +40,7 @@ Helix (``helix_form``):
   helicoid (see correction 3).
 
 Corrections to the thesis (evidence in tests/unit/surfaces/test_involute.py)
--------------------------------------------------------------------
+----------------------------------------------------------------------------
 1. Eq (1) and eq (57): the y component must read r_b (sin t - t cos t), not r_b (cos t - t sin t).
    With the printed form the point at t = 0 is (r_b, r_b), at distance sqrt(2) r_b from the axis,
    and its distance from the axis is not u of eq (2) (|r|^2 = 2 r_b^2 (cos^2 t + t^2 sin^2 t) instead
@@ -60,7 +61,7 @@ Corrections to the thesis (evidence in tests/unit/surfaces/test_involute.py)
 4. Eq (57)/(58) add the modification to the Cartesian x and y components. That displaces the
    profile in a fixed direction (not along its normal) and destroys the property that u is the
    distance from the axis, on which the reduced TCA (eq 35-40) depends. Here the modification is
-   applied as a rotation of the transverse section by delta/r_b (eq B), which keeps u = |r_xy|
+   applied as a rotation of the transverse section by delta/r_b (eq B), which keeps u = ``|r_xy|``
    and offsets the flank by delta along its normal.
 5. Eq (12) normalises v - v_o by v_o: with the thesis's v in [0, b] and v_o = b/2 that is the half
    face width; here the half width is an explicit parameter (default b/2).
@@ -78,6 +79,7 @@ import numpy as np
 
 from ..inputs import check_finite as _check_finite
 from ..surface import Surface, SurfacePoint
+from ._modifications import CircularCrowning, LogarithmicCrowning, ParabolicCrowning, RootRelief, TipRelief
 
 __all__ = [
     "involute_polar_angle",
@@ -104,6 +106,31 @@ def involute_polar_angle(u, r_b):
     inv(u) = tan(a_u) - a_u with cos(a_u) = r_b/u, which equals eq (4)'s
     acos((r_b/u)(cos t + t sin t)) with t = sqrt(u^2/r_b^2 - 1) (eq 2). Vectorised over ``u``;
     NaN for u < r_b (inside the base circle, where the involute does not exist).
+
+    Parameters
+    ----------
+    u : float or array_like
+        Radius of the flank point [length, the unit of ``r_b``].
+    r_b : float
+        Base radius [length], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        inv(u) [rad], of the shape of ``u``.
+
+    Raises
+    ------
+    ValueError
+        If ``r_b`` is not a finite number > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import involute_polar_angle
+    >>> r_b = 10 * math.cos(math.radians(20))  # pitch radius 10 mm, 20 deg
+    >>> round(float(involute_polar_angle(10.0, r_b)), 9)  # inv(20 deg) = tan 20 deg - 20 deg
+    0.014904384
     """
     r_b = _check_finite("r_b", r_b, positive=True)
     u = np.asarray(u, dtype=float)
@@ -138,159 +165,42 @@ def involute_xy(theta, r_b, corrected: bool = True):
     """Involute point of eq (1): x = r_b (cos t + t sin t), y = r_b (sin t - t cos t) (corrected).
 
     ``corrected=False`` returns the y component as printed in the thesis, r_b (cos t - t sin t),
-    for the evidence test of correction 1. ``theta`` is the roll angle t of eq (2).
+    for the evidence test of correction 1.
+
+    Parameters
+    ----------
+    theta : float or array_like
+        The roll angle t of eq (2) [rad].
+    r_b : float
+        Base radius [length], > 0.
+    corrected : bool, optional
+        The true involute (default) or the thesis's printed y component.
+
+    Returns
+    -------
+    (..., 2) numpy.ndarray
+        The points (x, y) [length of ``r_b``].
+
+    Raises
+    ------
+    ValueError
+        If ``r_b`` is not a finite number > 0.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import involute_xy
+    >>> p = involute_xy([0.0, 0.5], 10.0)
+    >>> np.round(p, 6).tolist()
+    [[10.0, 0.0], [11.172953, 0.406343]]
+    >>> np.round(np.hypot(*p.T), 6).tolist()  # radius r_b sqrt(1 + t^2) (eq 2)
+    [10.0, 11.18034]
     """
     r_b = _check_finite("r_b", r_b, positive=True)
     t = np.asarray(theta, dtype=float)
     x = r_b * (np.cos(t) + t * np.sin(t))
     y = r_b * (np.sin(t) - t * np.cos(t)) if corrected else r_b * (np.cos(t) - t * np.sin(t))
     return np.stack([x, y], axis=-1)
-
-
-# ----------------------------------------------------------------------------------------------
-# modifications: each returns (delta, d delta, d2 delta) of material removed (eq 10-13)
-# ----------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class ParabolicCrowning:
-    """Longitudinal parabolic crowning, thesis eq (10): delta = c1 w^2 + c2 w + c3, w = v - v0.
-
-    ``c1`` [1/length] is the crowning coefficient (thesis a_1, a_p, c_1); ``c2`` a lead slope;
-    ``c3`` a uniform thinning.
-    """
-
-    c1: float
-    c2: float = 0.0
-    c3: float = 0.0
-    v0: float = 0.0
-
-    def __post_init__(self):
-        for n in ("c1", "c2", "c3", "v0"):
-            _check_finite(n, getattr(self, n))
-
-    def __call__(self, v):
-        if type(v) is float:  # one point: the same operations on Python floats
-            w = v - float(self.v0)
-            c1, c2 = float(self.c1), float(self.c2)
-            return c1 * w * w + c2 * w + float(self.c3), 2.0 * c1 * w + c2, 2.0 * c1
-        w = np.asarray(v, dtype=float) - self.v0
-        return self.c1 * w * w + self.c2 * w + self.c3, 2.0 * self.c1 * w + self.c2, np.full_like(w, 2.0 * self.c1)
-
-
-@dataclass(frozen=True)
-class CircularCrowning:
-    """Longitudinal circular-arc crowning, thesis eq (11): delta = R - sqrt(R^2 - w^2), w = v - v0,
-    with R = (4 c_c^2 + b^2) / (8 c_c) so that delta = c_c at the face edges w = +-b/2.
-
-    ``crown`` is c_c (> 0, < b/2 so that the arc spans the face), ``face_width`` is b.
-    """
-
-    crown: float
-    face_width: float
-    v0: float = 0.0
-
-    def __post_init__(self):
-        _check_finite("crown", self.crown, positive=True)
-        _check_finite("face_width", self.face_width, positive=True)
-        _check_finite("v0", self.v0)
-        if not self.crown < 0.5 * self.face_width:
-            raise ValueError(f"crown must be in (0, face_width/2) = (0, {0.5 * self.face_width}), got {self.crown!r}")
-
-    @property
-    def radius(self) -> float:
-        """Arc radius R of eq (11)."""
-        return (4.0 * self.crown**2 + self.face_width**2) / (8.0 * self.crown)
-
-    def __call__(self, v):
-        w = np.asarray(v, dtype=float) - self.v0
-        R = self.radius
-        with np.errstate(invalid="ignore", divide="ignore"):
-            q = np.sqrt(R * R - w * w)
-            return R - q, w / q, R * R / q**3
-
-
-@dataclass(frozen=True)
-class LogarithmicCrowning:
-    """Longitudinal logarithmic crowning, thesis eq (12): delta = a1 ln(1 / (1 - a2 (w/h)^2)),
-    w = v - v0, h = ``half_width`` (the thesis's v_o = b/2, see correction 5).
-
-    ``a1`` [length] >= 0 scales the drop; ``a2`` in [0, 1) keeps the logarithm finite over the face
-    (delta(+-h) = a1 ln(1/(1 - a2))).
-    """
-
-    a1: float
-    a2: float
-    half_width: float
-    v0: float = 0.0
-
-    def __post_init__(self):
-        _check_finite("a1", self.a1, nonneg=True)
-        _check_finite("half_width", self.half_width, positive=True)
-        _check_finite("v0", self.v0)
-        a2 = _check_finite("a2", self.a2)
-        if not 0.0 <= a2 < 1.0:
-            raise ValueError(f"a2 must be in [0, 1), got {self.a2!r}")
-
-    def __call__(self, v):
-        s = (np.asarray(v, dtype=float) - self.v0) / self.half_width
-        h = self.half_width
-        with np.errstate(invalid="ignore", divide="ignore"):
-            q = 1.0 - self.a2 * s * s
-            d = -self.a1 * np.log(q)
-            d1 = 2.0 * self.a1 * self.a2 * s / (h * q)
-            d2 = 2.0 * self.a1 * self.a2 * (1.0 + self.a2 * s * s) / (h * h * q * q)
-        return d, d1, d2
-
-
-@dataclass(frozen=True)
-class TipRelief:
-    """Tip relief, thesis eq (13): delta = H(u - u0) c_m ((u - u0)/L)^2 (u = radius).
-
-    ``u0`` start radius of the relief, ``length`` L > 0, ``amount`` c_m >= 0 (relief at u0 + L).
-    C1 at u0; the second derivative (curvature) jumps there.
-    """
-
-    u0: float
-    length: float
-    amount: float
-
-    def __post_init__(self):
-        _check_finite("u0", self.u0, positive=True)
-        _check_finite("length", self.length, positive=True)
-        _check_finite("amount", self.amount, nonneg=True)
-
-    def __call__(self, u):
-        if type(u) is float:  # one point: the same operations on Python floats
-            w = u - float(self.u0)
-            k = float(self.amount) / float(self.length) ** 2
-            return (k * w * w, 2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
-        w = np.asarray(u, dtype=float) - self.u0
-        on = w > 0
-        k = self.amount / self.length**2
-        return np.where(on, k * w * w, 0.0), np.where(on, 2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
-
-
-@dataclass(frozen=True)
-class RootRelief:
-    """Root relief, eq (13) mirrored: delta = H(u0 - u) c_m ((u0 - u)/L)^2 (u = radius)."""
-
-    u0: float
-    length: float
-    amount: float
-
-    def __post_init__(self):
-        _check_finite("u0", self.u0, positive=True)
-        _check_finite("length", self.length, positive=True)
-        _check_finite("amount", self.amount, nonneg=True)
-
-    def __call__(self, u):
-        if type(u) is float:  # one point: the same operations on Python floats
-            w = float(self.u0) - u
-            k = float(self.amount) / float(self.length) ** 2
-            return (k * w * w, -2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
-        w = self.u0 - np.asarray(u, dtype=float)
-        on = w > 0
-        k = self.amount / self.length**2
-        return np.where(on, k * w * w, 0.0), np.where(on, -2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
 
 
 def _flank_options(side, hand, crowning, relief):
@@ -322,6 +232,41 @@ class InvoluteGearData:
     ``helix_angle`` beta at the pitch cylinder. Profile shift ``x`` (coefficient), addendum and
     dedendum coefficients ``h_a``, ``h_f``, and ``thinning`` (transverse arc tooth-thickness
     reduction at the pitch circle, e.g. a backlash allowance) follow standard practice.
+
+    Parameters
+    ----------
+    n_teeth : int
+        Number of teeth, >= 3.
+    module : float
+        Normal module [length], > 0.
+    pressure_angle : float
+        Normal pressure angle [rad], in (0, pi/2).
+    face_width : float
+        Face width b [length], > 0.
+    helix_angle : float, optional
+        Helix angle beta at the pitch cylinder [rad], in [0, pi/2) (0: spur).
+    x : float, optional
+        Profile shift coefficient [1].
+    h_a, h_f : float, optional
+        Addendum and dedendum coefficients [1] (1 and 1.25).
+    thinning : float, optional
+        Transverse arc tooth-thickness reduction at the pitch circle [length].
+
+    Raises
+    ------
+    ValueError
+        Naming the field and its allowed range: a value not finite or out of range, a root circle
+        at or below the axis, a thinning that leaves no tooth space or a pointed tooth.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData
+    >>> g = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, mm, rad, mm
+    >>> float(g.r_p), float(g.r_a), round(float(g.r_b), 6), round(float(g.base_pitch), 6)  # mm
+    (34.5, 37.5, 32.419395, 8.856394)
+    >>> round(g.min_teeth_without_undercut, 4)
+    17.0973
     """
 
     n_teeth: int
@@ -380,6 +325,7 @@ class InvoluteGearData:
 
     @property
     def transverse_module(self) -> float:
+        """Transverse module m / cos(beta) [length]."""
         return self.module / np.cos(self.helix_angle)
 
     @property
@@ -389,47 +335,58 @@ class InvoluteGearData:
 
     @property
     def alpha_t(self) -> float:
-        """Transverse pressure angle, tan(alpha_t) = tan(alpha_n)/cos(beta)."""
+        """Transverse pressure angle [rad], tan(alpha_t) = tan(alpha_n)/cos(beta)."""
         return float(np.arctan(np.tan(self.pressure_angle) / np.cos(self.helix_angle)))
 
     @property
     def r_p(self) -> float:
-        """Pitch (reference) radius N m_t / 2 (Table 1: d_p = N m)."""
+        """Pitch (reference) radius N m_t / 2 [length] (Table 1: d_p = N m)."""
         return 0.5 * self.n_teeth * self.transverse_module
 
     @property
     def r_b(self) -> float:
-        """Base radius r_p cos(alpha_t) (Table 1: d_b = d_p cos alpha)."""
+        """Base radius r_p cos(alpha_t) [length] (Table 1: d_b = d_p cos alpha)."""
         return self.r_p * np.cos(self.alpha_t)
 
     @property
     def r_a(self) -> float:
-        """Tip radius r_p + (h_a + x) m (Table 1 corrected: d_a = d_p + 2m for h_a = 1, x = 0)."""
+        """Tip radius r_p + (h_a + x) m [length] (Table 1 corrected: d_a = d_p + 2m for h_a = 1, x = 0)."""
         return self.r_p + (self.h_a + self.x) * self.module
 
     @property
     def r_f(self) -> float:
-        """Root radius r_p - (h_f - x) m."""
+        """Root radius r_p - (h_f - x) m [length]."""
         return self.r_p - (self.h_f - self.x) * self.module
 
     @property
     def beta_b(self) -> float:
-        """Base helix angle, tan(beta_b) = tan(beta) cos(alpha_t)."""
+        """Base helix angle [rad], tan(beta_b) = tan(beta) cos(alpha_t)."""
         return float(np.arctan(np.tan(self.helix_angle) * np.cos(self.alpha_t)))
 
     @property
     def tooth_thickness(self) -> float:
-        """Transverse circular tooth thickness at the pitch circle m_t (pi/2 + 2 x tan alpha_n) - thinning."""
+        """Transverse circular tooth thickness at the pitch circle m_t (pi/2 + 2 x tan alpha_n) - thinning [length]."""
         return self.transverse_module * (0.5 * np.pi + 2.0 * self.x * np.tan(self.pressure_angle)) - self.thinning
 
     @property
     def base_pitch(self) -> float:
-        """Transverse base pitch 2 pi r_b / N."""
+        """Transverse base pitch 2 pi r_b / N [length]."""
         return 2.0 * np.pi * self.r_b / self.n_teeth
 
     def half_angle(self, r) -> float:
         """Half the angle the tooth subtends at radius ``r`` >= r_b [mm], rad: s/(2 r_p) + inv(alpha_t)
-        - inv(alpha_r) (the flank's polar angle from the tooth's centre plane)."""
+        - inv(alpha_r) (the flank's polar angle from the tooth's centre plane).
+
+        Parameters
+        ----------
+        r : float
+            Radius [length], >= r_b.
+
+        Returns
+        -------
+        float
+            The half angle [rad].
+        """
         return float(
             self.tooth_thickness / (2.0 * self.r_p)
             + involute_polar_angle(self.r_p, self.r_b)
@@ -441,7 +398,18 @@ class InvoluteGearData:
         tooth any thickness there, mm: an offset of an involute helicoid along its normal by d is
         a turn about the axis by d / (r_b cos(beta_b)), and the flank reaches the tooth's centre
         plane when that turn equals :meth:`half_angle` (both flanks removed alike: the tooth
-        ends in a point)."""
+        ends in a point).
+
+        Parameters
+        ----------
+        r : float
+            Radius [length], >= r_b.
+
+        Returns
+        -------
+        float
+            The removal [length].
+        """
         return float(self.r_b * np.cos(self.beta_b) * self.half_angle(r))
 
 
@@ -470,14 +438,38 @@ class InvoluteFlank(Surface):
     Parameters
     ----------
     gear : InvoluteGearData
-    side : +1 (flank on the +y_i side of the tooth centred on x_i) or -1
-    hand : +1 right-hand, -1 left-hand helix (ignored for spur gears); mating external helical
-        gears have opposite hands
-    crowning : ParabolicCrowning | CircularCrowning | LogarithmicCrowning | None (eq 10-12)
-    relief : sequence of TipRelief / RootRelief (eq 13)
-    helix_form : "true" (involute helicoid) or "asin" (eq 5/58 as printed: twist asin(v sin(beta) / r_b))
-    u_min, u_max : flank limits in u (defaults: max(r_b, r_f) = start of the involute above the
+        The gear's size.
+    side : int, optional
+        +1 (flank on the +y_i side of the tooth centred on x_i) or -1.
+    hand : int, optional
+        +1 right-hand, -1 left-hand helix (ignored for spur gears); mating external helical
+        gears have opposite hands.
+    crowning : ParabolicCrowning or CircularCrowning or LogarithmicCrowning, optional
+        Lengthwise crowning (eq 10-12).
+    relief : sequence of TipRelief or RootRelief, optional
+        Profile relief (eq 13).
+    helix_form : {"true", "asin"}, optional
+        "true" (involute helicoid) or "asin" (eq 5/58 as printed: twist asin(v sin(beta) / r_b)).
+    u_min, u_max : float, optional
+        Flank limits in u [length] (defaults: max(r_b, r_f) = start of the involute above the
         root or base circle, and r_a). Evaluation exactly at u = r_b is singular (cusp).
+
+    Raises
+    ------
+    ValueError
+        If an argument is of the wrong kind or out of range (``u_min < r_b``, ``u_max <= u_min``).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData
+    >>> flank = InvoluteFlank(InvoluteGearData(23, 3.0, math.radians(20), 25.0))
+    >>> np.round(flank.lower, 6).tolist(), flank.upper.tolist()  # (u, v) domain [mm]
+    ([32.419395, -12.5], [37.5, 12.5])
+    >>> p = flank.evaluate(34.5, 0.0)  # the pitch circle at mid-face
+    >>> round(float(np.hypot(*p.r[:2])), 12), bool(flank.contains(34.5, 0.0))
+    (34.5, True)
     """
 
     cylindrical = True  #: r = (u cos psi, u sin psi, v): u = radius, v = axial coordinate
@@ -533,7 +525,20 @@ class InvoluteFlank(Surface):
         return -self.side
 
     def contains(self, u, v, tol: float = 1e-12) -> np.ndarray:
-        """True where (u, v) lies in the flank domain (closed, with relative slack ``tol``)."""
+        """True where (u, v) lies in the flank domain (closed, with relative slack ``tol``).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters [length].
+        tol : float, optional
+            Relative slack.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            Of the broadcast shape of ``u`` and ``v``.
+        """
         u = np.asarray(u, float)
         v = np.asarray(v, float)
         lo, hi = self.lower, self.upper
@@ -542,7 +547,18 @@ class InvoluteFlank(Surface):
 
     # -- polar angle and its derivatives (eq B) ---------------------------------------------
     def twist(self, v):
-        """Helix twist of the transverse section at axial coordinate v, and its two derivatives."""
+        """Helix twist of the transverse section at axial coordinate v, and its two derivatives.
+
+        Parameters
+        ----------
+        v : float or array_like
+            Axial coordinate [length].
+
+        Returns
+        -------
+        tuple
+            (twist [rad], d twist/dv [rad/length], d2 twist/dv2 [rad/length^2]).
+        """
         if type(v) is float and self.gear.helix_angle == 0.0:  # one point of a spur flank
             return 0.0, 0.0, 0.0
         v = np.asarray(v, dtype=float)
@@ -559,7 +575,18 @@ class InvoluteFlank(Surface):
             return self.hand * np.arcsin(w), self.hand * a / np.sqrt(q), self.hand * a * a * w / q**1.5
 
     def polar_angle_derivs(self, u, v):
-        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
+        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters: radius and axial coordinate [length].
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            psi [rad] and its first and second partials [rad/length, rad/length^2].
+        """
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
         u, v = _broadcast2(u, v)
@@ -589,7 +616,18 @@ class InvoluteFlank(Surface):
         return psi, psi_u, _shaped(psi_v, u.shape), psi_uu, np.zeros_like(u), _shaped(psi_vv, u.shape)
 
     def polar_angle(self, u, v):
-        """Polar angle psi(u, v) of the flank point in the gear frame (eq B)."""
+        """Polar angle psi(u, v) of the flank point in the gear frame (eq B).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters: radius and axial coordinate [length].
+
+        Returns
+        -------
+        numpy.ndarray
+            psi [rad].
+        """
         return self.polar_angle_derivs(u, v)[0]
 
     # -- surface ----------------------------------------------------------------------------
@@ -662,11 +700,43 @@ class InvoluteFlank(Surface):
         return _flank_components(u, v, math.cos(psi), math.sin(psi), pu, pv, puu, pvv)
 
     def outward_normal(self, u, v) -> np.ndarray:
-        """Unit normal pointing out of the tooth material."""
+        """Unit normal pointing out of the tooth material.
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters: radius and axial coordinate [length].
+
+        Returns
+        -------
+        numpy.ndarray
+            Unit normals of shape S + (3,), S the broadcast shape of ``u`` and ``v``.
+        """
         return self.outward_sign * self.evaluate(u, v).normal
 
     def helix_angle_at(self, radius, v=0.0):
-        """Helix angle of the flank's helix at ``radius`` and axial position v: atan(radius dpsi/dv)."""
+        """Helix angle of the flank's helix at ``radius`` and axial position v: atan(radius dpsi/dv).
+
+        Parameters
+        ----------
+        radius : float or array_like
+            Radius [length].
+        v : float, optional
+            Axial position [length].
+
+        Returns
+        -------
+        numpy.ndarray
+            The helix angle [rad], >= 0.
+
+        Examples
+        --------
+        >>> import math
+        >>> from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData
+        >>> g = InvoluteGearData(23, 3.0, math.radians(20), 25.0, helix_angle=math.radians(15))
+        >>> round(math.degrees(float(InvoluteFlank(g).helix_angle_at(g.r_p))), 9)  # beta at r_p
+        15.0
+        """
         radius = np.asarray(radius, dtype=float)
         _, tw1, _ = self.twist(np.broadcast_to(np.asarray(v, float), radius.shape))
         return np.arctan(np.abs(radius * tw1))
@@ -695,6 +765,46 @@ def mating_flanks(
     parameters are u = radius and v = axial coordinate [length of the gear data, mm in the examples].
 
     Checks that the pair can mesh (same normal module, pressure angle and helix angle).
+
+    Parameters
+    ----------
+    gear1, gear2 : InvoluteGearData
+        Pinion and gear.
+    side : int, optional
+        The drive side, +1 or -1, of both flanks.
+    hand1 : int, optional
+        The pinion's hand (+1 right, -1 left); the gear gets the other one.
+    crowning1, crowning2 : crowning, optional
+        Lengthwise crowning of each member (:class:`ParabolicCrowning`, ...).
+    relief1, relief2 : sequence of TipRelief or RootRelief, optional
+        Profile relief of each member.
+    helix_form : {"true", "asin"}, optional
+        See :class:`InvoluteFlank`.
+
+    Returns
+    -------
+    tuple of InvoluteFlank
+        (pinion flank, gear flank).
+
+    Raises
+    ------
+    ValueError
+        If the two gears' normal module, pressure angle or helix angle differ (relative 1e-12),
+        naming the attribute and both values, or a flank argument is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))
+    >>> f1.side, f2.side, f1.hand, f2.hand
+    (1, 1, 1, -1)
+    >>> mating_flanks(g1, InvoluteGearData(41, 2.5, math.radians(20), 25.0))
+    Traceback (most recent call last):
+        ...
+    ValueError: gear1.module = 3.0 and gear2.module = 2.5 must be equal for meshing
     """
     equal = ("module", "pressure_angle", "helix_angle")
     return _mating_pair(
@@ -726,7 +836,27 @@ def _mating_pair(flank_type, gears, equal, side, hand1, crownings, reliefs, **op
 
 
 def standard_centre_distance(gear1: InvoluteGearData, gear2: InvoluteGearData) -> float:
-    """Reference centre distance r_p1 + r_p2 of an external pair (zero profile shift sum)."""
+    """Reference centre distance r_p1 + r_p2 of an external pair (zero profile shift sum).
+
+    Parameters
+    ----------
+    gear1, gear2 : InvoluteGearData
+        Pinion and gear.
+
+    Returns
+    -------
+    float
+        The centre distance [length of the gear data].
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData, standard_centre_distance
+    >>> g1 = InvoluteGearData(52, 1.0, math.radians(20), 11.42)
+    >>> g2 = InvoluteGearData(72, 1.0, math.radians(20), 11.42)
+    >>> float(standard_centre_distance(g1, g2))  # mm
+    62.0
+    """
     return gear1.r_p + gear2.r_p
 
 
@@ -737,6 +867,28 @@ def undercut_limit(gear: InvoluteGearData) -> float:
     shift ``x`` must not reach below the interference point r_p sin^2(alpha_t) of the line of action.
     Below this tooth number the root of the flank is cut away and the involute flank of
     :class:`InvoluteFlank` no longer describes the tooth near its base circle.
+
+    Parameters
+    ----------
+    gear : InvoluteGearData
+        The gear (its addendum, profile shift, helix and pressure angles).
+
+    Returns
+    -------
+    float
+        The limiting tooth number (not rounded).
+
+    Raises
+    ------
+    ValueError
+        If ``gear`` is not an :class:`InvoluteGearData`.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData, undercut_limit
+    >>> round(undercut_limit(InvoluteGearData(23, 3.0, math.radians(20), 25.0)), 4)  # 2 / sin^2(20 deg)
+    17.0973
     """
     if not isinstance(gear, InvoluteGearData):
         raise ValueError(f"gear must be an InvoluteGearData, got {type(gear).__name__}")

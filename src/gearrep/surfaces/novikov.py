@@ -182,8 +182,10 @@ class RackGeneratedFlank(Surface):
         """Rolling angle phi(u, theta) and its derivatives (phi, phi_u, phi_uu, phi_theta) in closed
         form: the equation of meshing (r_p phi - y_c) N_x + x_c N_y = 0 (seed 002 eq 2.3.6) is
         linear in phi. With x_c = x_b(u), y_c = y_b(u) cos(beta) + theta sin(beta), N_x = y_b'(u),
+
         N_y = -x_b'(u) cos(beta) (:mod:`gearrep.surfaces.rack`):
             phi = [cos(beta) y_P(u) + theta sin(beta)] / r_p,
+
         y_P = y_b + x_b x_b' / y_b' the point where the profile normal meets the pitch line
         (:meth:`gearrep.surfaces.rack.RackCutter.pitch_crossing`).
         """

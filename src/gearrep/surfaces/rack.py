@@ -94,7 +94,32 @@ def _side(side):
 def vertex_pitch_distance(alpha_n: float, P_n: float) -> float:
     """Distance l = |QP| from the vertex Q of the parabolic profile to the pitch point P,
     cos(alpha_n) / P_n (seed 002 sec. 2.7 item 2; P_n normal diametral pitch, 1/in; l in
-    inches)."""
+    inches).
+
+    Parameters
+    ----------
+    alpha_n : float
+        Normal pressure angle [rad].
+    P_n : float
+        Normal diametral pitch [1/in], > 0.
+
+    Returns
+    -------
+    float
+        l [in].
+
+    Raises
+    ------
+    ValueError
+        If ``P_n`` is not finite and > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.rack import vertex_pitch_distance
+    >>> round(vertex_pitch_distance(math.radians(25), 5.0), 9)  # in
+    0.181261557
+    """
     _angle(alpha_n, "alpha_n", 0.0, np.pi / 2)
     if not (np.isfinite(P_n) and P_n > 0):
         raise ValueError(f"P_n (normal diametral pitch) must be finite and > 0, got {P_n!r}")
@@ -107,6 +132,24 @@ class RackCutter(Surface):
 
     Subclasses define the normal profile by :meth:`profile` returning (x, y, x', y', x'', y'')
     as functions of u.
+
+    Parameters
+    ----------
+    beta : float, optional
+        Helix angle of the rack teeth [rad], in (-pi/2, pi/2).
+
+    Raises
+    ------
+    ValueError
+        If ``beta`` is out of range.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> rack = StraightRackCutter(math.radians(20))  # a subclass: the straight profile
+    >>> [round(float(x), 6) for x in rack.profile(0.5)[:4]]  # x, y [length], x', y'
+    [0.469846, 0.17101, 0.939693, 0.34202]
     """
 
     def __init__(self, beta: float = 0.0):
@@ -132,6 +175,23 @@ class RackCutter(Surface):
         self.q_point = np.array([0.0, self.y0]) - self.l * self.normal_q
 
     def profile(self, u):  # pragma: no cover - abstract
+        """The normal profile at u and its first two derivatives.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Profile parameter [length].
+
+        Returns
+        -------
+        tuple
+            (x, y [length], x', y' [1], x'', y'' [1/length]).
+
+        Raises
+        ------
+        NotImplementedError
+            On the base class.
+        """
         raise NotImplementedError
 
     def _combine(self, x, y, theta):
@@ -183,7 +243,23 @@ class RackCutter(Surface):
         (:meth:`gearrep.surfaces.novikov.RackGeneratedFlank.rolling_angle`). This base form takes
         the third derivatives of the profile as zero (straight and parabolic profiles);
         :class:`CircularArcRackCutter` overrides it. A Python float u gives floats (a zero y_b'
-        then raises ZeroDivisionError; arrays give inf or NaN there)."""
+        then raises ZeroDivisionError; arrays give inf or NaN there).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Profile parameter [length].
+
+        Returns
+        -------
+        tuple
+            (y_P [length], dy_P/du [1], d2y_P/du2 [1/length]).
+
+        Raises
+        ------
+        ZeroDivisionError
+            For a Python float u where y_b' = 0.
+        """
         if type(u) is float:
             return self._pitch_crossing(*self.profile(u))
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -200,7 +276,18 @@ class RackCutter(Surface):
 
     def profile_curvature(self, u):
         """Signed curvature of the normal profile, (x'y'' - y'x'') / |r_u|^3 (positive when it
-        turns towards the normal N = r_u x r_theta)."""
+        turns towards the normal N = r_u x r_theta).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Profile parameter [length].
+
+        Returns
+        -------
+        numpy.ndarray
+            The curvature [1/length].
+        """
         u = np.asarray(u, float)
         _, _, xu, yu, xuu, yuu = self.profile(u)
         return (xu * yuu - yu * xuu) / np.hypot(xu, yu) ** 3
@@ -218,6 +305,19 @@ class StraightRackCutter(RackCutter):
         member_side = -1, a left-hand one with member_side = +1)
     y0 : where the profile crosses the pitch line, along y_b (length)
     side : +1 or -1, the flank (module doc)
+
+    Raises
+    ------
+    ValueError
+        If an angle is out of range, ``y0`` is not finite or ``side`` is not +-1.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> rack = StraightRackCutter(math.radians(20))
+    >>> float(rack.profile_curvature(0.5)), [round(float(x), 6) for x in rack.pitch_crossing(0.5)]
+    (0.0, [1.461902, 2.923804, 0.0])
     """
 
     def __init__(self, alpha_n: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
@@ -247,6 +347,19 @@ class ParabolicRackCutter(RackCutter):
         placement of seed 002 sec. 2 (l = cos(alpha_n)/P_n, :func:`vertex_pitch_distance`);
         < 0 below it
     beta, y0, side : as for :class:`StraightRackCutter`
+
+    Raises
+    ------
+    ValueError
+        If a value is not finite, an angle is out of range or ``side`` is not +-1.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.rack import ParabolicRackCutter
+    >>> rack = ParabolicRackCutter(0.1, math.radians(20), 0.5)  # 1/length, rad, length
+    >>> round(float(rack.profile_curvature(0.0)), 12)  # 2a at the vertex Q
+    0.2
     """
 
     def __init__(self, a: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):
@@ -257,7 +370,18 @@ class ParabolicRackCutter(RackCutter):
         self._qdm = tuple(tuple(float(c) for c in v) for v in (self.q_point, self.tangent_q, self.normal_q))
 
     def profile(self, u):
-        """(x, y, x', y', x'', y'') of the profile at u (a Python float gives floats)."""
+        """(x, y, x', y', x'', y'') of the profile at u (a Python float gives floats).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Profile parameter [length].
+
+        Returns
+        -------
+        tuple
+            (x, y [length], x', y' [1], x'', y'' [1/length]).
+        """
         one = type(u) is float
         if not one:
             u = np.asarray(u, float)
@@ -285,6 +409,19 @@ class CircularArcRackCutter(RackCutter):
     alpha_n : normal pressure angle at Q, in (0, pi/2) rad
     l : signed |QP| (length, finite; module doc); l = rho puts the centre on the pitch point P
     beta, y0, side : as for :class:`StraightRackCutter`
+
+    Raises
+    ------
+    ValueError
+        If ``rho`` is zero, a value is not finite, an angle is out of range or ``side`` is not +-1.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.rack import CircularArcRackCutter
+    >>> rack = CircularArcRackCutter(5.0, math.radians(20), 0.5)  # length, rad, length
+    >>> round(float(rack.profile_curvature(0.0)), 12)  # 1 / rho
+    0.2
     """
 
     def __init__(self, rho: float, alpha_n: float, l: float, beta: float = 0.0, y0: float = 0.0, side: int = 1):

@@ -7,10 +7,13 @@ Seed 000 eq (5.1)-(5.12) sets up the same conventional system.
 
 Frames and conventions
 ----------------------
+
 Fixed frame S_f. Member 1 turns about the z_f axis through the origin:
     r_f = Rz(phi1) r_1(u1, v1).
+
 Member 2 turns about its own axis through O2 = (a + dE, dH, dZ) (a = centre distance):
     r_f = O2 + A2 Rz(phase2 - phi2) r_2(u2, v2),   A2 = Ry(d_gamma_in) Rx(shaft_angle + d_gamma_out).
+
 So phi2 > 0 turns member 2 about w2 = -A2 z (the sense in which an external member 1 turning by
 phi1 > 0 drives it), and for an aligned conjugate pair phi2 = (N1/N2) phi1. ``phase2`` defaults to
 pi - side pi/N2: for involute flanks (tooth of each gear centred on its x axis) this places the
@@ -50,12 +53,15 @@ conjugate placement), so TE is absolute; re-zero it with :func:`transmission_err
     The sign left free is checked after convergence (WRONG_ROOT if n_f1 + n_f2 != 0). For a crowned
     spur pair, keeping (x, y) instead gives a Jacobian with s_min/s_max ~ 3e-8 and, from starts
     near the root, ~40 % false roots with n_z1 = +n_z2 (tests/unit/tca/test_tca.py). ``drop=`` overrides.
+
 (b) Reduced formulation (eq 33-44), for member 2 in explicit cylindrical form
     r_2 = (u cos psi(u,v), u sin psi(u,v), v) (u = radius, v = axial coordinate, eq 35-36):
     unknowns (u1, v1) for given phi1; (u2, v2, phi2) follow explicitly from the point
+
     r_f1(u1, v1, phi1) (eq 37-40): with s = Rz(-phase2) A2^T (r_f1 - O2),
         v2 = s_z (eq 39),   u2 = sqrt(s_x^2 + s_y^2) (eq 40),
         phi2 = angle(r_2(u2, v2)) - atan2(s_y, s_x)                      (eq 41-44),
+
     and the two equations are two components of n_f1 x n_f2 = 0 (eq 33), dropping the component
     along argmax |n_f1,j| at the start (n_f1 x n_f2 is orthogonal to n_f1, so that component is
     dependent). The position equation holds by construction. Keeping the other pair (e.g. x, y of
@@ -124,15 +130,15 @@ from ._formulations import (
     check_formulation,
     conventional_system,
     default_start,
-    newton_rows,
     reduced_unknowns,
     solve_contact,
-    trace_path,
 )
 from ._hobbed import KE_COLUMNS, ke_table
 from ._kernels import normal_derivatives, reduced_system
 from ._pair import ContactPoints, GearPair, Misalignment, transmission_error
+from ._path import trace_path
 from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
+from ._rows import newton_rows
 from ._starts import (
     CONVENTIONAL_VARIANTS,
     FALLBACK_GRID,

@@ -69,10 +69,28 @@ __all__ = ["BevelMisalignment", "BevelPair", "spherical_unknowns"]
 class BevelMisalignment:
     """Assembly errors of a bevel pair (thesis eq 47-48; frames in :mod:`gearrep.tca._bevel`).
 
-    d_A : axial displacement of member 1 along its axis (length)
-    d_E : offset of member 2 along the common perpendicular y_f of the axes (length)
-    d_G : axial displacement of member 2 along its own axis (length)
-    d_gamma : shaft-angle change [rad], Sigma_o = Sigma - d_gamma, pivot at the apex
+    Parameters
+    ----------
+    d_A : float, optional
+        Axial displacement of member 1 along its axis [length].
+    d_E : float, optional
+        Offset of member 2 along the common perpendicular y_f of the axes [length].
+    d_G : float, optional
+        Axial displacement of member 2 along its own axis [length].
+    d_gamma : float, optional
+        Shaft-angle change [rad], Sigma_o = Sigma - d_gamma, pivot at the apex; ``|d_gamma| < 0.5``.
+
+    Raises
+    ------
+    ValueError
+        If a value is not finite or ``d_gamma`` is not a small angle.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.tca import BevelMisalignment
+    >>> BevelMisalignment(d_E=0.01, d_gamma=math.radians(0.05)).d_E  # mm, rad
+    0.01
     """
 
     d_A: float = 0.0
@@ -91,7 +109,43 @@ class BevelPair(GearPair):
     """Two bevel flanks on intersecting axes (shaft angle ``shaft_angle``), with
     :class:`BevelMisalignment`. Same interface as :class:`~gearrep.tca.GearPair` (every solve of
     :mod:`gearrep.tca` accepts it); ``centre_distance`` is 0. The reduced formulation needs
-    ``flank2.spherical`` (u = polar angle, v = cone distance)."""
+    ``flank2.spherical`` (u = polar angle, v = cone distance).
+
+    Parameters
+    ----------
+    flank1, flank2 : gearrep.surface.Surface
+        The bevel flanks (cone apex at the origin of each member's frame).
+    n1, n2 : int
+        Numbers of teeth.
+    shaft_angle : float, optional
+        Angle between the axes [rad], in (0, pi).
+    misalignment : BevelMisalignment, optional
+        Assembly errors (None: aligned).
+    phase2 : float, optional
+        Fixed turn of member 2 in its frame [rad] (as :class:`~gearrep.tca.GearPair`).
+
+    Raises
+    ------
+    ValueError
+        If the shaft angle is out of range, ``misalignment`` is not a :class:`BevelMisalignment`,
+        or a tooth number is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.bevel import BevelGearData, mating_bevel_flanks
+    >>> from gearrep.surfaces.involute import ParabolicCrowning
+    >>> from gearrep.tca import BevelMisalignment, BevelPair, solve_contact
+    >>> g1 = BevelGearData(20, 40, 3.0, math.radians(20), 10.0)  # teeth, mate's teeth, mm, rad, mm
+    >>> g2 = BevelGearData(40, 20, 3.0, math.radians(20), 10.0)
+    >>> f1, f2 = mating_bevel_flanks(g1, g2)
+    >>> v_mid = float(f1.lower[1] + f1.upper[1]) / 2  # mean cone distance [mm]
+    >>> f1, f2 = mating_bevel_flanks(g1, g2, crowning1=ParabolicCrowning(1e-3, v0=v_mid))
+    >>> pair = BevelPair(f1, f2, 20, 40, misalignment=BevelMisalignment(d_E=0.01))  # 90 deg shaft angle
+    >>> c = solve_contact(pair, [0.0])  # phi1 [rad]
+    >>> c.status_name.tolist(), round(float(c.te_arcsec[0]), 3)  # TE [arcsec]
+    (['converged'], -37.104)
+    """
 
     _INTERSECTING_AXES = True
 

@@ -28,7 +28,35 @@ def contact_curvatures(pair: GearPair, contact: ContactPoints):
     Curvatures follow the convention of :mod:`gearrep.curvature` (positive where the surface bends
     toward the normal): a convex member-1 flank has negative values, a convex member-2 flank
     (seen from member 1) positive ones. Computed for every row; rows whose status is not
-    CONVERGED are NaN. Returns (PrincipalCurvatures of member 1, of member 2)."""
+    CONVERGED are NaN.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    contact : ContactPoints
+        Solved contact points of ``pair``.
+
+    Returns
+    -------
+    tuple of gearrep.curvature.PrincipalCurvatures
+        (member 1, member 2): k1 >= k2 [1/length], principal directions and the common normal in S_f.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import contact_curvatures
+    >>> k_1, k_2 = contact_curvatures(pair, solve_contact(pair, [0.0]))
+    >>> np.round([k_1.k1[0], k_1.k2[0], k_2.k1[0], k_2.k2[0]], 6).tolist()  # 1/mm
+    [-0.0002, -0.071311, 0.053078, 0.0]
+    """
     ok = contact.converged
     idx = np.flatnonzero(ok)
     nan = np.full(len(contact), np.nan)
@@ -70,7 +98,42 @@ def contact_ellipse(pair: GearPair, contact: ContactPoints, delta):
     the design data, mm in the examples): semi-axes a >= b [length], area [length^2], major/minor
     axis unit vectors in S_f. Rows whose
     status is not CONVERGED are NaN; a contact whose relative curvature is not definite (line
-    contact) has ``elliptic`` False."""
+    contact) has ``elliptic`` False.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    contact : ContactPoints
+        Solved contact points of ``pair``.
+    delta : float or (n,) array_like
+        Elastic approach [length], one value or one per contact point.
+
+    Returns
+    -------
+    gearrep.ellipse.ContactEllipse
+        One row per contact point.
+
+    Raises
+    ------
+    ValueError
+        If ``delta`` is neither a scalar nor one value per contact point.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import contact_ellipse
+    >>> el = contact_ellipse(pair, solve_contact(pair, [0.0]), 0.00632)  # delta [mm]
+    >>> round(float(el.a[0]), 4), round(float(el.b[0]), 4), bool(el.elliptic[0])  # semi-axes [mm]
+    (7.9498, 0.3188, True)
+    """
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
     delta = _per_point("delta", delta, contact, ok)
@@ -89,7 +152,46 @@ def contact_hertz(pair: GearPair, contact: ContactPoints, load_N, E1_MPa, nu1, E
     curvatures of :func:`contact_curvatures`): semi-axes a >= b [mm] and maximum contact pressure
     p0 [MPa] for the normal load ``load_N`` [N] carried by each point (design lengths in mm).
     Rows whose contact status is not CONVERGED are NaN and keep that status; a line contact (a
-    relative curvature of 0 or of mixed sign) is NaN with status SINGULAR."""
+    relative curvature of 0 or of mixed sign) is NaN with status SINGULAR.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (lengths in mm).
+    contact : ContactPoints
+        Solved contact points of ``pair``.
+    load_N : float or (n,) array_like
+        Normal load at each point [N].
+    E1_MPa, nu1 : float
+        Young's modulus [MPa] and Poisson's ratio of member 1.
+    E2_MPa, nu2 : float, optional
+        Those of member 2 (default: member 1's).
+
+    Returns
+    -------
+    gearrep.ellipse.HertzContact
+        Semi-axes [mm], p0 [MPa], approach [mm], ... and a status per contact point.
+
+    Raises
+    ------
+    ValueError
+        If ``load_N`` is neither a scalar nor one value per contact point, or a material value is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import contact_hertz
+    >>> h = contact_hertz(pair, solve_contact(pair, [0.0]), 1000.0, 210e3, 0.3)  # N, MPa, 1
+    >>> round(float(h.a[0]), 3), round(float(h.b[0]), 4), round(float(h.p0[0]), 1)  # mm, mm, MPa
+    (5.641, 0.1086, 779.6)
+    """
     c1, c2 = contact_curvatures(pair, contact)
     ok = contact.converged
     load_N = _per_point("load_N", load_N, contact, ok)

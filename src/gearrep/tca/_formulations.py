@@ -1,6 +1,7 @@
 """The public contact solves of the two TCA formulations (conventional eq 26-32, reduced eq 33-44;
-their equations and Jacobians in :mod:`gearrep.tca._kernels`), Newton with per-row data and the
-contact record (see :mod:`gearrep.tca`)."""
+their equations and Jacobians in :mod:`gearrep.tca._kernels`) and the contact record (see
+:mod:`gearrep.tca`); Newton with per-row data is in ``_rows``, the path by continuation in
+``_path``."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 
 from ..frames import rotate_z
 from ..inputs import check_integer, real_or_nan
-from ..solve import SolveResult, Status, finite_rows, newton
+from ..solve import Status, finite_rows, newton
 from ..surface import cross3, dot3
 from ._kernels import (
     _SCALAR_ERRORS,
@@ -22,16 +23,15 @@ from ._kernels import (
     _wrap_any,
 )
 from ._pair import ContactPoints, GearPair, _wrap, transmission_error
+from ._rows import newton_rows  # noqa: F401 - its home is _rows; the start strategies import it from here
 
 __all__ = [
     "conventional_system",
-    "newton_rows",
     "check_formulation",
     "MAX_CONTACT_TOL",
     "default_start",
     "solve_contact",
     "reduced_unknowns",
-    "trace_path",
 ]
 
 
@@ -42,6 +42,42 @@ def conventional_system(pair: GearPair, phi1: float, drop: int | None):
     F = [r_f1 - r_f2, components of n_f1 + n_f2] with outward unit normals; ``drop`` = 0, 1 or 2
     leaves that normal component out (five equations), None keeps all three (six equations, least
     squares). The one implementation behind :func:`solve_contact` (``formulation="conventional"``).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float
+        Angle of member 1 [rad].
+    drop : {0, 1, 2} or None
+        The normal component left out.
+
+    Returns
+    -------
+    tuple of callable
+        ``F(x) -> (n, 5 or 6)`` [length and unit-normal components] and ``J(x) -> (n, 5 or 6, 5)``.
+
+    Raises
+    ------
+    ValueError
+        If ``drop`` is not None, 0, 1 or 2.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.solve import newton
+    >>> from gearrep.tca import conventional_system, default_start
+    >>> F, J = conventional_system(pair, 0.0, drop=0)
+    >>> r = newton(F, default_start(pair, 0.0, "conventional"), J)
+    >>> r.status_name.tolist(), bool(r.residual[0] < 1e-12)
+    (['converged'], True)
     """
     return _conventional_callables(pair, phi1, drop)[:2]
 
@@ -62,65 +98,6 @@ def _conventional_callables(pair: GearPair, phi1: float, drop: int | None):
             return _conventional_FJ(pair, x, phi1, d, derivs=derivs)
 
     return (lambda x: FJ(x, derivs=False)[0]), (lambda x: FJ(x)[1]), (lambda x: FJ(x, derivs=_LAZY))
-
-
-# ----------------------------------------------------------------------------------------------
-# newton with frozen per-row parameters
-# ----------------------------------------------------------------------------------------------
-def newton_rows(
-    F,
-    FJ,
-    x0,
-    params,
-    *,
-    lower=None,
-    upper=None,
-    jacobian="analytic",
-    tol=1e-12,
-    maxiter=50,
-    damped=True,
-    inverse_square=False,
-) -> SolveResult:
-    """:func:`gearrep.solve.newton` for problems with per-row data ``params`` (n, q).
-
-    ``F(x, p) -> (n, m)``; ``FJ(x, p) -> (F, J)`` with J (n, m, k) (analytic; ignored when
-    ``jacobian="numeric"``, which differentiates F by central differences; its F must equal
-    ``F(x, p)``: the solver takes the residual at each full step from it, ``fun_jac`` of
-    :func:`gearrep.solve.newton`). Each row's parameters follow it through the solve
-    (``newton(..., rows=True)``). ``inverse_square``: as :func:`gearrep.solve.newton` (the
-    contact solves of :func:`solve_contact` use it).
-    """
-    x0 = np.atleast_2d(np.asarray(x0, float))
-    params = np.atleast_2d(np.asarray(params, float))
-    n = x0.shape[0]
-    if params.shape[0] != n:
-        raise ValueError(f"params has {params.shape[0]} rows for {n} starts")
-    if jacobian not in ("analytic", "numeric"):
-        raise ValueError(f"jacobian must be 'analytic' or 'numeric', got {jacobian!r}")
-
-    def fun(x, idx):
-        return F(x, params[idx])
-
-    def jac(x, idx):
-        return FJ(x, params[idx])[1]
-
-    def fun_jac(x, idx):
-        return FJ(x, params[idx])
-
-    analytic = jacobian == "analytic"
-    return newton(
-        fun,
-        x0,
-        jac if analytic else None,
-        tol=tol,
-        maxiter=maxiter,
-        damped=damped,
-        lower=lower,
-        upper=upper,
-        rows=True,
-        fun_jac=fun_jac if analytic else None,
-        inverse_square=inverse_square,
-    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -186,7 +163,29 @@ def _largest_normal_component(pair, u1, v1, c1, s1, keep=None) -> np.ndarray:
 
 def check_formulation(formulation) -> str:
     """``formulation`` when it names a TCA formulation ('reduced': 2 unknowns per point,
-    'conventional': 5); ValueError otherwise."""
+    'conventional': 5); ValueError otherwise.
+
+    Parameters
+    ----------
+    formulation : object
+        The name to check.
+
+    Returns
+    -------
+    str
+        ``formulation``.
+
+    Raises
+    ------
+    ValueError
+        If it is neither 'reduced' nor 'conventional'.
+
+    Examples
+    --------
+    >>> from gearrep.tca import check_formulation
+    >>> check_formulation("reduced")
+    'reduced'
+    """
     if formulation not in ("reduced", "conventional"):
         raise ValueError(f"formulation must be 'reduced' or 'conventional', got {formulation!r}")
     return formulation
@@ -212,7 +211,41 @@ def _check_knobs(tol, maxiter, phi10, phi20) -> None:
 
 
 def default_start(pair: GearPair, phi1, formulation: str = "reduced") -> np.ndarray:
-    """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2)."""
+    """Starting point at the middle of the flanks, phi2 = (N1/N2) phi1 (the thesis's choice of u2, v2).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+    formulation : {"reduced", "conventional"}, optional
+        Which unknowns.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 2) (u1, v1) or (n, 5) (u1, v1, u2, v2, phi2), in the flanks' units and rad.
+
+    Raises
+    ------
+    ValueError
+        If ``formulation`` is unknown or ``phi1`` is not a scalar or a non-empty 1-D array.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import default_start
+    >>> np.round(default_start(pair, [0.0, 0.1]), 4).tolist()  # mid-flank u1 [mm], v1 [mm]
+    [[34.9597, 0.0], [34.9597, 0.0]]
+    """
     check_formulation(formulation)
     phi1 = _angles(phi1)
     mid1, mid2 = pair._mid_flanks
@@ -513,27 +546,70 @@ def solve_contact(
 
     Parameters
     ----------
-    phi1 : (n,) or scalar, rad
-    start : (n, 2) (u1, v1) for ``formulation="reduced"`` (eq 33-44) or (n, 5) (u1, v1, u2, v2, phi2)
-        for ``"conventional"`` (eq 26-32); default :func:`default_start`
-    v1 : None (point contact: v1 unknown) or scalar/(n,) fixed face-width coordinate of member 1
-        (line contact; the v1 column of ``start`` is then ignored)
-    jacobian : "analytic" or "numeric" (central differences)
-    tol, maxiter, damped : passed to :func:`gearrep.solve.newton`
-    phi10, phi20 : TE reference (eq 14)
-    drop : None (default: the component j = argmax |n_f1,j| at the start, per row) or 0, 1, 2 - the
+    pair : GearPair
+        The pair (or a :class:`BevelPair`).
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+    start : (n, 2) or (n, 5) array_like, optional
+        (u1, v1) for ``formulation="reduced"`` (eq 33-44) or (u1, v1, u2, v2, phi2) for
+        ``"conventional"`` (eq 26-32), in the flanks' units and rad; default :func:`default_start`.
+    formulation : {"reduced", "conventional"}, optional
+        Two unknowns per point (member 2 explicit) or five.
+    v1 : float or (n,) array_like, optional
+        None (point contact: v1 unknown) or the fixed face-width coordinate of member 1 [length]
+        (line contact; the v1 column of ``start`` is then ignored).
+    jacobian : {"analytic", "numeric"}, optional
+        Analytic, or central differences.
+    tol : float, optional
+        Residual tolerance, in (0, :data:`MAX_CONTACT_TOL`] (unit-normal components and lengths).
+    maxiter : int, optional
+        Iteration limit, >= 1.
+    damped : bool, optional
+        Passed to :func:`gearrep.solve.newton`.
+    phi10, phi20 : float, optional
+        TE reference (eq 14) [rad].
+    drop : {0, 1, 2}, optional
+        None (default: the component j = argmax ``|n_f1,j|`` at the start, per row) or the
         component of n_f1 + n_f2 (conventional) or n_f1 x n_f2 (reduced) left out of the system.
         Other choices than the default can make the Jacobian singular (see module docstring).
-    keep_failed : False (default): a row whose status is not CONVERGED has NaN flank parameters,
+    keep_failed : bool, optional
+        False (default): a row whose status is not CONVERGED has NaN flank parameters,
         phi2, position, normal and TE (:meth:`ContactPoints.failed_as_nan`); True keeps the
         solver's last iterate there (a root beyond the flank, OFF_FLANK, tells which boundary the
         path of contact crossed; continuation and boundary searches use it).
 
     Returns
     -------
-    ContactPoints; status CONVERGED only for a verified root inside both flanks. A batch of more
-    than ``_BLOCK_ROWS`` (20 000) rows is solved in equal blocks (faster: arrays that fit a core's
-    cache), with the same results.
+    ContactPoints
+        One row per angle; status CONVERGED only for a verified root inside both flanks. A batch
+        of more than ``_BLOCK_ROWS`` (20 000) rows is solved in equal blocks (faster: arrays that
+        fit a core's cache), with the same results.
+
+    Raises
+    ------
+    ValueError
+        Before any solve, naming the argument: an unknown formulation, Jacobian or ``drop``; a
+        ``tol`` outside (0, :data:`MAX_CONTACT_TOL`]; a bad ``maxiter``, angle, ``v1`` or
+        ``start`` shape; a pair without the explicit member 2 the reduced formulation needs.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> c = solve_contact(pair, np.linspace(-0.05, 0.05, 5))
+    >>> bool(c.converged.all()), bool(c.residual.max() < 1e-12)
+    (True, True)
+    >>> np.round(c.u1, 4).tolist()  # the contact climbs the pinion flank [mm]
+    [34.7106, 35.0084, 35.3223, 35.6518, 35.9966]
+    >>> conv = solve_contact(pair, 0.0, formulation="conventional")  # five unknowns, same contact
+    >>> round(float(conv.u1[0]), 6) == round(float(c.u1[2]), 6)
+    True
     """
     _check_knobs(tol, maxiter, phi10, phi20)
     phi1, start, fixed = _check_solve_inputs(pair, phi1, start, formulation, v1, jacobian, drop)
@@ -747,78 +823,39 @@ def _final_status_floats(pair, formulation, st: int, a, b, u: float, v: float) -
 
 
 def reduced_unknowns(pair: GearPair, u1, v1, phi1):
-    """(u2, v2, phi2) from (u1, v1, phi1) by the explicit relations of the reduced formulation (eq 39-44)."""
+    """(u2, v2, phi2) from (u1, v1, phi1) by the explicit relations of the reduced formulation (eq 39-44).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (member 2 in explicit cylindrical form).
+    u1, v1 : float or array_like
+        Flank parameters of member 1 [length].
+    phi1 : float or array_like
+        Angle of member 1 [rad].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (u2 [length], v2 [length], phi2 [rad]), of the broadcast shape.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import reduced_unknowns
+    >>> c = solve_contact(pair, 0.0)
+    >>> u2, v2, phi2 = reduced_unknowns(pair, c.u1, c.v1, c.phi1)
+    >>> round(float(u2[0] - c.u2[0]), 9), round(float(phi2[0] - c.phi2[0]), 12)
+    (0.0, 0.0)
+    """
     u1, v1, phi1 = np.broadcast_arrays(*(np.asarray(a, float) for a in (u1, v1, phi1)))
     shape = u1.shape
     K = _reduced_kernel(pair, u1.ravel(), v1.ravel(), phi1.ravel(), derivs=False)
     return K["u2"].reshape(shape), K["v2"].reshape(shape), K["phi2"].reshape(shape)
-
-
-def trace_path(
-    pair: GearPair,
-    phi1,
-    start=None,
-    *,
-    formulation: str = "reduced",
-    v1=None,
-    jacobian: str = "analytic",
-    tol: float = 1e-12,
-    maxiter: int = 50,
-    phi10: float = 0.0,
-    phi20: float = 0.0,
-    predictor: bool = True,
-) -> ContactPoints:
-    """Path of contact over the angles ``phi1`` (in order) by continuation (Litvin & Fuentes ch. 9).
-
-    Each position starts from the previous converged solution (linearly extrapolated from the last
-    two when ``predictor``); ``start`` (one row, as for :func:`solve_contact`) is used for the first
-    position. A failed position does not seed the next one. Returns ContactPoints in the order
-    of ``phi1``.
-    """
-    check_formulation(formulation)
-    _check_knobs(tol, maxiter, phi10, phi20)
-    phi1 = _angles(phi1)
-    width = 2 if formulation == "reduced" else 5
-    x = default_start(pair, phi1[:1], formulation)[0] if start is None else np.asarray(start, float).reshape(-1)
-    if x.shape != (width,):
-        raise ValueError(f"start must have {width} entries, got shape {x.shape}")
-    v1a = None if v1 is None else _face_coordinates(v1, len(phi1))
-    out, hist = [], []  # hist: (phi1, solution) of converged points
-    for i, p in enumerate(phi1):
-        guess = x
-        if predictor and len(hist) >= 2 and hist[-1][0] != hist[-2][0]:
-            (pa, xa), (pb, xb) = hist[-2], hist[-1]
-            guess = xb + (xb - xa) * (p - pb) / (pb - pa)
-        elif hist:
-            guess = hist[-1][1]
-        c = solve_contact(
-            pair,
-            p,
-            guess[None, :],
-            formulation=formulation,
-            v1=None if v1a is None else v1a[i],
-            jacobian=jacobian,
-            tol=tol,
-            maxiter=maxiter,
-            phi10=phi10,
-            phi20=phi20,
-        )
-        if c.status[0] != Status.CONVERGED and len(hist) >= 1 and predictor:
-            c2 = solve_contact(
-                pair,
-                p,
-                hist[-1][1][None, :],
-                formulation=formulation,
-                v1=None if v1a is None else v1a[i],
-                jacobian=jacobian,
-                tol=tol,
-                maxiter=maxiter,
-                phi10=phi10,
-                phi20=phi20,
-            )
-            if c2.status[0] == Status.CONVERGED:
-                c = c2
-        out.append(c)
-        if c.status[0] == Status.CONVERGED:
-            hist.append((p, c.unknowns(formulation)[0]))
-    return ContactPoints.concatenate(out)

@@ -18,7 +18,29 @@ __all__ = ["normal_derivatives", "reduced_system"]
 
 def normal_derivatives(P, sign):
     """Unit normal sign * (r_u x r_v)/|.| of a :class:`~gearrep.surface.SurfacePoint` and its u- and
-    v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v)."""
+    v-derivatives (n_u = (N_u - n (n . N_u))/|N|, likewise n_v).
+
+    Parameters
+    ----------
+    P : gearrep.surface.SurfacePoint
+        A surface point with its first and second derivatives.
+    sign : int
+        +1 or -1 (e.g. the flank's ``outward_sign``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (n, n_u, n_v), each (..., 3) [n unitless; n_u, n_v per unit of u, v].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.analytic import Sphere
+    >>> from gearrep.tca import normal_derivatives
+    >>> n, n_u, n_v = normal_derivatives(Sphere(R=2.0).evaluate(0.0, 0.0), 1)
+    >>> np.round(n, 12).tolist(), np.round(n_u, 12).tolist()  # n_u = r_u / R on a sphere
+    ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0])
+    """
     N = cross(P.r_u, P.r_v)
     L = np.linalg.norm(N, axis=-1, keepdims=True)
     n = N / L
@@ -334,7 +356,42 @@ def reduced_system(pair, u1, v1, phi1, drop, derivs=True):
     [rad]): (F (n, 2), J (n, 2, 2) or None without ``derivs``, K), F the two components of
     n_f1 x n_f2 kept when the component ``drop`` (n,) (0, 1 or 2) is dropped, J its Jacobian in
     (u1, v1), K the kernel's record: member 2's explicit unknowns ``u2``, ``v2``, ``phi2``, the
-    point ``r`` and the normals ``n1``, ``n2`` by components."""
+    point ``r`` and the normals ``n1``, ``n2`` by components.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (member 2 in explicit cylindrical form).
+    u1, v1 : (n,) array_like
+        Flank parameters of member 1 [length].
+    phi1 : (n,) array_like
+        Angles of member 1 [rad].
+    drop : (n,) array_like of int
+        The component of n_f1 x n_f2 left out, per row.
+    derivs : bool, optional
+        Also the Jacobian.
+
+    Returns
+    -------
+    tuple
+        (F (n, 2), J (n, 2, 2) or None, K dict of the kernel's record).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import reduced_system
+    >>> c = solve_contact(pair, [0.0])
+    >>> F, J, K = reduced_system(pair, c.u1, c.v1, c.phi1, np.array([1]))
+    >>> bool(np.abs(F).max() < 1e-12), J.shape, round(float(K["u2"][0] - c.u2[0]), 9)
+    (True, (1, 2, 2), 0.0)
+    """
     u1, v1, phi1 = (np.asarray(a, float) for a in (u1, v1, phi1))
     drop = np.asarray(drop)
     with np.errstate(invalid="ignore", divide="ignore"):

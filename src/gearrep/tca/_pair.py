@@ -33,15 +33,42 @@ def _wrap(x):
 class Misalignment:
     """Assembly errors of member 2 (see module docstring for the frames).
 
-    d_gamma_in : rotation [rad] about y_f, in the plane of the axes (axes intersect)
-    d_gamma_out : rotation [rad] about x_f, the centre line (axes cross)
-    d_E : centre-distance change; d_H : offset along y_f; d_Z : axial displacement along z_f
+    Parameters
+    ----------
+    d_gamma_in : float, optional
+        Rotation [rad] about y_f, in the plane of the axes (axes intersect); ``|d_gamma_in| < 0.5``.
+    d_gamma_out : float, optional
+        Rotation [rad] about x_f, the centre line (axes cross); ``|d_gamma_out| < 0.5``.
+    d_E : float, optional
+        Centre-distance change [length of the design data].
+    d_H : float, optional
+        Offset along y_f [length].
+    d_Z : float, optional
+        Axial displacement along z_f [length].
 
+    Raises
+    ------
+    ValueError
+        If a value is not finite, or an angle is not small (``|angle| >= 0.5 rad``).
+
+    Notes
+    -----
     The angular errors pivot about O2 (member 2's axis at mid-face). A pivot at another point Q is
     the same rotation plus the translation (I - R)(Q - O2), i.e. extra d_E, d_H, d_Z. The choice
     matters for helical gears: turning member 2 about y_f through O2 by dg also shifts its pitch
     point axially by about r_p2 dg, which turns its helix by dg tan(beta) (a constant TE offset of
     ~45 arcsec for dg = 0.05 deg, beta = 14 deg) that a pivot at the pitch point would not produce.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.tca import Misalignment
+    >>> Misalignment(d_gamma_out=math.radians(0.05), d_E=0.01).d_E  # rad, mm
+    0.01
+    >>> Misalignment(d_gamma_in=1.0)
+    Traceback (most recent call last):
+        ...
+    ValueError: d_gamma_in must be a small angle, |d_gamma_in| < 0.5 rad, got 1.0
     """
 
     d_gamma_in: float = 0.0
@@ -71,14 +98,47 @@ class GearPair:
 
     Parameters
     ----------
-    flank1, flank2 : surfaces (``gearrep.surface.Surface``); optional attributes ``lower``,
-        ``upper`` (flank domain) and ``outward_sign``; the reduced formulation needs
-        ``flank2.cylindrical`` (u = radius, v = axial coordinate)
-    n1, n2 : numbers of teeth (ratio N1/N2 in the TE, angular pitches 2 pi / N)
-    centre_distance : a > 0 (shortest distance between the axes when aligned)
-    misalignment : :class:`Misalignment` or None
-    shaft_angle : nominal angle between the axes about x_f [rad], 0 for parallel axes
-    phase2 : fixed turn of member 2 in its frame; default pi - side pi / n2 (see module docstring)
+    flank1, flank2 : gearrep.surface.Surface
+        The tooth surfaces; optional attributes ``lower``, ``upper`` (flank domain) and
+        ``outward_sign``; the reduced formulation needs ``flank2.cylindrical`` (u = radius,
+        v = axial coordinate).
+    n1, n2 : int
+        Numbers of teeth (ratio N1/N2 in the TE, angular pitches 2 pi / N); equal to the flanks'
+        ``gear.n_teeth`` where they have one.
+    centre_distance : float
+        a > 0 [length of the design data] (shortest distance between the axes when aligned).
+    misalignment : Misalignment, optional
+        Assembly errors of member 2 (None: aligned).
+    shaft_angle : float, optional
+        Nominal angle between the axes about x_f [rad], 0 for parallel axes, in [-pi, pi].
+    phase2 : float, optional
+        Fixed turn of member 2 in its frame [rad]; default pi - side pi / n2 (see module docstring).
+
+    Raises
+    ------
+    ValueError
+        If a tooth number is not a positive integer or disagrees with its flank's, the centre
+        distance is not > 0, an angle is out of range, ``misalignment`` is not a
+        :class:`Misalignment`, or a flank is spherical (bevel flanks pair as :class:`BevelPair`).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> pair.ratio, round(float(pair.O2[0]), 6)  # N1/N2; member 2's axis at x_f = a + d_E [mm]
+    (0.5609756097560976, 96.01)
+    >>> r, n = pair.member1(35.0, 0.0, 0.0)  # u1 [mm], v1 [mm], phi1 [rad]
+    >>> round(float(np.linalg.norm(r[:2])), 9), round(float(np.linalg.norm(n)), 12)
+    (35.0, 1.0)
+    >>> aligned = pair.with_misalignment(Misalignment())
+    >>> float(aligned.O2[0])
+    96.0
     """
 
     #: whether the axes intersect (the bevel pair); spherical flanks need it
@@ -139,7 +199,18 @@ class GearPair:
         self.lower2, self.upper2 = _bounds(flank2)
 
     def with_misalignment(self, misalignment) -> GearPair:
-        """Same pair with another misalignment."""
+        """Same pair with another misalignment.
+
+        Parameters
+        ----------
+        misalignment : Misalignment
+            The new assembly errors.
+
+        Returns
+        -------
+        GearPair
+            The same flanks, teeth, centre distance, shaft angle and phase.
+        """
         return GearPair(
             self.flank1,
             self.flank2,
@@ -192,21 +263,69 @@ class GearPair:
         return (lo[0] - tol2[0], hi[0] + tol2[2], lo[1] - tol2[1], hi[1] + tol2[3])
 
     def R1(self, phi1):
-        """Rotation of member 1, Rz(phi1)."""
+        """Rotation of member 1, Rz(phi1).
+
+        Parameters
+        ----------
+        phi1 : float or array_like
+            Angle of member 1 [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3, 3) rotation matrices.
+        """
         return rot_z(phi1)
 
     def R2(self, phi2):
-        """Rotation of member 2, A2 Rz(phase2 - phi2)."""
+        """Rotation of member 2, A2 Rz(phase2 - phi2).
+
+        Parameters
+        ----------
+        phi2 : float or array_like
+            Angle of member 2 in its driven sense [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3, 3) rotation matrices.
+        """
         return self.A2 @ rot_z(self.phase2 - np.asarray(phi2, float))
 
     def member1(self, u1, v1, phi1):
-        """Position and outward unit normal of member 1 in S_f."""
+        """Position and outward unit normal of member 1 in S_f.
+
+        Parameters
+        ----------
+        u1, v1 : float or array_like
+            Flank parameters of member 1 (its family's units, e.g. mm).
+        phi1 : float or array_like
+            Angle of member 1 [rad].
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (position [length], outward unit normal), each (..., 3).
+        """
         P = self.flank1.evaluate(u1, v1)
         R = self.R1(phi1)
         return _mv(R, P.r), self.sign1 * _mv(R, P.normal)
 
     def member2(self, u2, v2, phi2):
-        """Position and outward unit normal of member 2 in S_f."""
+        """Position and outward unit normal of member 2 in S_f.
+
+        Parameters
+        ----------
+        u2, v2 : float or array_like
+            Flank parameters of member 2.
+        phi2 : float or array_like
+            Angle of member 2 [rad].
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (position [length], outward unit normal), each (..., 3).
+        """
         P = self.flank2.evaluate(u2, v2)
         R = self.R2(phi2)
         return self.O2 + _mv(R, P.r), self.sign2 * _mv(R, P.normal)
@@ -216,6 +335,31 @@ def transmission_error(phi1, phi2, n1, n2, phi10=0.0, phi20=0.0):
     """Transmission error (thesis eq 14), radians: (phi2 - phi20) - (N1/N2)(phi1 - phi10).
 
     phi2 must be measured in the driven sense (see module docstring); TE > 0: member 2 leads.
+
+    Parameters
+    ----------
+    phi1, phi2 : float or array_like
+        Angles of members 1 and 2 [rad].
+    n1, n2 : float
+        Numbers of teeth, > 0.
+    phi10, phi20 : float, optional
+        The reference angles [rad].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        TE [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``n1`` or ``n2`` is not a finite number > 0.
+
+    Examples
+    --------
+    >>> from gearrep.tca import transmission_error
+    >>> round(transmission_error(0.1, 0.05, 20, 40), 12)  # rad
+    0.0
     """
     for name, n in (("n1", n1), ("n2", n2)):
         ok = (math.isfinite(n) and n > 0) if type(n) in (int, float) else (np.isfinite(n) and n > 0)
@@ -235,15 +379,46 @@ def transmission_error(phi1, phi2, n1, n2, phi10=0.0, phi20=0.0):
 class ContactPoints:
     """Contact points of a batch of solves (all arrays of length n; position/normal (n, 3)).
 
-    u1, v1, u2, v2 : surface parameters of members 1 and 2
-    phi1, phi2 : rotation angles [rad]
-    position : contact point in S_f; normal : outward unit normal of member 1 in S_f
-    te : transmission error [rad] (eq 14 with the pair's nominal reference); ``te_arcsec``
-    residual, iterations, status : from :func:`gearrep.solve.newton`, with OFF_FLANK (member-2
-        parameters outside its flank, reduced form) and WRONG_ROOT (normals not opposite) added
-    formulation : "reduced" or "conventional"
-    condition : condition number of the Newton Jacobian at the last iteration (see
-        :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve
+    Attributes
+    ----------
+    u1, v1, u2, v2 : (n,) numpy.ndarray
+        Surface parameters of members 1 and 2 (the families' units, mm for involute flanks).
+    phi1, phi2 : (n,) numpy.ndarray
+        Rotation angles [rad].
+    position : (n, 3) numpy.ndarray
+        Contact point in S_f [length].
+    normal : (n, 3) numpy.ndarray
+        Outward unit normal of member 1 in S_f.
+    te : (n,) numpy.ndarray
+        Transmission error [rad] (eq 14 with the pair's nominal reference); ``te_arcsec`` in arcsec.
+    residual, iterations, status : (n,) numpy.ndarray
+        From :func:`gearrep.solve.newton`, with OFF_FLANK (member-2 parameters outside its flank,
+        reduced form) and WRONG_ROOT (normals not opposite) added.
+    formulation : str
+        "reduced" or "conventional".
+    condition : (n,) numpy.ndarray or None
+        Condition number of the Newton Jacobian at the last iteration (see
+        :class:`gearrep.solve.SolveResult`); None when the points were not built by a solve.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> c = solve_contact(pair, [-0.05, 0.0, 0.05])  # phi1 [rad]
+    >>> len(c), c.status_name.tolist(), np.round(c.u1, 4).tolist()  # u1 = radius [mm]
+    (3, ['converged', 'converged', 'converged'], [34.7106, 35.3223, 35.9966])
+    >>> np.round(c.te_arcsec, 3).tolist()  # d_E moves the gear back: a constant lag
+    [-12.212, -12.212, -12.212]
+    >>> c.take([1]).unknowns("conventional").shape  # a start for the five-unknown solve
+    (1, 5)
+    >>> len(type(c).concatenate([c, c.take(c.converged)]))
+    6
     """
 
     #: the per-point array fields (every field but ``formulation`` and ``condition``)
@@ -282,14 +457,17 @@ class ContactPoints:
 
     @property
     def te_arcsec(self) -> np.ndarray:
+        """Transmission error [arcsec]."""
         return self.te / ARCSEC
 
     @property
     def converged(self) -> np.ndarray:
+        """Boolean mask of the rows with status CONVERGED."""
         return self.status == Status.CONVERGED
 
     @property
     def status_name(self) -> np.ndarray:
+        """Lower-case status name of each row (``converged``, ``off_flank``, ...)."""
         return status_names(self.status)
 
     #: the fields that describe the contact (NaN in a row that did not converge, see :meth:`failed_as_nan`)
@@ -298,7 +476,13 @@ class ContactPoints:
     def failed_as_nan(self) -> ContactPoints:
         """This record with every contact field (:attr:`CONTACT`: flank parameters, phi2, position,
         normal, TE) NaN in the rows whose status is not CONVERGED: a failed solve's last iterate is
-        not a contact. phi1 (the given angle), residual, iterations, status and condition stay."""
+        not a contact. phi1 (the given angle), residual, iterations, status and condition stay.
+
+        Returns
+        -------
+        ContactPoints
+            This record itself when every row converged, else a copy.
+        """
         bad = ~self.converged
         if not bad.any():
             return self
@@ -310,13 +494,36 @@ class ContactPoints:
         return replace(self, **kw)
 
     def take(self, idx) -> ContactPoints:
-        """Subset by index or boolean mask."""
+        """Subset by index or boolean mask.
+
+        Parameters
+        ----------
+        idx : int array or bool array
+            Rows to keep.
+
+        Returns
+        -------
+        ContactPoints
+            The selected rows.
+        """
         kw = {f: getattr(self, f)[idx] for f in self.ARRAYS}
         cond = None if self.condition is None else self.condition[idx]
         return ContactPoints(formulation=self.formulation, condition=cond, **kw)
 
     @staticmethod
     def concatenate(items) -> ContactPoints:
+        """Records joined row-wise (the formulation of the first).
+
+        Parameters
+        ----------
+        items : iterable of ContactPoints
+            Records to join.
+
+        Returns
+        -------
+        ContactPoints
+            All their rows in order (``condition`` None unless every record has one).
+        """
         items = list(items)
         kw = {f: np.concatenate([getattr(c, f) for c in items]) for f in ContactPoints.ARRAYS}
         conds = [c.condition for c in items]
@@ -324,7 +531,18 @@ class ContactPoints:
         return ContactPoints(formulation=items[0].formulation, condition=cond, **kw)
 
     def unknowns(self, formulation=None) -> np.ndarray:
-        """Solution as a start array: (u1, v1) for reduced, (u1, v1, u2, v2, phi2) for conventional."""
+        """Solution as a start array: (u1, v1) for reduced, (u1, v1, u2, v2, phi2) for conventional.
+
+        Parameters
+        ----------
+        formulation : {"reduced", "conventional"}, optional
+            Default: the record's own.
+
+        Returns
+        -------
+        numpy.ndarray
+            (n, 2) or (n, 5).
+        """
         f = formulation or self.formulation
         if f == "reduced":
             return np.stack([self.u1, self.v1], axis=-1)

@@ -17,8 +17,9 @@ import numpy as np
 
 from ..inputs import check_integer
 from ..solve import Status
-from ._formulations import check_formulation, trace_path
+from ._formulations import check_formulation
 from ._pair import ContactPoints, GearPair, _wrap
+from ._path import trace_path
 from ._starts import _solve_projected, flank_sense, meshing_sense
 
 __all__ = ["ROBUSTNESS_COLUMNS", "reference_contacts", "classify_contacts", "start_robustness"]
@@ -54,7 +55,52 @@ def reference_contacts(
     from ``start`` (one row of ``formulation``'s unknowns, the family's nominal start at the middle
     angle) towards both ends, then checked (module docstring; ``nominal(pair, phi1)`` -> (n, 5)
     conventional starts for a member 2 without explicit form). ValueError naming the angle where
-    the reference does not hold."""
+    the reference does not hold.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : (n,) array_like
+        Increasing angles of member 1 [rad].
+    start : array_like
+        One row of ``formulation``'s unknowns at the middle angle (flank units, rad).
+    formulation : {"conventional", "reduced"}, optional
+        The formulation traced.
+    nominal : callable, optional
+        ``nominal(pair, phi1) -> (n, 5)`` conventional starts, for a member 2 without explicit form.
+    tol : float, optional
+        Residual tolerance of the solves.
+    maxiter : int, optional
+        Iteration limit of the solves.
+    te_slack_rad : float, optional
+        Slack of the loaded-tangency check [rad].
+
+    Returns
+    -------
+    ContactPoints
+        The verified contact at every angle.
+
+    Raises
+    ------
+    ValueError
+        Naming the angle where the reference does not hold.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import default_start, reference_contacts
+    >>> ref = reference_contacts(pair, [-0.05, 0.0, 0.05], default_start(pair, 0.0, "conventional")[0])
+    >>> ref.status_name.tolist()
+    ['converged', 'converged', 'converged']
+    """
     check_formulation(formulation)
     phi1 = np.asarray(phi1, dtype=float)
     if phi1.ndim != 1 or len(phi1) == 0 or not np.all(np.isfinite(phi1)) or np.any(np.diff(phi1) <= 0):
@@ -100,7 +146,40 @@ def classify_contacts(c: ContactPoints, ref: ContactPoints, *, tol_param: float 
     """Outcome of each solve of ``c`` against the reference ``ref`` (same rows): ``"correct"``
     (CONVERGED, u1, v1, u2, v2 within ``tol_param`` and phi2 within ``tol_rad`` of the reference),
     ``"wrong_root"`` (a solution elsewhere, on or off the flanks, or with normals not opposite),
-    ``"not_converged"`` (no solution: iteration limit, stalled line search, singular, diverged)."""
+    ``"not_converged"`` (no solution: iteration limit, stalled line search, singular, diverged).
+
+    Parameters
+    ----------
+    c : ContactPoints
+        The solves to classify.
+    ref : ContactPoints
+        The reference contact of each row.
+    tol_param : float, optional
+        Tolerance of the flank parameters [their unit, e.g. mm].
+    tol_rad : float, optional
+        Tolerance of phi2 [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        One outcome string per row.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import classify_contacts, default_start, reference_contacts
+    >>> phi1 = [-0.05, 0.0, 0.05]
+    >>> ref = reference_contacts(pair, phi1, default_start(pair, 0.0, "conventional")[0])
+    >>> classify_contacts(solve_contact(pair, phi1), ref).tolist()
+    ['correct', 'correct', 'correct']
+    """
     d = np.column_stack([c.u1 - ref.u1, c.v1 - ref.v1, c.u2 - ref.u2, c.v2 - ref.v2])
     with np.errstate(invalid="ignore"):
         same = np.all(np.abs(d) < tol_param, axis=1) & (np.abs(_wrap(c.phi2 - ref.phi2)) < tol_rad)
@@ -128,7 +207,52 @@ def start_robustness(
     options) and classified by ``classify(result, reference rows)`` -> (outcomes, iterations)
     (default :func:`classify_contacts` of :class:`ContactPoints`). Returns the
     :data:`ROBUSTNESS_COLUMNS` (percentages of the starts; mean iterations over all solves; wall
-    seconds per solve of the batch)."""
+    seconds per solve of the batch).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    ref : ContactPoints
+        The reference contacts (:func:`reference_contacts`).
+    n_per_angle : int
+        Starts per angle.
+    rng : numpy.random.Generator
+        The source of the starts.
+    solve : callable
+        ``solve(pair, phi1, u1, v1)`` -> a record ``classify`` reads.
+    box : tuple of array_like, optional
+        (lower, upper) of the drawn (u1, v1) [flank units].
+    classify : callable, optional
+        ``classify(result, reference rows)`` -> (outcomes, iterations).
+
+    Returns
+    -------
+    dict
+        The :data:`ROBUSTNESS_COLUMNS` of the row.
+
+    Raises
+    ------
+    ValueError
+        If ``n_per_angle`` is not an integer >= 1.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import default_start, reference_contacts, robust_contact, start_robustness
+    >>> phi1 = [-0.05, 0.0, 0.05]
+    >>> ref = reference_contacts(pair, phi1, default_start(pair, 0.0, "conventional")[0])
+    >>> row = start_robustness(pair, ref, 20, np.random.default_rng(0), robust_contact)
+    >>> row["n_starts"], float(row["correct_pct"])
+    (60, 100.0)
+    """
     check_integer("n_per_angle", n_per_angle)
     n = n_per_angle * len(ref.phi1)
     idx = np.repeat(np.arange(len(ref.phi1)), n_per_angle)

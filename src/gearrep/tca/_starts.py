@@ -615,8 +615,55 @@ def robust_contact(
 
     ``fallback=False`` stops after step 2 (how far the start alone leads).
 
-    Returns :class:`ContactPoints` (iterations: those of every pass a row took, the fallback's
-    summed over its grid)."""
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (or a :class:`BevelPair`).
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start.
+    u1, v1 : float or (n,) array_like
+        Starts on flank 1 [its units, mm for involute flanks].
+    formulation : {"reduced", "conventional"}, optional
+        The formulation of the result.
+    tol, maxiter : optional
+        Residual tolerance and iteration limit of every solve.
+    nominal : callable, optional
+        ``nominal(pair, phi1)`` -> (n, 5) conventional starts, for a member 2 without explicit form.
+    grid : sequence of (float, float), optional
+        The restart points, as fractions of flank 1's box.
+    fallback : bool, optional
+        Restart failed rows (step 3).
+
+    Returns
+    -------
+    ContactPoints
+        One row per start (iterations: those of every pass a row took, the fallback's summed over
+        its grid).
+
+    Raises
+    ------
+    ValueError
+        Before any solve: an unknown formulation, the reduced formulation (or no ``nominal``) for a
+        member 2 without explicit form, a bad tolerance or iteration limit, or starts and angles
+        of different lengths.
+
+    Examples
+    --------
+    Starts far from the contact, near two corners of the pinion flank:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, solve_contact
+    >>> g1 = InvoluteGearData(23, 3.0, math.radians(20), 25.0)  # teeth, module mm, rad, face mm
+    >>> g2 = InvoluteGearData(41, 3.0, math.radians(20), 25.0)
+    >>> f1, f2 = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # 1/mm
+    >>> pair = GearPair(f1, f2, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_E=0.01))
+    >>> from gearrep.tca import robust_contact
+    >>> c = robust_contact(pair, 0.0, [33.0, 37.0], [-10.0, 12.0])  # rad, mm, mm
+    >>> c.status_name.tolist(), np.round(c.u1, 4).tolist()  # both reach the one contact
+    (['converged', 'converged'], [35.3223, 35.3223])
+    """
     check_formulation(formulation)
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     if formulation == "reduced" and not _explicit2(pair):
