@@ -51,7 +51,10 @@ def test_expected_status(records, cid):
 
 def test_tables_hold_what_the_records_read(tables):
     st = tables["iso_stiffness"]
-    np.testing.assert_allclose(st["single_ratio"], st["c_single_N_per_mm_um"] / st["c_th_iso_N_per_mm_um"], rtol=1e-15)
+    np.testing.assert_allclose(st["single_ratio"], st["c_single_N_per_mm_um"] / st["c_ref_iso_N_per_mm_um"], rtol=1e-15)
+    np.testing.assert_allclose(
+        st["c_ref_iso_N_per_mm_um"], st["c_th_iso_N_per_mm_um"] * st["basic_rack_factor"], rtol=1e-15
+    )
     assert (tables["balance"]["n_failed"] == 0).all()
     assert (tables["convergence"]["n_failed"] == 0).all()
     c = tables["cycle"]

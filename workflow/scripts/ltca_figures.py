@@ -73,12 +73,12 @@ x = np.arange(len(st))
 for ax, (col, ref, title) in zip(
     axes,
     (
-        ("c_single_N_per_mm_um", "c_th_iso_N_per_mm_um", "single-pair stiffness c'"),
+        ("c_single_N_per_mm_um", "c_ref_iso_N_per_mm_um", "single-pair stiffness c'"),
         ("c_gamma_N_per_mm_um", "c_gamma_alpha_iso_N_per_mm_um", "mean mesh stiffness c_gamma"),
     ),
 ):
     ax.fill_between(x, 0.8 * st[ref], st[ref], color="0.9", label="band [C_M, 1] x ISO")
-    plotting.published(ax, x, st[ref], "ISO 6336-1", label="ISO theoretical")
+    plotting.published(ax, x, st[ref], "ISO 6336-1", label="ISO theoretical (c'_th C_B)")
     plotting.computed(ax, x, st[col], "gearrep.ltca")
     ax.set_xticks(x, st["design"], rotation=12, fontsize=8)
     plotting.label_axes(ax, "design [-]", f"{title} [N/(mm um)]", title)

@@ -25,8 +25,9 @@ Model
    cycle the summary of :class:`CycleSummary`.
 
 Families (:data:`SUPPORTED`): involute spur and helical (crowned, relieved, misaligned) and CATT
-flanks; bevel, Novikov-Wildhaber and hob-generated flanks are refused with the reason. Not modelled:
-the root fillet shape, shaft and bearing deflections, friction, dynamics. Units: N, mm, MPa, N m for
+flanks; bevel, Novikov-Wildhaber and hob-generated flanks are refused with the reason. The involute
+tooth section has the root fillet of ISO 53's rack tip radius (0.38 m_n); not modelled: a CATT
+tooth's fillet, shaft and bearing deflections, friction, dynamics. Units: N, mm, MPa, N m for
 the torque; angles in rad. :mod:`.iso` holds the ISO 6336 closed forms the validation study
 (``gearrep.replications.ltca``) compares with.
 

@@ -15,7 +15,10 @@ Sources
   c'_th = 1 / q' of solid disc gears with the standard basic rack, with
   q' = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2 + C8 x1^2 + C9 x2^2
   [mm um / N] (coefficients below), and the mesh stiffness (mean of the total stiffness in
-  the transverse plane) c_gamma_alpha = c' (0.75 eps_alpha + 0.25). The q' formula is an empirical
+  the transverse plane) c_gamma_alpha = c' (0.75 eps_alpha + 0.25); c' = c'_th C_M C_R C_B cos(beta)
+  with C_M = 0.8 (measured over theoretical values of solid disc gears), C_R = 1 (solid disc gears)
+  and the basic rack factor C_B = [1 + 0.5 (1.2 - h_fP/m_n)] [1 - 0.02 (20 deg - alpha_Pn)] (0.975
+  for the dedendum 1.25 m_n of ISO 53's basic rack). The q' formula is an empirical
   fit to theoretical stiffness computations, not a model: a computed stiffness is compared with it
   within a band, never equated to it.
 
@@ -37,7 +40,12 @@ __all__ = [
     "q_prime",
     "single_stiffness_theoretical",
     "mesh_stiffness_c_gamma_alpha",
+    "basic_rack_factor",
+    "C_M",
 ]
+
+#: ISO 6336-1 correction factor C_M: measured over theoretical single stiffness of solid disc gears
+C_M = 0.8
 
 #: ISO 6336-1: C1 ... C9 of the q' formula [mm um / N]
 Q_PRIME_COEFFICIENTS = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
@@ -97,3 +105,13 @@ def mesh_stiffness_c_gamma_alpha(c_single: float, eps_alpha: float) -> float:
     over the meshing cycle of the total stiffness of the tooth pairs in contact (eps_alpha >= 1.2 per
     ISO; transverse contact ratio)."""
     return float(check_positive("c_single", c_single) * (0.75 * check_positive("eps_alpha", eps_alpha) + 0.25))
+
+
+def basic_rack_factor(h_fP_over_mn: float, alpha_Pn_deg: float = 20.0) -> float:
+    """ISO 6336-1 basic rack factor C_B = [1 + 0.5 (1.2 - h_fP/m_n)] [1 - 0.02 (20 - alpha_Pn)] of
+    one member's basic rack (dedendum ``h_fP_over_mn`` in normal modules, pressure angle
+    ``alpha_Pn_deg`` in degrees): the theoretical stiffness of a pair cut with another rack than the
+    one of the q' fit is c'_th C_B (ISO: C_B of a pair is the mean of its members')."""
+    h = check_positive("h_fP_over_mn", h_fP_over_mn)
+    a = check_positive("alpha_Pn_deg", alpha_Pn_deg)
+    return float((1.0 + 0.5 * (1.2 - h)) * (1.0 - 0.02 * (20.0 - a)))

@@ -25,6 +25,7 @@ from gearrep.ltca import (
     weber_contact_approach_mm,
 )
 from gearrep.ltca._compliance import HERTZ_STRIP_OFFSET, contact_half_width_mm
+from gearrep.ltca._families import RACK_TIP_RADIUS, rack_fillet_half_angle
 from gearrep.replications.ltca.checks import PRESSURE_RTOL
 from gearrep.solve import Status
 from gearrep.surfaces.catt import assemble
@@ -453,3 +454,32 @@ def test_unsupported_families_are_refused():
     f1, f2 = mating_bevel_flanks(g1, g2)
     with pytest.raises(ValueError, match="supports the families"):
         loaded_contact(BevelPair(f1, f2, 17, 17), 10.0)
+
+
+@pytest.mark.parametrize("n1, n2, m", [(52, 72, 1.0), (20, 40, 2.0)])
+def test_tooth_section_has_the_fillet_of_the_basic_rack(n1, n2, m):
+    """The section below the form radius is the envelope of the rack's tip circle (ISO 53 A,
+    rho_fP = 0.38 m): its bottom lies on the root circle at half angle pi/z - x_c/r_p (the tip
+    circle's centre x_c from the rack tooth's centre line, closed form), it meets the involute at
+    the form radius r_Ff where the rack's straight flank ends (continuous to the sampling of the
+    envelope, 1e-6 rad), and above r_Ff the section is the involute itself."""
+    pair, g, _ = spur_pair(n1, n2, m)
+    fl = pair.flank1
+    a, rho, r_p, z = g.alpha_t, RACK_TIP_RADIUS * g.module, g.r_p, g.n_teeth
+    h_c = (r_p - g.r_f) - rho
+    x_c = r_p * (np.pi / z - (fl.polar_angle(np.array([r_p]), np.zeros(1))[0])) - h_c * np.tan(a) - rho / np.cos(a)
+    r_Ff = np.hypot(g.r_b, r_p * np.sin(a) - (h_c + rho * np.sin(a)) / np.sin(a))
+    theta = rack_fillet_half_angle(fl, np.array([g.r_f, r_Ff * (1 - 1e-9), r_Ff, g.r_p, g.r_a]))
+    inv = fl.polar_angle(np.array([r_Ff, g.r_p, g.r_a]), np.zeros(3))
+    assert theta[0] == pytest.approx(np.pi / z - x_c / r_p, abs=1e-12)
+    assert abs(theta[1] - inv[0]) < 1e-6
+    np.testing.assert_allclose(theta[2:], inv, atol=1e-14)
+    assert 2 * g.r_f * np.sin(theta[0]) > 2 * g.r_f * np.sin(fl.polar_angle(np.array([g.r_b]), np.zeros(1))[0])
+
+
+def test_basic_rack_factor():
+    """ISO 6336-1's C_B is 1 for h_fP = 1.2 m_n at 20 deg and 0.975 for ISO 53's 1.25 m_n."""
+    assert iso.basic_rack_factor(1.2, 20.0) == pytest.approx(1.0, rel=1e-15)
+    assert iso.basic_rack_factor(1.25, 20.0) == pytest.approx(0.975, rel=1e-15)
+    with pytest.raises(ValueError, match="h_fP_over_mn"):
+        iso.basic_rack_factor(-1.0)

@@ -106,7 +106,8 @@ def _single_stiffness(pair, T, s, bore=(None, None), n=21):
 def iso_stiffness(s: dict, design: Design) -> dict:
     """Single-pair stiffness c' (largest over one pair's engagement) and mean mesh stiffness
     c_gamma (over a meshing cycle, every tooth pair) of the ISO designs at F_t/b = LOAD_N_PER_MM,
-    against ISO 6336-1's c'_th and c_gamma_alpha = c'_th (0.75 eps_alpha + 0.25); the single
+    against ISO 6336-1's theoretical value for the pair's basic rack, c'_th C_B, and
+    c_gamma_alpha = c'_th C_B (0.75 eps_alpha + 0.25); the single
     stiffness with a thin rim (bore h_f = 1.4) and a small bore (h_f = 3) beside it; and the
     shares of the compliance at the pitch point (both members' bending, shear, compression and
     foundation, and the contact approach)."""
@@ -121,8 +122,10 @@ def iso_stiffness(s: dict, design: Design) -> dict:
         cyc = ltca.loaded_contact(pair, T, ltca.cycle_positions(pair, int(s["n_positions"])), **_kw(s))
         summ = cyc.summary()
         eps = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, pair.centre_distance, g1.base_pitch))
+        c_B = 0.5 * sum(iso6336.basic_rack_factor(g.h_f, np.degrees(g.pressure_angle)) for g in (g1, g2))
         c_th = iso6336.single_stiffness_theoretical(z1, z2)
-        c_ga = iso6336.mesh_stiffness_c_gamma_alpha(c_th, eps)
+        c_ref = c_th * c_B  # ISO's theoretical value for the pair's basic rack
+        c_ga = iso6336.mesh_stiffness_c_gamma_alpha(c_ref, eps)
         rows.append(
             _design_row(z1, z2, m, g1, T)
             | dict(
@@ -132,7 +135,9 @@ def iso_stiffness(s: dict, design: Design) -> dict:
                 c_single_thin_rim_N_per_mm_um=thin,
                 c_single_small_bore_N_per_mm_um=small,
                 c_th_iso_N_per_mm_um=c_th,
-                single_ratio=c_single / c_th,
+                basic_rack_factor=c_B,
+                c_ref_iso_N_per_mm_um=c_ref,
+                single_ratio=c_single / c_ref,
                 c_gamma_N_per_mm_um=summ.mesh_stiffness_mean_N_per_mm_um,
                 c_gamma_alpha_iso_N_per_mm_um=c_ga,
                 mesh_ratio=summ.mesh_stiffness_mean_N_per_mm_um / c_ga,
