@@ -48,7 +48,7 @@ from ._compliance import (
     weber_contact_approach_mm,
 )
 from ._distribution import ContactLoads, solve_contact_loads
-from ._families import SUPPORTED
+from ._families import SUPPORTED, refusal
 from ._separation import KINDS, Separations, face_nodes, initial_separations, section_contacts
 
 __all__ = [
@@ -63,6 +63,7 @@ __all__ = [
     "cantilever_plate_ratio",
     "plate_kernel",
     "SUPPORTED",
+    "refusal",
     "ContactLoads",
     "solve_contact_loads",
     "Separations",

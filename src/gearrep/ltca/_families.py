@@ -35,7 +35,7 @@ from ..surface import RotatedSurface
 from ..surfaces.catt import CATTFlank
 from ..surfaces.involute import InvoluteFlank
 
-__all__ = ["SUPPORTED", "Member", "members", "member_of", "base_flank", "section_starts", "pitch_phi1"]
+__all__ = ["SUPPORTED", "refusal", "Member", "members", "member_of", "base_flank", "section_starts", "pitch_phi1"]
 
 #: families with a loaded analysis: family name -> flank class (module path)
 SUPPORTED = {
@@ -61,13 +61,25 @@ def base_flank(flank):
     return flank, np.eye(3), np.zeros(3)
 
 
-def _refuse(flank, name: str):
+def _supported(flank) -> bool:
+    base, _, _ = base_flank(flank)
+    return (isinstance(base, InvoluteFlank) and base is flank) or isinstance(base, CATTFlank)
+
+
+def refusal(flank) -> str:
+    """Why the loaded analysis refuses ``flank`` (a mounted flank, or the surface of a generated
+    member): its class and the reason, one line; "" for a flank of a :data:`SUPPORTED` family."""
+    if _supported(flank):
+        return ""
     base, _, _ = base_flank(flank)
     kind = type(base).__name__
-    why = _REFUSED.get(kind, "no tooth section is defined for it")
+    return f"{kind} ({_REFUSED.get(kind, 'no tooth section is defined for it')})"
+
+
+def _refuse(flank, name: str):
     raise ValueError(
-        f"{name}: gearrep.ltca supports the families {sorted(SUPPORTED)} "
-        f"({', '.join(SUPPORTED.values())}); got {kind} ({why})"
+        f"{name}: gearrep.ltca supports the families {sorted(SUPPORTED)} ({', '.join(SUPPORTED.values())}); "
+        f"got {refusal(flank)}"
     )
 
 
