@@ -3,6 +3,7 @@ design file, sweeps on Snakemake, and the replications.
 
     gearrep check DESIGN.yaml                 validate only (exit 0 / 2)
     gearrep tca DESIGN.yaml -o DIR            TCA over the meshing cycle: tables, figures, summary.html
+    gearrep ltca DESIGN.yaml -o DIR           loaded TCA under the design's load: TE, load sharing, pressure
     gearrep curvature DESIGN.yaml -o DIR      principal curvatures and directions on a grid
     gearrep sweep SWEEP.yaml -o DIR           a grid of designs as a Snakemake workflow (sharded)
     gearrep replicate [TARGET]                the replications (the repository's Snakefile)
@@ -28,10 +29,19 @@ import yaml
 
 from .. import __version__
 from ..settings import SettingError
-from . import analysis, figures, sweep
-from .design import check, json_schema, require_analysis
+from . import analysis, figures, loaded, sweep
+from .design import build, json_schema, require_analysis, resolve
 from .inputs import Refusal, load_yaml
-from .output import Writer, atomic_dir, check_output, provenance, stl_text, summary_html
+from .output import (
+    LTCA_SUMMARY_FIELDS,
+    LTCA_TABLES,
+    Writer,
+    atomic_dir,
+    check_output,
+    provenance,
+    stl_text,
+    summary_html,
+)
 
 __all__ = ["main", "load_yaml", "Refusal"]
 
@@ -64,11 +74,14 @@ def _parquet_ok(args):
 
 
 def _design(path, analysis_name=None, contact=True):
-    """The checked design of the file ``path`` (refused if its family does not support
-    ``analysis_name``)."""
-    d = check(load_yaml(path), contact=contact)
+    """The checked design of the file ``path`` (:func:`gearrep.cli.design.check`), refused before
+    its contact check if its family does not support ``analysis_name`` or it lacks a key that
+    analysis requires."""
+    d = build(resolve(load_yaml(path)))
     if analysis_name is not None:
         require_analysis(d, analysis_name)
+    if contact:
+        d.family.check_contact(d)
     return d
 
 
@@ -116,6 +129,33 @@ def _cmd_tca(args) -> int:
     return 0
 
 
+def _cmd_ltca(args) -> int:
+    out = _out_dir(args)
+    _parquet_ok(args)
+    d = _design(args.design, "ltca")
+    prog = _Progress(args.progress, "ltca")
+    res = loaded.ltca_tables(d, progress=prog)
+    prov = provenance(d.values, "ltca")
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
+        w = Writer(tmp, prov, parquet=args.parquet)
+        for name, df in res.tables.items():
+            w.table(name, df)
+        prog("figures", 0.9)
+        figs = {k: w.figure(k, f) for k, f in figures.ltca_figures(d, res).items()}
+        w.text("design.yaml", _yaml_text(d.values))
+        page = summary_html(
+            d.name, _yaml_text(d.values), res.tables["ltca_summary"], figs, prov, LTCA_SUMMARY_FIELDS, LTCA_TABLES
+        )
+        w.text("summary.html", page)
+    prog.done()
+    s = res.tables["ltca_summary"].iloc[0]
+    print(
+        f"wrote {out}/ ({len(w.files)} files, each with a .prov.json sidecar): {s['n_positions'] - s['n_failed']} of "
+        f"{s['n_positions']} positions converged"
+    )
+    return 0
+
+
 def _cmd_curvature(args) -> int:
     out = _out_dir(args)
     _parquet_ok(args)
@@ -158,7 +198,7 @@ def _cmd_replicate(args) -> int:
 
 _DESCRIPTIONS = {
     None: "Tooth contact analysis of your own gear pair: check a design file, run the TCA over the meshing "
-    "cycle, the flank curvatures, a sweep of designs, or the replications of the published studies.",
+    "cycle, the loaded TCA, the flank curvatures, a sweep of designs, or the replications of the published studies.",
     "check": "Validate a design file without analysing it: types, ranges, unknown or missing keys, undercut, "
     "interference and contact ratio at the operating centre distance, crown and relief against the tooth "
     "thickness, contact at the pitch position under the misalignment. Exit 0: valid; 2: refused, with one "
@@ -167,6 +207,12 @@ _DESCRIPTIONS = {
     "transmission error (one tooth pair and the meshing cycle), contact ellipses, the contact ratio (with "
     "the ISO transverse, overlap and total ratios), flank point clouds and STL, figures and a one-page "
     "summary.html. The design is checked first; results are written to -o DIR only when complete.",
+    "ltca": "Loaded tooth contact analysis over the meshing cycle under the design's load (load.torque_Nm on "
+    "load.driving) and the members' materials (pinion.material, gear.material; default steel): loaded and unloaded "
+    "TE, the load of each tooth pair, the Hertz pressure and edge contact at tips and face ends, the mesh "
+    "stiffness, the pressure at the solved pitch position (beside ISO 6336-2's closed form), the pressure map of "
+    "the most loaded position, figures and a one-page summary.html (gearrep.ltca; docs/ltca.md for the model). "
+    "The design is checked first; results are written to -o DIR only when complete.",
     "curvature": "Principal curvatures k1 >= k2 [1/mm] and principal directions of both flanks on the grid "
     "analysis.curvature_grid over their active profile (from the lowest point that meets the mating tip to "
     "the tip), with a figure.",
@@ -183,6 +229,7 @@ _EXAMPLES = {
     "\n  gearrep COMMAND --help   (each command's options and an example)",
     "check": "example:\n  gearrep check examples/crowned_spur.yaml",
     "tca": "example:\n  gearrep tca examples/crowned_spur.yaml -o results/my/spur   # then open results/my/spur/summary.html",
+    "ltca": "example:\n  gearrep ltca examples/spur.yaml -o results/my/spur_loaded   # then open results/my/spur_loaded/summary.html",
     "curvature": "example:\n  gearrep curvature examples/helical.yaml -o results/my/helical_k",
     "sweep": "example:\n  gearrep sweep examples/sweep_crowned_spur.yaml -o results/my/sweep --cores 2",
     "replicate": "example:\n  gearrep replicate results/scorecard.md --cores 2",
@@ -230,6 +277,7 @@ def _parser() -> argparse.ArgumentParser:
 
     for name, func, what in (
         ("tca", _cmd_tca, "TCA over the meshing cycle: TE, contact path, ellipses, contact ratio, figures, HTML"),
+        ("ltca", _cmd_ltca, "loaded TCA under the design's load: loaded TE, load sharing, pressure, stiffness, HTML"),
         ("curvature", _cmd_curvature, "principal curvatures and directions of both flanks on a grid"),
     ):
         q = _command(sub, name, what)

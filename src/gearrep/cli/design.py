@@ -17,6 +17,7 @@ block holds the numerical settings of the analyses (hashed apart from the design
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import json
 import re
@@ -28,7 +29,7 @@ from .. import settings as st
 from ..settings import SettingError
 from .families import REGISTRY, family_of
 from .family import Design
-from .keys import lookup, required, set_dotted, short
+from .keys import ANALYSIS_REQUIRED, analysis_only, lookup, lookup_value, required, set_dotted, short
 
 __all__ = [
     "Design",
@@ -43,14 +44,21 @@ __all__ = [
 ]
 
 
-def _mark_required(schema: dict, decl) -> dict:
-    req = [k for k, s in decl.items() if s.kind != "group" and s.value is None]
-    req += [k for k, s in decl.items() if s.kind == "group" and required(s.fields)]
+def _mark_required(schema: dict, decl, prefix: str = "") -> dict:
+    """``schema`` with the keys of ``decl`` a design must give marked required, and the unit and
+    reason of the keys without a default described (as a default's are)."""
+    req = [
+        k for k, s in decl.items() if s.kind != "group" and s.value is None and f"{prefix}{k}" not in analysis_only()
+    ]
+    req += [k for k, s in decl.items() if s.kind == "group" and required(s.fields, f"{prefix}{k}.")]
     if req:
         schema["required"] = req
     for k, s in decl.items():
         if s.kind == "group":
-            _mark_required(schema["properties"][k], s.fields)
+            _mark_required(schema["properties"][k], s.fields, f"{prefix}{k}.")
+        elif s.value is None:
+            unit = f" [{s.unit}]" if s.unit and s.unit != "1" else ""
+            schema["properties"][k]["description"] = f"{s.reason}{unit}"
     return schema
 
 
@@ -77,13 +85,28 @@ def resolve(raw) -> dict:
         raise SettingError(f"design: got {short(raw)}; allowed: a mapping with keys family, ... (see the schema)")
     decl = family_of(raw.get("family")).keys
     _refuse_unknown(decl, raw, "design")
-    out = st.resolve(decl, raw, where="design")
+    out = st.resolve(decl, _without_unset(raw), where="design")
     for key in required(decl):
-        v = out
-        for part in key.split("."):
-            v = v[part]
-        if v is None:
+        if lookup_value(out, key) is None:
             raise SettingError(f"design.{key}: missing; allowed: {lookup(decl, key).allowed()}")
+    return out
+
+
+def _without_unset(raw: Mapping) -> Mapping:
+    """``raw`` without the keys only one analysis requires where they are None (not given: a
+    resolved design holds them so, and resolving it again gives it back)."""
+    out = raw
+    for key in analysis_only():
+        *parents, last = key.split(".")
+        node = raw
+        for part in parents:
+            node = node.get(part) if isinstance(node, Mapping) else None
+        if isinstance(node, Mapping) and last in node and node[last] is None:
+            out = copy.deepcopy(out) if out is raw else out
+            target = out
+            for part in parents:
+                target = target[part]
+            del target[last]
     return out
 
 
@@ -136,9 +159,18 @@ def check(raw, *, contact: bool = True) -> Design:
 
 def require_analysis(d: Design, analysis: str) -> None:
     """Refuse (SettingError naming ``design.family``) a design whose family does not support
-    ``analysis`` (one of :data:`gearrep.cli.family.ANALYSES`)."""
+    ``analysis`` (one of :data:`gearrep.cli.family.ANALYSES`), with the family's reason
+    (:meth:`gearrep.cli.family.Family.why_not`), and one that lacks a key only that analysis
+    requires (:data:`gearrep.cli.keys.ANALYSIS_REQUIRED`)."""
     if analysis not in d.family.analyses:
         others = [name for name, f in REGISTRY.items() if analysis in f.analyses]
+        why = d.family.why_not(d, analysis)
         raise SettingError(
             f"design.family: got {d.family.name!r}; allowed: for {analysis}, a family that supports it: {others}"
+            + (f" ({why})" if why else "")
         )
+    for key in ANALYSIS_REQUIRED.get(analysis, ()):
+        if lookup_value(d.values, key) is None:
+            raise SettingError(
+                f"design.{key}: missing; allowed: {lookup(d.family.keys, key).allowed()} (gearrep {analysis} needs it)"
+            )

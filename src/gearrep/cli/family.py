@@ -33,6 +33,7 @@ import numpy as np
 import pandas as pd
 
 from ..curvature import principal_curvatures, with_opposite_normal
+from ..ltca import refusal
 from ..meshing import contact_ratio, engagement_limits, meshing_cycle
 from ..settings import SettingError
 from ..solve import Status
@@ -42,10 +43,13 @@ from .edges import axial_edges, cut_at_edges
 from .keys import misalignment, set_dotted
 from .tables import cloud, curvature_frame, cycle_summary, te_envelope
 
-__all__ = ["Design", "Family", "PairFamily", "ISO_RATIOS", "ANALYSES"]
+__all__ = ["Design", "Family", "PairFamily", "ISO_RATIOS", "ANALYSES", "UNLOADED"]
 
 #: the analyses a family can support (the commands that solve or evaluate its flanks)
-ANALYSES = ("tca", "curvature", "sweep")
+ANALYSES = ("tca", "curvature", "sweep", "ltca")
+#: the analyses of every family of the library's unloaded TCA (the default of :attr:`Family.analyses`;
+#: ``ltca``, the loaded analysis, is declared by the families :mod:`gearrep.ltca` supports)
+UNLOADED = ("tca", "curvature", "sweep")
 #: the summary entries of the ISO contact ratios (NaN for a family without them)
 ISO_RATIOS = ("transverse_contact_ratio_iso", "overlap_ratio_iso", "total_contact_ratio_iso")
 
@@ -82,12 +86,14 @@ class Family:
     design keys, :func:`gearrep.settings.declare`; every family has ``name``, ``module_mm``,
     ``face_width_mm``, ``pinion.teeth``, ``gear.teeth``, ``misalignment`` and ``analysis``),
     ``param_names`` (the two flank parameters with their units, column names of the tables),
-    ``analyses`` (the commands it supports, of :data:`ANALYSES`)."""
+    ``analyses`` (the commands it supports, of :data:`ANALYSES`; a family listing ``ltca`` declares
+    the keys :data:`gearrep.cli.keys.LOAD`, :data:`~gearrep.cli.keys.MATERIAL` per member and
+    :data:`~gearrep.cli.keys.LOADED_ANALYSIS`, and its pair is a :class:`PairFamily`'s)."""
 
     name: str = ""
     keys: dict = {}
     param_names: tuple = ("u", "v")
-    analyses: tuple = ANALYSES
+    analyses: tuple = UNLOADED
 
     def build(self, values: dict) -> Design:
         """The pair of the resolved design ``values``, its geometry checked (SettingError naming
@@ -124,6 +130,36 @@ class Family:
     def iso_contact_ratios(self, d: Design) -> dict:
         """The ISO contact ratios of the nominal pair (:data:`ISO_RATIOS`); NaN by default."""
         return dict.fromkeys(ISO_RATIOS, float("nan"))
+
+    def why_not(self, d: Design, analysis: str) -> str:
+        """Why the family does not support ``analysis`` (shown in the refusal): for ``ltca`` the
+        library's reason for refusing :meth:`pinion_surface` (:func:`gearrep.ltca.refusal`); ""
+        otherwise."""
+        if analysis != "ltca":
+            return ""
+        why = refusal(self.pinion_surface(d))
+        return f"gearrep.ltca refuses {self.name} flanks: {why}" if why else ""
+
+    def pinion_surface(self, d: Design):
+        """The pinion's flank surface (by default ``d.pair.flank1``)."""
+        return d.pair.flank1
+
+    def iso_pitch_pressure_MPa(self, d: Design) -> float:
+        """ISO 6336-2's nominal pitch-point contact stress of the nominal pair under the design's
+        load and materials (``gearrep ltca``'s reference); NaN by default (no closed form)."""
+        return float("nan")
+
+    def pitch_radius_mm(self, d: Design) -> float:
+        """Operating pitch radius [mm] of the pinion: r_w1 = a' N1 / (N1 + N2), a' the centre distance
+        (N1 + N2) m_t / 2 of a cylindrical pair (from ``module_mm``, the teeth and
+        ``helix_angle_deg``) moved by the misalignment's ``d_E_mm`` and ``d_H_mm`` (``gearrep
+        ltca``'s pitch position: where the contact reaches it)."""
+        v = d.values
+        n1, n2 = v["pinion"]["teeth"], v["gear"]["teeth"]
+        m_t = v["module_mm"] / np.cos(np.radians(v.get("helix_angle_deg", 0.0)))
+        mis = v.get("misalignment", {})
+        a = float(np.hypot(0.5 * m_t * (n1 + n2) + mis.get("d_E_mm", 0.0), mis.get("d_H_mm", 0.0)))
+        return a * n1 / (n1 + n2)
 
     def te_radius_mm(self, d: Design) -> float:
         """Radius [mm] that turns a TE of the driven gear in angle into a displacement along the

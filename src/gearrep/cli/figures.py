@@ -1,6 +1,8 @@
-"""Figures of ``gearrep tca`` and ``gearrep curvature`` (matplotlib, headless): TE over three
-meshing cycles with its mean removed, the path of contact on the pinion flank with the contact
-ellipses' major axes, and the principal curvatures over the active profiles. What differs by
+"""Figures of ``gearrep tca``, ``gearrep ltca`` and ``gearrep curvature`` (matplotlib, headless): TE
+over three meshing cycles with its mean removed, the path of contact on the pinion flank with the
+contact ellipses' major axes; the loaded TE beside the unloaded one, the load of each tooth pair
+through its engagement and the pressure pattern on the pinion flank; and the principal
+curvatures over the active profiles. What differs by
 family comes from the design's family (:class:`gearrep.cli.family.Family`: the radius that turns
 the TE into a length, the face edges drawn, the flank edges that cut the ellipses).
 
@@ -14,8 +16,9 @@ import numpy as np
 
 from ..units import ARCSEC
 from .edges import cut_at_edges
+from .loaded import tip_kinds
 
-__all__ = ["tca_figures", "curvature_figure", "te_scales", "NUMERICALLY_ZERO_UM", "CYCLES_SHOWN"]
+__all__ = ["tca_figures", "ltca_figures", "curvature_figure", "te_scales", "NUMERICALLY_ZERO_UM", "CYCLES_SHOWN"]
 
 #: a peak-to-peak TE below this along the line of action [um] (1 nm) is drawn as numerically zero:
 #: a thousand times below the finest gear-accuracy grades' tolerances and measuring resolution,
@@ -138,6 +141,142 @@ def _te_figure(d, te, plt):
     sec.set_ylabel("[um along the line of action]")
     for k in range(1, CYCLES_SHOWN):
         ax.axvline(phi[ok][0] + k * pitch, c="0.8", lw=0.6)
+    fig.tight_layout()
+    return fig
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def ltca_figures(d, loaded) -> dict:
+    """The figures of ``gearrep ltca`` from its :class:`gearrep.cli.loaded.Loaded` result: loaded
+    and unloaded TE, load sharing (over :data:`CYCLES_SHOWN` meshing cycles) and the pressure
+    pattern on the pinion flank over the cycle."""
+    plt = _pyplot()
+    res = loaded.cycle
+    return {
+        "loaded_transmission_error": _loaded_te_figure(d, res, plt),
+        "load_sharing": _load_sharing_figure(d, res, plt),
+        "pressure_pattern": _pressure_pattern_figure(d, res, plt),
+    }
+
+
+def _cycles(d, phi):
+    """(angles over CYCLES_SHOWN cycles (CYCLES_SHOWN, n), the pinion's angular pitch [rad])."""
+    pitch = 2.0 * np.pi / d.values["pinion"]["teeth"]
+    return np.array([phi + c * pitch for c in range(CYCLES_SHOWN)]), pitch
+
+
+def _loaded_te_figure(d, res, plt):
+    """Loaded and unloaded TE [urad of the gear, member 2; um along the line of action on the right]."""
+    x, pitch = _cycles(d, res.phi1_rad)
+    um_per_urad = 1e-3 * d.family.te_radius_mm(d)
+    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    loaded, rigid = res.lte_urad, res.te_unloaded_rad * 1e6
+    ax.plot(x.ravel(), np.tile(rigid, CYCLES_SHOWN), "-", c="0.5", label="unloaded (rigid flanks)")
+    ok = np.isfinite(loaded)
+    ptp = np.ptp(loaded[ok]) if ok.any() else float("nan")
+    label = f"loaded, {res.torque_Nm:g} N m (peak to peak {ptp:.4g} urad = {ptp * um_per_urad:.4g} um)"
+    ax.plot(x.ravel(), np.tile(loaded, CYCLES_SHOWN), "-", c="C0", label=label)
+    bad = ~res.converged
+    if bad.any():
+        ax.plot(x[:, bad].ravel(), np.tile(rigid[bad], CYCLES_SHOWN), "x", c="C3", label="not converged")
+    for k in range(1, CYCLES_SHOWN):
+        ax.axvline(res.phi1_rad[0] + k * pitch, c="0.85", lw=0.6)
+    ax.set_xlabel("pinion angle phi1 [rad]")
+    ax.set_ylabel("TE [urad of the gear]")
+    ax.set_title(f"{d.name}: loaded TE over {CYCLES_SHOWN} meshing cycles", fontsize=10)
+    sec = ax.secondary_yaxis("right", functions=(lambda v: v * um_per_urad, lambda v: v / um_per_urad))
+    sec.set_ylabel("[um along the line of action]")
+    ax.legend(fontsize=7, loc="center right")
+    fig.tight_layout()
+    return fig
+
+
+def _load_sharing_figure(d, res, plt):
+    """Each tooth pair's load through its engagement and the total normal load: tooth pair k at
+    phi1 + c pitch carries what pair k - c carries at phi1 (:func:`gearrep.ltca.initial_separations`)."""
+    x, pitch = _cycles(d, res.phi1_rad)
+    pairs = [int(k) for k in res.separations.pairs]
+    col = {k: i for i, k in enumerate(pairs)}
+    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    for j, k in enumerate(range(min(pairs), max(pairs) + CYCLES_SHOWN)):
+        ys = [
+            res.pair_load_N[:, col[k - c]] if k - c in col else np.zeros(len(res.phi1_rad)) for c in range(CYCLES_SHOWN)
+        ]
+        y = np.concatenate(ys)
+        idle = (y == 0) & (np.roll(y, 1) == 0) & (np.roll(y, -1) == 0)  # out of mesh: not drawn
+        y = np.where(idle, np.nan, y)
+        if np.nanmax(np.nan_to_num(y)) > 0:
+            ax.plot(x.ravel(), y, "-", c=f"C{j % 10}", lw=1.0)
+    ax.plot(x.ravel(), np.tile(res.normal_load_N, CYCLES_SHOWN), "--", c="k", lw=0.8, label="total normal load")
+    for k in range(1, CYCLES_SHOWN):
+        ax.axvline(res.phi1_rad[0] + k * pitch, c="0.85", lw=0.6)
+    ax.set_xlabel("pinion angle phi1 [rad]")
+    ax.set_ylabel("normal load [N]")
+    ax.set_title(f"{d.name}: load of each tooth pair through its engagement", fontsize=10)
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    return fig
+
+
+def _pressure_quads(res, i: int, tips, n_across: int = 9):
+    """(quads (n, 4, 2) in (axial position, radius on the pinion) [mm], their Hertz pressure [MPa],
+    the loaded tip-edge contact points (m, 3)) of position ``i``: each loaded node's strip across its
+    contact line, cut into ``n_across - 1`` pieces, spanning the node's share of the face along the
+    axis (half-way to its neighbours)."""
+    m = res.pressure_map(int(i), n_across)
+    loaded = (np.nan_to_num(res.node_load_N[i]) > 0) & (m.kind > 0)
+    face = loaded & ~tips[i]
+    z_node = m.z_mm
+    mid = 0.5 * (z_node[:, 1:] + z_node[:, :-1])
+    lo = (np.concatenate([z_node[:, :1], mid], axis=1) - z_node)[face][:, None]
+    hi = (np.concatenate([mid, z_node[:, -1:]], axis=1) - z_node)[face][:, None]
+    P = m.position_mm[face][:, None, :] + m.across_mm[None, :, None] * m.across[face][:, None, :]
+    z, r = P[..., 2], np.hypot(P[..., 0], P[..., 1])
+    corners = [(z[:, :-1] + lo, r[:, :-1]), (z[:, :-1] + hi, r[:, :-1]), (z[:, 1:] + hi, r[:, 1:])]
+    corners.append((z[:, 1:] + lo, r[:, 1:]))
+    quads = np.stack([np.stack(c, axis=-1) for c in corners], axis=-2).reshape(-1, 4, 2)
+    p = m.pressure_MPa[face]
+    return quads, (0.5 * (p[:, :-1] + p[:, 1:])).ravel(), m.position_mm[loaded & tips[i]]
+
+
+def _pressure_pattern_figure(d, res, plt):
+    """Hertz pressure over the cycle on the pinion flank (axial position against radius): every
+    loaded node's strip at every converged position (a tooth pair k at phi1 is the reference
+    tooth pair at phi1 - k pitch, so together they cover one tooth's engagement); loaded tip
+    edges marked apart (their pressure depends on the edge radius)."""
+    from matplotlib.collections import PolyCollection
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    tips = np.isin(res.separations.kind, tip_kinds())
+    parts = [_pressure_quads(res, i, tips) for i in np.flatnonzero(res.converged)]
+    quads = np.concatenate([q for q, _, _ in parts]) if parts else np.zeros((0, 4, 2))
+    if len(quads):
+        p = np.concatenate([v for _, v, _ in parts])
+        keep = p > 0
+        order = np.argsort(p[keep])  # the largest pressures drawn last, on top
+        pc = PolyCollection(quads[keep][order], array=p[keep][order], cmap="viridis", edgecolors="none")
+        ax.add_collection(pc)
+        ax.autoscale_view()
+        fig.colorbar(pc, ax=ax, label="Hertz pressure [MPa]")
+        E = np.concatenate([e for _, _, e in parts])
+        if len(E):
+            ax.plot(E[:, 2], np.hypot(E[:, 0], E[:, 1]), "x", c="C3", ms=3, label="loaded tip edge")
+            ax.legend(fontsize=7, loc="upper right")
+    else:
+        ax.text(0.5, 0.5, "no loaded position", ha="center", transform=ax.transAxes)
+    d.family.draw_face_edges(d, ax)
+    ax.set_xlabel("axial position [mm]")
+    ax.set_ylabel("radius on the pinion [mm]")
+    ax.set_title(f"{d.name}: contact pressure on the pinion flank over the cycle", fontsize=10)
     fig.tight_layout()
     return fig
 

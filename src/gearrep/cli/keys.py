@@ -5,8 +5,10 @@ them share is declared once here: the head of every design file (:func:`head`), 
 settings of the analyses (:data:`ANALYSIS`), the assembly errors of a pair on crossed or parallel
 axes (:data:`MISALIGNMENT`, with :func:`misalignment` building the library's
 :class:`gearrep.tca.Misalignment`), and the lengthwise crowning and profile relief of a member
-(:data:`CROWNING`, :data:`RELIEF`, :func:`crowning`). Lengths are in mm and angles in degrees in
-the file; the library takes radians.
+(:data:`CROWNING`, :data:`RELIEF`, :func:`crowning`), and the keys of the loaded analysis
+(:data:`LOAD`, a member's :data:`MATERIAL`, :data:`LOADED_ANALYSIS`, with :func:`materials`
+building the library's :class:`gearrep.ltca.Material` pair). Lengths are in mm and angles in
+degrees in the file; the library takes radians.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ import copy
 import math
 
 from .. import settings as st
+from ..ltca import Material
 from ..surfaces.involute import CircularCrowning, LogarithmicCrowning, ParabolicCrowning
 from ..tca import Misalignment
 
@@ -25,9 +28,15 @@ __all__ = [
     "MISALIGNMENT",
     "CROWNING",
     "RELIEF",
+    "LOAD",
+    "MATERIAL",
+    "LOADED_ANALYSIS",
+    "ANALYSIS_REQUIRED",
     "misalignment",
+    "materials",
     "crowning",
     "lookup",
+    "lookup_value",
     "required",
     "set_dotted",
     "short",
@@ -66,6 +75,49 @@ ANALYSIS = st.group(
     curvature_grid=grid([9, 7], "grid (profile x face) of the curvature table", 201),
     flank_grid=grid([25, 25], "grid (profile x face) of the flank point clouds and STL", 501),
 )
+
+#: :data:`ANALYSIS` with the settings of the loaded analysis (the families that support it)
+LOADED_ANALYSIS = st.group(
+    ANALYSIS.reason,
+    **ANALYSIS.fields,
+    ltca_nodes=st.integer(
+        21,
+        "1",
+        "nodes along the face per tooth pair in the loaded analysis (gearrep ltca; 0.65 % from 161 nodes on the "
+        "README pair, docs/ltca.md)",
+        ge=5,
+        le=161,
+    ),
+)
+
+#: the load of the loaded analysis (``gearrep ltca``); its torque has no default: the analysis that
+#: needs it requires it (:data:`ANALYSIS_REQUIRED`), the other analyses ignore the block
+LOAD = st.group(
+    "the load of the loaded tooth contact analysis (gearrep ltca)",
+    torque_Nm=st.number(
+        None,
+        "N m",
+        "torque on the driving member (required by gearrep ltca); up to 1e7 N m, the largest mill and marine drives",
+        gt=0,
+        le=1e7,
+    ),
+    driving=st.choice("pinion", ("pinion", "gear"), "the member the torque drives (the other one is driven)"),
+)
+
+#: a member's material in the loaded analysis (isotropic, linear elastic)
+MATERIAL = st.group(
+    "elastic material of the member in the loaded analysis (default steel, ISO 6336-2's reference for Z_E)",
+    E_MPa=st.number(
+        206000.0, "MPa", "Young's modulus: from soft polymers (0.1 GPa) to diamond (1200 GPa)", ge=100, le=1.2e6
+    ),
+    poisson=st.number(
+        0.3, "1", "Poisson ratio of an isotropic engineering material (0.5: incompressible)", ge=0, le=0.5
+    ),
+)
+
+#: dotted keys without a default that only one analysis needs (the others run without them):
+#: required by that analysis (:func:`gearrep.cli.design.require_analysis`), not by every design
+ANALYSIS_REQUIRED = {"ltca": ("load.torque_Nm",)}
 
 CROWNING = st.group(
     "longitudinal crowning of the member (material removed toward the face edges)",
@@ -116,6 +168,12 @@ def crowning(c, face_width: float, v0: float = 0.0):
     return LogarithmicCrowning(c["crown_mm"] / math.log(1.0 / (1.0 - c["log_shape"])), c["log_shape"], h, v0=v0)
 
 
+def materials(values) -> tuple:
+    """(member 1, member 2) :class:`gearrep.ltca.Material` of the resolved ``pinion.material`` and
+    ``gear.material`` (:data:`MATERIAL`)."""
+    return tuple(Material(values[m]["material"]["E_MPa"], values[m]["material"]["poisson"]) for m in ("pinion", "gear"))
+
+
 def lookup(decl, dotted: str):
     """The declared setting of the dotted key ``dotted`` (KeyError, AttributeError or TypeError
     where no key of that name is declared)."""
@@ -126,13 +184,27 @@ def lookup(decl, dotted: str):
     return s
 
 
+def analysis_only() -> frozenset:
+    """The dotted keys that only one analysis requires (:data:`ANALYSIS_REQUIRED`)."""
+    return frozenset(k for keys in ANALYSIS_REQUIRED.values() for k in keys)
+
+
+def lookup_value(values: dict, dotted: str):
+    """The value of the dotted key ``dotted`` in the resolved design ``values``."""
+    v = values
+    for part in dotted.split("."):
+        v = v[part]
+    return v
+
+
 def required(decl, prefix: str = "") -> list[str]:
-    """The dotted keys of ``decl`` without a default (value None): a design must give them."""
+    """The dotted keys of ``decl`` (its keys under ``prefix``) without a default (value None): a
+    design must give them; those only one analysis needs (:data:`ANALYSIS_REQUIRED`) are left out."""
     out = []
     for k, s in decl.items():
         if s.kind == "group":
             out += required(s.fields, f"{prefix}{k}.")
-        elif s.value is None:
+        elif s.value is None and f"{prefix}{k}" not in analysis_only():
             out.append(f"{prefix}{k}")
     return out
 

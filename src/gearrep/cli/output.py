@@ -23,7 +23,19 @@ import pandas as pd
 from .. import __version__
 from .design import canonical_hash, split_settings
 
-__all__ = ["atomic_dir", "check_output", "commit", "provenance", "Writer", "stl_text", "exact", "SUMMARY_FIELDS"]
+__all__ = [
+    "atomic_dir",
+    "check_output",
+    "commit",
+    "provenance",
+    "Writer",
+    "stl_text",
+    "exact",
+    "SUMMARY_FIELDS",
+    "LTCA_SUMMARY_FIELDS",
+    "TCA_TABLES",
+    "LTCA_TABLES",
+]
 
 
 def _refuse_target(target: Path, overwrite: bool) -> None:
@@ -256,12 +268,77 @@ SUMMARY_FIELDS = {
 }
 
 
+#: one line on each field of ``ltca_summary.csv`` (shown beside the value in the ``gearrep ltca`` summary.html)
+LTCA_SUMMARY_FIELDS = {
+    "design": "the design's name",
+    "family": "the tooth-surface family of the design file",
+    "driving": "the member the torque drives (load.driving)",
+    "torque_Nm": "torque on the driving member (load.torque_Nm)",
+    "normal_load_N": "sum of the contact loads (normal to the flanks), mean over the converged positions; "
+    "T / (r_b cos beta_b) of the driving member where no tip edge carries load",
+    "lte_peak_to_peak_urad": "peak-to-peak loaded transmission error of the gear (member 2) over the cycle",
+    "lte_peak_to_peak_um": "the same along the transverse line of action (times the gear's base radius)",
+    "mesh_stiffness_mean_N_per_mm_um": "mean over the cycle of the mesh stiffness per face width: transverse "
+    "base tangential force / elastic transverse approach (unloaded minus loaded TE along the line of action) / "
+    "face width",
+    "single_pair_stiffness_max_N_per_mm_um": "largest mesh stiffness per face width of the cycle's positions where "
+    "one tooth pair carries the load (NaN: no such position, e.g. unrelieved tips whose corners close under "
+    "load; see pitch_point_single_pair_stiffness_N_per_mm_um)",
+    "max_contact_pressure_MPa": "largest Hertz pressure on the flanks over the cycle (tip edges apart)",
+    "load_share_max": "largest share of the normal load carried by one tooth pair",
+    "load_share_min": "smallest over the positions of the largest share (0.5: two pairs share equally)",
+    "tip_edge_contact_positions": "positions where a tip edge (corner contact at mesh entry or exit) carries load",
+    "tip_edge_load_share_max": "largest share of the normal load carried at tip edges",
+    "max_tip_edge_pressure_MPa": "largest Hertz pressure at a tip edge, for an edge radius of a tenth of the module",
+    "face_end_contact_positions": "positions where the load reaches a face end",
+    "n_positions": "positions of the cycle (analysis.n_points, over one angular pitch of the pinion)",
+    "n_failed": "positions not converged (NaN rows of ltca_positions.csv, with their status)",
+    "max_pressure_phi1_rad": "pinion angle of the position with max_contact_pressure_MPa (its map: "
+    "ltca_pressure_map.csv)",
+    "pitch_point_phi1_rad": "pinion angle at which tooth pair 0's unloaded contact lies on the pinion's operating "
+    "pitch circle (solved; NaN: none, see pitch_point_status)",
+    "pitch_point_status": "converged, or why the pitch position or its loaded analysis was not found",
+    "pitch_point_pressure_MPa": "largest flank pressure at the pitch position, every tooth pair free to take load",
+    "pitch_point_pairs_loaded": "tooth pairs carrying load at the pitch position",
+    "pitch_point_load_share": "share of the normal load carried by the tooth pair at the pitch point there",
+    "pitch_point_pressure_single_pair_MPa": "largest flank pressure at the pitch position with that tooth pair "
+    "alone carrying the load (ISO 6336-2's case)",
+    "pitch_point_single_pair_stiffness_N_per_mm_um": "mesh stiffness per face width of that tooth pair alone at "
+    "the pitch position (the validation's c')",
+    "pitch_point_pressure_iso_MPa": "ISO 6336-2 nominal pitch-point stress Z_H Z_E sqrt(F_t/(d1 b) (u+1)/u) with "
+    "Z_eps = Z_beta = 1 of the nominal pair (NaN: no closed form for the family); for an unmodified spur pair "
+    "pitch_point_pressure_single_pair_MPa matches it within the validation's tolerance (docs/ltca.md)",
+    "ltca_nodes": "nodes along the face per tooth pair (analysis.ltca_nodes)",
+    "node_placements": "node placements of the analysis (1 + refinements over a localized contact's span)",
+    "max_torque_balance_residual": "largest relative residual of the torque balance over the converged positions",
+}
+
+#: the tables each command's summary.html names
+TCA_TABLES = (
+    "contact_path.csv (contact points, TE, contact ellipses), te_cycle.csv (TE over the meshing cycle), "
+    "summary.csv; flanks: flank_pinion.csv / flank_gear.csv (points and outward normals) and .stl."
+)
+LTCA_TABLES = (
+    "ltca_positions.csv (one row per position: TE, loads per tooth pair, pressure, stiffness, status), "
+    "ltca_summary.csv, ltca_pressure_map.csv (the pressure map of the position with the largest pressure)."
+)
+
+
 def _table_html(df: pd.DataFrame) -> str:
     return df.to_html(index=False, float_format=lambda x: f"{x:.6g}", border=0, classes="t")
 
 
-def summary_html(title: str, design_yaml: str, summary: pd.DataFrame, figures: dict, prov: dict) -> str:
-    """One-page HTML summary (opens offline: the figures are embedded)."""
+def summary_html(
+    title: str,
+    design_yaml: str,
+    summary: pd.DataFrame,
+    figures: dict,
+    prov: dict,
+    fields: dict = SUMMARY_FIELDS,
+    tables: str = TCA_TABLES,
+) -> str:
+    """One-page HTML summary (opens offline: the figures are embedded): the summary row with the
+    meaning of each field (``fields``), the figures, the design, the provenance and ``tables``."""
     figs = "".join(
         f'<figure><img alt="{html.escape(k)}" src="data:image/png;base64,{v}"><figcaption>{html.escape(k)}'
         "</figcaption></figure>"
@@ -269,7 +346,7 @@ def summary_html(title: str, design_yaml: str, summary: pd.DataFrame, figures: d
     )
     rows = summary.T.reset_index()
     rows.columns = ["quantity", "value"]
-    rows["meaning"] = [SUMMARY_FIELDS.get(k, "") for k in rows["quantity"]]
+    rows["meaning"] = [fields.get(k, "") for k in rows["quantity"]]
     prov_rows = pd.DataFrame({"field": list(prov), "value": [str(v) for v in prov.values()]})
     return f"""<!doctype html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>body{{font-family:sans-serif;max-width:1100px;margin:1em auto}}table.t{{border-collapse:collapse}}
@@ -280,7 +357,6 @@ figure{{display:inline-block;margin:4px}}img{{max-width:520px}}pre{{background:#
 <h2>Figures</h2>{figs}
 <h2>Design</h2><pre>{html.escape(design_yaml)}</pre>
 <h2>Provenance</h2>{_table_html(prov_rows)}
-<p>Tables: contact_path.csv (contact points, TE, contact ellipses), te_cycle.csv (TE over the meshing
-cycle), summary.csv; flanks: flank_pinion.csv / flank_gear.csv (points and outward normals) and .stl.</p>
+<p>Tables: {html.escape(tables)}</p>
 </body></html>
 """

@@ -28,9 +28,10 @@ import pandas as pd
 
 from .. import settings as st
 from ..settings import SettingError
+from . import loaded
 from .analysis import sweep_point
 from .design import canonical_hash, check, require_analysis, resolve, set_dotted
-from .families import family_of
+from .families import REGISTRY, family_of
 from .inputs import Refusal, load_yaml
 from .keys import lookup
 from .output import exact, provenance
@@ -46,6 +47,12 @@ SWEEP = st.declare(
     ),
     solves_per_shard=st.integer(
         100000, "1", "contact solves per shard (job); about 1e5 keeps the per-job start-up cost small", ge=1, le=10**9
+    ),
+    ltca=st.flag(
+        False,
+        "also the loaded analysis of each design (gearrep ltca's cycle summary over analysis.n_points positions: "
+        "loaded TE, mesh stiffness, largest pressure); needs the design's load.torque_Nm, and costs 5-25 times a "
+        "point's TCA on the involute examples, about 350 times on the CATT one",
     ),
     resources=st.group(
         "resources each shard job asks for (Snakemake threads, mem_mb, runtime)",
@@ -94,6 +101,12 @@ def resolve_sweep(raw, base_design) -> dict:
     base = resolve(base_design)
     family = family_of(base["family"])
     decl = family.keys
+    if out["ltca"] and "ltca" not in family.analyses:
+        loaded_families = [k for k, f in REGISTRY.items() if "ltca" in f.analyses]
+        raise SettingError(
+            f"sweep.ltca: got True; allowed: false for the {family.name} family (the loaded analysis takes the "
+            f"families {loaded_families})"
+        )
     axes = []
     for key, spec in grid.items():
         if not isinstance(key, str):
@@ -117,7 +130,10 @@ def resolve_sweep(raw, base_design) -> dict:
     n = math.prod(len(v) for _, v in axes)
     if n > _MAX_POINTS:
         raise SettingError(f"sweep.grid: {n} points; allowed: at most {_MAX_POINTS}")
-    pps = max(1, math.ceil(out["solves_per_shard"] / family.solves_per_point(out["phi1_points"])))
+    per_point = family.solves_per_point(out["phi1_points"]) + (loaded.solves_per_design(base) if out["ltca"] else 0)
+    pps = max(1, math.ceil(out["solves_per_shard"] / per_point))
+    if not out["ltca"]:
+        del out["ltca"]  # asked for only: a sweep without it is recorded (sweep.json) as before
     out.update(
         grid={k: v for k, v in axes},
         axes=[[k, v] for k, v in axes],
@@ -143,7 +159,11 @@ def _point_row(spec, i, assign) -> dict:
     row = {"point": i, **{k.replace(".", "__"): v for k, v in assign.items()}}
     try:
         d = check(values)
+        if spec.get("ltca"):
+            require_analysis(d, "ltca")
         m = sweep_point(d, spec["phi1_points"])
+        if spec.get("ltca"):
+            m.update(loaded.sweep_metrics(d))
         row.update(status="ok", message="", **m)
     except (SettingError, ValueError) as e:
         row.update(status="refused" if isinstance(e, SettingError) else "failed", message=str(e))
@@ -162,7 +182,13 @@ _COLUMNS = [
 
 def _frame(spec, rows) -> pd.DataFrame:
     keys = ["point"] + [k.replace(".", "__") for k, _ in spec["axes"]] + ["status", "message"] + _COLUMNS
+    keys += list(loaded.SWEEP_COLUMNS) if spec.get("ltca") else []
     return pd.DataFrame(rows, columns=keys)
+
+
+def _hashed(spec: dict) -> tuple:
+    """The keys of the sweep that its hash covers (``ltca`` where it is asked for)."""
+    return ("axes", "phi1_points", "solves_per_shard") + (("ltca",) if spec.get("ltca") else ())
 
 
 def _sidecar(path: Path, spec: dict, extra: dict):
@@ -170,7 +196,7 @@ def _sidecar(path: Path, spec: dict, extra: dict):
         spec["base"],
         "sweep",
         {
-            "sweep_sha256": canonical_hash({k: spec[k] for k in ("axes", "phi1_points", "solves_per_shard")}),
+            "sweep_sha256": canonical_hash({k: spec[k] for k in _hashed(spec)}),
             "file": path.name,
             **extra,
         },
@@ -216,7 +242,10 @@ def run_cli(args) -> int:
         )
     design_path = (sweep_file.parent / raw["design"]).resolve()
     spec = resolve_sweep(raw, load_yaml(design_path))
-    require_analysis(check(spec["base"]), "sweep")  # the base design itself must be analysable
+    base = check(spec["base"])
+    require_analysis(base, "sweep")  # the base design itself must be analysable
+    if spec.get("ltca"):
+        require_analysis(base, "ltca")
     spec["design"] = str(design_path)
     out = Path(args.output).resolve()
     spec_path = out / "sweep.json"

@@ -49,7 +49,7 @@ from ._compliance import (
     weber_contact_approach_mm,
 )
 from ._distribution import ContactLoads, solve_contact_loads
-from ._families import SUPPORTED
+from ._families import SUPPORTED, refusal
 from ._separation import KINDS, Separations, face_nodes, initial_separations, section_contacts
 
 __all__ = [
@@ -64,6 +64,7 @@ __all__ = [
     "cantilever_plate_ratio",
     "plate_kernel",
     "SUPPORTED",
+    "refusal",
     "ContactLoads",
     "solve_contact_loads",
     "Separations",

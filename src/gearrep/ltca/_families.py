@@ -38,6 +38,7 @@ from ..surfaces.involute import InvoluteFlank
 
 __all__ = [
     "SUPPORTED",
+    "refusal",
     "Member",
     "members",
     "member_of",
@@ -72,13 +73,25 @@ def base_flank(flank):
     return flank, np.eye(3), np.zeros(3)
 
 
-def _refuse(flank, name: str):
+def _supported(flank) -> bool:
+    base, _, _ = base_flank(flank)
+    return (isinstance(base, InvoluteFlank) and base is flank) or isinstance(base, CATTFlank)
+
+
+def refusal(flank) -> str:
+    """Why the loaded analysis refuses ``flank`` (a mounted flank, or the surface of a generated
+    member): its class and the reason, one line; "" for a flank of a :data:`SUPPORTED` family."""
+    if _supported(flank):
+        return ""
     base, _, _ = base_flank(flank)
     kind = type(base).__name__
-    why = _REFUSED.get(kind, "no tooth section is defined for it")
+    return f"{kind} ({_REFUSED.get(kind, 'no tooth section is defined for it')})"
+
+
+def _refuse(flank, name: str):
     raise ValueError(
-        f"{name}: gearrep.ltca supports the families {sorted(SUPPORTED)} "
-        f"({', '.join(SUPPORTED.values())}); got {kind} ({why})"
+        f"{name}: gearrep.ltca supports the families {sorted(SUPPORTED)} ({', '.join(SUPPORTED.values())}); "
+        f"got {refusal(flank)}"
     )
 
 

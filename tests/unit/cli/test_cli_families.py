@@ -170,7 +170,7 @@ def test_every_family_has_an_example_design_that_passes_check():
     assert families == set(REGISTRY)
     for name, family in REGISTRY.items():
         assert family.name == name and family.keys["family"].choices == (name,)
-        assert len(family.param_names) == 2 and set(family.analyses) <= {"tca", "curvature", "sweep"}
+        assert len(family.param_names) == 2 and set(family.analyses) <= {"tca", "curvature", "sweep", "ltca"}
 
 
 def _published_bevel():

@@ -13,7 +13,17 @@ from ..family import Family
 from ..keys import short
 from . import bevel, catt, hobbed_curvilinear, involute, novikov
 
-__all__ = ["REGISTRY", "register", "family_of", "bevel", "catt", "hobbed_curvilinear", "involute", "novikov"]
+__all__ = [
+    "REGISTRY",
+    "register",
+    "family_of",
+    "loaded_keys",
+    "bevel",
+    "catt",
+    "hobbed_curvilinear",
+    "involute",
+    "novikov",
+]
 
 #: name -> family, in the order of the generated schema
 REGISTRY: dict[str, Family] = {
@@ -29,8 +39,27 @@ def register(family: Family) -> Family:
         raise ValueError(f"a family named {family.name!r} is registered already")
     if family.keys.get("family") is None or family.keys["family"].choices != (family.name,):
         raise ValueError(f"family {family.name!r}: its keys must declare family: {family.name!r} (keys.head)")
+    if "ltca" in family.analyses and not loaded_keys(family):
+        raise ValueError(
+            f"family {family.name!r}: it lists ltca among its analyses; its keys must declare load, pinion.material, "
+            "gear.material and analysis.ltca_nodes (gearrep.cli.keys.LOAD, MATERIAL, LOADED_ANALYSIS)"
+        )
     REGISTRY[family.name] = family
     return family
+
+
+def loaded_keys(family: Family) -> bool:
+    """Whether ``family`` declares the keys of the loaded analysis: ``load``, ``pinion.material``,
+    ``gear.material`` and ``analysis.ltca_nodes``."""
+    k = family.keys
+    try:
+        return (
+            "load" in k
+            and all("material" in k[m].fields for m in ("pinion", "gear"))
+            and ("ltca_nodes" in k["analysis"].fields)
+        )
+    except (KeyError, TypeError):
+        return False
 
 
 def family_of(name) -> Family:

@@ -19,8 +19,8 @@ from ... import settings as st
 from ...settings import SettingError
 from ...solve import Status
 from ...surfaces.catt import assemble, path_limits, starts
-from ..family import Design, PairFamily
-from ..keys import ANALYSIS, MISALIGNMENT, head
+from ..family import UNLOADED, Design, PairFamily
+from ..keys import LOAD, LOADED_ANALYSIS, MATERIAL, MISALIGNMENT, head
 from .involute import undercut_teeth
 
 __all__ = ["KEYS", "CATTFamily", "FAMILY"]
@@ -34,10 +34,15 @@ KEYS = st.declare(
     flank_pair=st.choice(
         "B", ("A", "B"), "A: pinion convex on gear concave; B: pinion concave on gear convex (seed 004 assembly)"
     ),
-    pinion=st.group("the driving member (member 1)", teeth=st.integer(None, "1", "number of teeth", ge=5, le=10000)),
-    gear=st.group("the driven member (member 2)", teeth=st.integer(None, "1", "number of teeth", ge=5, le=10000)),
+    pinion=st.group(
+        "member 1 (the driving member unless load.driving says gear)",
+        teeth=st.integer(None, "1", "number of teeth", ge=5, le=10000),
+        material=MATERIAL,
+    ),
+    gear=st.group("member 2", teeth=st.integer(None, "1", "number of teeth", ge=5, le=10000), material=MATERIAL),
     misalignment=MISALIGNMENT,
-    analysis=ANALYSIS,
+    load=LOAD,
+    analysis=LOADED_ANALYSIS,
 )
 
 
@@ -48,6 +53,7 @@ class CATTFamily(PairFamily):
     keys = KEYS
     param_names = ("theta_rad", "phi_rad")
     formulation = "conventional"
+    analyses = (*UNLOADED, "ltca")
     contact_ratio_method = "middle-section closed form"
     engagement_solves = 0  # closed form
 

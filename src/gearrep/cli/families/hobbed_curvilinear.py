@@ -625,5 +625,9 @@ class HobbedCurvilinearFamily(Family):
     def flank_cloud(self, d: Design, member: int) -> tuple:
         return _flank_cloud(d, member)
 
+    def pinion_surface(self, d: Design):
+        """The pinion's generated surface (:class:`gearrep.surfaces.hob.GeneratedGear`)."""
+        return d.pair.pinion.gear
+
 
 FAMILY = HobbedCurvilinearFamily()

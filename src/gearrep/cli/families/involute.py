@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from ... import settings as st
+from ...ltca import iso
 from ...meshing import centre_distance_limits, contact_ratio_closed_form
 from ...settings import SettingError
 from ...surfaces.involute import (
@@ -28,8 +29,8 @@ from ...surfaces.involute import (
     undercut_limit,
 )
 from ...tca import GearPair
-from ..family import ISO_RATIOS, Design, PairFamily
-from ..keys import ANALYSIS, CROWNING, MISALIGNMENT, RELIEF, crowning, head
+from ..family import ISO_RATIOS, UNLOADED, Design, PairFamily
+from ..keys import CROWNING, LOAD, LOADED_ANALYSIS, MATERIAL, MISALIGNMENT, RELIEF, crowning, head, materials
 
 __all__ = ["KEYS", "InvoluteFamily", "FAMILY", "undercut_teeth", "check_crowning", "crowned", "refuse_relief"]
 
@@ -42,6 +43,7 @@ def _member(reason):
         crowning=CROWNING,
         tip_relief=RELIEF,
         root_relief=RELIEF,
+        material=MATERIAL,
     )
 
 
@@ -52,10 +54,11 @@ KEYS = st.declare(
     hand=st.choice("right", ("right", "left"), "helix hand of the pinion (the gear has the other hand)"),
     addendum=st.number(1.0, "1", "addendum coefficient h_a", ge=0.5, le=1.5),
     dedendum=st.number(1.25, "1", "dedendum coefficient h_f", ge=0.8, le=2),
-    pinion=_member("the driving member (member 1)"),
-    gear=_member("the driven member (member 2)"),
+    pinion=_member("member 1 (the driving member unless load.driving says gear)"),
+    gear=_member("member 2"),
     misalignment=MISALIGNMENT,
-    analysis=ANALYSIS,
+    load=LOAD,
+    analysis=LOADED_ANALYSIS,
 )
 
 
@@ -208,6 +211,7 @@ class InvoluteFamily(PairFamily):
     name = "involute"
     keys = KEYS
     param_names = ("radius_mm", "axial_mm")
+    analyses = (*UNLOADED, "ltca")
 
     def build(self, values: dict) -> Design:
         v = values
@@ -299,6 +303,24 @@ class InvoluteFamily(PairFamily):
         eps_a = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, d.pair.centre_distance, g1.base_pitch))
         eps_b = float(g1.face_width * abs(np.sin(g1.helix_angle)) / (np.pi * g1.module))
         return dict(zip(ISO_RATIOS, (eps_a, eps_b, eps_a + eps_b)))
+
+    def iso_pitch_pressure_MPa(self, d: Design) -> float:
+        """ISO 6336-2's nominal contact stress at the pitch point, Z_H Z_E sqrt(F_t / (d_1 b) (u + 1) /
+        u) with Z_eps = Z_beta = 1 (one tooth pair carrying the load evenly along its line), of the
+        nominal pair at its operating centre distance (alpha_wt from the misalignment's d_E_mm and
+        d_H_mm), F_t = 2000 T / d of the driving member, Z_E of the two materials
+        (:mod:`gearrep.ltca.iso`)."""
+        v, pair = d.values, d.pair
+        g1, g2 = pair.flank1.gear, pair.flank2.gear
+        m = v["misalignment"]
+        a0 = g1.r_p + g2.r_p
+        alpha_wt = math.acos(min(1.0, a0 * math.cos(g1.alpha_t) / math.hypot(a0 + m["d_E_mm"], m["d_H_mm"])))
+        driving = g1 if v["load"]["driving"] == "pinion" else g2
+        F_t = 1000.0 * v["load"]["torque_Nm"] / driving.r_p
+        (m1, m2) = materials(v)
+        Z_E = iso.elasticity_factor(m1.E_MPa, m1.poisson, m2.E_MPa, m2.poisson)
+        Z_H = iso.zone_factor(g1.alpha_t, alpha_wt, g1.beta_b)
+        return iso.pitch_point_stress_MPa(F_t, 2.0 * g1.r_p, g1.face_width, g2.n_teeth / g1.n_teeth, Z_H, Z_E)
 
     def active_profile_start(self, d: Design) -> tuple[float, float]:
         """Radii [mm] at which the active profiles begin (pinion, gear): where the mating member's
