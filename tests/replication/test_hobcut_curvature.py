@@ -2,7 +2,7 @@
 with the test settings (study_settings: declared values, config/config.yaml, config/test.yaml).
 
 Every printed value of Tables 4.3/4.4 and every chapter-4 claim keeps the status on file in
-expected_tseng_curvature.csv (with its reason); a value dropping from reproduced fails. Our own
+expected_hobcut_curvature.csv (with its reason); a value dropping from reproduced fails. Our own
 numbers are pinned: the two curvature methods agree (acceptance 1e-7, actually ~1e-11), the four
 tables compute in < 2 s, and regression values of the predicted Tables 4.2/4.5."""
 
@@ -20,14 +20,14 @@ from conftest import study_settings
 
 from gearrep import checks as C
 from gearrep import published
-from gearrep.replications import tseng_curvature as tc
+from gearrep.replications import hobcut_curvature as tc
 from gearrep.settings import SettingError, resolve
 
 #: statuses and values of the studies: run again by the portability passes (tests/README.md)
 pytestmark = pytest.mark.numerics
 
 ROOT = Path(__file__).parents[2]
-EXPECTED = pd.read_csv(Path(__file__).with_name("expected_tseng_curvature.csv"))
+EXPECTED = pd.read_csv(Path(__file__).with_name("expected_hobcut_curvature.csv"))
 CH4_CLAIMS = {
     "000-T4.2-missing",
     "000-T4.5-missing",
@@ -46,7 +46,7 @@ def pub():
 
 @pytest.fixture(scope="module")
 def settings():
-    return study_settings("tseng_curvature")
+    return study_settings("hobcut_curvature")
 
 
 @pytest.fixture(scope="module")
@@ -180,12 +180,12 @@ def test_extras(tables):
 
 def test_validation(design):
     with pytest.raises(SettingError, match="unknown setting"):
-        resolve(tc.SETTINGS, {"bogus": 1}, where="tseng_curvature")
-    with pytest.raises(SettingError, match="tseng_curvature.rc_sweep_mm"):
-        resolve(tc.SETTINGS, {"rc_sweep_mm": [0.0]}, where="tseng_curvature")
-    with pytest.raises(SettingError, match=r"tseng_curvature.ellipse_pairs\[0\]"):
-        resolve(tc.SETTINGS, {"ellipse_pairs": [[110.0]]}, where="tseng_curvature")
-    with pytest.raises(SettingError, match="tseng_curvature.rc_sweep_mm"):
+        resolve(tc.SETTINGS, {"bogus": 1}, where="hobcut_curvature")
+    with pytest.raises(SettingError, match="hobcut_curvature.rc_sweep_mm"):
+        resolve(tc.SETTINGS, {"rc_sweep_mm": [0.0]}, where="hobcut_curvature")
+    with pytest.raises(SettingError, match=r"hobcut_curvature.ellipse_pairs\[0\]"):
+        resolve(tc.SETTINGS, {"ellipse_pairs": [[110.0]]}, where="hobcut_curvature")
+    with pytest.raises(SettingError, match="hobcut_curvature.rc_sweep_mm"):
         tc.validate(resolve(tc.SETTINGS, {"rc_sweep_mm": [110.0, 110.0]}), design)
     with pytest.raises(KeyError, match="no job"):
         tc.run(resolve(tc.SETTINGS), design, jobs=["nope"])
@@ -202,7 +202,7 @@ def test_design_from_published(design):
 
 def test_one_job_per_curvature_table(settings, design):
     """A curvature table is its own job and equals the table of the four computed together."""
-    assert tc.JOBS["curvature_table_4_3"].tables == {"curvature_table_4_3": "tseng/curvature_table_4_3.csv"}
+    assert tc.JOBS["curvature_table_4_3"].tables == {"curvature_table_4_3": "hobcut_curvature/curvature_table_4_3.csv"}
     one = tc.run(settings, design, jobs=["curvature_table_4_3"])
     assert set(one) == {"curvature_table_4_3"}
     pd.testing.assert_frame_equal(one["curvature_table_4_3"], tc.curvature_tables(tc.merged(settings, design))["4.3"])

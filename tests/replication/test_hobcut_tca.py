@@ -1,7 +1,7 @@
 """Replication of seed 000 chapter 5 (TCA of curvilinear-tooth gears, KE tables 5.2-5.9) with the
 test settings (study_settings: declared values, config/config.yaml, config/test.yaml).
 
-Every chapter-5 value and claim keeps the status on file in expected_tseng_tca.csv (with its
+Every chapter-5 value and claim keeps the status on file in expected_hobcut_tca.csv (with its
 reason); our own numbers are pinned by regression values; the 9 x 9 Jacobian is checked against
 central differences; the pair is checked to be a physical one (the convex pinion flank lies
 inside the concave gear flank: no interference away from the contact)."""
@@ -20,8 +20,8 @@ from conftest import study_settings
 
 from gearrep import checks as C
 from gearrep import frames, published, tca
-from gearrep.replications import tseng_tca as T
-from gearrep.replications.tseng_tca import model
+from gearrep.replications import hobcut_tca as T
+from gearrep.replications.hobcut_tca import model
 from gearrep.settings import SettingError, resolve
 from gearrep.solve import newton
 from gearrep.surfaces.hob import PairDesign
@@ -30,7 +30,7 @@ from gearrep.surfaces.hob import PairDesign
 pytestmark = pytest.mark.numerics
 
 ROOT = Path(__file__).parents[2]
-EXPECTED = pd.read_csv(Path(__file__).with_name("expected_tseng_tca.csv"))
+EXPECTED = pd.read_csv(Path(__file__).with_name("expected_hobcut_tca.csv"))
 
 
 @pytest.fixture(scope="module")
@@ -40,7 +40,7 @@ def pub():
 
 @pytest.fixture(scope="module")
 def settings():
-    return study_settings("tseng_tca")
+    return study_settings("hobcut_tca")
 
 
 @pytest.fixture(scope="module")
@@ -75,7 +75,7 @@ def test_every_chapter5_value_and_claim_has_a_record(records, pub):
     assert set(records["id"]) == ids
     assert set(EXPECTED["id"]) == ids
     assert (EXPECTED["reason"].str.len() > 10).all()
-    # no other replication's ids (ch. 4 belongs to tseng_curvature)
+    # no other replication's ids (ch. 4 belongs to hobcut_curvature)
     assert not records["id"].str.startswith(("000-T4", "000-ch4")).any()
 
 
@@ -209,12 +209,12 @@ def test_separation_threshold_setting_is_far_below_the_physical_scales(design):
     """tangency_gap_threshold_mm: at most 1e-4 mm (the finest flank roughness) and a tenth of the
     examples' elastic approach (0.00632 mm), refused naming the key otherwise."""
     assert T.SETTINGS["tangency_gap_threshold_mm"].value == 1e-5
-    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
-        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 2e-4}, where="tseng_tca")
-    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
-        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 0.0}, where="tseng_tca")
+    with pytest.raises(SettingError, match="hobcut_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 2e-4}, where="hobcut_tca")
+    with pytest.raises(SettingError, match="hobcut_tca.tangency_gap_threshold_mm"):
+        resolve(T.SETTINGS, {"tangency_gap_threshold_mm": 0.0}, where="hobcut_tca")
     thin = dataclasses.replace(design, delta_mm=5e-5)  # elastic approach only 5 x the threshold
-    with pytest.raises(SettingError, match="tseng_tca.tangency_gap_threshold_mm"):
+    with pytest.raises(SettingError, match="hobcut_tca.tangency_gap_threshold_mm"):
         T.validate(resolve(T.SETTINGS), thin)
     with pytest.raises(ValueError, match="Z_p_mm"):
         tca.envelope_tangency_near(tca.hobbed_pair(design.gears, 110.0, 113.0), None, float("nan"))
@@ -301,15 +301,15 @@ def test_pair_is_physical_no_interference(gears):
 
 
 def test_bad_input_raises(design):
-    with pytest.raises(SettingError, match="tseng_tca.tol"):
-        resolve(T.SETTINGS, {"tol": 1.0}, where="tseng_tca")
+    with pytest.raises(SettingError, match="hobcut_tca.tol"):
+        resolve(T.SETTINGS, {"tol": 1.0}, where="hobcut_tca")
     with pytest.raises(SettingError, match="unknown setting"):
-        resolve(T.SETTINGS, {"nope": 1}, where="tseng_tca")
-    with pytest.raises(SettingError, match="tseng_tca.phi1_step_deg"):
+        resolve(T.SETTINGS, {"nope": 1}, where="hobcut_tca")
+    with pytest.raises(SettingError, match="hobcut_tca.phi1_step_deg"):
         T.validate(resolve(T.SETTINGS, {"phi1_step_deg": 3.0, "phi1_start_deg": -10.0}), design)
-    with pytest.raises(SettingError, match="tseng_tca.topology_phi1_deg"):
+    with pytest.raises(SettingError, match="hobcut_tca.topology_phi1_deg"):
         T.validate(resolve(T.SETTINGS, {"topology_phi1_deg": [1.0]}), design)
-    with pytest.raises(SettingError, match="tseng_tca.topology_n_dirs"):
+    with pytest.raises(SettingError, match="hobcut_tca.topology_n_dirs"):
         T.validate(resolve(T.SETTINGS, {"topology_n_dirs": 10}), design)
     with pytest.raises(ValueError, match="lack examples"):
         T.validate(resolve(T.SETTINGS), T.Design({"5.1": design.cases["5.1"]}, 0.00632, (20.0, 25.0), design.gears))
@@ -379,7 +379,7 @@ def test_design_carries_the_table_5_1_pair(design, pub):
 def test_one_job_writes_only_its_table(settings, design):
     """Each KE table is its own job and computes only its Example; its table equals the one of
     the run of every job (the workflow writes it alone)."""
-    assert T.JOBS["ke_table_5_4"].tables == {"ke_table_5_4": "tseng/ke_table_5_4.csv"}
+    assert T.JOBS["ke_table_5_4"].tables == {"ke_table_5_4": "hobcut_tca/ke_table_5_4.csv"}
     got = T.run(settings, design, jobs=["ke_table_5_4"])
     assert set(got) == {"ke_table_5_4"}
     assert len({p for j in T.JOBS.values() for p in j.tables.values()}) == len(T.JOBS)
@@ -428,7 +428,7 @@ def test_one_ke_table_is_fast(gears, cases):
     ideal start cached as in the workflow)."""
     import time
 
-    phi1 = T.phi1_grid(study_settings("tseng_tca"))
+    phi1 = T.phi1_grid(study_settings("hobcut_tca"))
     T.compute_case(gears, cases["5.4"], phi1)  # warm (ideal start cached)
     times = []
     for _ in range(3):  # best of 3: the machine is shared, the best run measures the code

@@ -1,10 +1,10 @@
 """Seed 002 (NASA CR-2000-209415, Novikov-Wildhaber gears): the replication with the test settings.
 
-Runs every job of :mod:`gearrep.replications.nasa` once with ``study_settings("nasa")`` (declared
+Runs every job of :mod:`gearrep.replications.litvin2000` once with ``study_settings("litvin2000")`` (declared
 values, config/config.yaml, config/test.yaml) and checks the issue's acceptance items (curvatures
 by two methods agree to 1e-8, aligned TE zero to 1e-6 arcsec), the report's printed equations
 against the library route, regression values of our own numbers, and the expected status of
-every published seed-002 value and claim (tests/replication/expected_nasa.csv, with the reason)."""
+every published seed-002 value and claim (tests/replication/expected_litvin2000.csv, with the reason)."""
 
 from pathlib import Path
 
@@ -14,38 +14,38 @@ import pytest
 from conftest import study_settings
 
 from gearrep import settings as gs
-from gearrep.replications import _face, nasa
+from gearrep.replications import _face, litvin2000
 
 #: statuses and values of the studies: run again by the portability passes (tests/README.md)
 pytestmark = pytest.mark.numerics
 
-EXPECTED = Path(__file__).with_name("expected_nasa.csv")
+EXPECTED = Path(__file__).with_name("expected_litvin2000.csv")
 
 
 @pytest.fixture(scope="module")
 def settings():
-    return study_settings("nasa")
+    return study_settings("litvin2000")
 
 
 @pytest.fixture(scope="module")
 def design(published):
-    return nasa.params_from_published(published)
+    return litvin2000.params_from_published(published)
 
 
 @pytest.fixture(scope="module")
 def tables(settings, design):
-    return nasa.run(settings, design)
+    return litvin2000.run(settings, design)
 
 
 @pytest.fixture(scope="module")
 def records(tables, published):
-    return nasa.checks(tables, published)["checks"]
+    return litvin2000.checks(tables, published)["checks"]
 
 
 def test_face_and_jobs(tables):
-    _face.check_face(nasa)
-    assert set(tables) == set(_face.table_paths(nasa.JOBS))
-    assert all(p == f"nasa/{n}.csv" for n, p in _face.table_paths(nasa.JOBS).items())
+    _face.check_face(litvin2000)
+    assert set(tables) == set(_face.table_paths(litvin2000.JOBS))
+    assert all(p == f"litvin2000/{n}.csv" for n, p in _face.table_paths(litvin2000.JOBS).items())
 
 
 def test_every_published_item_has_its_expected_status(records, published):
@@ -54,7 +54,7 @@ def test_every_published_item_has_its_expected_status(records, published):
         published.claims.loc[published.claims["seed"] == "002", "id"]
     )
     assert set(records["id"]) == ids
-    assert set(exp["id"]) == ids, "expected_nasa.csv must list every seed-002 value and claim"
+    assert set(exp["id"]) == ids, "expected_litvin2000.csv must list every seed-002 value and claim"
     assert exp["reason"].notna().all() and (exp["reason"].str.len() > 5).all()
     got = records.set_index("id")["status"]
     wrong = {i: (s, got[i]) for i, s in zip(exp["id"], exp["status"]) if got[i] != s}
@@ -62,15 +62,17 @@ def test_every_published_item_has_its_expected_status(records, published):
 
 
 def test_check_tables_name_only_published_ids(published):
-    from gearrep.replications.nasa.claims import CLAIMS
-    from gearrep.replications.nasa.values import VALUES
+    from gearrep.replications.litvin2000.claims import CLAIMS
+    from gearrep.replications.litvin2000.values import VALUES
 
     assert set(VALUES) <= set(published.values.loc[published.values["seed"] == "002", "id"])
     assert set(CLAIMS) <= set(published.claims.loc[published.claims["seed"] == "002", "id"])
 
 
 def test_a_missing_table_is_reported_not_computed(tables, published):
-    rec = nasa.checks({k: v for k, v in tables.items() if k != "worm_summary"}, published)["checks"].set_index("id")
+    rec = litvin2000.checks({k: v for k, v in tables.items() if k != "worm_summary"}, published)["checks"].set_index(
+        "id"
+    )
     assert rec.loc["002-S5.5-crowning=worm;misalignment=none-TE_max", "status"] == "not-computed"
     assert "worm_summary" in rec.loc["002-S5.4-lead_correction", "note"]
 
@@ -105,7 +107,7 @@ def test_printed_equations_against_the_library_route(tables):
 def test_step_implied_by_table_6_2_3(tables, design):
     """Eq 2.8.7 inverted gives back each printed d alpha; versions 2-3 imply dE ~ 0.001 in, version 1
     a third of it (the report's version-1 step is not theirs)."""
-    from gearrep.replications.nasa import model
+    from gearrep.replications.litvin2000 import model
     from gearrep.units import DEG
 
     sens = tables["sensitivity"].set_index(["version", "step", "method"])
@@ -257,7 +259,7 @@ def test_worm_ground_pinion(tables):
 
 
 def test_bench_case_runs(settings, design):
-    case = nasa.bench_cases(settings, design)["te_max"]
+    case = litvin2000.bench_cases(settings, design)["te_max"]
     assert case["error_unit"] == "arcsec" and case["error_target"] == pytest.approx(5e-4)
     res = case["run"]({"te_points_per_cycle": 8, "tol": 1e-10})
     assert res == pytest.approx(40.4813, abs=1e-3)
@@ -274,13 +276,13 @@ def test_bench_case_runs(settings, design):
     ],
 )
 def test_settings_are_checked(override, key):
-    with pytest.raises(gs.SettingError, match=f"nasa.{key}"):
-        gs.resolve(nasa.SETTINGS, override, where="nasa")
+    with pytest.raises(gs.SettingError, match=f"litvin2000.{key}"):
+        gs.resolve(litvin2000.SETTINGS, override, where="litvin2000")
 
 
 def test_cross_field_settings_are_validated(settings, design):
     bad = {**settings, "rho_t_sweep_times_Pn": [5.5, 8.0]}  # 5.5 < rho_c P_n = 5.88
-    with pytest.raises(gs.SettingError, match="nasa.rho_t_sweep_times_Pn"):
-        nasa.validate(bad, design)
+    with pytest.raises(gs.SettingError, match="litvin2000.rho_t_sweep_times_Pn"):
+        litvin2000.validate(bad, design)
     with pytest.raises(gs.SettingError, match="rho_t_sweep_times_Pn"):
-        nasa.JOBS["rho_sweep"].compute(bad, design)
+        litvin2000.JOBS["rho_sweep"].compute(bad, design)

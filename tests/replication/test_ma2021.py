@@ -1,7 +1,7 @@
 """Replication of seed 004 (Ma et al. 2021, CATT gears) with the test settings (study_settings:
 declared values, config/config.yaml, config/test.yaml).
 
-Every claim of claims_004.csv keeps the status on file in expected_catt.csv (with its reason), and
+Every claim of claims_004.csv keeps the status on file in expected_ma2021.csv (with its reason), and
 our own numbers are pinned: the pitch-point ellipse against the closed form (acceptance 1e-6,
 actually ~1e-13), the TCA path (middle section, zero TE), and regression values along the path."""
 
@@ -18,13 +18,13 @@ from conftest import study_settings
 
 from gearrep import checks as C
 from gearrep import settings as S
-from gearrep.replications import catt
+from gearrep.replications import ma2021
 
 #: statuses and values of the studies: run again by the portability passes (tests/README.md)
 pytestmark = pytest.mark.numerics
 
 ROOT = Path(__file__).parents[2]
-EXPECTED = pd.read_csv(Path(__file__).with_name("expected_catt.csv"))
+EXPECTED = pd.read_csv(Path(__file__).with_name("expected_ma2021.csv"))
 
 
 @pytest.fixture(scope="module")
@@ -34,7 +34,7 @@ def pub(published):
 
 @pytest.fixture(scope="module")
 def design(pub):
-    return catt.params_from_published(pub)
+    return ma2021.params_from_published(pub)
 
 
 def _through_csv(tables):
@@ -44,12 +44,12 @@ def _through_csv(tables):
 
 @pytest.fixture(scope="module")
 def tables(design):
-    return _through_csv(catt.run(study_settings("catt"), design))
+    return _through_csv(ma2021.run(study_settings("ma2021"), design))
 
 
 @pytest.fixture(scope="module")
 def outputs(tables, pub):
-    return catt.checks(tables, pub)
+    return ma2021.checks(tables, pub)
 
 
 @pytest.fixture(scope="module")
@@ -132,14 +132,14 @@ def test_verdicts_reported_for_every_reading(outputs):
     per = v.groupby("id").size()
     assert (per == 4).all()
     assert v.groupby("id")["primary"].sum().eq(1).all()
-    assert set(catt.CHECK_OUTPUTS) == set(outputs)
+    assert set(ma2021.CHECK_OUTPUTS) == set(outputs)
 
 
 def test_every_job_writes_only_its_tables(tables):
     """One job per table: each job's tables are the declared ones (run_jobs checks it) and
     together they are every table the checks and figures read."""
-    assert set(tables) == {n for j in catt.JOBS.values() for n in j.tables}
-    assert {p for j in catt.JOBS.values() for p in j.tables.values()} == {f"catt/{n}.csv" for n in tables}
+    assert set(tables) == {n for j in ma2021.JOBS.values() for n in j.tables}
+    assert {p for j in ma2021.JOBS.values() for p in j.tables.values()} == {f"ma2021/{n}.csv" for n in tables}
 
 
 def _with_param(pub, example, parameter, value):
@@ -150,31 +150,31 @@ def _with_param(pub, example, parameter, value):
 
 def test_bad_design_data_and_settings_are_refused(pub, design):
     with pytest.raises(ValueError, match="elastic_approach"):
-        catt.params_from_published(_with_param(pub, "figs12-15_common", "elastic_approach", -1.0))
+        ma2021.params_from_published(_with_param(pub, "figs12-15_common", "elastic_approach", -1.0))
     with pytest.raises(ValueError, match="tooth_line_radius"):
-        catt.params_from_published(_with_param(pub, "sec4_3d_model", "tooth_line_radius", 10.0))
-    with pytest.raises(S.SettingError, match="catt.bogus"):
-        S.resolve(catt.SETTINGS, {"bogus": 1}, where="catt")
-    with pytest.raises(S.SettingError, match="catt.maxiter"):
-        S.resolve(catt.SETTINGS, {"maxiter": 0}, where="catt")
-    good = study_settings("catt")
-    catt.validate(good, design)
+        ma2021.params_from_published(_with_param(pub, "sec4_3d_model", "tooth_line_radius", 10.0))
+    with pytest.raises(S.SettingError, match="ma2021.bogus"):
+        S.resolve(ma2021.SETTINGS, {"bogus": 1}, where="ma2021")
+    with pytest.raises(S.SettingError, match="ma2021.maxiter"):
+        S.resolve(ma2021.SETTINGS, {"maxiter": 0}, where="ma2021")
+    good = study_settings("ma2021")
+    ma2021.validate(good, design)
     bad = [
-        ({"section_check": {**good["section_check"], "design": "nope"}}, "catt.section_check.design"),
-        ({"gap_check": {**good["gap_check"], "design": "nope"}}, "catt.gap_check.design"),
-        ({"thickness": {**good["thickness"], "sections_mm": [0.0, 150.0]}}, "catt.thickness.sections_mm"),
-        ({"near_top_eval_deg": 20.0}, "catt.near_top_eval_deg"),
-        ({"near_top_deg": 40.0}, "catt.near_top_deg"),
+        ({"section_check": {**good["section_check"], "design": "nope"}}, "ma2021.section_check.design"),
+        ({"gap_check": {**good["gap_check"], "design": "nope"}}, "ma2021.gap_check.design"),
+        ({"thickness": {**good["thickness"], "sections_mm": [0.0, 150.0]}}, "ma2021.thickness.sections_mm"),
+        ({"near_top_eval_deg": 20.0}, "ma2021.near_top_eval_deg"),
+        ({"near_top_deg": 40.0}, "ma2021.near_top_deg"),
     ]
     for change, key in bad:
         with pytest.raises(S.SettingError, match=key):
-            catt.run({**good, **change}, design, jobs=["settings"])
+            ma2021.run({**good, **change}, design, jobs=["settings"])
 
 
 def test_bench_cases_contract(design):
     """bench_cases follows workflow/scripts/bench_replication.py: knob settings, a reference, an error
     that is 0 for the reference itself and small for the configured setting."""
-    cases = catt.bench_cases(study_settings("catt"), design)
+    cases = ma2021.bench_cases(study_settings("ma2021"), design)
     assert set(cases) == {"tca_S", "truncation"}
     for c in cases.values():
         assert {"run", "settings", "reference", "error", "error_unit", "error_target", "current"} <= set(c)
@@ -191,8 +191,8 @@ def test_workflow_setting_keeps_expected_statuses(pub, design):
     """The settings of config/config.yaml (what the workflow runs) give the statuses on file too."""
     import yaml
 
-    cfg = (yaml.safe_load((ROOT / "config" / "config.yaml").read_text()) or {}).get("catt")
-    t = _through_csv(catt.run(S.resolve(catt.SETTINGS, cfg, where="catt"), design))
-    got = C.validate_checks(catt.checks(t, pub)["checks"]).set_index("id")["status"]
+    cfg = (yaml.safe_load((ROOT / "config" / "config.yaml").read_text()) or {}).get("ma2021")
+    t = _through_csv(ma2021.run(S.resolve(ma2021.SETTINGS, cfg, where="ma2021"), design))
+    got = C.validate_checks(ma2021.checks(t, pub)["checks"]).set_index("id")["status"]
     exp = EXPECTED.set_index("id")["status"]
     assert got.sort_index().equals(exp.sort_index()), (got[got != exp.reindex(got.index)]).to_dict()

@@ -1,7 +1,7 @@
 """Seed 003 (thesis, conventional vs reduced TCA): the replication in its test setting.
 
-Runs every job of :mod:`gearrep.replications.thesis` once with the test settings
-(``study_settings("thesis")``: declared values, config/config.yaml, then config/test.yaml: same
+Runs every job of :mod:`gearrep.replications.temirkhan2023` once with the test settings
+(``study_settings("temirkhan2023")``: declared values, config/config.yaml, then config/test.yaml: same
 protocol, fewer starts) and checks: the interface of convergence.csv, the verified references
 against the thesis's printed numbers, the 1e-9 mm / 1e-10 rad agreement of the two formulations
 at every converged point, our own numbers (regression), the design data read from
@@ -19,9 +19,9 @@ from conftest import study_settings
 
 from gearrep import checks as ck
 from gearrep import settings as st
-from gearrep.replications import thesis as T
-from gearrep.replications.thesis import facts as TC
-from gearrep.replications.thesis.te import TE_READINGS
+from gearrep.replications import temirkhan2023 as T
+from gearrep.replications.temirkhan2023 import checks as TC
+from gearrep.replications.temirkhan2023.te import TE_READINGS
 from gearrep.tca import draw_starts
 
 #: statuses and values of the studies: run again by the portability passes (tests/README.md)
@@ -30,7 +30,7 @@ pytestmark = pytest.mark.numerics
 
 @pytest.fixture(scope="module")
 def settings():
-    return study_settings("thesis")
+    return study_settings("temirkhan2023")
 
 
 @pytest.fixture(scope="module")
@@ -92,19 +92,19 @@ def test_protocol_is_stated(tables):
 
 def test_settings_are_validated(settings, design):
     def resolve(**kw):
-        return st.resolve(T.SETTINGS, kw, where="thesis")
+        return st.resolve(T.SETTINGS, kw, where="temirkhan2023")
 
-    with pytest.raises(st.SettingError, match="thesis.n_starts"):
+    with pytest.raises(st.SettingError, match="temirkhan2023.n_starts"):
         resolve(n_starts=0)
     with pytest.raises(st.SettingError, match="did you mean 'n_starts'"):
         resolve(n_start=10)
-    with pytest.raises(st.SettingError, match="thesis.tol"):
+    with pytest.raises(st.SettingError, match="temirkhan2023.tol"):
         resolve(tol=1e-3)
-    with pytest.raises(st.SettingError, match=r"thesis.phi2_windows_rad\[0\]"):
+    with pytest.raises(st.SettingError, match=r"temirkhan2023.phi2_windows_rad\[0\]"):
         resolve(phi2_windows_rad=[7.0])
-    with pytest.raises(st.SettingError, match="thesis.te_pivot"):
+    with pytest.raises(st.SettingError, match="temirkhan2023.te_pivot"):
         resolve(te_pivot="tip")
-    with pytest.raises(st.SettingError, match="thesis.crowning_rows"):
+    with pytest.raises(st.SettingError, match="temirkhan2023.crowning_rows"):
         T.validate(resolve(crowning_rows=[2, 3]), design)
     T.validate(settings, design)
 
@@ -119,7 +119,7 @@ def test_run_is_deterministic_in_its_starts(settings, design):
 def test_jobs_write_their_declared_tables(tables):
     """Every job's tables are returned by run (run_jobs checks each job returns exactly its own)."""
     assert set(tables) == {n for job in T.JOBS.values() for n in job.tables}
-    assert T.JOBS["convergence"].tables["convergence"] == "thesis/convergence.csv"
+    assert T.JOBS["convergence"].tables["convergence"] == "temirkhan2023/convergence.csv"
 
 
 @reads_printed_design
@@ -377,7 +377,7 @@ def test_every_seed003_item_has_a_check(check_records, published):
     assert check_records.loc[check_records["status"] == "deviates", "note"].str.len().gt(20).all()
 
 
-EXPECTED = Path(__file__).with_name("expected_thesis.csv")
+EXPECTED = Path(__file__).with_name("expected_temirkhan2023.csv")
 
 
 def _expected():
@@ -473,8 +473,8 @@ def test_printed_hertz_eq19_24_equals_library_route(design, ang_deg, rtol):
     directions) along the path of the crowned 40/37 pair: equal aligned; under 0.05 deg out-of-plane
     the principal directions turn by ~1e-3 rad, a second-order difference."""
     from gearrep.curvature import with_opposite_normal
-    from gearrep.replications.thesis.model import printed_hertz
-    from gearrep.replications.thesis.te import engagement_contacts
+    from gearrep.replications.temirkhan2023.model import printed_hertz
+    from gearrep.replications.temirkhan2023.te import engagement_contacts
     from gearrep.tca import contact_curvatures, contact_hertz
     from gearrep.units import DEG
 
@@ -515,8 +515,10 @@ def test_expected_statuses_workflow_setting(published, design):
     """The workflow settings (declared values with config/config.yaml) give the statuses of column ``status``."""
     import yaml
 
-    cfg = (yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text()) or {}).get("thesis")
-    s = st.resolve(T.SETTINGS, cfg, where="thesis")
+    cfg = (yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text()) or {}).get(
+        "temirkhan2023"
+    )
+    s = st.resolve(T.SETTINGS, cfg, where="temirkhan2023")
     rec = T.checks(T.run(s, design), published)["checks"].set_index("id")["status"]
     e = _expected()
     diff = {i: (e.loc[i, "status"], rec[i]) for i in e.index if rec[i] != e.loc[i, "status"]}
@@ -550,8 +552,8 @@ def test_thesis_frame_round_trips(design):
 def test_path_guess_and_common_angle_tables(tables):
     """The two trend studies: the sec 6.1 path study (offsets 0.03 -> 0.3 rad, both signs,
     aligned and misaligned) and the helical/spur shift at a common angle and crown."""
-    from gearrep.replications.thesis.convergence import OUTCOMES
-    from gearrep.replications.thesis.path_guess import OFFSET_FIRST_RAD, OFFSET_LAST_RAD
+    from gearrep.replications.temirkhan2023.convergence import OUTCOMES
+    from gearrep.replications.temirkhan2023.path_guess import OFFSET_FIRST_RAD, OFFSET_LAST_RAD
 
     pg = tables["path_guess"]
     assert set(pg["outcome"]) <= set(OUTCOMES) and pg["case"].nunique() == 2
@@ -625,7 +627,7 @@ def test_bevel_pitch_point_and_loaded_tangency(design):
     the spiral pair under dH = 0.04 (sec 5.2) a start grid reaches, at some angles, a second
     tangency of much lower TE that the flanks pass through; the TE grid keeps the loaded one, so
     the cycle's peak-to-peak does not depend on the grid density."""
-    from gearrep.replications.thesis import bevel as B
+    from gearrep.replications.temirkhan2023 import bevel as B
     from gearrep.tca import BevelMisalignment
     from gearrep.units import ARCSEC, DEG
 

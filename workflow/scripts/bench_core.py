@@ -80,12 +80,12 @@ def novikov_case(rng, n, pinion="rack"):
     rack-generated pair the offset solved at one angle (the study's starts), for the ground pinions,
     whose aligned start drifts from the contact along the path, the offset quadratic in the angle
     through three solved ones (order=2), and with the study's solver settings."""
-    from gearrep.replications.nasa import geometry as ng
-    from gearrep.replications.nasa.bench import crowned_pair
+    from gearrep.replications.litvin2000 import geometry as ng
+    from gearrep.replications.litvin2000.bench import crowned_pair
     from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import offset_start
 
-    s, d = study("nasa")
+    s, d = study("litvin2000")
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
     if pinion == "worm":
         pair = ng.make_worm_pair(d, s, misalignment=mis)
@@ -103,12 +103,12 @@ def novikov_case(rng, n, pinion="rack"):
 
 def catt_case(rng, n):
     """Seed 004: the sec. 4 CATT pair, primary flanks, over its real path, the study's starts."""
-    from gearrep.replications.catt.assembly import PRIMARY
-    from gearrep.replications.catt.bench import BENCH_DESIGN
-    from gearrep.replications.catt.design import prm
+    from gearrep.replications.ma2021.assembly import PRIMARY
+    from gearrep.replications.ma2021.bench import BENCH_DESIGN
+    from gearrep.replications.ma2021.design import prm
     from gearrep.surfaces import catt as ca
 
-    s, d = study("catt")
+    s, d = study("ma2021")
     q = prm(s, d)
     mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
@@ -123,9 +123,9 @@ def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
     they start on is in contact (spiral: from half an angular pitch before phi1 = -pi/(2 N1), the
     aligned pair's pitch-cone contact, to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
     side of it)."""
-    from gearrep.replications.thesis.bevel_convergence import convergence_pair
+    from gearrep.replications.temirkhan2023.bevel_convergence import convergence_pair
 
-    s, d = study("thesis")
+    s, d = study("temirkhan2023")
     pair = convergence_pair(s, d, case)
     p = 2 * np.pi / pair.n1
     if case.startswith("spiral"):
@@ -138,9 +138,9 @@ def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
 def helical_case(rng, n, formulation):
     """Seed 003 Table 9: the profile-crowned helical pair 25/77 under the study's in-plane
     misalignment, from the default starts, over 0.8 of an angular pitch around phi1 = -pi/(2 N1); the thesis's solver tolerance."""
-    from gearrep.replications.thesis.design import design_pair
+    from gearrep.replications.temirkhan2023.design import design_pair
 
-    s, d = study("thesis")
+    s, d = study("temirkhan2023")
     pair = design_pair(d, "helical_25_77", Misalignment(d_gamma_in=float(d.helical_misalignment_arcmin) * ARCMIN))
     # the angles at which the tooth pair the default start is on meets inside both flanks
     grid = -np.pi / (2 * pair.n1) + np.linspace(-1.0, 1.0, 401) * 2 * np.pi / pair.n1
@@ -154,11 +154,11 @@ def hobbed_case(rng, n):
     the 9-unknown envelope-pair TCA (gearrep.tca.solve_envelope_points) at angles over the
     study's phi1' grid, each from the first-order path predictor off the nearest point of the
     study's path on that grid (continuation and path not timed)."""
-    from gearrep.replications.tseng_tca import TABLE_EXAMPLE
-    from gearrep.replications.tseng_tca.studies import assembly_of, phi1_grid
+    from gearrep.replications.hobcut_tca import TABLE_EXAMPLE
+    from gearrep.replications.hobcut_tca.studies import assembly_of, phi1_grid
     from gearrep.tca import hobbed_continue_to, predict_envelope_contact, solve_envelope_points, trace_envelope_path
 
-    s, d = study("tseng_tca")
+    s, d = study("hobcut_tca")
     case = d.cases[TABLE_EXAMPLE["5.4"]]
     tol = s["tol"]
     pair, s0 = hobbed_continue_to(

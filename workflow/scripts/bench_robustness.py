@@ -43,7 +43,7 @@ def element_seconds() -> float:
 
 def cases():
     """Every family's robustness cases with the settings of its study."""
-    for name in ("thesis", "nasa", "catt", "tseng_tca"):
+    for name in ("temirkhan2023", "litvin2000", "ma2021", "hobcut_tca"):
         s, d = study(name)
         for case in import_module(f"gearrep.replications.{name}.bench").robustness_cases(s, d):
             yield s, case

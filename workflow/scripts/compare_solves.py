@@ -81,10 +81,10 @@ def readme_cases(res):
 
 def thesis_cases(res):
     """Table 10's random starts over both flanks (divergent, singular and off-flank rows too)."""
-    from gearrep.replications.thesis import convergence as tc
+    from gearrep.replications.temirkhan2023 import convergence as tc
     from gearrep.tca import CONVENTIONAL_VARIANTS, REDUCED_VARIANTS, solve_variant
 
-    s, d = study("thesis")
+    s, d = study("temirkhan2023")
     tp, _, ref, st = tc.table10_starts(s, d)
     st = st[:2000]
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
@@ -101,16 +101,16 @@ def thesis_cases(res):
 
 def novikov_catt_cases(res):
     """Seed 002's profile-crowned Novikov-Wildhaber pair and seed 004's CATT pair (as the bench)."""
-    from gearrep.replications.catt.assembly import PRIMARY
-    from gearrep.replications.catt.bench import BENCH_DESIGN
-    from gearrep.replications.catt.design import prm
-    from gearrep.replications.nasa import geometry as ng
+    from gearrep.replications.litvin2000 import geometry as ng
+    from gearrep.replications.ma2021.assembly import PRIMARY
+    from gearrep.replications.ma2021.bench import BENCH_DESIGN
+    from gearrep.replications.ma2021.design import prm
     from gearrep.surfaces import catt as ca
     from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import Misalignment
     from gearrep.units import ARCMIN
 
-    s, d = study("nasa")
+    s, d = study("litvin2000")
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
     Pn, an, beta, lead = ng.basics(d)
     rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
@@ -120,7 +120,7 @@ def novikov_catt_cases(res):
     phi = rng.uniform(-0.5 * per, 0.5 * per, 200)
     kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
     cases(res, "novikov", pair, phi, aligned_start(pair, phi), "conventional", kw, 20)
-    s, d = study("catt")
+    s, d = study("ma2021")
     q = prm(s, d)
     mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)

@@ -1,7 +1,7 @@
 """Seed 000 ch. 4: figures of the curvature tables (computed lines, printed Tables 4.3/4.4 as
 markers), curvature across the face and against R_c (Snakemake script of the generic figures
 rule). Inputs: ``tables`` (every table of the study), ``published`` (the study's CHECK_DATA
-files); one output per key of tseng_curvature.FIGURES."""
+files); one output per key of hobcut_curvature.FIGURES."""
 
 from pathlib import Path
 

@@ -1,9 +1,9 @@
-"""Seed 000 ch. 5 (tseng_tca): figures (Snakemake script of the generic figures rule).
+"""Seed 000 ch. 5 (hobcut_tca): figures (Snakemake script of the generic figures rule).
 
 KE against phi1' for the five surviving tables (computed lines, printed values as markers),
 the contact position Z_p along the path, the KE of the ideal pair against the hob pitch radius
 (Fig 5.5) and a/b against R_c (Fig 5.7). Inputs: ``tables`` (every table of the study),
-``published`` (the study's CHECK_DATA files); one output per key of tseng_tca.FIGURES."""
+``published`` (the study's CHECK_DATA files); one output per key of hobcut_tca.FIGURES."""
 
 from pathlib import Path
 

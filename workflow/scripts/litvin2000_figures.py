@@ -1,4 +1,4 @@
-"""Seed 002 (NASA report): figures from results/nasa/ (Snakemake script).
+"""Seed 002 (NASA report): figures from results/litvin2000/ (Snakemake script).
 
 Computed values are lines, published values open markers (gearrep.plotting):
 TE functions of the profile-crowned pair under 3 arcmin errors (figs 2.8.3-2.8.4, 5.5.1-2,
@@ -6,8 +6,8 @@ TE functions of the profile-crowned pair under 3 arcmin errors (figs 2.8.3-2.8.4
 sensitivity to dE (Table 6.2.3); contact paths on the pinion (fig. 1.10).
 
 Inputs (generic figures rule): ``snakemake.input.tables`` (every table of the study, named by
-file stem), ``snakemake.input.published`` (the CHECK_DATA files of gearrep.replications.nasa;
-the values files are read); outputs ``snakemake.output.<key>`` for each key of nasa.FIGURES."""
+file stem), ``snakemake.input.published`` (the CHECK_DATA files of gearrep.replications.litvin2000;
+the values files are read); outputs ``snakemake.output.<key>`` for each key of litvin2000.FIGURES."""
 
 from pathlib import Path
 
@@ -144,4 +144,4 @@ plotting.label_axes(
 plotting.finish(ax)
 save_figure(fig, out.paths)
 Path(smk.log[0]).parent.mkdir(parents=True, exist_ok=True)
-Path(smk.log[0]).write_text("nasa figures: " + ", ".join(str(f) for f in out) + "\n")
+Path(smk.log[0]).write_text("litvin2000 figures: " + ", ".join(str(f) for f in out) + "\n")

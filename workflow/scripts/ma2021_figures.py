@@ -1,5 +1,5 @@
 """Seed 004 (CATT gears): figures like the paper's Figs 12-15 from results/catt/ (Snakemake script:
-input.tables = every table of the study, output.<key> for each key of catt.FIGURES).
+input.tables = every table of the study, output.<key> for each key of ma2021.FIGURES).
 
 The paper prints no numbers for Figs 12-15 (only curves), so there are no published markers:
 computed S = pi a b (eq 27) as solid lines, the ellipse truncated by the flank edges as dashed

@@ -1,4 +1,4 @@
-"""Design data shared by the two studies of seed 000 (``tseng_curvature``, ch. 4, and ``tseng_tca``,
+"""Design data shared by the two studies of seed 000 (``hobcut_curvature``, ch. 4, and ``hobcut_tca``,
 ch. 5): the pinion, gear and ZA hob of Table 5.1, read and checked once from the published
 parameters (``params_000_table5_1.csv``); the hob is built by :func:`gearrep.surfaces.hob.za_hob`."""
 

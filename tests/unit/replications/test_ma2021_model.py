@@ -1,4 +1,4 @@
-"""Seed 004's printed relative-curvature equations (gearrep.replications.catt.model) against the
+"""Seed 004's printed relative-curvature equations (gearrep.replications.ma2021.model) against the
 library routes the replication computes with (gearrep.ellipse, gearrep.curvature)."""
 
 from __future__ import annotations
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from gearrep import curvature, ellipse
-from gearrep.replications.catt import model
+from gearrep.replications.ma2021 import model
 from gearrep.surfaces.catt import CATTFlank, CATTGearData
 
 
@@ -80,7 +80,7 @@ def test_the_cycle_index_looks_each_design_and_curve_up_once():
     handed out again (the same frame), per reading of on_path; designs likewise."""
     import pandas as pd
 
-    from gearrep.replications.catt import sweeps
+    from gearrep.replications.ma2021 import sweeps
 
     rows = []
     for design, module in (("a", 4.0), ("b", 8.0)):

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from conftest import copy_workflow, tool_env
 
-TARGET = "results/thesis/convergence.csv"  # one job computing for many seconds
+TARGET = "results/temirkhan2023/convergence.csv"  # one job computing for many seconds
 RULE = "thesis_convergence"
 
 

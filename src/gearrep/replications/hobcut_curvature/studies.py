@@ -1,12 +1,12 @@
 """What seed 000 ch. 4 computes, one function per job. Each takes ``p``, the resolved settings
-merged with the design (:func:`gearrep.replications.tseng_curvature.merged`), and computes only
+merged with the design (:func:`gearrep.replications.hobcut_curvature.merged`), and computes only
 its table; the l_1 grid (one Newton solve for the tip row) is recomputed by each job.
 
 Model: :mod:`gearrep.surfaces.hob` (hob eq 4.40-4.48, generation set-up reconstructed as in
 docs/reading-notes.md 000-C, seed 000 ch. 2-3 being missing). Curvatures two ways at every tabulated point:
 (a) direct differential geometry of the generated surface r(l, psi); (b) the chapter's
 two-parameter method (eq 4.33 with eq 4.37-4.39 sign-corrected, 4.24-4.26;
-:mod:`gearrep.curvature_relations`). The findings are told in ``notebooks/tseng_curvature.ipynb``.
+:mod:`gearrep.curvature_relations`). The findings are told in ``notebooks/hobcut_curvature.ipynb``.
 """
 
 from __future__ import annotations
@@ -18,8 +18,11 @@ from ...curvature import principal_curvatures
 from ...ellipse import elastic_ellipse_from_relative
 from ...solve import status_names
 from ...surfaces.hob import GeneratedGear, ZAHob, za_hob
+from .._face import Job
+from .design import merged
 
 __all__ = [
+    "JOBS",
     "TABLES",
     "TABLE_COLUMNS",
     "hob",
@@ -51,7 +54,7 @@ TABLE_COLUMNS = ["l1_mm", "k_s_per_mm", "e_s_x", "e_s_y", "e_s_z", "k_q_per_mm",
 
 def hob(p: dict, variant: str = "axial", pressure_angle_deg: float | None = None) -> ZAHob:
     """The Table 5.1 hob of the design ``p`` (or at another pressure angle): one route with
-    tseng_tca (:func:`gearrep.surfaces.hob.za_hob`)."""
+    hobcut_tca (:func:`gearrep.surfaces.hob.za_hob`)."""
     a = p["pressure_angle_deg"] if pressure_angle_deg is None else pressure_angle_deg
     return za_hob(p["module_mm"], a, p["hob_pitch_radius_mm"], variant)
 
@@ -371,7 +374,7 @@ def ellipses(p: dict) -> pd.DataFrame:
     mid-face for the ideal pair: pinion (N = n_teeth) convex Sigma_2R and gear (N = ellipse_n_gear)
     concave flank, both from the same hob; at mid-face both principal frames share e_s || Z_f, so
     the relative curvatures are k_q(1) + |k_q(2)|-type sums (profile) and differences (trace).
-    Informative only: Fig 5.7's contact point and R_cg are not stated (claims owned by tseng_tca)."""
+    Informative only: Fig 5.7's contact point and R_cg are not stated (claims owned by hobcut_tca)."""
     rows = []
     for a_deg in p["ellipse_pressure_angles_deg"]:
         h = hob(p, pressure_angle_deg=a_deg)
@@ -471,3 +474,49 @@ def conventions(p: dict) -> pd.DataFrame:
             },
         ]
     )
+
+
+def _job(fn, name):
+    def compute(settings, design):
+        return {name: fn(merged(settings, design))}
+
+    compute.__name__ = compute.__qualname__ = name
+    compute.__doc__ = fn.__doc__
+    return compute
+
+
+def _table_job(tab, name):
+    def compute(settings, design):
+        return {name: curvature_table(merged(settings, design), tab)}
+
+    compute.__name__ = compute.__qualname__ = name
+    return compute
+
+
+_TABLE_NAMES = {f"curvature_table_{t.replace('.', '_')}": t for t in TABLES}
+
+
+JOBS = {
+    **{
+        name: Job(_table_job(tab, name), {name: f"hobcut_curvature/{name}.csv"}, f"Table {tab} alone")
+        for name, tab in _TABLE_NAMES.items()
+    },
+    **{
+        name: Job(
+            _job(fn, name),
+            {name: f"hobcut_curvature/{name}.csv"},
+            fn.__doc__,
+            priority,
+        )
+        for name, fn, priority in (  # priority: about the seconds of the long jobs (.._face.Job)
+            ("curvature_detail", detail, 4),
+            ("conventions", conventions, 4),
+            ("assignment", assignment, 0),
+            ("variants", variants, 0),
+            ("face", face, 0),
+            ("rc_sweep", rc_sweep, 0),
+            ("undercut", undercut, 2),
+            ("ellipses", ellipses, 3),
+        )
+    },
+}

@@ -1,13 +1,23 @@
-"""The hob-cut curvilinear pair in the start-robustness table (workflow/scripts/bench_robustness.py)."""
+"""Time-vs-error cases of seed 000 ch. 5 (workflow/scripts/bench_replication.py) and the hob-cut
+curvilinear pair in the start-robustness table (workflow/scripts/bench_robustness.py)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from ...tca import HobbedAssembly, hob_pitch_l, hobbed_continue_to, predict_envelope_contact
-from .studies import TABLE_EXAMPLE, assembly_of, phi1_grid
+from ...tca import (
+    HobbedAssembly,
+    clear_hobbed_start_cache,
+    hob_pitch_l,
+    hobbed_continue_to,
+    ke_table,
+    predict_envelope_contact,
+    require_converged,
+)
+from .design import TABLE_EXAMPLE, Design, phi1_grid, validate
+from .studies import assembly_of, compute_case
 
-__all__ = ["robustness_cases"]
+__all__ = ["bench_cases", "robustness_cases"]
 
 
 def robustness_cases(settings: dict, design) -> list:
@@ -51,3 +61,36 @@ def robustness_cases(settings: dict, design) -> list:
             )
         )
     return out
+
+
+def bench_cases(settings: dict, design: Design) -> dict[str, dict]:
+    """Cases for workflow/scripts/bench_replication.py: one KE table (the assembly of Table 5.4,
+    Example 5.4, 11 positions), computed cold (ideal start not cached), over the solver tolerance
+    and the number of continuation steps. Errors against the most accurate setting: max |KE -
+    KE_ref| [arcsec] and max |Z_p - Z_p,ref| [mm]; targets a tenth of the printed half-unit."""
+    validate(settings, design)
+    phi1 = phi1_grid(settings)
+    case = design.cases[TABLE_EXAMPLE["5.4"]]
+    grid = [{"tol": t, "continuation_steps": s} for t in (1e-6, 1e-8, 1e-10, 1e-11, 1e-12) for s in (1, 2, 4)]
+    reference = {"tol": 1e-13, "continuation_steps": 8}
+
+    def run_one(setting):
+        clear_hobbed_start_cache()
+        pair, sol = compute_case(design.gears, case, phi1, tol=setting["tol"], steps=setting["continuation_steps"])
+        require_converged(sol, f"bench {setting}")
+        return ke_table(sol, pair.ratio)
+
+    current = {"tol": settings["tol"], "continuation_steps": settings["continuation_steps"]}
+    common = {"run": run_one, "settings": grid, "reference": reference, "error_target": 5e-5, "current": current}
+    return {
+        "ke_table_5_4_KE": {
+            **common,
+            "error": lambda r, ref: float(np.max(np.abs(r["KE_arcsec"] - ref["KE_arcsec"]))),
+            "error_unit": "arcsec",
+        },
+        "ke_table_5_4_Zp": {
+            **common,
+            "error": lambda r, ref: float(np.max(np.abs(r["Z_p_mm"] - ref["Z_p_mm"]))),
+            "error_unit": "mm",
+        },
+    }

@@ -10,7 +10,7 @@ from ... import checks as _checks
 from ...published import parse_row
 from .claims import claim_records, midface_verdict, row_at
 
-__all__ = ["check_records", "SURVIVING", "CHECK_PREFIXES"]
+__all__ = ["checks", "check_records", "SURVIVING", "CHECK_PREFIXES"]
 
 _QUANTITY_COLUMN = {
     "phi2": "phi2_deg",
@@ -197,3 +197,8 @@ def check_records(tables: dict, published) -> pd.DataFrame:
     if missing:
         raise RuntimeError(f"published chapter-5 ids without a check record: {missing[:10]}")
     return out
+
+
+def checks(tables: dict, published) -> dict:
+    """{"checks": records of every chapter-5 value and claim} (:func:`.checks.check_records`)."""
+    return {"checks": check_records(tables, published)}

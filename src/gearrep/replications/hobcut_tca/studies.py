@@ -1,17 +1,17 @@
 """What seed 000 ch. 5 computes, one function per job (each callable alone with the resolved
-settings and the design of :func:`gearrep.replications.tseng_tca.params_from_published`).
+settings and the design of :func:`gearrep.replications.hobcut_tca.params_from_published`).
 
 A job that needs a solved Example (sensitivity, contact ratio, ellipses, topology) solves it
 itself: one KE path costs < 0.5 s, and solving it again gives the same numbers bit for bit."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 import pandas as pd
 
-from ... import meshing, tca
+from ... import meshing
 from ...surfaces.hob import PairDesign
 from ...tca import (
     EnvelopeContactPath,
@@ -32,12 +32,12 @@ from ...tca import (
     trace_envelope_path,
 )
 from ...units import ARCSEC
+from .._face import Job
+from .design import TABLE_EXAMPLE, Design, phi1_grid
 from .ellipses import contact_ellipses, pitch_point_ratio, topology_pattern
 
 __all__ = [
-    "Design",
-    "TABLE_EXAMPLE",
-    "phi1_grid",
+    "JOBS",
     "assembly_of",
     "compute_case",
     "solved",
@@ -52,37 +52,8 @@ __all__ = [
     "SENSITIVITY_TABLES",
 ]
 
-#: KE table (seed 000 Table 5.x) -> the Example (sec 5.5) whose assembly it lists
-TABLE_EXAMPLE = {
-    "5.2": "5.1",
-    "5.3": "5.2",
-    "5.4": "5.4",
-    "5.5": "5.5",
-    "5.6": "5.6",
-    "5.7": "5.7",
-    "5.8": "5.8",
-    "5.9": "5.9",
-}
 #: the tables whose sensitivity to R_c is reported (the surviving ones)
 SENSITIVITY_TABLES = ("5.3", "5.4", "5.7", "5.8", "5.9")
-
-
-@dataclass(frozen=True)
-class Design:
-    """Published design data of ch. 5: ``cases`` {example: {R_cp_mm, R_cg_mm, dgamma_h_arcmin,
-    dgamma_v_arcmin, dC_mm, dZ_mm}}, the paint thickness ``delta_mm`` (sec 5.4.2), the Fig 5.7
-    pressure angles ``ellipse_alpha_deg`` and the Table 5.1 pinion, gear and hob ``gears``."""
-
-    cases: dict
-    delta_mm: float
-    ellipse_alpha_deg: tuple
-    gears: PairDesign
-
-
-def phi1_grid(settings: dict) -> np.ndarray:
-    """phi1' [rad] of the settings' grid, phi1_start_deg to phi1_end_deg in phi1_step_deg steps
-    (:func:`gearrep.tca.hobbed_phi1_grid`; 0 exactly on it)."""
-    return tca.hobbed_phi1_grid(settings["phi1_start_deg"], settings["phi1_end_deg"], settings["phi1_step_deg"])
 
 
 def assembly_of(case: dict) -> HobbedAssembly:
@@ -283,3 +254,57 @@ def topology_example_5_3(settings: dict, design: Design) -> pd.DataFrame:
             raise RuntimeError(f"topology pattern at phi1' = {a} deg: separation solve did not converge")
         topo.append(t)
     return pd.concat(topo, ignore_index=True)
+
+
+def _ke_job(settings, design, *, example: str, name: str) -> dict:
+    table = ke_table_two_tangencies if name in TWO_TANGENCY_TABLES else ke_table_of
+    return {name: table(settings, design, example)}
+
+
+#: KE tables that report the mid-face tangency beside the first contact (Table 5.2: ideal 110/110)
+TWO_TANGENCY_TABLES = ("ke_table_5_2",)
+
+
+def _one(fn, name):
+    def compute(settings, design):
+        return {name: fn(settings, design)}
+
+    compute.__name__ = compute.__qualname__ = name
+    compute.__doc__ = fn.__doc__
+    return compute
+
+
+_KE = {f"ke_table_5_{i}": f"5.{i}" for i in range(2, 10)}
+
+
+JOBS = {
+    **{
+        name: Job(
+            partial(_ke_job, example=TABLE_EXAMPLE[tab], name=name),
+            {name: f"hobcut_tca/{name}.csv"},
+            f"Table {tab} (Example {TABLE_EXAMPLE[tab]}) alone",
+        )
+        for name, tab in _KE.items()
+    },
+    "ke_example_5_3": Job(
+        partial(_ke_job, example="5.3", name="ke_example_5_3"),
+        {"ke_example_5_3": "hobcut_tca/ke_example_5_3.csv"},
+        "Example 5.3 (ideal 110/113, no table)",
+    ),
+    **{
+        name: Job(
+            _one(fn, name),
+            {name: f"hobcut_tca/{name}.csv"},
+            fn.__doc__,
+            priority,
+        )
+        for name, fn, priority in (  # priority: about the seconds of the long jobs (.._face.Job)
+            ("sensitivity", sensitivity, 10),
+            ("contact_ratio", contact_ratio, 2),
+            ("ke_vs_hob_radius", ke_vs_hob_radius, 4),
+            ("ellipses_example_5_3", ellipses_example_5_3, 0),
+            ("ellipse_ratio", ellipse_ratio, 6),
+            ("topology_example_5_3", topology_example_5_3, 5),
+        )
+    },
+}

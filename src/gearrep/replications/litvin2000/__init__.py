@@ -7,9 +7,9 @@ principal curvatures at Q by two methods (sec. 2.5) and the contact ellipses of 
 the transverse section (eq 2.4.1) and the sec. 3 concave-pinion ellipse; the centre-distance
 sensitivity of Table 6.2.3 (eq 2.8.6-2.8.7 and TCA); TE over the meshing cycle of the
 profile-crowned pair (sec. 2.8) and of the pinion ground by the plunging worm (sec. 5.2-5.5)
-(:mod:`.te_studies`); the parabola relations of sec. 5.4. The report's own equations are kept
-in :mod:`.model`; the value and claim checks are the tables :data:`.values.VALUES` and
-:data:`.claims.CLAIMS`.
+(:mod:`.te_studies`); the parabola relations of sec. 5.4; the jobs are :data:`.studies.JOBS`.
+The report's own equations are kept in :mod:`.model`; the check records (:mod:`.checks`) compare
+every published value (:data:`.checks.VALUES`) and claim (:data:`.claims.CLAIMS`) with the tables.
 """
 
 from __future__ import annotations
@@ -17,13 +17,11 @@ from __future__ import annotations
 import pandas as pd
 
 from ... import settings as _s
-from .._face import FACE, Job, run_jobs
-from . import studies, te_studies
+from .._face import FACE, run_jobs
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
-from .claims import CLAIMS
-from .design import design_beta, params_from_published  # noqa: F401  (face: in __all__ through *FACE)
-from .records import check_records
-from .values import VALUES
+from .checks import checks  # noqa: F401  (face: in __all__ through *FACE)
+from .design import design_beta, params_from_published, validate  # noqa: F401  (face: in __all__ through *FACE)
+from .studies import JOBS
 
 __all__ = [
     *FACE,  # the replication face (gearrep.replications._face)
@@ -165,53 +163,6 @@ DESIGN_DATA = ("params_002_*.csv", "values_002_T6.2.*.csv", "values_002_S5.5.csv
 CHECK_DATA = ("values_002_*.csv", "claims_002.csv")
 
 
-def validate(settings: dict, design: dict) -> None:
-    """Cross-field checks: every swept gear rack radius above the pinion's (eq 2.8.7 divides by
-    rho_t - rho_c). Raises :class:`gearrep.settings.SettingError` naming the key."""
-    rc = design["rho_c_times_Pn"]
-    bad = [x for x in settings["rho_t_sweep_times_Pn"] if not x > rc]
-    if bad:
-        raise _s.SettingError(
-            f"nasa.rho_t_sweep_times_Pn: got {bad!r}; allowed: values above the pinion rack radius "
-            f"rho_c P_n = {rc:g} of the design"
-        )
-
-
-def _job(fn, *names, priority: int = 0) -> Job:
-    """Job of a study function ``fn(settings, design)`` returning a table or {name: table}
-    (``priority``: :class:`.._face.Job`)."""
-
-    def compute(settings, design):
-        validate(settings, design)
-        out = fn(settings, design)
-        return out if isinstance(out, dict) else {names[0]: out}
-
-    compute.__name__, compute.__doc__ = fn.__name__, fn.__doc__
-    doc = " ".join((fn.__doc__ or "").strip().split("\n\n")[0].split())  # first paragraph
-    return Job(compute, {n: f"nasa/{n}.csv" for n in names}, doc=doc, priority=priority)
-
-
-#: one job per table or study; output paths under results/
-JOBS = {
-    "curvatures": _job(studies.curvatures, "curvatures"),
-    "ellipse": _job(studies.ellipse, "ellipse"),
-    "path_curvatures": _job(studies.path_curvatures, "path_curvatures"),
-    "concavity": _job(studies.concavity, "concavity"),
-    "transverse_section": _job(studies.transverse_section, "transverse_section"),
-    "concave_pinion": _job(studies.concave_pinion, "concave_pinion"),
-    "te": _job(te_studies.te, "te_single", "te_cycle", "te_summary", priority=7),
-    "sensitivity": _job(studies.sensitivity, "sensitivity"),
-    "shifts": _job(studies.shifts, "shifts", priority=4),
-    "rho_sweep": _job(studies.rho_sweep, "rho_sweep"),
-    "parabola_relations": _job(studies.parabola_relations, "parabola_relations"),
-    "heights": _job(studies.heights, "heights"),
-    "concave_heights": _job(studies.concave_heights, "concave_heights"),
-    "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
-    "worm_choices": _job(te_studies.worm_choices, "worm_choices", priority=30),
-    "disk": _job(te_studies.disk, "disk", priority=10),
-}
-
-
 def run(settings: dict, design: dict, jobs=None) -> dict[str, pd.DataFrame]:
     """Tables of every job (or of the named ``jobs``) in one process."""
     validate(settings, design)
@@ -219,21 +170,15 @@ def run(settings: dict, design: dict, jobs=None) -> dict[str, pd.DataFrame]:
 
 
 #: what checks() returns, paths under results/
-CHECK_OUTPUTS = {"checks": "checks/nasa.csv"}
+CHECK_OUTPUTS = {"checks": "checks/litvin2000.csv"}
 
 
-def checks(tables: dict, published) -> dict[str, pd.DataFrame]:
-    """Check records of every seed-002 value and claim on file (gearrep.checks; tolerances from
-    the printed precision only): ``{"checks": records}``."""
-    return {"checks": check_records(tables, published, SEED, VALUES, CLAIMS)}
-
-
-#: figures of workflow/scripts/nasa_figures.py, paths under results/
+#: figures of workflow/scripts/litvin2000_figures.py, paths under results/
 FIGURES = {
-    "te": "nasa/figures/te_functions.png",
-    "ellipses": "nasa/figures/contact_ellipses.png",
-    "sensitivity": "nasa/figures/sensitivity_dE.png",
-    "paths": "nasa/figures/contact_paths.png",
-    "worm": "nasa/figures/te_worm.png",
+    "te": "litvin2000/figures/te_functions.png",
+    "ellipses": "litvin2000/figures/contact_ellipses.png",
+    "sensitivity": "litvin2000/figures/sensitivity_dE.png",
+    "paths": "litvin2000/figures/contact_paths.png",
+    "worm": "litvin2000/figures/te_worm.png",
 }
 REPORT_FIGURES = ("te", "ellipses")

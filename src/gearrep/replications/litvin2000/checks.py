@@ -1,16 +1,22 @@
-"""Computed counterparts of the published seed-002 values: :data:`VALUES` maps a value id to a
-:class:`.records.Rule` (tables -> (computed value, note)), a :class:`.records.PrintedInput` (a printed
-design input, status ``input``) or the reason it is not computed."""
+"""Check records of seed 002: every published value and claim against the tables of the jobs
+(gearrep.checks; tolerances from the printed precision only).
+
+:data:`VALUES` maps a value id to its computed counterpart: a :class:`.rules.Rule` (tables ->
+(computed value, note)), a :class:`.rules.PrintedInput` (a printed design input, status ``input``)
+or the reason it is not computed; :data:`.claims.CLAIMS` does the same for the claims."""
 
 from __future__ import annotations
 
 from functools import partial
 
 import numpy as np
+import pandas as pd
 
-from .records import INPUT_RADII, NOT_COMPUTED_SEC3, PrintedInput, Rule, one
+from ... import checks as ck
+from .claims import CLAIMS
+from .rules import INPUT_RADII, NOT_COMPUTED_SEC3, PrintedInput, Rule, evaluate, one
 
-__all__ = ["VALUES"]
+__all__ = ["VALUES", "check_records", "checks"]
 
 
 def _design(t, case="design", member="pinion"):
@@ -173,7 +179,7 @@ def _worm_note(w) -> str:
         f"between the transfer points (TE_0(phi1) = TE_0(phi1 -+ 2 pi/N1)), contact on the active profile of Table "
         f"6.2.2 v3, face not limiting (a face of {a['face_width_in']:.3f} in would give "
         f"{a['te_max_face_limited_arcsec']:.3f}). Our earlier set-up (feed as an extra pinion turn, eq 5.3.2) gave "
-        f"8.50 / 12.96 / 16.56: results/nasa/worm_choices.csv shows each choice's effect"
+        f"8.50 / 12.96 / 16.56: results/litvin2000/worm_choices.csv shows each choice's effect"
     )
 
 
@@ -404,3 +410,38 @@ VALUES: dict = {
         )
     },
 }
+
+
+def check_records(tables: dict, published, seed: str, values: dict, claims: dict) -> pd.DataFrame:
+    """One check record per published value and claim of ``seed``: ``values`` / ``claims`` map
+    ids to a :class:`Rule` or a reason; ids not in them are 'not computed' with a generic reason."""
+    recs = []
+    vals = published.values[published.values["seed"] == seed]
+    for _, r in vals.iterrows():
+        got = evaluate(values.get(r["id"], "no computed counterpart in this replication"), tables)
+        if isinstance(got, PrintedInput):
+            recs.append(ck.printed_input(r.to_frame().T, got).iloc[0].to_dict())
+        elif isinstance(got, str):
+            recs.append(ck.not_computed(r.to_frame().T, got).iloc[0].to_dict())
+        else:
+            extra = {}
+            if len(got) > 2:  # (value, note, rel_tol, basis): total tolerance rel_tol |published|, stated reason
+                lo, hi, _ = ck.printed_interval(r["printed"], r["rounding"])
+                widen = got[2] * abs(float(r["value"])) - 0.5 * (hi - lo)
+                if widen > 0:
+                    extra = dict(extra_tol=widen, extra_basis=got[3])
+            recs.append(ck.compare_value(r, float(got[0]), note=got[1], **extra))
+    cl = published.claims[published.claims["seed"] == seed]
+    for _, c in cl.iterrows():
+        got = evaluate(claims.get(c["id"], "claim not evaluated by this replication"), tables)
+        if isinstance(got, str):
+            recs.append(ck.not_computed(c.to_frame().T, got).iloc[0].to_dict())
+        else:
+            recs.append(ck.qualitative(c, bool(got[0]), got[1]))
+    return ck.validate_checks(pd.DataFrame(recs, columns=ck.CHECK_COLUMNS))
+
+
+def checks(tables: dict, published) -> dict[str, pd.DataFrame]:
+    """Check records of every seed-002 value and claim on file (gearrep.checks; tolerances from
+    the printed precision only): ``{"checks": records}``."""
+    return {"checks": check_records(tables, published, "002", VALUES, CLAIMS)}

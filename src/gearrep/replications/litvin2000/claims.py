@@ -1,4 +1,4 @@
-"""Claims of seed 002: :data:`CLAIMS` maps a claim id to a :class:`.records.Rule` whose small
+"""Claims of seed 002: :data:`CLAIMS` maps a claim id to a :class:`.rules.Rule` whose small
 predicate returns (holds, evidence) from the tables, or to the reason it is not evaluated.
 Printed numbers a predicate compares with are the report's (sec. 2.5, 5.5, Tables 6.2.3-6.2.4)."""
 
@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .records import NOT_COMPUTED_SEC3, Rule, one
+from .rules import NOT_COMPUTED_SEC3, Rule, one
 from .studies import TOOTH_AXIS_READINGS
 
 __all__ = ["CLAIMS"]
@@ -283,7 +283,7 @@ def plunging_parabolic_TE(t):
     )
     return (
         ok,
-        "worm-ground pinion (the disk's size is not printed; our inferred disk: results/nasa/disk.csv): "
+        "worm-ground pinion (the disk's size is not printed; our inferred disk: results/litvin2000/disk.csv): "
         + "; ".join(
             f"{c}: quadratic R^2 {r2:.4f}, jump at hand-over {jump:.3f}, TE_max {tm:.3f} arcsec ({tm / al - 1:+.1%})"
             for c, (r2, jump, tm) in stats.items()

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from ...published import values_by
+from ...settings import SettingError
 
-__all__ = ["params_from_published", "design_beta"]
+__all__ = ["params_from_published", "design_beta", "validate"]
 
 
 def _param(params: dict, file: str, example: str, name: str) -> float:
@@ -91,3 +92,15 @@ def design_beta(d: dict) -> float:
     if not 0 < c < 1:
         raise ValueError(f"(N1 + N2)/(2 P_n E) must be in (0, 1), got {c!r}")
     return float(np.arccos(c))
+
+
+def validate(settings: dict, design: dict) -> None:
+    """Cross-field checks: every swept gear rack radius above the pinion's (eq 2.8.7 divides by
+    rho_t - rho_c). Raises :class:`gearrep.settings.SettingError` naming the key."""
+    rc = design["rho_c_times_Pn"]
+    bad = [x for x in settings["rho_t_sweep_times_Pn"] if not x > rc]
+    if bad:
+        raise SettingError(
+            f"litvin2000.rho_t_sweep_times_Pn: got {bad!r}; allowed: values above the pinion rack radius "
+            f"rho_c P_n = {rc:g} of the design"
+        )

@@ -1,23 +1,19 @@
-"""Check records of seed 002: every published value and claim against the tables of the jobs
-(gearrep.checks; tolerances from the printed precision only). The tables of what is compared
-are :data:`.values.VALUES` and :data:`.claims.CLAIMS`: id -> :class:`Rule`, a :class:`PrintedInput`
-(a printed design input, status ``input``) or a not-computed reason."""
+"""The entries of the value and claim tables of seed 002 (:data:`.checks.VALUES`,
+:data:`.claims.CLAIMS`): id -> :class:`Rule`, a :class:`PrintedInput` (a printed design input,
+status ``input``) or a not-computed reason, and :func:`evaluate`, which turns one into
+(value or holds, note) from the tables."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
 import numpy as np
-import pandas as pd
-
-from ... import checks as ck
 
 __all__ = [
     "Rule",
     "PrintedInput",
     "one",
     "evaluate",
-    "check_records",
     "INPUT_RADII",
     "NOT_COMPUTED_SEC3",
 ]
@@ -88,32 +84,3 @@ def evaluate(entry, tables: dict):
     if missing:
         return f"not computed in this run: tables {missing} are missing"
     return entry.fn(tables)
-
-
-def check_records(tables: dict, published, seed: str, values: dict, claims: dict) -> pd.DataFrame:
-    """One check record per published value and claim of ``seed``: ``values`` / ``claims`` map
-    ids to a :class:`Rule` or a reason; ids not in them are 'not computed' with a generic reason."""
-    recs = []
-    vals = published.values[published.values["seed"] == seed]
-    for _, r in vals.iterrows():
-        got = evaluate(values.get(r["id"], "no computed counterpart in this replication"), tables)
-        if isinstance(got, PrintedInput):
-            recs.append(ck.printed_input(r.to_frame().T, got).iloc[0].to_dict())
-        elif isinstance(got, str):
-            recs.append(ck.not_computed(r.to_frame().T, got).iloc[0].to_dict())
-        else:
-            extra = {}
-            if len(got) > 2:  # (value, note, rel_tol, basis): total tolerance rel_tol |published|, stated reason
-                lo, hi, _ = ck.printed_interval(r["printed"], r["rounding"])
-                widen = got[2] * abs(float(r["value"])) - 0.5 * (hi - lo)
-                if widen > 0:
-                    extra = dict(extra_tol=widen, extra_basis=got[3])
-            recs.append(ck.compare_value(r, float(got[0]), note=got[1], **extra))
-    cl = published.claims[published.claims["seed"] == seed]
-    for _, c in cl.iterrows():
-        got = evaluate(claims.get(c["id"], "claim not evaluated by this replication"), tables)
-        if isinstance(got, str):
-            recs.append(ck.not_computed(c.to_frame().T, got).iloc[0].to_dict())
-        else:
-            recs.append(ck.qualitative(c, bool(got[0]), got[1]))
-    return ck.validate_checks(pd.DataFrame(recs, columns=ck.CHECK_COLUMNS))

@@ -20,11 +20,13 @@ from ...surfaces.novikov import RackGeneratedFlank, addendum_limit, pitch_radius
 from ...surfaces.rack import vertex_pitch_distance
 from ...tca import Misalignment
 from ...units import ARCMIN, ARCSEC, DEG, MM_PER_IN
-from . import model
-from .design import design_beta
+from .._face import Job
+from . import model, te_studies
+from .design import design_beta, validate
 from .geometry import basics, contact, make_flank, make_pair, pair_at_Q, point_curvatures, report_principal
 
 __all__ = [
+    "JOBS",
     "curvatures",
     "ellipse",
     "path_curvatures",
@@ -642,3 +644,38 @@ def concave_heights(s: dict, d: dict) -> pd.DataFrame:
             )
         )
     return pd.DataFrame(rows)
+
+
+def _job(fn, *names, priority: int = 0) -> Job:
+    """Job of a study function ``fn(settings, design)`` returning a table or {name: table}
+    (``priority``: :class:`.._face.Job`)."""
+
+    def compute(settings, design):
+        validate(settings, design)
+        out = fn(settings, design)
+        return out if isinstance(out, dict) else {names[0]: out}
+
+    compute.__name__, compute.__doc__ = fn.__name__, fn.__doc__
+    doc = " ".join((fn.__doc__ or "").strip().split("\n\n")[0].split())  # first paragraph
+    return Job(compute, {n: f"litvin2000/{n}.csv" for n in names}, doc=doc, priority=priority)
+
+
+#: one job per table or study; output paths under results/
+JOBS = {
+    "curvatures": _job(curvatures, "curvatures"),
+    "ellipse": _job(ellipse, "ellipse"),
+    "path_curvatures": _job(path_curvatures, "path_curvatures"),
+    "concavity": _job(concavity, "concavity"),
+    "transverse_section": _job(transverse_section, "transverse_section"),
+    "concave_pinion": _job(concave_pinion, "concave_pinion"),
+    "te": _job(te_studies.te, "te_single", "te_cycle", "te_summary", priority=7),
+    "sensitivity": _job(sensitivity, "sensitivity"),
+    "shifts": _job(shifts, "shifts", priority=4),
+    "rho_sweep": _job(rho_sweep, "rho_sweep"),
+    "parabola_relations": _job(parabola_relations, "parabola_relations"),
+    "heights": _job(heights, "heights"),
+    "concave_heights": _job(concave_heights, "concave_heights"),
+    "worm": _job(te_studies.worm, "worm_single", "worm_cycle", "worm_summary", priority=20),
+    "worm_choices": _job(te_studies.worm_choices, "worm_choices", priority=30),
+    "disk": _job(te_studies.disk, "disk", priority=10),
+}

@@ -16,6 +16,7 @@ from ... import ltca
 from ...ltca import iso as iso6336
 from ...meshing import contact_ratio_closed_form
 from ...tca import contact_hertz, solve_contact
+from .._face import Job
 from .design import (
     ISO_DESIGNS,
     Design,
@@ -27,7 +28,7 @@ from .design import (
     symmetric_pair,
 )
 
-__all__ = ["iso", "iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
+__all__ = ["JOBS", "iso", "iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
 
 #: nominal tangential load per face width of the ISO comparisons [N/mm] (ISO 6336-1 states c' for
 #: F_t K_A / b >= 100 N/mm)
@@ -366,3 +367,14 @@ def cycle(s: dict, design: Design) -> dict:
                             )
                         )
     return {"cycle": pd.DataFrame(rows), "pressure_map": pd.DataFrame(maps)}
+
+
+def _job(fn, *names, priority=0):
+    return Job(fn, {n: f"ltca/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()), priority)
+
+
+JOBS = {
+    "iso": _job(iso, "iso_pressure", "iso_stiffness", "stiffness_terms", priority=5),
+    "properties": _job(properties, "balance", "limits", "convergence", priority=5),
+    "cycle": _job(cycle, "cycle", "pressure_map", priority=3),
+}

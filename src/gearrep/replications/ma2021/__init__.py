@@ -13,15 +13,13 @@ R1/R2 of the abscissa and middle-section closed forms on the pair mounted by
 and ellipse at TCA points), :mod:`.profiles` and :mod:`.gap` (sections, eq 28-29, thickness, exact
 separation), :mod:`.studies` (one function per job), :mod:`.sweeps` and :mod:`.claims` (claim
 verdicts and check records), :mod:`.model` (the paper's printed eq 20 and 23-26 as evidence),
-:mod:`.bench`. The notebook ``notebooks/catt.ipynb`` tells the findings.
+:mod:`.bench`. The notebook ``notebooks/ma2021.ipynb`` tells the findings.
 """
 
 from __future__ import annotations
 
 from ... import settings as _s
-from .._face import FACE, Job, run_jobs
-from . import loaded as _loaded
-from . import studies as _studies
+from .._face import FACE, run_jobs
 from .assembly import (  # noqa: F401  (the names tests and the stress suite use)
     PAIR_NAMES,
     PRIMARY,
@@ -30,9 +28,11 @@ from .assembly import (  # noqa: F401  (the names tests and the stress suite use
     reading_to_mesh,
 )
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
-from .claims import checks, claim_verdicts  # noqa: F401
+from .checks import checks  # noqa: F401  (face: in __all__ through *FACE)
+from .claims import claim_verdicts  # noqa: F401
 from .contact import contact_geometry  # noqa: F401
 from .design import Design, params_from_published, validate  # noqa: F401
+from .studies import JOBS
 
 __all__ = [
     *FACE,  # the replication face (gearrep.replications._face)
@@ -150,31 +150,14 @@ DESIGN_DATA = ["params_004_*.csv"]
 CHECK_DATA = ["claims_004.csv"]
 
 
-def _job(fn, *names):
-    return Job(fn, {n: f"catt/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()))
-
-
-JOBS = {
-    "designs": _job(_studies.designs, "designs"),
-    "cycle": _job(_studies.cycle, "cycle"),
-    "pitch_point": _job(_studies.pitch_point, "pitch_point"),
-    "precision": _job(_studies.precision, "precision"),
-    "thickness": _job(_studies.thickness, "thickness"),
-    "sections": _job(_studies.sections, "sections"),
-    "equations": _job(_studies.equations, "equations"),
-    "gap_check": _job(_studies.gap_check, "gap_check"),
-    "settings": _job(_studies.settings_table, "settings"),
-    "loaded_footprint": _job(_loaded.loaded_footprint, "loaded_footprint"),
-}
-
-CHECK_OUTPUTS = {"checks": "checks/catt.csv", "claim_readings": "catt/claim_readings.csv"}
+CHECK_OUTPUTS = {"checks": "checks/ma2021.csv", "claim_readings": "ma2021/claim_readings.csv"}
 
 FIGURES = {
-    "fig12": "catt/figures/fig12_area_vs_module.png",
-    "fig13": "catt/figures/fig13_area_vs_RT.png",
-    "fig14": "catt/figures/fig14_thickness_vs_RT.png",
-    "fig15": "catt/figures/fig15_area_vs_z2.png",
-    "sec4": "catt/figures/sec4_example_ellipse.png",
+    "fig12": "ma2021/figures/fig12_area_vs_module.png",
+    "fig13": "ma2021/figures/fig13_area_vs_RT.png",
+    "fig14": "ma2021/figures/fig14_thickness_vs_RT.png",
+    "fig15": "ma2021/figures/fig15_area_vs_z2.png",
+    "sec4": "ma2021/figures/sec4_example_ellipse.png",
 }
 REPORT_FIGURES = ["fig15", "fig13"]
 

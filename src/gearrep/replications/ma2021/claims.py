@@ -1,9 +1,9 @@
-"""Claims of seed 004 (``claims_004.csv``): claim id -> small predicate, and the check records.
+"""Claims of seed 004 (``claims_004.csv``): claim id -> small predicate (the check records are :mod:`.checks`).
 
 Seed 004 prints no numbers for Figs 12-15, so every statement is a qualitative claim. Claims that
 depend on the reading of the abscissa phi1 are judged for each flank pair and reading
 (:data:`_SWEEP_CLAIMS`, :data:`_READING_CLAIMS`; table ``claim_readings``), the recorded status is
-that of the primary reading. The others are judged once (:data:`_CLAIMS`).
+that of the primary reading. The others are judged once (:data:`CLAIMS`).
 """
 
 from __future__ import annotations
@@ -11,12 +11,11 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ... import checks as _checks
 from ...surfaces.catt import PAIRS
 from .assembly import PRIMARY, READINGS
 from .sweeps import CycleIndex, curve, verdict_cliff, verdict_sweep
 
-__all__ = ["claim_verdicts", "checks"]
+__all__ = ["claim_verdicts", "CLAIMS", "NOT_COMPUTED"]
 
 #: sweep claim id -> (figure, kind of claim: a key of sweeps.SWEEP_VERDICTS, or "cliff")
 _SWEEP_CLAIMS = {
@@ -287,7 +286,7 @@ def _fe_elliptic(t):
 
     return bool(prim["holds"]), (
         "gearrep.ltca loaded contact (E 210 GPa, nu 0.29, the FE torque; footprint criteria of "
-        "replications.catt.loaded). "
+        "replications.ma2021.loaded). "
         + " || ".join(text(pid, r) for pid, r in f.iterrows())
         + f". Status from flank pair {PRIMARY[0]}"
         + ("" if f["holds"].nunique() == 1 else "; THE VERDICT DEPENDS ON THE FLANK PAIR")
@@ -295,7 +294,7 @@ def _fe_elliptic(t):
 
 
 #: claim id -> predicate(tables) -> (holds, note), for the claims judged once (None: not computed)
-_CLAIMS = {
+CLAIMS = {
     "004-S3-ellipse_centred_at_contact_point": _centred,
     "004-S3-eq20_like_curvature_pairing": _eq20,
     "004-S4-FE_elliptic_contact": _fe_elliptic,
@@ -309,46 +308,4 @@ _CLAIMS = {
 }
 
 #: claim id -> why it is not computed
-_NOT_COMPUTED: dict = {}
-
-_LEGEND = (
-    "Pairs: A = pinion convex/gear concave, B = pinion concave/gear convex; readings: R1 = phi1 is the "
-    "pinion angle (pinion root->top), R2 = gear angle (gear root->top). Status from the primary "
-    f"reading {PRIMARY[0]}/{PRIMARY[1]}. S = pi a b (eq 27) unless 'clipped'. "
-)
-
-
-def _variants_text(v: pd.DataFrame) -> str:
-    parts = []
-    for _, r in v.sort_values(["primary"], ascending=False).iterrows():
-        parts.append(
-            f"{r['pair']}/{r['reading']}{' (primary)' if r['primary'] else ''}: "
-            f"{'holds' if r['holds'] else 'fails'} {r['evidence']}"
-        )
-    return " || ".join(parts)
-
-
-def checks(tables: dict, published) -> dict:
-    """Check records of every claim of claims_004.csv (``checks``) and the verdict of each
-    reading-dependent claim for each flank pair and reading (``claim_readings``)."""
-    claims = published.claims[published.claims["seed"] == "004"].set_index("id", drop=False)
-    ver = claim_verdicts(tables)
-    recs = []
-    for cid, v in ver.groupby("id", sort=False):
-        prim = v[v["primary"]].iloc[0]
-        agree = (
-            "verdict is the same for every pair and reading. "
-            if v["holds"].nunique() == 1
-            else "VERDICT DEPENDS ON THE READING. "
-        )
-        recs.append(_checks.qualitative(claims.loc[cid], bool(prim["holds"]), _LEGEND + agree + _variants_text(v)))
-    for cid, predicate in _CLAIMS.items():
-        if predicate is None:
-            recs.append(_checks.not_computed(claims.loc[[cid]], _NOT_COMPUTED[cid]).iloc[0].to_dict())
-        else:
-            recs.append(_checks.qualitative(claims.loc[cid], *predicate(tables)))
-    done = set(ver["id"]) | set(_CLAIMS)
-    missing = sorted(set(claims.index) - done)
-    if missing:
-        raise RuntimeError(f"claims without a check record: {missing}")
-    return {"checks": pd.DataFrame(recs, columns=_checks.CHECK_COLUMNS), "claim_readings": ver}
+NOT_COMPUTED: dict = {}

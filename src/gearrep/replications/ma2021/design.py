@@ -118,21 +118,21 @@ def validate(settings: dict, design: Design) -> None:
     names = design.names()
     for key in ("section_check", "gap_check"):
         if settings[key]["design"] not in names:
-            raise SettingError(f"catt.{key}.design: got {settings[key]['design']!r}; allowed: one of {names}")
+            raise SettingError(f"ma2021.{key}.design: got {settings[key]['design']!r}; allowed: one of {names}")
     lo, hi = design.window_deg
     if not settings["near_top_deg"] <= hi - lo:
         raise SettingError(
-            f"catt.near_top_deg: got {settings['near_top_deg']!r}; allowed: at most the window width {hi - lo:g} deg"
+            f"ma2021.near_top_deg: got {settings['near_top_deg']!r}; allowed: at most the window width {hi - lo:g} deg"
         )
     if not lo <= settings["near_top_eval_deg"] <= hi:
         raise SettingError(
-            f"catt.near_top_eval_deg: got {settings['near_top_eval_deg']!r}; allowed: in the window "
+            f"ma2021.near_top_eval_deg: got {settings['near_top_eval_deg']!r}; allowed: in the window "
             f"[{lo:g}, {hi:g}] deg"
         )
     th = settings["thickness"]
     if any(not 0 <= s < min(th["R_T"]) / 2 for s in th["sections_mm"]):
         raise SettingError(
-            f"catt.thickness.sections_mm: got {th['sections_mm']!r}; allowed: each in "
+            f"ma2021.thickness.sections_mm: got {th['sections_mm']!r}; allowed: each in "
             f"[0, min(R_T)/2) = [0, {min(th['R_T']) / 2:g}) mm"
         )
 

@@ -2,7 +2,7 @@
 
 The computation uses the library routes (:mod:`gearrep.curvature`, :mod:`gearrep.ellipse`);
 the functions here are the equations as the paper prints them, each tested against the library
-route (``tests/unit/replications/test_catt_model.py``).
+route (``tests/unit/replications/test_ma2021_model.py``).
 """
 
 from __future__ import annotations

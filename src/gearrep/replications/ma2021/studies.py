@@ -14,6 +14,7 @@ import pandas as pd
 
 from ...surface import fd_derivatives
 from ...surfaces.catt import PAIRS, assemble, middle_section_curvatures, path_limits, solve_cycle
+from .._face import Job
 from .assembly import (
     PRIMARY,
     READINGS,
@@ -25,9 +26,11 @@ from .contact import contact_geometry, tip_edges
 from .design import Design
 from .design import prm as _prm
 from .gap import exact_contact_region
+from .loaded import loaded_footprint
 from .profiles import equation_checks, section_shapes, thickness_table
 
 __all__ = [
+    "JOBS",
     "designs",
     "cycle",
     "pitch_point",
@@ -286,3 +289,21 @@ def settings_table(settings: dict, design: Design) -> dict:
             ]
         )
     }
+
+
+def _job(fn, *names):
+    return Job(fn, {n: f"ma2021/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()))
+
+
+JOBS = {
+    "designs": _job(designs, "designs"),
+    "cycle": _job(cycle, "cycle"),
+    "pitch_point": _job(pitch_point, "pitch_point"),
+    "precision": _job(precision, "precision"),
+    "thickness": _job(thickness, "thickness"),
+    "sections": _job(sections, "sections"),
+    "equations": _job(equations, "equations"),
+    "gap_check": _job(gap_check, "gap_check"),
+    "settings": _job(settings_table, "settings"),
+    "loaded_footprint": _job(loaded_footprint, "loaded_footprint"),
+}

@@ -9,7 +9,7 @@ What is replicated (one job per table group, :data:`JOBS`):
 * TE and path of contact of crowned spur (sec 4.1) and helical (Tables 3-4) gears under in-plane
   and out-of-plane misalignment, the TE areas S_c, S_p, S_l and candidate readings of the printed
   Delta phi_max (:mod:`.te`);
-* the errata found and the convergence protocol as run (:mod:`.records`);
+* the errata found and the convergence protocol as run (:mod:`.studies`, which holds :data:`JOBS`);
 * the Hertz stress ratios of the crowned helical 40/37 pair (sec 4.2, Fig 29; :mod:`.stress`), the
   sec 6.1 path study with offset phi2 guesses (:mod:`.path_guess`) and the helical/spur contact
   shift at a common angle and crown (:func:`.te.shift_common_angle_table`).
@@ -20,7 +20,7 @@ What is replicated (one job per table group, :data:`JOBS`):
 
 The thesis's frame and printed formulas are in :mod:`.model`; its design data
 enter only through :func:`params_from_published` (:mod:`.design`); checks and claims are in
-:mod:`.facts` and :mod:`.claims`.
+:mod:`.checks` and :mod:`.claims`.
 
 Errata (evidence in errata.csv and the tests): eq (27) n1 - n2 = 0 should read n1 + n2 = 0; the
 worded sign rule of eq (43)-(44) gives the wrong sign; Table 1's tip diameter d_b + 2m should be
@@ -34,10 +34,10 @@ from __future__ import annotations
 import numpy as np
 
 from ... import settings as st
-from .._face import FACE, Job, run_jobs
+from .._face import FACE, run_jobs
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
-from .bevel import bevel_pair, spiral_contact_tables, straight_contact_tables
-from .bevel_convergence import convergence_tables
+from .bevel import bevel_pair
+from .checks import checks, fact_key  # noqa: F401  (face: in __all__ through *FACE)
 from .claims import CLAIMS, claim_verdicts, conv_row
 from .convergence import (
     OUTCOMES,
@@ -49,13 +49,19 @@ from .convergence import (
     run_variant,
     study_reference,
 )
-from .design import TABLE34, Design, design_pair, misalignment, pair_40_37, params_from_published  # noqa: F401
-from .facts import checks, fact_key  # noqa: F401  (face: in __all__ through *FACE)
+from .design import (  # noqa: F401  (face: in __all__ through *FACE)
+    TABLE34,
+    Design,
+    design_pair,
+    misalignment,
+    pair_40_37,
+    params_from_published,
+    validate,
+)
 from .model import ThesisFrame, crown_curvature, crowning_object, profile_crowning, wrap
-from .path_guess import path_guess_table
-from .records import errata_table, protocol_table
-from .stress import FIG29_ANGLES_DEG, crown_amounts, path_pressure, reference_pressure, stress_table
-from .te import crowning_areas_table, first_order_te, shift_common_angle_table, te_sensitivity, te_study, te_tables
+from .stress import FIG29_ANGLES_DEG, crown_amounts, path_pressure, reference_pressure
+from .studies import JOBS
+from .te import first_order_te, te_study
 
 SEED = "003"
 
@@ -222,99 +228,17 @@ SETTINGS = st.declare(
 DESIGN_DATA = ("params_003_*.csv",)
 CHECK_DATA = ("values_003_*.csv", "claims_003.csv")
 
-_DIR = "thesis"
-JOBS = {
-    "convergence": Job(
-        convergence_tables,
-        {
-            n: f"{_DIR}/{n}.csv"
-            for n in (
-                "convergence",
-                "convergence_detail",
-                "agreement",
-                "references",
-                "starts_table10",
-                "starts_sec61",
-                "starts_helical",
-                "timing",
-                "bevel_references",
-                "bevel_accuracy",
-            )
-        },
-        "every convergence study, its per-start tables, the verified references and the Table 10 timing",
-        priority=22,
-    ),
-    "te": Job(
-        te_tables,
-        {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
-        "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max",
-        priority=12,
-    ),
-    "te_sensitivity": Job(
-        te_sensitivity,
-        {"te_sensitivity": f"{_DIR}/te_sensitivity.csv"},
-        "log-crown a2 and misalignment pivot sensitivity",
-    ),
-    "crowning_areas": Job(
-        crowning_areas_table,
-        {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
-        "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)",
-    ),
-    "stress": Job(
-        stress_table,
-        {"stress": f"{_DIR}/stress.csv"},
-        "Hertz stress ratios of the crowned helical 40/37 pair under out-of-plane misalignment (sec 4.2, Fig 29)",
-        priority=8,
-    ),
-    "shift_common_angle": Job(
-        shift_common_angle_table,
-        {"shift_common_angle": f"{_DIR}/shift_common_angle.csv"},
-        "contact shift of the helical 40/37 and spur 25/25 pairs at a common angle and crown (conclusions)",
-    ),
-    "path_guess": Job(
-        path_guess_table,
-        {"path_guess": f"{_DIR}/path_guess.csv"},
-        "sec 6.1 path study: conventional TCA along the path from phi2 starts offset 0.03..0.3 rad",
-        priority=4,
-    ),
-    "bevel_straight": Job(
-        straight_contact_tables,
-        {n: f"{_DIR}/{n}.csv" for n in ("bevel_straight_summary", "bevel_straight_curves")},
-        "straight bevel 39/32 (sec 5.1): TE continuity with and without relief, lead crown and contact pressure, crown types",
-        priority=10,
-    ),
-    "bevel_spiral": Job(
-        spiral_contact_tables,
-        {n: f"{_DIR}/{n}.csv" for n in ("bevel_spiral_summary", "bevel_spiral_curves")},
-        "spiral bevel 17/17 (sec 5.2): TE under angular and linear errors, stress and contact deviation (Fig 53 sweep)",
-        priority=10,
-    ),
-    "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
-    "protocol": Job(
-        protocol_table,
-        {"protocol": f"{_DIR}/protocol.csv", "run_info": f"{_DIR}/run_info.csv"},
-        "the convergence protocol as run and the settings used",
-    ),
-}
 
-CHECK_OUTPUTS = {"checks": "checks/thesis.csv"}
+CHECK_OUTPUTS = {"checks": "checks/temirkhan2023.csv"}
 FIGURES = {
-    "clouds": f"{_DIR}/figures/convergence_clouds_table10.png",
-    "clouds_phi2": f"{_DIR}/figures/convergence_clouds_phi2.png",
-    "window": f"{_DIR}/figures/convergence_vs_phi2_window.png",
-    "guess": f"{_DIR}/figures/convergence_vs_phi2_guess_sec61.png",
-    "te": f"{_DIR}/figures/te_curves.png",
-    "paths": f"{_DIR}/figures/contact_paths.png",
+    "clouds": "temirkhan2023/figures/convergence_clouds_table10.png",
+    "clouds_phi2": "temirkhan2023/figures/convergence_clouds_phi2.png",
+    "window": "temirkhan2023/figures/convergence_vs_phi2_window.png",
+    "guess": "temirkhan2023/figures/convergence_vs_phi2_guess_sec61.png",
+    "te": "temirkhan2023/figures/te_curves.png",
+    "paths": "temirkhan2023/figures/contact_paths.png",
 }
 REPORT_FIGURES = ("window", "clouds")
-
-
-def validate(settings: dict, design: Design) -> None:
-    """Cross-field checks: Tables 3-4 row 1 must be computed (the crowning areas and claims use it)."""
-    if 1 not in settings["crowning_rows"]:
-        raise st.SettingError(
-            f"thesis.crowning_rows: got {settings['crowning_rows']!r}; allowed: a subset of [1, 2, 3] containing 1"
-        )
 
 
 def run(settings: dict, design: Design, jobs=None) -> dict:

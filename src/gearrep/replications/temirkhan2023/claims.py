@@ -20,7 +20,7 @@ from .design import Design, design_pair
 
 NOT_COMPUTED_STRESS = (
     "stress ratios (Hertz, thesis eq 15-25) not computed in this run: the table of the stress job "
-    "(thesis/stress.csv) is missing"
+    "(temirkhan2023/stress.csv) is missing"
 )
 
 

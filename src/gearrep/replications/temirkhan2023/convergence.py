@@ -1,6 +1,6 @@
 """Convergence from random starts: conventional vs reduced TCA (thesis sec 6.1-6.2, Table 10).
 
-The protocol is written out in ``protocol.csv`` (:func:`.records.protocol_table`); the solver
+The protocol is written out in ``protocol.csv`` (:func:`.studies.protocol_table`); the solver
 variants and start strategies are :mod:`gearrep.tca`'s. One random stream per study:
 ``default_rng([seed, STREAMS[study]])``. The ``convergence`` job, which runs these studies and the
 bevel pairs' (Tables 11-12), is :func:`.bevel_convergence.convergence_tables`.

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...published import param_table
+from ...settings import SettingError
 from ...surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
 from ...tca import GearPair, Misalignment
 from ...units import DEG
@@ -317,3 +318,11 @@ TABLE34 = {
         "logarithmic": [0.046, 0.055, 0.081],
     },
 }
+
+
+def validate(settings: dict, design: Design) -> None:
+    """Cross-field checks: Tables 3-4 row 1 must be computed (the crowning areas and claims use it)."""
+    if 1 not in settings["crowning_rows"]:
+        raise SettingError(
+            f"temirkhan2023.crowning_rows: got {settings['crowning_rows']!r}; allowed: a subset of [1, 2, 3] containing 1"
+        )

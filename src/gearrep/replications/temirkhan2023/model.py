@@ -1,5 +1,5 @@
 """The thesis's own conventions and printed formulas, kept as evidence (each tested against the
-library route in tests/replication/test_thesis.py).
+library route in tests/replication/test_temirkhan2023.py).
 
 Frames. The library pair (:class:`gearrep.tca.GearPair`) puts member 2 on +x_f and measures phi2
 in the driven sense; its involute flanks are centred on x_i with v = 0 at mid-face. The thesis

@@ -1,4 +1,7 @@
-"""Evidence tables: the errata found in the thesis and the convergence protocol as run."""
+"""What seed 003's replication computes: :data:`JOBS`, one job per table group, and the
+functions of the two evidence jobs (the errata found in the thesis, the convergence protocol as
+run). The larger studies' functions live in their topic modules (:mod:`.convergence`,
+:mod:`.bevel_convergence`, :mod:`.te`, :mod:`.stress`, :mod:`.path_guess`, :mod:`.bevel`)."""
 
 from __future__ import annotations
 
@@ -7,9 +10,16 @@ import pandas as pd
 
 from ...surfaces.involute import InvoluteGearData
 from ...units import DEG
-from .bevel import bevel_errata_rows, bevel_protocol_items
+from .._face import Job
+from .bevel import bevel_errata_rows, bevel_protocol_items, spiral_contact_tables, straight_contact_tables
+from .bevel_convergence import convergence_tables
 from .convergence import STREAMS, study_reference
 from .design import Design, design_pair
+from .path_guess import path_guess_table
+from .stress import stress_table
+from .te import crowning_areas_table, shift_common_angle_table, te_sensitivity, te_tables
+
+__all__ = ["JOBS", "errata_table", "protocol_table"]
 
 
 def errata_table(s: dict, design: Design) -> dict:
@@ -132,3 +142,81 @@ def protocol_table(s: dict, design: Design) -> dict:
     items += bevel_protocol_items(p)
     run_info = pd.DataFrame([{k: (str(v) if isinstance(v, (list, dict)) else v) for k, v in s.items()}])
     return dict(protocol=pd.DataFrame(items, columns=["item", "value"]), run_info=run_info)
+
+
+_DIR = "temirkhan2023"
+
+
+JOBS = {
+    "convergence": Job(
+        convergence_tables,
+        {
+            n: f"{_DIR}/{n}.csv"
+            for n in (
+                "convergence",
+                "convergence_detail",
+                "agreement",
+                "references",
+                "starts_table10",
+                "starts_sec61",
+                "starts_helical",
+                "timing",
+                "bevel_references",
+                "bevel_accuracy",
+            )
+        },
+        "every convergence study, its per-start tables, the verified references and the Table 10 timing",
+        priority=22,
+    ),
+    "te": Job(
+        te_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("te_summary", "te_curves", "te_cycle", "te_readings")},
+        "TE and path of contact (spur sec 4.1, helical Tables 3-4) and the readings of Delta phi_max",
+        priority=12,
+    ),
+    "te_sensitivity": Job(
+        te_sensitivity,
+        {"te_sensitivity": f"{_DIR}/te_sensitivity.csv"},
+        "log-crown a2 and misalignment pivot sensitivity",
+    ),
+    "crowning_areas": Job(
+        crowning_areas_table,
+        {"crowning_areas": f"{_DIR}/crowning_areas.csv"},
+        "TE areas S_c, S_p, S_l at 0.2 deg (first printed amounts; 6 TE studies)",
+    ),
+    "stress": Job(
+        stress_table,
+        {"stress": f"{_DIR}/stress.csv"},
+        "Hertz stress ratios of the crowned helical 40/37 pair under out-of-plane misalignment (sec 4.2, Fig 29)",
+        priority=8,
+    ),
+    "shift_common_angle": Job(
+        shift_common_angle_table,
+        {"shift_common_angle": f"{_DIR}/shift_common_angle.csv"},
+        "contact shift of the helical 40/37 and spur 25/25 pairs at a common angle and crown (conclusions)",
+    ),
+    "path_guess": Job(
+        path_guess_table,
+        {"path_guess": f"{_DIR}/path_guess.csv"},
+        "sec 6.1 path study: conventional TCA along the path from phi2 starts offset 0.03..0.3 rad",
+        priority=4,
+    ),
+    "bevel_straight": Job(
+        straight_contact_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("bevel_straight_summary", "bevel_straight_curves")},
+        "straight bevel 39/32 (sec 5.1): TE continuity with and without relief, lead crown and contact pressure, crown types",
+        priority=10,
+    ),
+    "bevel_spiral": Job(
+        spiral_contact_tables,
+        {n: f"{_DIR}/{n}.csv" for n in ("bevel_spiral_summary", "bevel_spiral_curves")},
+        "spiral bevel 17/17 (sec 5.2): TE under angular and linear errors, stress and contact deviation (Fig 53 sweep)",
+        priority=10,
+    ),
+    "errata": Job(errata_table, {"errata": f"{_DIR}/errata.csv"}, "numbers behind the errata"),
+    "protocol": Job(
+        protocol_table,
+        {"protocol": f"{_DIR}/protocol.csv", "run_info": f"{_DIR}/run_info.csv"},
+        "the convergence protocol as run and the settings used",
+    ),
+}
