@@ -62,8 +62,8 @@ def test_every_published_item_has_its_expected_status(records, published):
 
 
 def test_check_tables_name_only_published_ids(published):
+    from gearrep.replications.litvin2000.checks import VALUES
     from gearrep.replications.litvin2000.claims import CLAIMS
-    from gearrep.replications.litvin2000.values import VALUES
 
     assert set(VALUES) <= set(published.values.loc[published.values["seed"] == "002", "id"])
     assert set(CLAIMS) <= set(published.claims.loc[published.claims["seed"] == "002", "id"])

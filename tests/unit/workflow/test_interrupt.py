@@ -18,7 +18,7 @@ import pytest
 from conftest import copy_workflow, tool_env
 
 TARGET = "results/temirkhan2023/convergence.csv"  # one job computing for many seconds
-RULE = "thesis_convergence"
+RULE = "temirkhan2023_convergence"
 
 
 def _processes_of(wf: Path, session: int) -> list[str]:

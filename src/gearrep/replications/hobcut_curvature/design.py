@@ -64,7 +64,7 @@ def params_from_published(published) -> Design:
 
     n_rows, decimals = _rows_of_table(published.values, "Table 4.3")
     t51 = table_5_1(published.params)  # the Table 5.1 pinion, gear and hob, shared with hobcut_tca
-    d = Design(
+    design = Design(
         module_mm=t51.module_mm,
         pressure_angle_deg=t51.pressure_angle_deg,
         hob_pitch_radius_mm=t51.hob_pitch_radius_mm,
@@ -80,22 +80,22 @@ def params_from_published(published) -> Design:
         n_rows=n_rows,
         l1_printed_decimals=decimals,
     )
-    _check_design(d)
-    return d
+    _check_design(design)
+    return design
 
 
-def _check_design(d: Design) -> None:
-    r_p = 0.5 * d.module_mm * d.n_teeth
+def _check_design(design: Design) -> None:
+    r_p = 0.5 * design.module_mm * design.n_teeth
     for name, v, lo, hi in (
-        ("module_mm", d.module_mm, 0.1, 100.0),
-        ("pressure_angle_deg", d.pressure_angle_deg, 5, 40),
-        ("hob_pitch_radius_mm", d.hob_pitch_radius_mm, d.module_mm, 1000.0),
-        ("tip_radius_mm", d.tip_radius_mm, r_p, r_p + 3 * d.module_mm),
-        ("R_c_small_mm", d.R_c_small_mm, 1.0, 1e7),
-        ("R_c_large_mm", d.R_c_large_mm, 1.0, 1e7),
-        ("l1_end_mm", d.l1_end_mm, 0.0, 100.0),
-        ("face_width_mm", d.face_width_mm, 0.1, 1000.0),
-        ("ellipse_delta_mm", d.ellipse_delta_mm, 1e-7, 1.0),
+        ("module_mm", design.module_mm, 0.1, 100.0),
+        ("pressure_angle_deg", design.pressure_angle_deg, 5, 40),
+        ("hob_pitch_radius_mm", design.hob_pitch_radius_mm, design.module_mm, 1000.0),
+        ("tip_radius_mm", design.tip_radius_mm, r_p, r_p + 3 * design.module_mm),
+        ("R_c_small_mm", design.R_c_small_mm, 1.0, 1e7),
+        ("R_c_large_mm", design.R_c_large_mm, 1.0, 1e7),
+        ("l1_end_mm", design.l1_end_mm, 0.0, 100.0),
+        ("face_width_mm", design.face_width_mm, 0.1, 1000.0),
+        ("ellipse_delta_mm", design.ellipse_delta_mm, 1e-7, 1.0),
     ):
         if not (np.isfinite(v) and lo <= v <= hi):
             raise ValueError(f"hobcut_curvature design: {name} = {v!r} outside [{lo:g}, {hi:g}]")

@@ -34,7 +34,7 @@ def params_from_published(published) -> dict:
     P = values_by(published.params, ["file", "example", "parameter"])
     V = values_by(published.values, ["id"])
     f5, f6, f54 = "params_002_S2.5.csv", "params_002_T6.2.csv", "params_002_S5.4.csv"
-    d = {
+    design = {
         "N1": _param(P, f5, "S2.5_example", "N1"),
         "N2": _param(P, f5, "S2.5_example", "N2"),
         "P_n_per_in": _param(P, f5, "S2.5_example", "normal_diametral_pitch"),
@@ -80,15 +80,15 @@ def params_from_published(published) -> dict:
         "delta_1_T623": {v: _value(V, f"002-T6.2.3-version={v}-delta_1") for v in (1, 2, 3)},
     }
     for k in ("N1", "N2"):
-        d[k] = int(d[k])
-    if not (d["P_n_per_in"] > 0 and 0 < d["alpha_n_deg"] < 90 and d["center_distance_in"] > 0):
+        design[k] = int(design[k])
+    if not (design["P_n_per_in"] > 0 and 0 < design["alpha_n_deg"] < 90 and design["center_distance_in"] > 0):
         raise ValueError("published design data of seed 002 out of range (P_n, alpha_n, E)")
-    return d
+    return design
 
 
-def design_beta(d: dict) -> float:
+def design_beta(design: dict) -> float:
     """Helix angle from the centre distance, cos(beta) = (N1 + N2) / (2 P_n E) (rad)."""
-    c = (d["N1"] + d["N2"]) / (2.0 * d["P_n_per_in"] * d["center_distance_in"])
+    c = (design["N1"] + design["N2"]) / (2.0 * design["P_n_per_in"] * design["center_distance_in"])
     if not 0 < c < 1:
         raise ValueError(f"(N1 + N2)/(2 P_n E) must be in (0, 1), got {c!r}")
     return float(np.arccos(c))

@@ -48,17 +48,17 @@ __all__ = [
 ]
 
 
-def basics(d: dict):
+def basics(design: dict):
     """(P_n, alpha_n, beta, l) of the sec. 2.5 design: l = |QP| = cos(alpha_n)/P_n."""
-    Pn, an, beta = d["P_n_per_in"], d["alpha_n_deg"] * DEG, design_beta(d)
+    Pn, an, beta = design["P_n_per_in"], design["alpha_n_deg"] * DEG, design_beta(design)
     return Pn, an, beta, vertex_pitch_distance(an, Pn)
 
 
-def make_flank(d, a, alpha_n, l, beta, member, tol=1e-13, beta_rack=None) -> RackGeneratedFlank:
+def make_flank(design, a, alpha_n, l, beta, member, tol=1e-13, beta_rack=None) -> RackGeneratedFlank:
     """:func:`gearrep.surfaces.novikov.member_flank` of the report's design ``d`` (tooth number
     ``N1`` for the pinion, ``N2`` for the gear, ``P_n_per_in``); lengths in inches."""
-    N = d["N1"] if member == "pinion" else d["N2"]
-    return member_flank(N, d["P_n_per_in"], a, alpha_n, l, beta, member, tol=tol, beta_rack=beta_rack)
+    N = design["N1"] if member == "pinion" else design["N2"]
+    return member_flank(N, design["P_n_per_in"], a, alpha_n, l, beta, member, tol=tol, beta_rack=beta_rack)
 
 
 def _report_curvatures(k1, k2, e1, e2, generatrix):
@@ -127,10 +127,10 @@ def line_angle(a, b, n):
     return 90.0 - np.mod(90.0 - x, 180.0)
 
 
-def pair_at_Q(d, rho_c, rho_t, alpha_n, l, beta, delta, tol=1e-13) -> dict:
+def pair_at_Q(design, rho_c, rho_t, alpha_n, l, beta, delta, tol=1e-13) -> dict:
     """Curvatures of pinion and gear at Q and the contact ellipse of elastic approach ``delta`` (one row)."""
-    c1 = point_curvatures(make_flank(d, 1 / (2 * rho_c), alpha_n, l, beta, "pinion", tol))
-    c2 = point_curvatures(make_flank(d, 1 / (2 * rho_t), alpha_n, l, beta, "gear", tol))
+    c1 = point_curvatures(make_flank(design, 1 / (2 * rho_c), alpha_n, l, beta, "pinion", tol))
+    c2 = point_curvatures(make_flank(design, 1 / (2 * rho_t), alpha_n, l, beta, "gear", tol))
     p1, p2 = report_principal(c1), report_principal(c2)
     el = elastic_ellipse_at(p1, p2, delta)
     n = p1.normal
@@ -160,7 +160,7 @@ def pair_at_Q(d, rho_c, rho_t, alpha_n, l, beta, delta, tol=1e-13) -> dict:
     )
 
 
-def make_pair(d, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=0.0, tol=1e-13, hand="left"):
+def make_pair(design, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=0.0, tol=1e-13, hand="left"):
     """Profile-crowned pair in :class:`gearrep.tca.GearPair` frames. ``hand`` of the pinion:
     "left" as in the report (sec. 2.1) uses the rack helix angle -beta (with member_side -1 a
     positive rack helix angle generates a right-hand member, :mod:`gearrep.surfaces.rack`).
@@ -169,45 +169,49 @@ def make_pair(d, rho_c, rho_t, alpha_n, l, beta, *, misalignment=None, d_lambda=
     if hand not in ("left", "right"):
         raise ValueError(f"hand must be 'left' or 'right', got {hand!r}")
     h = -1.0 if hand == "left" else 1.0
-    pin = make_flank(d, 1 / (2 * rho_c), alpha_n, l, h * beta, "pinion", tol, beta_rack=h * (beta - d_lambda))
-    gear = make_flank(d, 1 / (2 * rho_t), alpha_n, l, h * beta, "gear", tol)
+    pin = make_flank(design, 1 / (2 * rho_c), alpha_n, l, h * beta, "pinion", tol, beta_rack=h * (beta - d_lambda))
+    gear = make_flank(design, 1 / (2 * rho_t), alpha_n, l, h * beta, "gear", tol)
     E = pin.r_p + gear.r_p
-    return GearPair(pin, gear, d["N1"], d["N2"], E, misalignment=misalignment, phase2=0.0)
+    return GearPair(pin, gear, design["N1"], design["N2"], E, misalignment=misalignment, phase2=0.0)
 
 
-def contact(pair, phi1, s: dict, start=None):
-    """Conventional TCA at ``phi1``; ``s``: the settings. Default start: the aligned contact
+def contact(pair, phi1, settings: dict, start=None):
+    """Conventional TCA at ``phi1``; ``settings``: the settings. Default start: the aligned contact
     (:func:`aligned_start`) moved by the misalignment's offset solved at one of the angles
     (:func:`gearrep.tca.offset_start`; the same roots, 2-3 Newton iterations each instead of about
     30 under a 3 arcmin crossing error)."""
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     if start is None:
-        start = offset_start(pair, phi1, aligned_start, tol=s["tol"], maxiter=s["maxiter"])
-    return solve_contact(pair, phi1, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+        start = offset_start(pair, phi1, aligned_start, tol=settings["tol"], maxiter=settings["maxiter"])
+    return solve_contact(
+        pair, phi1, start, formulation="conventional", tol=settings["tol"], maxiter=settings["maxiter"]
+    )
 
 
-def worm_rack_coefficients(d, which: str) -> tuple[float, float]:
+def worm_rack_coefficients(design, which: str) -> tuple[float, float]:
     """(a_c, a_t) in 1/in of the worm-ground pair: ``"s5.4_printed"`` the sec. 5.4 example's printed
     0.425 / 0.394, ``"eq_2.7.2"`` 1/(2 rho) with rho = (5.88, 6.35)/P_n (0.42517 / 0.39370)."""
     if which == "s5.4_printed":
-        return d["a_c_s54_per_in"], d["a_t_s54_per_in"]
+        return design["a_c_s54_per_in"], design["a_t_s54_per_in"]
     if which == "eq_2.7.2":
-        Pn = d["P_n_per_in"]
-        return Pn / (2 * d["rho_c_times_Pn"]), Pn / (2 * d["rho_t_times_Pn"])
+        Pn = design["P_n_per_in"]
+        return Pn / (2 * design["rho_c_times_Pn"]), Pn / (2 * design["rho_t_times_Pn"])
     raise ValueError(f"worm_rack_coefficients must be 's5.4_printed' or 'eq_2.7.2', got {which!r}")
 
 
-def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=None, worm_hand=None, racks=None):
+def make_worm_pair(
+    design, settings, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=None, worm_hand=None, racks=None
+):
     """Pinion ground by the plunging worm of sec. 5.4 (r_pw, a_pl, N_w = 1) with the profile-
     crowned gear (rack-generated), in :class:`gearrep.tca.GearPair` frames; left-hand pinion by
     default (``pinion_hand``). ``d_lambda``: pinion lead-angle error (worm set to beta - d_lambda).
     ``feed``, ``worm_hand``: :class:`gearrep.surfaces.worm_ground.WormGeneratedPinion`; ``racks``:
     :func:`worm_rack_coefficients` (defaults: the settings ``worm_feed``, ``worm_hand``,
     ``worm_rack_coefficients``)."""
-    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"] if racks is None else racks)
-    Pn, an, beta, l = basics(d)
-    h = -1.0 if s["pinion_hand"] == "left" else 1.0
-    r_p1 = pitch_radius(d["N1"], Pn, beta)
+    a_c, a_t = worm_rack_coefficients(design, settings["worm_rack_coefficients"] if racks is None else racks)
+    Pn, an, beta, l = basics(design)
+    h = -1.0 if settings["pinion_hand"] == "left" else 1.0
+    r_p1 = pitch_radius(design["N1"], Pn, beta)
     worm = WormGeneratedPinion(
         a_c,
         an,
@@ -215,18 +219,20 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=Non
         h * (beta - d_lambda),
         r_p1,
         Pn,
-        d["r_pw_in"],
-        d["a_pl_per_in"] if a_pl is None else a_pl,
-        N_w=int(d["N_w"]),
-        tol=s["tol"],
-        feed=s["worm_feed"] if feed is None else feed,
-        worm_hand=s["worm_hand"] if worm_hand is None else worm_hand,
+        design["r_pw_in"],
+        design["a_pl_per_in"] if a_pl is None else a_pl,
+        N_w=int(design["N_w"]),
+        tol=settings["tol"],
+        feed=settings["worm_feed"] if feed is None else feed,
+        worm_hand=settings["worm_hand"] if worm_hand is None else worm_hand,
     )
     rec = worm.solve(np.array([0.0]), np.array([0.0]))
     nrm = worm.evaluate(np.array([0.0]), np.array([0.0])).normal[0]
     worm.outward_sign = int(np.sign(np.dot(nrm, rec.normal[0])))
-    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
-    pair = GearPair(worm.light(), gear, d["N1"], d["N2"], r_p1 + gear.r_p, misalignment=misalignment, phase2=0.0)
+    gear = make_flank(design, a_t, an, l, h * beta, "gear", settings["tol"])
+    pair = GearPair(
+        worm.light(), gear, design["N1"], design["N2"], r_p1 + gear.r_p, misalignment=misalignment, phase2=0.0
+    )
     # TCA starts: the pinion turns by psi + kappa l (kappa = 0 for the translation feed), so the
     # contact at phi1 has psi ~ -phi1 - kappa l; z of the generated point ~ z0 + z_psi psi + z_l l
     zs = worm.solve(np.array([0.0, 0.0, 0.2]), np.array([-1.0, 1.0, 0.0])).point[:, 2]
@@ -241,27 +247,27 @@ def make_worm_pair(d, s, *, misalignment=None, d_lambda=0.0, a_pl=None, feed=Non
     return pair
 
 
-def make_disk_pair(d, s, E_d, *, misalignment=None, d_lambda=0.0):
+def make_disk_pair(design, settings, E_d, *, misalignment=None, d_lambda=0.0):
     """Pinion ground by the plunging disk (sec. 4.2, appendices A-B; disk-pinion shortest distance
     ``E_d``, plunge a_pd of eq 5.4.13 from a_pl) with the profile-crowned gear; racks of sec. 5.4
     (``worm_rack_coefficients``), tooth space from ``heights_rack_tooth_over_pitch``; left-hand
     pinion by default. ``d_lambda``: lead-angle error of the ground helicoid (beta - d_lambda)."""
-    Pn, an, beta, l = basics(d)
-    h = -1.0 if s["pinion_hand"] == "left" else 1.0
-    a_c, a_t = worm_rack_coefficients(d, s["worm_rack_coefficients"])
-    pin = make_flank(d, a_c, an, l, h * beta, "pinion", s["tol"], beta_rack=h * (beta - d_lambda))
-    gear = make_flank(d, a_t, an, l, h * beta, "gear", s["tol"])
+    Pn, an, beta, l = basics(design)
+    h = -1.0 if settings["pinion_hand"] == "left" else 1.0
+    a_c, a_t = worm_rack_coefficients(design, settings["worm_rack_coefficients"])
+    pin = make_flank(design, a_c, an, l, h * beta, "pinion", settings["tol"], beta_rack=h * (beta - d_lambda))
+    gear = make_flank(design, a_t, an, l, h * beta, "gear", settings["tol"])
     alpha_t = np.arctan(np.tan(an) / np.cos(beta))
     p_n = np.pi / Pn
     disk = DiskGroundPinion(
         pin,
-        d["N1"],
+        design["N1"],
         p_n,
-        s["heights_rack_tooth_over_pitch"] * p_n,
+        settings["heights_rack_tooth_over_pitch"] * p_n,
         E_d,
-        a_d_eq_5_4_13(d["a_pl_per_in"], alpha_t, d["N1"]),
+        a_d_eq_5_4_13(design["a_pl_per_in"], alpha_t, design["N1"]),
     )
-    return GearPair(disk, gear, d["N1"], d["N2"], pin.r_p + gear.r_p, misalignment=misalignment, phase2=0.0)
+    return GearPair(disk, gear, design["N1"], design["N2"], pin.r_p + gear.r_p, misalignment=misalignment, phase2=0.0)
 
 
 def disk_start(pair, phi1):
@@ -273,10 +279,10 @@ def disk_start(pair, phi1):
     return np.column_stack([np.zeros_like(z), -z / pair.flank1.p, np.zeros_like(z), th2, pair.ratio * np.asarray(phi1)])
 
 
-def solve_with_retries(pair, phi, start, s, passes=3):
+def solve_with_retries(pair, phi, start, settings, passes=3):
     """Conventional TCA at all phi from ``start``; points that fail are restarted from the nearest
     converged neighbour (linear predictor from two neighbours when available)."""
-    c = solve_contact(pair, phi, start, formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+    c = solve_contact(pair, phi, start, formulation="conventional", tol=settings["tol"], maxiter=settings["maxiter"])
     for _ in range(passes):
         bad = np.nonzero(~c.converged)[0]
         good = np.nonzero(c.converged)[0]
@@ -290,7 +296,9 @@ def solve_with_retries(pair, phi, start, s, passes=3):
                 st.append(X[j[0]] + (X[j[0]] - X[j[1]]) * (phi[i] - phi[j[0]]) / (phi[j[0]] - phi[j[1]]))
             else:
                 st.append(X[j[0]])
-        c2 = solve_contact(pair, phi[bad], np.array(st), formulation="conventional", tol=s["tol"], maxiter=s["maxiter"])
+        c2 = solve_contact(
+            pair, phi[bad], np.array(st), formulation="conventional", tol=settings["tol"], maxiter=settings["maxiter"]
+        )
         fixed = c2.converged
         if not fixed.any():
             break

@@ -42,25 +42,25 @@ __all__ = [
 ]
 
 
-def _q_variants(d):
+def _q_variants(design):
     """(case, beta, rho_c, rho_t) at Q: the design, the printed helix angle, the printed a_c, a_t."""
-    Pn, _, beta, _ = basics(d)
-    rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
+    Pn, _, beta, _ = basics(design)
+    rho_c, rho_t = design["rho_c_times_Pn"] / Pn, design["rho_t_times_Pn"] / Pn
     return [
         ("design", beta, rho_c, rho_t),
-        ("beta_printed", d["beta_printed_deg"] * DEG, rho_c, rho_t),
-        ("a_printed", beta, 1 / (2 * d["a_c_printed_per_in"]), 1 / (2 * d["a_t_printed_per_in"])),
+        ("beta_printed", design["beta_printed_deg"] * DEG, rho_c, rho_t),
+        ("a_printed", beta, 1 / (2 * design["a_c_printed_per_in"]), 1 / (2 * design["a_t_printed_per_in"])),
     ]
 
 
-def curvatures(s: dict, d: dict) -> pd.DataFrame:
+def curvatures(settings: dict, design: dict) -> pd.DataFrame:
     """Sec. 2.5: principal curvatures at Q of pinion and gear by the curvature relations and by
     differential geometry (``_dg``), for the design and the printed beta / a_c, a_t variants."""
-    _, an, _, l = basics(d)
+    _, an, _, l = basics(design)
     rows = []
-    for name, b, rc, rt in _q_variants(d):
+    for name, b, rc, rt in _q_variants(design):
         for m, rho in (("pinion", rc), ("gear", rt)):
-            cv = point_curvatures(make_flank(d, 1 / (2 * rho), an, l, b, m, s["tol"]))
+            cv = point_curvatures(make_flank(design, 1 / (2 * rho), an, l, b, m, settings["tol"]))
             a_rel = np.array([cv["kI"][0], cv["kII"][0]])
             a_dg = np.array([cv["kI_dg"][0], cv["kII_dg"][0]])
             rows.append(
@@ -81,15 +81,15 @@ def curvatures(s: dict, d: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def ellipse(s: dict, d: dict) -> pd.DataFrame:
+def ellipse(settings: dict, design: dict) -> pd.DataFrame:
     """Table 6.2.4 and sec. 2.6: contact ellipse at Q of versions 1-3 (version 3 also with the
     printed beta, the printed a_c, a_t and the sec. 2.6 elastic approach)."""
-    _, an, _, l = basics(d)
+    _, an, _, l = basics(design)
     rows = []
-    for name, b, rc, rt in _q_variants(d):
-        cases = [(name, d["delta_in"])] + ([("delta_sec2.6", d["delta_s26_in"])] if name == "design" else [])
+    for name, b, rc, rt in _q_variants(design):
+        cases = [(name, design["delta_in"])] + ([("delta_sec2.6", design["delta_s26_in"])] if name == "design" else [])
         for case, delta in cases:
-            r = pair_at_Q(d, rc, rt, an, l, b, delta, s["tol"])
+            r = pair_at_Q(design, rc, rt, an, l, b, delta, settings["tol"])
             rows.append(
                 dict(
                     version=3,
@@ -105,14 +105,14 @@ def ellipse(s: dict, d: dict) -> pd.DataFrame:
                 )
             )
     # versions 1 and 2 (circular arcs, centre of the pinion-addendum arc on the pitch line: l = rho)
-    an12 = d["alpha_n_v12_deg"] * DEG
+    an12 = design["alpha_n_v12_deg"] * DEG
     for version, zone, (rc, rt) in (
-        (1, "single", d["rho_v1"]),
-        (2, "pinion_addendum", d["rho_v2_add"]),
-        (2, "pinion_dedendum", d["rho_v2_ded"]),
+        (1, "single", design["rho_v1"]),
+        (2, "pinion_addendum", design["rho_v2_add"]),
+        (2, "pinion_dedendum", design["rho_v2_ded"]),
     ):
-        for name, b in (("design", design_beta(d)), ("beta_printed", d["beta_printed_deg"] * DEG)):
-            r = pair_at_Q(d, rc, rt, an12, rc, b, d["delta_in"], s["tol"])
+        for name, b in (("design", design_beta(design)), ("beta_printed", design["beta_printed_deg"] * DEG)):
+            r = pair_at_Q(design, rc, rt, an12, rc, b, design["delta_in"], settings["tol"])
             rows.append(
                 dict(
                     version=version,
@@ -123,32 +123,32 @@ def ellipse(s: dict, d: dict) -> pd.DataFrame:
                     l_in=rc,
                     rho_pinion_in=rc,
                     rho_gear_in=rt,
-                    delta_in=d["delta_in"],
+                    delta_in=design["delta_in"],
                     **r,
                 )
             )
     return pd.DataFrame(rows)
 
 
-def path_curvatures(s: dict, d: dict) -> pd.DataFrame:
+def path_curvatures(settings: dict, design: dict) -> pd.DataFrame:
     """Curvatures along the helix u = 0 traced by Q (claim: constant along the path)."""
-    Pn, an, beta, l = basics(d)
+    Pn, an, beta, l = basics(design)
     rows = []
-    th = np.linspace(-1.0, 1.0, int(s["n_path_points"]))
-    for m, rho in (("pinion", d["rho_c_times_Pn"] / Pn), ("gear", d["rho_t_times_Pn"] / Pn)):
-        cv = point_curvatures(make_flank(d, 1 / (2 * rho), an, l, beta, m, s["tol"]), np.zeros_like(th), th)
+    th = np.linspace(-1.0, 1.0, int(settings["n_path_points"]))
+    for m, rho in (("pinion", design["rho_c_times_Pn"] / Pn), ("gear", design["rho_t_times_Pn"] / Pn)):
+        cv = point_curvatures(make_flank(design, 1 / (2 * rho), an, l, beta, m, settings["tol"]), np.zeros_like(th), th)
         for i, t in enumerate(th):
             rows.append(dict(member=m, theta_in=t, kappa_I_per_in=cv["kI"][i], kappa_II_per_in=cv["kII"][i]))
     return pd.DataFrame(rows)
 
 
-def concavity(s: dict, d: dict) -> pd.DataFrame:
+def concavity(settings: dict, design: dict) -> pd.DataFrame:
     """Eq 2.7.1: the rho_t at which the gear's normal curvature along the rack profile
     direction at Q changes sign, against the printed bound N2 sin(alpha_n)/(2 P_n cos^3 beta) + l."""
-    Pn, an, beta, l = basics(d)
+    Pn, an, beta, l = basics(design)
 
     def k_profile(rho_t):
-        f = make_flank(d, 1 / (2 * rho_t), an, l, beta, "gear", s["tol"])
+        f = make_flank(design, 1 / (2 * rho_t), an, l, beta, "gear", settings["tol"])
         cv = point_curvatures(f)
         r_u = f.rack.evaluate(0.0, 0.0).r_u
         e_prof = frames.transform_vectors(f.envelope.local(cv["rec"].params).M[0], r_u / np.linalg.norm(r_u))
@@ -157,12 +157,14 @@ def concavity(s: dict, d: dict) -> pd.DataFrame:
         sn = np.dot(e_prof, pc.e2)
         return float(pc.k1 * c * c + pc.k2 * sn * sn)
 
-    bound = model.rho_t_bound_eq_2_7_1(d["N2"], an, Pn, beta, l)
-    k_design = k_profile(d["rho_t_times_Pn"] / Pn)
+    bound = model.rho_t_bound_eq_2_7_1(design["N2"], an, Pn, beta, l)
+    k_design = k_profile(design["rho_t_times_Pn"] / Pn)
     from scipy.optimize import brentq  # here: scipy.optimize costs 0.5 s per process
 
     root = brentq(k_profile, 0.5 * bound, 2.0 * bound, xtol=1e-12)
-    pin = point_curvatures(make_flank(d, Pn / (2 * d["rho_c_times_Pn"]), an, l, beta, "pinion", s["tol"]))
+    pin = point_curvatures(
+        make_flank(design, Pn / (2 * design["rho_c_times_Pn"]), an, l, beta, "pinion", settings["tol"])
+    )
     return pd.DataFrame(
         [
             dict(
@@ -176,15 +178,15 @@ def concavity(s: dict, d: dict) -> pd.DataFrame:
     )
 
 
-def transverse_section(s: dict, d: dict) -> pd.DataFrame:
+def transverse_section(settings: dict, design: dict) -> pd.DataFrame:
     """Sec. 2.4, eq 2.4.1: the transverse section (plane z_c = 0) of the pinion rack cylinder is the
     normal parabola stretched by 1/cos(beta) across the tooth (theta = y_b tan(beta) on the
     plane), hence a parabola; its curvature at Q against 2 a_c* (eq 2.4.1), and the discriminant
     of a conic fitted to the section (0 for a parabola). Q is not the vertex of the transverse
     parabola (the stretch is not along its axis)."""
-    Pn, an, beta, l = basics(d)
-    a = d["a_c_printed_per_in"]
-    rack = make_flank(d, a, an, l, beta, "pinion", s["tol"]).rack
+    Pn, an, beta, l = basics(design)
+    a = design["a_c_printed_per_in"]
+    rack = make_flank(design, a, an, l, beta, "pinion", settings["tol"]).rack
     u = np.linspace(-0.3, 0.3, 61)
     xb, yb = rack.profile(u)[:2]
     X, Y = xb, yb / np.cos(beta)  # transverse coordinates (height, along the pitch line)
@@ -227,19 +229,19 @@ _ELLIPSE_COLUMNS = (
 )
 
 
-def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
+def concave_pinion(settings: dict, design: dict) -> pd.DataFrame:
     """Sec. 3.2-3.4: contact ellipse at Q of the pinion concave-gear convex design (rack data of
     sec. 3.2: a_c = 1.25 P_n, a_t = 1.389 P_n, l_c = 0.906/P_n, alpha_n = 25 deg) with the sec. 2
     gear data, against the sec. 2 design. Our reading of fig. 3.2.1 (not in the text): both
     rack profiles bend away from P (convex pinion rack, a < 0 in :mod:`gearrep.surfaces.rack`);
     of the four sign choices it is the only one with a concave pinion and an elliptic contact
     (all four are listed)."""
-    Pn, an, beta, l = basics(d)
-    ac, at, lc = d["s3_a_c_over_Pn"] * Pn, d["s3_a_t_over_Pn"] * Pn, d["s3_l_c_times_Pn"] / Pn
+    Pn, an, beta, l = basics(design)
+    ac, at, lc = design["s3_a_c_over_Pn"] * Pn, design["s3_a_t_over_Pn"] * Pn, design["s3_l_c_times_Pn"] / Pn
     rows = []
     for sc in (1, -1):
         for st in (1, -1):
-            r = pair_at_Q(d, sc / (2 * ac), st / (2 * at), an, lc, beta, d["delta_in"], s["tol"])
+            r = pair_at_Q(design, sc / (2 * ac), st / (2 * at), an, lc, beta, design["delta_in"], settings["tol"])
             rows.append(
                 dict(
                     design="sec3",
@@ -249,7 +251,16 @@ def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
                     **{k: r[k] for k in _ELLIPSE_COLUMNS},
                 )
             )
-    r = pair_at_Q(d, d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn, an, l, beta, d["delta_in"], s["tol"])
+    r = pair_at_Q(
+        design,
+        design["rho_c_times_Pn"] / Pn,
+        design["rho_t_times_Pn"] / Pn,
+        an,
+        l,
+        beta,
+        design["delta_in"],
+        settings["tol"],
+    )
     rows.append(
         dict(
             design="sec2",
@@ -262,10 +273,20 @@ def concave_pinion(s: dict, d: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _sensitivity_tca(s, d, version, step, dE, r1, r2, an, l, beta, h) -> dict:
+def _sensitivity_tca(settings, design, version, step, dE, r1, r2, an, l, beta, h) -> dict:
     """TCA row of Table 6.2.3: contact on the pinion at phi1 = 0 with dE; d alpha = atan(2 a u)."""
-    pair = make_pair(d, r1, r2, an, l, beta, misalignment=Misalignment(d_E=dE), tol=s["tol"], hand=s["pinion_hand"])
-    c = contact(pair, [0.0], s)
+    pair = make_pair(
+        design,
+        r1,
+        r2,
+        an,
+        l,
+        beta,
+        misalignment=Misalignment(d_E=dE),
+        tol=settings["tol"],
+        hand=settings["pinion_hand"],
+    )
+    c = contact(pair, [0.0], settings)
     u = float(c.u1[0])
     a = pair.flank1.rack.a
     arc = u * np.sqrt(1 + 4 * a * a * u * u) / 2 + np.arcsinh(2 * a * u) / (4 * a)
@@ -302,27 +323,27 @@ def _formula_row(v, step, dE, method, da, r1, h) -> dict:
     )
 
 
-def sensitivity(s: dict, d: dict) -> pd.DataFrame:
+def sensitivity(settings: dict, design: dict) -> pd.DataFrame:
     """Table 6.2.3: pressure-angle change d alpha and delta_1 = shift / active height for a
     centre-distance change dE, by eq 2.8.7 (both signs) and by TCA, for versions 1-3 and the
     steps: printed 0.0001 mm (eq only), ``delta_E_table623_in``, 0.0001 in; and (step
     ``implied_by_printed``) the dE that reproduces each printed d alpha by eq 2.8.7 (both signs)
     with the d alpha that the printed delta_1 implies by eq 2.8.6."""
-    Pn, an3, beta, l3 = basics(d)
-    an12 = d["alpha_n_v12_deg"] * DEG
+    Pn, an3, beta, l3 = basics(design)
+    an12 = design["alpha_n_v12_deg"] * DEG
     versions = {
-        1: (d["rho_v1"], an12, d["rho_v1"][0], d["h_Pn"][1] / Pn),
-        2: (d["rho_v2_add"], an12, d["rho_v2_add"][0], d["ha_Pn_v2"] / Pn),
+        1: (design["rho_v1"], an12, design["rho_v1"][0], design["h_Pn"][1] / Pn),
+        2: (design["rho_v2_add"], an12, design["rho_v2_add"][0], design["ha_Pn_v2"] / Pn),
         3: (
-            (d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn),
+            (design["rho_c_times_Pn"] / Pn, design["rho_t_times_Pn"] / Pn),
             an3,
             vertex_pitch_distance(an3, Pn),
-            d["h_Pn"][3] / Pn,
+            design["h_Pn"][3] / Pn,
         ),
     }
     steps = {
-        "printed_0.0001mm": d["delta_E_printed_mm"] / MM_PER_IN,
-        "0.001in": s["delta_E_table623_in"],
+        "printed_0.0001mm": design["delta_E_printed_mm"] / MM_PER_IN,
+        "0.001in": settings["delta_E_table623_in"],
         "0.0001in": 0.0001,
     }
     rows = []
@@ -332,10 +353,10 @@ def sensitivity(s: dict, d: dict) -> pd.DataFrame:
                 da = model.delta_alpha_eq_2_8_7_deg(an, dE, r1, r2, sign)
                 rows.append(_formula_row(v, sname, dE, label, da, r1, h))
             if sname != "printed_0.0001mm":
-                rows.append(_sensitivity_tca(s, d, v, sname, dE, r1, r2, an, l, beta, h))
+                rows.append(_sensitivity_tca(settings, design, v, sname, dE, r1, r2, an, l, beta, h))
         # the step each printed d alpha implies (eq 2.8.7 inverted), and the d alpha the printed
         # delta_1 implies (eq 2.8.6 inverted: d alpha = delta_1 h / rho_1)
-        da_p, d1_p = d["delta_alpha_T623_deg"][v], d["delta_1_T623"][v]
+        da_p, d1_p = design["delta_alpha_T623_deg"][v], design["delta_1_T623"][v]
         for sign, label in ((-1, "eq2.8.7_inverse_decrease"), (1, "eq2.8.7_inverse_increase")):
             dE = model.delta_E_eq_2_8_7(an, da_p, r1, r2, sign)
             row = _formula_row(v, "implied_by_printed", dE, label, da_p, r1, h)
@@ -343,14 +364,14 @@ def sensitivity(s: dict, d: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def shifts(s: dict, d: dict) -> pd.DataFrame:
+def shifts(settings: dict, design: dict) -> pd.DataFrame:
     """Contact shift across the pinion profile (rack parameter u1 at phi1 = 0) for the error sizes
     of fig. 1.10 (dE) and sec. 2.8 (3 arcmin dgamma, dlambda)."""
-    Pn, an, beta, l = basics(d)
-    mis = s["misalignment_arcmin"] * ARCMIN
+    Pn, an, beta, l = basics(design)
+    mis = settings["misalignment_arcmin"] * ARCMIN
     rows = []
     for name, kw in (
-        ("dE_fig1.10", dict(misalignment=Misalignment(d_E=s["delta_E_fig110_mm"] / MM_PER_IN))),
+        ("dE_fig1.10", dict(misalignment=Misalignment(d_E=settings["delta_E_fig110_mm"] / MM_PER_IN))),
         ("dgamma_plus", dict(misalignment=Misalignment(d_gamma_out=mis))),
         ("dgamma_minus", dict(misalignment=Misalignment(d_gamma_out=-mis))),
         ("dlambda_helix_plus", dict(d_lambda=mis)),
@@ -358,34 +379,44 @@ def shifts(s: dict, d: dict) -> pd.DataFrame:
         ("dgamma_intersecting", dict(misalignment=Misalignment(d_gamma_in=mis))),
     ):
         pair = make_pair(
-            d,
-            d["rho_c_times_Pn"] / Pn,
-            d["rho_t_times_Pn"] / Pn,
+            design,
+            design["rho_c_times_Pn"] / Pn,
+            design["rho_t_times_Pn"] / Pn,
             an,
             l,
             beta,
-            tol=s["tol"],
-            hand=s["pinion_hand"],
+            tol=settings["tol"],
+            hand=settings["pinion_hand"],
             **kw,
         )
-        c = contact(pair, [0.0], s)
+        c = contact(pair, [0.0], settings)
         rows.append(
             dict(case=name, u1_in=float(c.u1[0]), status=c.status_name[0], profile_shift_in=abs(float(c.u1[0])))
         )
     return pd.DataFrame(rows)
 
 
-def rho_sweep(s: dict, d: dict) -> pd.DataFrame:
+def rho_sweep(settings: dict, design: dict) -> pd.DataFrame:
     """Sweep of the gear rack radius (claim: a larger rho_t - rho_c gives a smaller shift): eq 2.8.7
     and the TCA contact shift for dE = ``delta_E_table623_in``."""
-    Pn, an, beta, l = basics(d)
-    rc = d["rho_c_times_Pn"] / Pn
-    dE = s["delta_E_table623_in"]
+    Pn, an, beta, l = basics(design)
+    rc = design["rho_c_times_Pn"] / Pn
+    dE = settings["delta_E_table623_in"]
     rows = []
-    for rt_pn in s["rho_t_sweep_times_Pn"]:
+    for rt_pn in settings["rho_t_sweep_times_Pn"]:
         rt = rt_pn / Pn
-        pair = make_pair(d, rc, rt, an, l, beta, misalignment=Misalignment(d_E=dE), tol=s["tol"], hand=s["pinion_hand"])
-        c = contact(pair, [0.0], s)
+        pair = make_pair(
+            design,
+            rc,
+            rt,
+            an,
+            l,
+            beta,
+            misalignment=Misalignment(d_E=dE),
+            tol=settings["tol"],
+            hand=settings["pinion_hand"],
+        )
+        c = contact(pair, [0.0], settings)
         rows.append(
             dict(
                 rho_t_in=rt,
@@ -398,27 +429,27 @@ def rho_sweep(s: dict, d: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def parabola_relations(s: dict, d: dict) -> pd.DataFrame:
+def parabola_relations(settings: dict, design: dict) -> pd.DataFrame:
     """a_phi from a_pl by eq 5.4.3 and eq 5.4.12, and the contact shift of eq 5.4.7 for
     ``misalignment_arcmin`` (sec. 5.4 data; beta = 19.95 deg as printed there)."""
-    Pn, an = d["P_n_per_in"], d["alpha_n_deg"] * DEG
-    b = d["beta_s54_deg"] * DEG
-    a_pl, r_pw = d["a_pl_per_in"], d["r_pw_in"]
+    Pn, an = design["P_n_per_in"], design["alpha_n_deg"] * DEG
+    b = design["beta_s54_deg"] * DEG
+    a_pl, r_pw = design["a_pl_per_in"], design["r_pw_in"]
     a543 = model.a_phi_eq_5_4_3(
-        d["a_c_printed_per_in"],
-        d["a_t_printed_per_in"],
+        design["a_c_printed_per_in"],
+        design["a_t_printed_per_in"],
         a_pl,
         r_pw,
         an,
         b,
         Pn,
-        d["N1"],
-        d["N2"],
+        design["N1"],
+        design["N2"],
         vertex_pitch_distance(an, Pn),
     )
-    a5412 = model.a_phi_eq_5_4_12(a_pl, an, b, Pn, d["N1"], d["N2"])
-    phi_end = np.pi / d["N1"]
-    dl = model.delta_l_eq_5_4_7(s["misalignment_arcmin"] * ARCMIN, a_pl, r_pw, an, b)
+    a5412 = model.a_phi_eq_5_4_12(a_pl, an, b, Pn, design["N1"], design["N2"])
+    phi_end = np.pi / design["N1"]
+    dl = model.delta_l_eq_5_4_7(settings["misalignment_arcmin"] * ARCMIN, a_pl, r_pw, an, b)
     return pd.DataFrame(
         [
             dict(equation="5.4.3", a_phi_per_rad=a543, te_at_half_cycle_arcsec=a543 * phi_end**2 / ARCSEC),
@@ -507,7 +538,7 @@ def _required_rack_tooth(hd_of, hd_printed, t):
     return brentq(g, xs[i[0]], xs[i[0] + 1], xtol=1e-10) if len(i) else np.nan
 
 
-def heights(s: dict, d: dict) -> pd.DataFrame:
+def heights(settings: dict, design: dict) -> pd.DataFrame:
     """Active heights of the pinion's racks (sec. 2.4, 6.2, Table 6.2.2), one ``version`` per rack:
     3 the parabolic rack of sec. 2, 1 and 2 the circular arcs of sec. 6.2. h_a P_n is the
     addendum limit (:func:`gearrep.surfaces.novikov.addendum_limit`, column ``ha_limit``: Litvin's
@@ -527,12 +558,17 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
     rack tooth and the top land varied alone), ``required`` (the rack tooth thickness that gives the
     printed h_d for each swept top land), and ``fig2.4.2`` (version 3, h over 10 <= N1 <= 30 for
     beta = 20 deg: the sec. 2.4 claim)."""
-    Pn, an, beta, l3 = basics(d)
-    a_c = Pn / (2 * d["rho_c_times_Pn"])
-    an12 = d["alpha_n_v12_deg"] * DEG
-    N1 = d["N1"]
-    axis, t0 = s["heights_tooth_axis"], s["heights_top_land_times_Pn"]
-    rho1, rho2a, rho2d, rho2g = d["rho_v1"][0], d["rho_v2_add"][0], d["rho_v2_ded"][0], d["rho_v2_ded"][1]
+    Pn, an, beta, l3 = basics(design)
+    a_c = Pn / (2 * design["rho_c_times_Pn"])
+    an12 = design["alpha_n_v12_deg"] * DEG
+    N1 = design["N1"]
+    axis, t0 = settings["heights_tooth_axis"], settings["heights_top_land_times_Pn"]
+    rho1, rho2a, rho2d, rho2g = (
+        design["rho_v1"][0],
+        design["rho_v2_add"][0],
+        design["rho_v2_ded"][0],
+        design["rho_v2_ded"][1],
+    )
     racks = {
         3: dict(a=a_c, alpha_n=an, l=l3, profile="parabola"),
         1: dict(a=1 / (2 * rho1), alpha_n=an12, l=rho1, profile="circular_arc"),
@@ -574,13 +610,13 @@ def heights(s: dict, d: dict) -> pd.DataFrame:
         row("design", v, N1, beta, np.nan, t0, axis)
         for reading in TOOTH_AXIS_READINGS:
             row("reading", v, N1, beta, np.nan, t0, reading)
-        for sr in s["heights_sweep_rack_tooth_over_pitch"]:
+        for sr in settings["heights_sweep_rack_tooth_over_pitch"]:
             row("sweep", v, N1, beta, sr, t0)
-        for t in s["heights_sweep_top_land_times_Pn"]:
+        for t in settings["heights_sweep_top_land_times_Pn"]:
             row("sweep", v, N1, beta, np.nan, t, axis)
         hd_of = limit(v, N1, beta)[2]
-        for t in s["heights_sweep_top_land_times_Pn"]:
-            row("required", v, N1, beta, _required_rack_tooth(hd_of, d["hd_Pn"][v], t), t)
+        for t in settings["heights_sweep_top_land_times_Pn"]:
+            row("required", v, N1, beta, _required_rack_tooth(hd_of, design["hd_Pn"][v], t), t)
     for N in range(10, 31, 2):
         row("fig2.4.2", 3, N, 20 * DEG, np.nan, t0, axis)
     return pd.DataFrame(rows)
@@ -604,7 +640,7 @@ def _switch_radius(N, an, l, beta, Pn, tol):
     return brentq(k, rs[i[0]], rs[i[0] + 1], xtol=1e-12) if len(i) else np.nan
 
 
-def concave_heights(s: dict, d: dict) -> pd.DataFrame:
+def concave_heights(settings: dict, design: dict) -> pd.DataFrame:
     """Sec. 3.2-3.3 (pinion concave, gear convex): can the undercutting and pointing analysis of the
     heights job run on the sec. 3.2 racks (a_c = 1.25 P_n, a_t = 1.389 P_n, l_c = 0.906/P_n, alpha_n
     = 25 deg, both profiles bending away from their pitch point on the Q side: a < 0)? Two
@@ -616,14 +652,14 @@ def concave_heights(s: dict, d: dict) -> pd.DataFrame:
     and towards the gear tip (:func:`gearrep.surfaces.novikov.addendum_limit`), and whether the part
     between them crosses the pitch line (needed to split h = h_a + h_d and to place a tooth
     thickness at the pitch line). Heights in units of 1/P_n."""
-    Pn, _, beta, _ = basics(d)
-    an = d["alpha_n_deg"] * DEG
-    ac, at, lc = d["s3_a_c_over_Pn"] * Pn, d["s3_a_t_over_Pn"] * Pn, d["s3_l_c_times_Pn"] / Pn
-    N1, N2 = d["N1"], int(d["s3_N2_min"])
+    Pn, _, beta, _ = basics(design)
+    an = design["alpha_n_deg"] * DEG
+    ac, at, lc = design["s3_a_c_over_Pn"] * Pn, design["s3_a_t_over_Pn"] * Pn, design["s3_l_c_times_Pn"] / Pn
+    N1, N2 = design["N1"], int(design["s3_N2_min"])
     bound = N1 * np.sin(an) / (2 * Pn * np.cos(beta) ** 3) + lc
     rows = []
     for placement, l in (("Q_in_pinion_addendum", lc), ("Q_in_pinion_dedendum", -lc)):
-        g = RackGeneratedFlank(-at, an, l, beta, pitch_radius(N2, Pn, beta), +1, tol=s["tol"])
+        g = RackGeneratedFlank(-at, an, l, beta, pitch_radius(N2, Pn, beta), +1, tol=settings["tol"])
         u_root, x_root, k_root = addendum_limit(g, 3.0 / Pn)
         u_tip, x_tip, k_tip = addendum_limit(g, -3.0 / Pn)
         x = g.rack.profile(np.linspace(u_tip, u_root, 2001))[0]
@@ -632,7 +668,7 @@ def concave_heights(s: dict, d: dict) -> pd.DataFrame:
                 placement=placement,
                 l_times_Pn=l * Pn,
                 rho_c_times_Pn=Pn / (2 * ac),
-                rho_switch_Pn=_switch_radius(N1, an, l, beta, Pn, s["tol"]) * Pn,
+                rho_switch_Pn=_switch_radius(N1, an, l, beta, Pn, settings["tol"]) * Pn,
                 rho_bound_eq_3_2_1_Pn=bound * Pn,
                 N2=N2,
                 x_Q_Pn=float(g.rack.profile(np.array([0.0]))[0][0]) * Pn,

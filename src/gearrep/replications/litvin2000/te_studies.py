@@ -48,7 +48,7 @@ def _drive_sign(c, i0) -> int:
     return int(np.sign(np.dot(np.cross([0.0, 0.0, 1.0], c.position[i0]), c.normal[i0])))
 
 
-def te_cycle(pair, s, face_width):
+def te_cycle(pair, settings, face_width):
     """TE of tooth pair 0 over five cycles, and the meshing cycle.
 
     Pair k meets at TE_k(phi1) = TE_0(phi1 - k p), p = 2 pi / N1, while its contact point is
@@ -59,10 +59,10 @@ def te_cycle(pair, s, face_width):
     soon as the next pair enters: tooth 0 is in contact over [exit - p, exit] or
     [entry, entry + p]. That interval is solved densely; TE_max is the peak-to-peak TE over it
     (independent of B for B >= the axial pitch)."""
-    n = int(s["te_points_per_cycle"])
+    n = int(settings["te_points_per_cycle"])
     per = 2 * np.pi / pair.n1
     phi = np.arange(-2 * n, 2 * n + 1) * per / n
-    c = contact(pair, phi, s)
+    c = contact(pair, phi, settings)
     conv = c.converged
     z = c.position[:, 2]
     drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
@@ -98,7 +98,7 @@ def te_cycle(pair, s, face_width):
     older = (te0(x) > te0(x - per)) if drive > 0 else (te0(x) < te0(x - per))
     lo, hi = (b - per, b) if older else (a, a + per)
     grid = np.linspace(lo, hi, 2 * n + 1)
-    cc = contact(pair, grid, s)
+    cc = contact(pair, grid, settings)
     if not np.all(cc.converged):
         return single, no_cycle, info
     rows = [dict(phi1_rad=g + k * per, te_arcsec=t, tooth=k) for k in (-1, 0, 1) for g, t in zip(grid, cc.te_arcsec)]
@@ -139,16 +139,16 @@ def _te_summary_row(name, single, cyc, info, face_width, axial_pitch) -> dict:
     )
 
 
-def face_width(s, d):
+def face_width(settings, design):
     """(face width B, axial pitch) in inches: B = ``face_width_over_axial_pitch`` x axial pitch."""
-    Pn, _, beta, _ = basics(d)
+    Pn, _, beta, _ = basics(design)
     axial_pitch = np.pi / (Pn * np.cos(beta) * np.tan(beta))
-    return s["face_width_over_axial_pitch"] * axial_pitch, axial_pitch
+    return settings["face_width_over_axial_pitch"] * axial_pitch, axial_pitch
 
 
-def _gamma_cases(s) -> dict:
+def _gamma_cases(settings) -> dict:
     """The aligned drive and dgamma = +-``misalignment_arcmin`` (keyword arguments of the pair makers)."""
-    mis = s["misalignment_arcmin"] * ARCMIN
+    mis = settings["misalignment_arcmin"] * ARCMIN
     return {
         "aligned": dict(),
         "dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
@@ -156,15 +156,15 @@ def _gamma_cases(s) -> dict:
     }
 
 
-def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
+def te(settings: dict, design: dict) -> dict[str, pd.DataFrame]:
     """TE of the profile-crowned pair (sec. 2.8, 5.5): ``te_single`` (tooth pair 0 over five
     cycles), ``te_cycle`` (the meshing cycle, teeth -1, 0, 1) and ``te_summary`` per case."""
-    Pn, an, beta, l = basics(d)
-    rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
-    mis = s["misalignment_arcmin"] * ARCMIN
-    B, axial_pitch = face_width(s, d)
+    Pn, an, beta, l = basics(design)
+    rho_c, rho_t = design["rho_c_times_Pn"] / Pn, design["rho_t_times_Pn"] / Pn
+    mis = settings["misalignment_arcmin"] * ARCMIN
+    B, axial_pitch = face_width(settings, design)
     cases = {
-        **_gamma_cases(s),
+        **_gamma_cases(settings),
         "dlambda_helix_plus": dict(d_lambda=mis),
         "dlambda_helix_minus": dict(d_lambda=-mis),
         "dgamma_intersecting": dict(misalignment=Misalignment(d_gamma_in=mis)),
@@ -172,8 +172,8 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     }
     singles, cycles, summ = [], [], []
     for name, kw in cases.items():
-        pair = make_pair(d, rho_c, rho_t, an, l, beta, tol=s["tol"], hand=s["pinion_hand"], **kw)
-        single, cyc, info = te_cycle(pair, s, B)
+        pair = make_pair(design, rho_c, rho_t, an, l, beta, tol=settings["tol"], hand=settings["pinion_hand"], **kw)
+        single, cyc, info = te_cycle(pair, settings, B)
         single.insert(0, "case", name)
         cyc.insert(0, "case", name)
         singles.append(single)
@@ -186,12 +186,12 @@ def te(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     }
 
 
-def _worm_tca(pair, s, per, n, start=worm_start):
+def _worm_tca(pair, settings, per, n, start=worm_start):
     """TCA on the grid phi1 = k per/n covering one cycle each side of the TE vertex: first
     |k| <= n, then the grid is extended on the vertex side (the 3' errors move the vertex by up to
     about half a cycle). Returns (ContactPoints, phi1)."""
     phi = np.arange(-n, n + 1) * per / n
-    c = solve_with_retries(pair, phi, start(pair, phi), s, passes=1)
+    c = solve_with_retries(pair, phi, start(pair, phi), settings, passes=1)
     ok = c.converged
     if ok.sum() < 3:
         return c, phi
@@ -203,14 +203,14 @@ def _worm_tca(pair, s, per, n, start=worm_start):
     if len(extra) == 0:
         return c, phi
     pe = extra * per / n
-    ce = solve_with_retries(pair, pe, start(pair, pe), s, passes=1)
+    ce = solve_with_retries(pair, pe, start(pair, pe), settings, passes=1)
     phi_all = np.concatenate([phi, pe])
     order = np.argsort(phi_all)
     parts = {f: np.concatenate([getattr(c, f), getattr(ce, f)])[order] for f in c.ARRAYS}
     return type(c)(formulation=c.formulation, **parts), phi_all[order]
 
 
-def _worm_case(s, d, name, kw, B, **pair_kw):
+def _worm_case(settings, design, name, kw, B, **pair_kw):
     """TCA of one worm-ground case over one cycle each side: (single rows, cycle rows, summary row).
 
     TE_max is the peak-to-peak TE over the meshing cycle between the transfer points (where
@@ -219,17 +219,17 @@ def _worm_case(s, d, name, kw, B, **pair_kw):
     is the same with contact limited to |z| <= B/2. Contact is limited to the active profile
     (Table 6.2.2 version 3). The TCA grid covers one cycle each side of the TE vertex
     (:func:`_worm_tca`; ``uncovered_points`` counts the phi1 of the cycle left without a pair)."""
-    Pn = d["P_n_per_in"]
-    per = 2 * np.pi / d["N1"]
-    n = int(s["worm_points_per_cycle"])
-    pair = make_worm_pair(d, s, **kw, **pair_kw)
-    c, phi = _worm_tca(pair, s, per, n)
+    Pn = design["P_n_per_in"]
+    per = 2 * np.pi / design["N1"]
+    n = int(settings["worm_points_per_cycle"])
+    pair = make_worm_pair(design, settings, **kw, **pair_kw)
+    c, phi = _worm_tca(pair, settings, per, n)
     drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
     # rack profile parameter of the contact point (the worm's and the pinion's rack coincide) and
     # its height x_b on the rack: the active profile is -ha <= x_b <= hd (Table 6.2.2 version 3)
     u_c = pair.flank1.solve(c.u1, c.v1).params[:, 0]
     x_b = pair.flank1.worm.rack.profile(u_c)[0]
-    on_profile = (x_b >= -d["ha_Pn"][3] / Pn) & (x_b <= d["hd_Pn"][3] / Pn)
+    on_profile = (x_b >= -design["ha_Pn"][3] / Pn) & (x_b <= design["hd_Pn"][3] / Pn)
     use = c.converged & on_profile
     te_v = np.where(use, c.te_arcsec, np.nan)
     z = np.where(use, c.position[:, 2], np.nan)
@@ -288,22 +288,22 @@ def _worm_case(s, d, name, kw, B, **pair_kw):
     return single, cyc, row
 
 
-def _lead_correction(d, summ) -> float:
+def _lead_correction(design, summ) -> float:
     """Lead correction (rad) of the dgamma = +3' drive (sec. 5.4): eq 5.4.7 inverted for the TCA
     shift of the contact centre, the sign from the dlambda runs (dlambda > 0 moves it by k dlambda)."""
-    _, an, beta, _ = basics(d)
+    _, an, beta, _ = basics(design)
     zc = {r["case"]: r.get("vertex_z_in", np.nan) for r in summ}
     shift_g = zc["worm_dgamma_plus"] - zc["worm_aligned"]
     k_sign = np.sign(zc["worm_dlambda_plus"] - zc["worm_aligned"])
-    return -shift_g / model.delta_l_eq_5_4_7(k_sign, d["a_pl_per_in"], d["r_pw_in"], an, beta)
+    return -shift_g / model.delta_l_eq_5_4_7(k_sign, design["a_pl_per_in"], design["r_pw_in"], an, beta)
 
 
-def worm(s: dict, d: dict) -> dict[str, pd.DataFrame]:
+def worm(settings: dict, design: dict) -> dict[str, pd.DataFrame]:
     """TCA of the worm-ground (plunged) pinion with the gear: TE over the meshing cycle, aligned and
     with 3 arcmin dgamma / dlambda (sec. 5.5 case 2, figs 5.5.8-5.5.10), then the dgamma = +3'
     drive with the lead correction of eq 5.4.7: ``worm_single``, ``worm_cycle``, ``worm_summary``."""
-    mis = s["misalignment_arcmin"] * ARCMIN
-    B, _ = face_width(s, d)
+    mis = settings["misalignment_arcmin"] * ARCMIN
+    B, _ = face_width(settings, design)
     cases = {
         "worm_aligned": dict(),
         "worm_dgamma_plus": dict(misalignment=Misalignment(d_gamma_out=mis)),
@@ -313,12 +313,12 @@ def worm(s: dict, d: dict) -> dict[str, pd.DataFrame]:
     }
     singles, cycles, summ = [], [], []
     for name, kw in cases.items():
-        single, cyc, row = _worm_case(s, d, name, kw, B)
+        single, cyc, row = _worm_case(settings, design, name, kw, B)
         singles.append(single)
         cycles.append(cyc)
         summ.append(row)
-    kw = dict(misalignment=Misalignment(d_gamma_out=mis), d_lambda=float(_lead_correction(d, summ)))
-    single, cyc, row = _worm_case(s, d, "worm_dgamma_plus_lead_corrected", kw, B)
+    kw = dict(misalignment=Misalignment(d_gamma_out=mis), d_lambda=float(_lead_correction(design, summ)))
+    single, cyc, row = _worm_case(settings, design, "worm_dgamma_plus_lead_corrected", kw, B)
     return {
         "worm_single": pd.concat(singles + [single], ignore_index=True),
         "worm_cycle": pd.concat(cycles + [cyc], ignore_index=True),
@@ -334,17 +334,17 @@ WORM_CHOICES = {
 }
 
 
-def worm_choices(s: dict, d: dict) -> pd.DataFrame:
+def worm_choices(settings: dict, design: dict) -> pd.DataFrame:
     """What each set-up choice of the worm-ground pinion changes: TE_max (over the cycle between
     transfer points, and face-limited) of the aligned drive and of dgamma = +-3 arcmin, with the
     settings' set-up and with one choice changed at a time (``worm_choice_variants``:
     :data:`WORM_CHOICES`). A separate job: three TCAs per variant."""
-    B, _ = face_width(s, d)
-    cases = _gamma_cases(s)
+    B, _ = face_width(settings, design)
+    cases = _gamma_cases(settings)
     rows = []
-    for variant in s["worm_choice_variants"]:
+    for variant in settings["worm_choice_variants"]:
         for name, kw in cases.items():
-            _, _, row = _worm_case(s, d, name, kw, B, **WORM_CHOICES[variant])
+            _, _, row = _worm_case(settings, design, name, kw, B, **WORM_CHOICES[variant])
             rows.append(dict(variant=variant, **{k: row[k] for k in _CHOICE_COLUMNS}))
     return pd.DataFrame(rows)
 
@@ -364,11 +364,11 @@ _CHOICE_COLUMNS = (
 )
 
 
-def _disk_te(s, d, E_d, **kw):
+def _disk_te(settings, design, E_d, **kw):
     """(TE_max over the cycle between transfer points, ContactPoints, phi1) of the disk-ground pinion."""
-    per = 2 * np.pi / d["N1"]
-    pair = make_disk_pair(d, s, E_d, **kw)
-    c, phi = _worm_tca(pair, s, per, int(s["worm_points_per_cycle"]), start=disk_start)
+    per = 2 * np.pi / design["N1"]
+    pair = make_disk_pair(design, settings, E_d, **kw)
+    c, phi = _worm_tca(pair, settings, per, int(settings["worm_points_per_cycle"]), start=disk_start)
     drive = _drive_sign(c, int(np.argmin(np.abs(phi))))
     te = np.where(c.converged, c.te_arcsec, np.nan)
     z = np.where(c.converged, c.position[:, 2], np.nan)
@@ -376,7 +376,7 @@ def _disk_te(s, d, E_d, **kw):
     return tmax, c, phi, gaps, pair
 
 
-def disk(s: dict, d: dict) -> pd.DataFrame:
+def disk(settings: dict, design: dict) -> pd.DataFrame:
     """Pinion ground by the plunging disk (sec. 4.2, 5.5 case 1; appendices A-B), whose size the
     report does not give. INFERENCE: the disk-pinion shortest distance E_d (= disk radius +
     pinion dedendum radius) is solved so that the aligned TE_max equals the printed 11.54 arcsec
@@ -387,17 +387,17 @@ def disk(s: dict, d: dict) -> pd.DataFrame:
     tooth assumption of the heights job. TE_max over the cycle between the transfer points."""
     from scipy.optimize import brentq
 
-    target = d["disk_te_aligned_printed_arcsec"]
-    lo, hi = s["disk_E_d_bracket_in"]
-    E_d, res = brentq(lambda e: _disk_te(s, d, e)[0] - target, lo, hi, xtol=1e-4, full_output=True)
-    mis = s["misalignment_arcmin"] * ARCMIN
+    target = design["disk_te_aligned_printed_arcsec"]
+    lo, hi = settings["disk_E_d_bracket_in"]
+    E_d, res = brentq(lambda e: _disk_te(settings, design, e)[0] - target, lo, hi, xtol=1e-4, full_output=True)
+    mis = settings["misalignment_arcmin"] * ARCMIN
     cases = {
-        **{k: v for k, v in _gamma_cases(s).items()},
+        **{k: v for k, v in _gamma_cases(settings).items()},
         "dlambda_lead_plus": dict(d_lambda=mis),
     }
     rows = []
     for name, kw in cases.items():
-        tmax, c, phi, gaps, pair = _disk_te(s, d, E_d, **kw)
+        tmax, c, phi, gaps, pair = _disk_te(settings, design, E_d, **kw)
         rows.append(
             dict(
                 case=name,

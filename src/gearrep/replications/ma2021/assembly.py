@@ -81,16 +81,16 @@ def closed_form_ellipse(mesh: Mesh, phi1, delta: float) -> dict:
     }
 
 
-def pitch_point_closed_form(design: dict, prm: dict) -> dict:
+def pitch_point_closed_form(design: dict, params: dict) -> dict:
     """Closed-form ellipse at the pitch point (middle section, involute): profile radii
     R_i sin(alpha), axial radii R_T -+ q (q = pi m / 4), S = 2 pi delta / sqrt(k_profile k_axial)."""
-    al = np.deg2rad(prm["pressure_angle_deg"])
+    al = np.deg2rad(params["pressure_angle_deg"])
     R1, R2 = design["module"] * design["z1"] / 2, design["module"] * design["z2"] / 2
     q = np.pi * design["module"] / 4
     RT = design["R_T"]
     kp = (1 / R1 + 1 / R2) / np.sin(al)
     ka = np.cos(al) * (1 / (RT - q) - 1 / (RT + q))
-    d = prm["delta_mm"]
+    d = params["delta_mm"]
     a, b = np.sqrt(2 * d / ka), np.sqrt(2 * d / kp)
     return {
         "kappa_axial": ka,

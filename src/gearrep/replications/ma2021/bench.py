@@ -11,8 +11,7 @@ from ...tca import GearPair, Misalignment
 from ...units import ARCMIN
 from .assembly import PRIMARY
 from .contact import contact_geometry
-from .design import Design
-from .design import prm as _prm
+from .design import Design, merged_params
 
 __all__ = ["bench_cases", "robustness_cases", "BENCH_DESIGN", "BENCH_S_TOL_REL", "BENCH_CLIP_TOL_REL"]
 
@@ -25,10 +24,10 @@ BENCH_S_TOL_REL = 1e-6
 BENCH_CLIP_TOL_REL = 1e-2
 
 
-def _bench_curve(design: dict, prm: dict, setting: dict, n_points: int = 41) -> pd.DataFrame:
+def _bench_curve(design: dict, params: dict, setting: dict, n_points: int = 41) -> pd.DataFrame:
     """Contact geometry of the primary flank pair at ``n_points`` pinion angles spanning the real
     path (both ends included, where the truncation bites), with the knobs of ``setting``."""
-    q = {**prm, **setting}
+    q = {**params, **setting}
     mesh = assemble(design, PRIMARY[0], q)
     lim = path_limits(mesh)
     phi1 = np.linspace(lim["phi1_lo"], lim["phi1_hi"], n_points)
@@ -58,11 +57,11 @@ def bench_cases(settings: dict, design: Design) -> dict:
     * ``truncation``: knobs ``n_clip_nodes`` (quadrature along the long axis) and ``n_tip_edge``
       (tip-edge samples); error = max |S_clipped - S_clipped_ref| / max S_ref; target a tenth of
       the 1 % criterion of the claims."""
-    prm = _prm(settings, design)
+    params = merged_params(settings, design)
     pair = design.by_name(BENCH_DESIGN)
 
     def run(setting):
-        return _bench_curve(pair, prm, setting)
+        return _bench_curve(pair, params, setting)
 
     return {
         "tca_S": {
@@ -97,7 +96,7 @@ def robustness_cases(settings: dict, design: Design) -> list:
     left out), ``nominal`` (the study's starts, :func:`gearrep.surfaces.catt.starts`) and
     ``formulations`` (conventional only: the flanks are parameterised by the cutter, with no
     explicit form)."""
-    q = _prm(settings, design)
+    q = merged_params(settings, design)
     mesh = assemble(design.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = path_limits(mesh)
     base = mesh.gear_pair

@@ -53,7 +53,7 @@ _CYCLE_COLUMNS = [
 ]
 
 
-def _point_contact(cycle: CycleIndex, pair, reading, prm):
+def _point_contact(cycle: CycleIndex, pair, reading, params):
     """Point contact: both principal relative curvatures positive along the path (sec 4 pair)."""
     c = curve(cycle, "sec4_3d_model", pair, reading)
     kl, ks = c["kappa_long_per_mm"].to_numpy(), c["kappa_short_per_mm"].to_numpy()
@@ -63,7 +63,7 @@ def _point_contact(cycle: CycleIndex, pair, reading, prm):
     )
 
 
-#: further reading-dependent claim id -> verdict(cycle index, pair, reading, prm) -> (holds, evidence)
+#: further reading-dependent claim id -> verdict(cycle index, pair, reading, params) -> (holds, evidence)
 _READING_CLAIMS = {"004-S3-point_contact": _point_contact}
 
 
@@ -80,14 +80,14 @@ def _settings(tables) -> dict:
 def _sweep_verdict(cid):
     fig, kind = _SWEEP_CLAIMS[cid]
     if kind == "cliff":
-        return lambda cycle, pair, rd, prm: verdict_cliff(fig, cycle, pair, rd, prm)
-    return lambda cycle, pair, rd, prm: verdict_sweep(kind, fig, cycle, pair, rd, prm)
+        return lambda cycle, pair, rd, params: verdict_cliff(fig, cycle, pair, rd, params)
+    return lambda cycle, pair, rd, params: verdict_sweep(kind, fig, cycle, pair, rd, params)
 
 
 def claim_verdicts(tables: dict) -> pd.DataFrame:
     """Verdict of every reading-dependent claim for each flank pair and reading of phi1: one row
     per (claim, pair, reading) with ``holds`` and the numbers (``evidence``)."""
-    prm = _settings(tables)
+    params = _settings(tables)
     # only the columns the verdicts read (boolean selection on the full table dominates the time)
     cycle = CycleIndex(tables["cycle"][_CYCLE_COLUMNS])
     verdicts = {**{cid: _sweep_verdict(cid) for cid in _SWEEP_CLAIMS}, **_READING_CLAIMS}
@@ -95,7 +95,7 @@ def claim_verdicts(tables: dict) -> pd.DataFrame:
     for cid, verdict in verdicts.items():
         for pair in PAIRS:
             for rd in READINGS:
-                ok, ev = verdict(cycle, pair, rd, prm)
+                ok, ev = verdict(cycle, pair, rd, params)
                 rows.append(
                     {
                         "id": cid,

@@ -215,12 +215,12 @@ def _paper_route(K1, K2, concave_is_1: bool) -> dict:
     }
 
 
-def _truncated_areas(mesh, cp, prm, tips, R1, R2, n1, e_long, a, b, S, solved):
+def _truncated_areas(mesh, cp, params, tips, R1, R2, n1, e_long, a, b, S, solved):
     """S_clipped at every solved point on both flanks (0 elsewhere)."""
     on = solved & mesh.f1.contains(cp.u1, cp.v1) & mesh.f2.contains(cp.u2, cp.v2)
     O2 = mesh.gear_pair.O2
     Sc = np.zeros(len(cp.phi1))
-    nodes = gauss_nodes(prm["n_clip_nodes"])
+    nodes = gauss_nodes(params["n_clip_nodes"])
     for i in range(len(Sc)):
         if not (on[i] and np.isfinite(S[i])):
             continue
@@ -233,11 +233,11 @@ def _truncated_areas(mesh, cp, prm, tips, R1, R2, n1, e_long, a, b, S, solved):
     return Sc, on
 
 
-def contact_geometry(mesh: Mesh, cp, prm: dict, tips=None, clip: bool = True) -> pd.DataFrame:
+def contact_geometry(mesh: Mesh, cp, params: dict, tips=None, clip: bool = True) -> pd.DataFrame:
     """Curvatures, relative curvature and the ellipse (with and without truncation) at TCA points
-    ``cp``. ``prm`` brings ``delta_mm`` and ``n_tip_edge``/``n_clip_nodes``; ``tips`` from
+    ``cp``. ``params`` brings ``delta_mm`` and ``n_tip_edge``/``n_clip_nodes``; ``tips`` from
     :func:`tip_edges` (computed if None); ``clip=False`` skips the truncation (S_clipped NaN)."""
-    delta = prm["delta_mm"]
+    delta = params["delta_mm"]
     R1, R2 = rot_z(np.asarray(cp.phi1, float)), rot_z(-np.asarray(cp.phi2, float))
     with np.errstate(invalid="ignore", divide="ignore"):
         M1 = _carried(mesh.p1.evaluate(cp.u1, cp.v1), R1)
@@ -259,9 +259,9 @@ def contact_geometry(mesh: Mesh, cp, prm: dict, tips=None, clip: bool = True) ->
     )
     solved = (cp.status == Status.CONVERGED) | (cp.status == Status.OFF_FLANK)
     if clip:
-        tips = tip_edges(mesh, prm["n_tip_edge"]) if tips is None else tips
+        tips = tip_edges(mesh, params["n_tip_edge"]) if tips is None else tips
         Sc, on = _truncated_areas(
-            mesh, cp, prm, tips, R1, R2, n1, e_long, main["a_mm"], main["b_mm"], main["S_mm2"], solved
+            mesh, cp, params, tips, R1, R2, n1, e_long, main["a_mm"], main["b_mm"], main["S_mm2"], solved
         )
     else:
         Sc, on = np.full(len(cp.phi1), np.nan), solved & mesh.f1.contains(cp.u1, cp.v1) & mesh.f2.contains(cp.u2, cp.v2)

@@ -14,7 +14,7 @@ import numpy as np
 
 from ...settings import SettingError
 
-__all__ = ["Design", "params_from_published", "validate", "prm"]
+__all__ = ["Design", "params_from_published", "validate", "merged_params"]
 
 _COMMON = "figs12-15_common"
 _TOOL = "sec4_3d_model"
@@ -137,7 +137,7 @@ def validate(settings: dict, design: Design) -> None:
         )
 
 
-def prm(settings: dict, design: Design) -> dict:
+def merged_params(settings: dict, design: Design) -> dict:
     """The settings with the design's common data (delta, window, tool data) beside them: the one
     mapping the computations read."""
     return {

@@ -38,11 +38,11 @@ def _heights(surface_pos, surface_eval, P, e1, e2, n, w1, w2, start):
     return r @ n, res
 
 
-def exact_contact_region(mesh: Mesh, row: pd.Series, prm: dict, n_dirs: int) -> dict:
+def exact_contact_region(mesh: Mesh, row: pd.Series, params: dict, n_dirs: int) -> dict:
     """Region where the exact separation of the two flanks is <= delta, around a TCA point:
     boundary radius found along ``n_dirs`` directions of the tangent plane; its area and centroid
     compared with the ellipse."""
-    delta = prm["delta_mm"]
+    delta = params["delta_mm"]
     phi1, phi2 = np.radians(row["phi1_mesh_deg"]), np.radians(row["phi2_mesh_deg"])
     R1, R2 = rot_z(phi1), rot_z(-phi2)
     O2 = mesh.gear_pair.O2

@@ -110,17 +110,17 @@ def _footprint_row(r, i, face_mm) -> dict:
     )
 
 
-def loaded_footprint(s: dict, design: Design) -> dict:
+def loaded_footprint(settings: dict, design: Design) -> dict:
     """Job ``loaded_footprint``: the sec 4 pair under the FE model's torque and material, each flank
     pair, a meshing cycle of ``loaded_positions`` positions; the footprint at the position of the
     largest flank pressure (module docstring), with the claim's verdict per flank pair."""
     d = design.by_name("sec4_3d_model")
-    prm = dict(pressure_angle_deg=design.pressure_angle_deg, addendum=design.addendum, clearance=design.clearance)
+    params = dict(pressure_angle_deg=design.pressure_angle_deg, addendum=design.addendum, clearance=design.clearance)
     mat = ltca.Material(design.fea["E_MPa"], design.fea["poisson"])
     rows = []
     for pid in PAIRS:
-        pair = assemble(d, pid, prm).gear_pair
-        phi = ltca.cycle_positions(pair, int(s["loaded_positions"]))
+        pair = assemble(d, pid, params).gear_pair
+        phi = ltca.cycle_positions(pair, int(settings["loaded_positions"]))
         r = ltca.loaded_contact(pair, design.fea["torque_Nm"], phi, materials=mat, pairs=[-2, -1, 0, 1, 2])
         ok = r.converged
         i = int(np.nanargmax(np.where(ok, r.max_pressure_MPa, -np.inf)))

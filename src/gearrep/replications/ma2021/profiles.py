@@ -66,16 +66,16 @@ def involute_deviation(points, r_b=None):
     return float(np.max(np.abs(resid(rb)))), float(rb)
 
 
-def section_shapes(design: dict, prm: dict) -> pd.DataFrame:
+def section_shapes(design: dict, params: dict) -> pd.DataFrame:
     """Middle section (z = 0) vs the involute r_b = R cos(alpha); sections at the offsets of
     ``section_check`` vs their best-fit involute and vs an involute of the nominal r_b; eq (28) and
     eq (29) vs eq (6)."""
-    g = gear_data(design, prm, 1)
+    g = gear_data(design, params, 1)
     rows = []
-    radii = np.linspace(g.r_form + 1e-6 * g.module, g.r_a, prm["section_check"]["n_points"])
+    radii = np.linspace(g.r_form + 1e-6 * g.module, g.r_a, params["section_check"]["n_points"])
     for side in (1, -1):
         f = CATTFlank(g, side)
-        for z in [0.0] + list(prm["section_check"]["sections_mm"]):
+        for z in [0.0] + list(params["section_check"]["sections_mm"]):
             pts, res = f.section_profile(z, radii)
             dev_nom, _ = involute_deviation(pts, r_b=g.r_b)
             dev_fit, rb_fit = involute_deviation(pts)
@@ -96,10 +96,10 @@ def section_shapes(design: dict, prm: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def equation_checks(design: dict, prm: dict) -> pd.DataFrame:
+def equation_checks(design: dict, params: dict) -> pd.DataFrame:
     """Eq (6) literal vs closed form, eq (28) and eq (29) vs eq (6) in their conventions, and the
     equation of meshing residual (max abs over a parameter grid)."""
-    g = gear_data(design, prm, 1)
+    g = gear_data(design, params, 1)
     rows = []
     th = np.linspace(-0.08, 0.08, 9)[:, None]
     for side, upper_lbl in ((1, "upper"), (-1, "lower")):
@@ -152,15 +152,21 @@ def equation_checks(design: dict, prm: dict) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def thickness_table(prm: dict) -> pd.DataFrame:
-    """Pitch-circle transverse tooth thickness at the sections of ``prm["thickness"]`` for each R_T
+def thickness_table(params: dict) -> pd.DataFrame:
+    """Pitch-circle transverse tooth thickness at the sections of ``params["thickness"]`` for each R_T
     (Fig 14), solved on eq (6) and by its closed form."""
-    th = prm["thickness"]
+    th = params["thickness"]
     rows = []
-    al = np.deg2rad(prm["pressure_angle_deg"])
+    al = np.deg2rad(params["pressure_angle_deg"])
     for RT in th["R_T"]:
         g = CATTGearData(
-            int(th["z"]), float(th["module"]), float(RT), float(th["face_width"]), al, prm["addendum"], prm["clearance"]
+            int(th["z"]),
+            float(th["module"]),
+            float(RT),
+            float(th["face_width"]),
+            al,
+            params["addendum"],
+            params["clearance"],
         )
         zs = np.asarray(th["sections_mm"], float)
         t, res = tooth_thickness(g, zs)

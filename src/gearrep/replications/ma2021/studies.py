@@ -23,8 +23,7 @@ from .assembly import (
     reading_to_mesh,
 )
 from .contact import contact_geometry, tip_edges
-from .design import Design
-from .design import prm as _prm
+from .design import Design, merged_params
 from .gap import exact_contact_region
 from .loaded import loaded_footprint
 from .profiles import equation_checks, section_shapes, thickness_table
@@ -49,31 +48,31 @@ def _key(d: dict):
     return (d["z1"], d["z2"], d["module"], d["R_T"], d["face_width"])
 
 
-def reading_grid(mesh, lim: dict, reading: str, prm: dict):
+def reading_grid(mesh, lim: dict, reading: str, params: dict):
     """Paper abscissa grid (deg) of one reading and the real path's ends in it: the whole real path
     plus the window where it lies within ``off_path_margin_deg`` of the path, every
     ``step_deg``, with the window ends, 0, the near-top angles and the path ends added."""
-    wlo, whi = prm["window_deg"]
+    wlo, whi = params["window_deg"]
     ends = sorted(np.degrees(mesh_to_reading(mesh, reading, [lim["phi1_lo"], lim["phi1_hi"]])))
-    lo = max(min(wlo, ends[0]), ends[0] - prm["off_path_margin_deg"])
-    hi = min(max(whi, ends[1]), ends[1] + prm["off_path_margin_deg"])
-    extra = [x for x in (wlo, whi, 0.0, prm["near_top_eval_deg"], whi - prm["near_top_deg"]) if lo <= x <= hi]
-    step = prm["step_deg"]
+    lo = max(min(wlo, ends[0]), ends[0] - params["off_path_margin_deg"])
+    hi = min(max(whi, ends[1]), ends[1] + params["off_path_margin_deg"])
+    extra = [x for x in (wlo, whi, 0.0, params["near_top_eval_deg"], whi - params["near_top_deg"]) if lo <= x <= hi]
+    step = params["step_deg"]
     g = np.arange(math.floor(lo / step) * step, hi + 1e-9, step)
     grid = np.unique(np.round(np.concatenate([g, np.asarray(extra + [lo, hi, ends[0], ends[1]], float)]), 10))
     return grid[(grid >= lo - 1e-9) & (grid <= hi + 1e-9)], ends
 
 
-def curve(mesh, reading: str, prm: dict, tips=None, clip: bool = True, near_deg=None) -> pd.DataFrame:
+def curve(mesh, reading: str, params: dict, tips=None, clip: bool = True, near_deg=None) -> pd.DataFrame:
     """TCA and contact geometry of one pair along the grid of one reading (:func:`reading_grid`),
     with the columns phi_paper_deg, in_window and on_path in front; only at the grid points
     nearest to the angles ``near_deg`` (paper abscissa, deg) if given."""
-    wlo, whi = prm["window_deg"]
-    grid, ends = reading_grid(mesh, path_limits(mesh), reading, prm)
+    wlo, whi = params["window_deg"]
+    grid, ends = reading_grid(mesh, path_limits(mesh), reading, params)
     if near_deg is not None:
         grid = grid[sorted({int(np.argmin(np.abs(grid - x))) for x in near_deg})]
-    cp = solve_cycle(mesh, reading_to_mesh(mesh, reading, np.radians(grid)), prm)
-    geo = contact_geometry(mesh, cp, prm, tips, clip=clip)
+    cp = solve_cycle(mesh, reading_to_mesh(mesh, reading, np.radians(grid)), params)
+    geo = contact_geometry(mesh, cp, params, tips, clip=clip)
     geo.insert(0, "phi_paper_deg", grid)
     geo.insert(1, "in_window", (grid >= wlo - 1e-9) & (grid <= whi + 1e-9))
     geo.insert(2, "on_path", (grid >= ends[0] - 1e-9) & (grid <= ends[1] + 1e-9))
@@ -96,20 +95,20 @@ def _design_columns(d: dict, pid: str, rd: str) -> dict:
 def designs(settings: dict, design: Design) -> dict:
     """``designs``: every pair, flank pair and reading with its real path in the paper abscissa
     (closed form on the middle section) against the paper's window."""
-    prm = _prm(settings, design)
-    wlo, whi = prm["window_deg"]
+    params = merged_params(settings, design)
+    wlo, whi = params["window_deg"]
     rows = []
     for d in design.designs:
         for pid in PAIRS:
-            mesh = assemble(d, pid, prm)
+            mesh = assemble(d, pid, params)
             lim = path_limits(mesh)
             for rd in READINGS:
-                _, ends = reading_grid(mesh, lim, rd, prm)
+                _, ends = reading_grid(mesh, lim, rd, params)
                 rows.append(
                     {
                         **_design_columns(d, pid, rd),
                         "B_mm": d["face_width"],
-                        "pressure_angle_deg": prm["pressure_angle_deg"],
+                        "pressure_angle_deg": params["pressure_angle_deg"],
                         "path_start_deg": ends[0],
                         "path_end_deg": ends[1],
                         "window_lo_deg": wlo,
@@ -124,30 +123,30 @@ def designs(settings: dict, design: Design) -> dict:
 def cycle(settings: dict, design: Design) -> dict:
     """``cycle``: TCA and contact ellipse along the meshing cycle, one row per design x flank pair x
     reading x abscissa (pairs with equal data are solved once)."""
-    prm = _prm(settings, design)
+    params = merged_params(settings, design)
     done, frames = {}, []
     for d in design.designs:
         for pid in PAIRS:
             if (_key(d), pid) not in done:
-                mesh = assemble(d, pid, prm)
-                tips = tip_edges(mesh, prm["n_tip_edge"])
-                done[(_key(d), pid)] = {rd: curve(mesh, rd, prm, tips) for rd in READINGS}
+                mesh = assemble(d, pid, params)
+                tips = tip_edges(mesh, params["n_tip_edge"])
+                done[(_key(d), pid)] = {rd: curve(mesh, rd, params, tips) for rd in READINGS}
             for rd, geo in done[(_key(d), pid)].items():
                 cols = _design_columns(d, pid, rd)
                 frames.append(pd.concat([pd.DataFrame({k: [v] * len(geo) for k, v in cols.items()}), geo], axis=1))
     return {"cycle": pd.concat(frames, ignore_index=True)}
 
 
-def _pitch_points(prm: dict, design: Design):
+def _pitch_points(params: dict, design: Design):
     """(design, mesh, contact row at the pitch point, closed form) per design and flank pair: the
     TCA from the perturbed start at phi1 = 0 (pairs with equal data solved once)."""
     out, done = [], {}
     for d in design.designs:
-        cf = pitch_point_closed_form(d, prm)
+        cf = pitch_point_closed_form(d, params)
         for pid in PAIRS:
-            mesh = assemble(d, pid, prm)
+            mesh = assemble(d, pid, params)
             if (_key(d), pid) not in done:
-                geo0 = contact_geometry(mesh, solve_cycle(mesh, np.array([0.0]), prm), prm, clip=False)
+                geo0 = contact_geometry(mesh, solve_cycle(mesh, np.array([0.0]), params), params, clip=False)
                 done[(_key(d), pid)] = geo0.iloc[0]
             out.append((d, mesh, done[(_key(d), pid)], cf))
     return out
@@ -156,7 +155,7 @@ def _pitch_points(prm: dict, design: Design):
 def pitch_point(settings: dict, design: Design) -> dict:
     """``pitch_point``: the TCA pipeline at the pitch point against the closed form."""
     rows = []
-    for d, mesh, r0, cf in _pitch_points(_prm(settings, design), design):
+    for d, mesh, r0, cf in _pitch_points(merged_params(settings, design), design):
         rows.append(
             {
                 "design": d["name"],
@@ -211,42 +210,42 @@ def precision(settings: dict, design: Design) -> dict:
     """``precision``: how much the long axis loses to cancellation at the pitch point, per pair."""
     return {
         "precision": pd.DataFrame(
-            [_precision_row(mesh, r0, cf) for _, mesh, r0, cf in _pitch_points(_prm(settings, design), design)]
+            [_precision_row(mesh, r0, cf) for _, mesh, r0, cf in _pitch_points(merged_params(settings, design), design)]
         )
     }
 
 
 def thickness(settings: dict, design: Design) -> dict:
     """``thickness``: pitch-circle tooth thickness vs R_T at the sections of Fig 14."""
-    return {"thickness": thickness_table(_prm(settings, design))}
+    return {"thickness": thickness_table(merged_params(settings, design))}
 
 
 def sections(settings: dict, design: Design) -> dict:
     """``sections``: transverse sections of the ``section_check`` design against involutes."""
-    prm = _prm(settings, design)
-    return {"sections": section_shapes(design.by_name(settings["section_check"]["design"]), prm)}
+    params = merged_params(settings, design)
+    return {"sections": section_shapes(design.by_name(settings["section_check"]["design"]), params)}
 
 
 def equations(settings: dict, design: Design) -> dict:
     """``equations``: eq (6) literal vs closed form, eq (28)-(29) vs eq (6), the meshing residual."""
-    prm = _prm(settings, design)
-    return {"equations": equation_checks(design.by_name(settings["section_check"]["design"]), prm)}
+    params = merged_params(settings, design)
+    return {"equations": equation_checks(design.by_name(settings["section_check"]["design"]), params)}
 
 
 def gap_check(settings: dict, design: Design) -> dict:
     """``gap_check``: exact <= delta separation region vs the ellipse at the grid points (reading R1)
     nearest to ``gap_check.phi_deg`` of the ``gap_check`` design, both flank pairs."""
-    prm = _prm(settings, design)
+    params = merged_params(settings, design)
     d = design.by_name(settings["gap_check"]["design"])
     rows = []
     for pid in PAIRS:
-        mesh = assemble(d, pid, prm)
-        sel = curve(mesh, "R1", prm, clip=False, near_deg=settings["gap_check"]["phi_deg"])
+        mesh = assemble(d, pid, params)
+        sel = curve(mesh, "R1", params, clip=False, near_deg=settings["gap_check"]["phi_deg"])
         for ph in settings["gap_check"]["phi_deg"]:
             r = sel.loc[(sel["phi_paper_deg"] - ph).abs().idxmin()]
             if not r["solved"]:
                 continue
-            ex = exact_contact_region(mesh, r, prm, settings["gap_check"]["n_dirs"])
+            ex = exact_contact_region(mesh, r, params, settings["gap_check"]["n_dirs"])
             rows.append(
                 {
                     "design": d["name"],
@@ -265,23 +264,23 @@ def gap_check(settings: dict, design: Design) -> dict:
 def settings_table(settings: dict, design: Design) -> dict:
     """``settings``: the settings and design data the claims read back (window, near-top zone,
     delta, grid, tool data, tolerance) and the primary flank pair and reading."""
-    prm = _prm(settings, design)
-    wlo, whi = prm["window_deg"]
+    params = merged_params(settings, design)
+    wlo, whi = params["window_deg"]
     return {
         "settings": pd.DataFrame(
             [
                 {
                     "window_lo_deg": wlo,
                     "window_hi_deg": whi,
-                    "near_top_deg": prm["near_top_deg"],
-                    "near_top_eval_deg": prm["near_top_eval_deg"],
-                    "delta_mm": prm["delta_mm"],
-                    "step_deg": prm["step_deg"],
-                    "off_path_margin_deg": prm["off_path_margin_deg"],
-                    "pressure_angle_deg": prm["pressure_angle_deg"],
-                    "addendum": prm["addendum"],
-                    "clearance": prm["clearance"],
-                    "tol": prm["tol"],
+                    "near_top_deg": params["near_top_deg"],
+                    "near_top_eval_deg": params["near_top_eval_deg"],
+                    "delta_mm": params["delta_mm"],
+                    "step_deg": params["step_deg"],
+                    "off_path_margin_deg": params["off_path_margin_deg"],
+                    "pressure_angle_deg": params["pressure_angle_deg"],
+                    "addendum": params["addendum"],
+                    "clearance": params["clearance"],
+                    "tol": params["tol"],
                     "n_designs": len(design.designs),
                     "primary_pair": PRIMARY[0],
                     "primary_reading": PRIMARY[1],

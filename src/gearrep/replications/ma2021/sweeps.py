@@ -123,20 +123,20 @@ def _order(vals, increasing):
     return bool(np.all(d > 0) if increasing else np.all(d < 0))
 
 
-def _root_top_angles(curves, prm):
+def _root_top_angles(curves, params):
     """The near-root angle (latest of the window start and the curves' path starts), the near-top
     angle (earliest of near_top_eval_deg, the drops and the curves' ends, not below the root
     angle) and whether some curve falls from its first point (no pre-drop near-top angle)."""
-    nt_lo = prm["window_deg"][1] - prm["near_top_deg"]
-    root = max([prm["window_deg"][0]] + [float(c["phi_paper_deg"].iloc[0]) for c in curves.values()])
+    nt_lo = params["window_deg"][1] - params["near_top_deg"]
+    root = max([params["window_deg"][0]] + [float(c["phi_paper_deg"].iloc[0]) for c in curves.values()])
     drops = [_drop_start(c, nt_lo)[0] for c in curves.values()]
-    top = min([prm["near_top_eval_deg"]] + drops + [float(c["phi_paper_deg"].iloc[-1]) for c in curves.values()])
+    top = min([params["near_top_eval_deg"]] + drops + [float(c["phi_paper_deg"].iloc[-1]) for c in curves.values()])
     return root, max(top, root), top <= root + 1e-9
 
 
 def _v_rise(concave):
-    def verdict(fig, curves, tag, prm):
-        nt_lo = prm["window_deg"][1] - prm["near_top_deg"]
+    def verdict(fig, curves, tag, params):
+        nt_lo = params["window_deg"][1] - params["near_top_deg"]
         oks, infos = [], []
         for v, c in curves.items():
             ok, inf = _rise(c, nt_lo, concave=concave or fig == "F15")
@@ -147,14 +147,14 @@ def _v_rise(concave):
     return verdict
 
 
-def _v_falls_near_root(fig, curves, tag, prm):
-    root, _, _ = _root_top_angles(curves, prm)
+def _v_falls_near_root(fig, curves, tag, params):
+    root, _, _ = _root_top_angles(curves, params)
     Sr = [_at(c, root) for c in curves.values()]
     return [_order(Sr, increasing=False)], [f"[{tag} phi_root={root:.3g} deg: S={np.round(Sr, 3).tolist()} mm2]"]
 
 
-def _v_grows_near_top(fig, curves, tag, prm):
-    _, top, no_top = _root_top_angles(curves, prm)
+def _v_grows_near_top(fig, curves, tag, params):
+    _, top, no_top = _root_top_angles(curves, params)
     St = [_at(c, top) for c in curves.values()]
     note = "; a curve falls from the root on, no near-top angle before its drop" if no_top else ""
     return [_order(St, increasing=True) and not no_top], [
@@ -162,8 +162,8 @@ def _v_grows_near_top(fig, curves, tag, prm):
     ]
 
 
-def _v_top_more_sensitive(fig, curves, tag, prm):
-    root, top, no_top = _root_top_angles(curves, prm)
+def _v_top_more_sensitive(fig, curves, tag, params):
+    root, top, no_top = _root_top_angles(curves, params)
     vals = list(curves)
     spread_r = np.ptp([_at(c, root) for c in curves.values()])
     spread_t = np.ptp([_at(c, top) for c in curves.values()])
@@ -179,8 +179,8 @@ def _v_top_more_sensitive(fig, curves, tag, prm):
     ]
 
 
-def _v_grows_with_RT(fig, curves, tag, prm):
-    nt_lo = prm["window_deg"][1] - prm["near_top_deg"]
+def _v_grows_with_RT(fig, curves, tag, params):
+    nt_lo = params["window_deg"][1] - params["near_top_deg"]
     vals = list(curves)
     drops = min(_drop_start(c, nt_lo)[0] for c in curves.values())
     common = sorted(set.intersection(*(set(np.round(c["phi_paper_deg"], 9)) for c in curves.values())))
@@ -193,7 +193,7 @@ def _v_grows_with_RT(fig, curves, tag, prm):
     ]
 
 
-def _v_gain_diminishing(fig, curves, tag, prm):
+def _v_gain_diminishing(fig, curves, tag, params):
     vals = list(curves)
     S0 = np.array([_at(curves[v], 0.0) for v in vals])
     g = np.diff(S0) / np.diff(np.asarray(vals, float))
@@ -204,7 +204,7 @@ def _v_gain_diminishing(fig, curves, tag, prm):
     ]
 
 
-#: kind of sweep claim -> verdict(fig, curves of one family, family tag, prm) -> (oks, infos)
+#: kind of sweep claim -> verdict(fig, curves of one family, family tag, params) -> (oks, infos)
 SWEEP_VERDICTS = {
     "root_to_top": _v_rise(concave=False),
     "root_to_top_falling_rate": _v_rise(concave=True),
@@ -216,21 +216,21 @@ SWEEP_VERDICTS = {
 }
 
 
-def verdict_sweep(kind, fig, cycle: CycleIndex, pair, reading, prm):
+def verdict_sweep(kind, fig, cycle: CycleIndex, pair, reading, params):
     """Verdict and numbers of one sweep claim for one (pair, reading)."""
     oks, infos = [], []
     for fixed in SWEEPS[fig][3]:
         tag = ",".join(f"{k}={v}" for k, v in fixed.items())
-        o, i = SWEEP_VERDICTS[kind](fig, sweep_curves(cycle, fig, pair, reading, fixed), tag, prm)
+        o, i = SWEEP_VERDICTS[kind](fig, sweep_curves(cycle, fig, pair, reading, fixed), tag, params)
         oks += o
         infos += i
     return bool(all(oks)), " ".join(infos)
 
 
-def _cliff_of(c, prm):
+def _cliff_of(c, params):
     """(reaches a flank edge, holds, info) of one curve: the clipped area S_clipped (0 off the
     path) against the paper's pi a b over the window."""
-    whi = prm["window_deg"][1]
+    whi = params["window_deg"][1]
     ph = c["phi_paper_deg"].to_numpy()
     Sc = np.where(c["on_path"].astype(bool), c["S_clipped_mm2"].to_numpy(), 0.0)
     Su = c["S_mm2"].to_numpy()
@@ -244,7 +244,7 @@ def _cliff_of(c, prm):
     iu = int(np.nanargmax(Su))
     drop_u = 1.0 - float(np.nanmin(Su[iu:])) / Su[iu]
     ok = (not reaches_edge) or (
-        drop_c >= 0.3 and np.isfinite(phi_drop) and phi_drop >= whi - prm["near_top_deg"] - 1e-9
+        drop_c >= 0.3 and np.isfinite(phi_drop) and phi_drop >= whi - params["near_top_deg"] - 1e-9
     )
     onp = c["on_path"].astype(bool).to_numpy()
     root_ratio = float(Sc[onp][0] / Su[onp][0]) if onp.any() else np.nan
@@ -258,7 +258,7 @@ def _cliff_of(c, prm):
     )
 
 
-def verdict_cliff(fig, cycle: CycleIndex, pair, reading, prm):
+def verdict_cliff(fig, cycle: CycleIndex, pair, reading, params):
     """Cliff near the top: the truncated ellipse area drops by 30 % or more in the near-top zone
     on every curve that reaches a flank edge in the window (and at least one does)."""
     _, _, values, fixeds = SWEEPS[fig]
@@ -267,7 +267,7 @@ def verdict_cliff(fig, cycle: CycleIndex, pair, reading, prm):
         tag = ",".join(f"{k}={x}" for k, x in fixed.items())
         for v in values:
             c = curve(cycle, _design(cycle, fig, v, fixed), pair, reading, on_path_only=False)
-            edge, ok, info = _cliff_of(c, prm)
+            edge, ok, info = _cliff_of(c, params)
             n_edge += edge
             oks.append(ok)
             infos.append(f"[{tag}{' ' if tag else ''}{v:g}: {info}")

@@ -38,8 +38,8 @@ def bench_cases(settings: dict, design: Design) -> dict:
     pair = design_pair(design, "spur_52_72")
     _, ref = study_reference(p, pair, design.pairs["spur_52_72"]["phi1_thesis"])
 
-    def run_rate(s):
-        n = int(s["n_starts"])
+    def run_rate(setting):
+        n = int(setting["n_starts"])
         st = draw_starts(pair, n, rng(p, "table10"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi))
         out, _, _, _ = run_variant(pair, ref, st, "plain", p)
         return 100.0 * float(np.mean(out == "correct"))
@@ -48,8 +48,8 @@ def bench_cases(settings: dict, design: Design) -> dict:
         pair, 400, np.random.default_rng([int(p["seed"]), 99]), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi)
     )
 
-    def run_tol(s):
-        q = dict(p, tol=float(s["tol"]))
+    def run_tol(setting):
+        q = dict(p, tol=float(setting["tol"]))
         out, _, x, _ = run_variant(pair, ref, st_tol, "robust", q)
         return out, x
 
@@ -68,8 +68,8 @@ def bench_cases(settings: dict, design: Design) -> dict:
         misalignment("in", -0.2 * DEG, base, p["te_pivot"]),
     )
 
-    def run_te(s):
-        return te_study(te_pair, int(s["te_n_points"]))["te_extreme"] / ARCSEC
+    def run_te(setting):
+        return te_study(te_pair, int(setting["te_n_points"]))["te_extreme"] / ARCSEC
 
     return {
         "rate_n_starts": {

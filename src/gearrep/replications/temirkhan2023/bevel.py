@@ -60,15 +60,15 @@ CYCLE_REFINE = 64
 BEVEL_STREAMS = {"straight_bevel_39_32": 21, "spiral_bevel_17_17": 22}
 
 
-def bevel_gears(d: dict) -> tuple[BevelGearData, BevelGearData]:
+def bevel_gears(pair_data: dict) -> tuple[BevelGearData, BevelGearData]:
     kw = dict(
-        module=d["module"],
-        pressure_angle=d["pressure_angle_deg"] * DEG,
-        face_width=d["face_width"],
-        shaft_angle=d["shaft_angle_deg"] * DEG,
-        spiral_angle=d["spiral_angle_deg"] * DEG,
+        module=pair_data["module"],
+        pressure_angle=pair_data["pressure_angle_deg"] * DEG,
+        face_width=pair_data["face_width"],
+        shaft_angle=pair_data["shaft_angle_deg"] * DEG,
+        spiral_angle=pair_data["spiral_angle_deg"] * DEG,
     )
-    return BevelGearData(d["n1"], d["n2"], **kw), BevelGearData(d["n2"], d["n1"], **kw)
+    return BevelGearData(pair_data["n1"], pair_data["n2"], **kw), BevelGearData(pair_data["n2"], pair_data["n1"], **kw)
 
 
 def lead_crown(g: BevelGearData, kind: str, amount: float, log_a2: float = 0.9):
@@ -390,16 +390,20 @@ def _pitch_columns(pair: BevelPair, res: dict, p0: np.ndarray, material) -> dict
     )
 
 
-def _material(d: dict, case: str):
+def _material(pair_data: dict, case: str):
     """Normal load [N], E [N/mm^2], nu: Table 5 (straight, mm), or sec 5.2's non-dimensional load
     F = P / (E m b) (eq 56) with m = 1 mm, so that lengths in module units are mm."""
     if case.startswith("straight"):
-        return d["load"], d["young_modulus"], d["poisson_ratio"]
-    return d["load"] * d["young_modulus"] * 1.0 * d["face_width"], d["young_modulus"], d["poisson_ratio"]
+        return pair_data["load"], pair_data["young_modulus"], pair_data["poisson_ratio"]
+    return (
+        pair_data["load"] * pair_data["young_modulus"] * 1.0 * pair_data["face_width"],
+        pair_data["young_modulus"],
+        pair_data["poisson_ratio"],
+    )
 
 
 def contact_study(
-    s: dict,
+    settings: dict,
     design,
     label: str,
     case: str,
@@ -427,10 +431,10 @@ def contact_study(
         tip=tip,
         root=root,
         misalignment=mis,
-        log_a2=s["crowning_log_a2"],
+        log_a2=settings["crowning_log_a2"],
         flank_pair=flank_pair,
     )
-    res = bevel_te_study(pair, int(s["bevel_te_n_points"]), tol=1e-12)
+    res = bevel_te_study(pair, int(settings["bevel_te_n_points"]), tol=1e-12)
     d = design.pairs[case]
     phi, te = res["phi1"], res["te"]
     p1 = 2 * np.pi / pair.n1
@@ -498,20 +502,20 @@ def _equal_drop(g: BevelGearData, c1: float, a2: float) -> dict:
     return {"parabolic": c1, "circular": drop, "logarithmic": drop / np.log(1.0 / (1.0 - a2))}
 
 
-def straight_contact_tables(s: dict, design) -> dict:
+def straight_contact_tables(settings: dict, design) -> dict:
     """Job ``bevel_straight``: sec 5.1 on the Table 5 pair with the Table 6 misalignments: lead crown
     alone vs lead crown with tip/root relief (Figs 33-35), small vs large lead crown at the centre
     distance error (Figs 36a, 37), the three crown types at shaft-angle errors (Figs 38-39)."""
     case = "straight_bevel_39_32"
     d = design.pairs[case]
     t6 = d["table6"]
-    small, large = s["bevel_straight_crown_per_mm"]
-    L, c = s["bevel_straight_relief_mm"]
+    small, large = settings["bevel_straight_crown_per_mm"]
+    L, c = settings["bevel_straight_relief_mm"]
     rel = dict(tip=(L, c), root=(L, c))
     rows, curves = [], []
 
     def add(*a, **k):
-        r, cv = contact_study(s, design, *a, **k)
+        r, cv = contact_study(settings, design, *a, **k)
         rows.append(r)
         curves.append(cv)
 
@@ -529,8 +533,8 @@ def straight_contact_tables(s: dict, design) -> dict:
         **rel,
     )
     g1, _ = bevel_gears(d)
-    for ang in s["bevel_straight_shaft_angles_deg"]:
-        for kind, amount in _equal_drop(g1, small, s["crowning_log_a2"]).items():
+    for ang in settings["bevel_straight_shaft_angles_deg"]:
+        for kind, amount in _equal_drop(g1, small, settings["crowning_log_a2"]).items():
             add(
                 f"shaft_{ang:g}deg_{kind}",
                 case,
@@ -543,7 +547,7 @@ def straight_contact_tables(s: dict, design) -> dict:
     return {"bevel_straight_summary": pd.DataFrame(rows), "bevel_straight_curves": pd.concat(curves, ignore_index=True)}
 
 
-def spiral_contact_tables(s: dict, design) -> dict:
+def spiral_contact_tables(settings: dict, design) -> dict:
     """Job ``bevel_spiral``: sec 5.2 on the 17/17 pair: angular errors with c_1 = 0.002 and no
     relief (Figs 42-43), dE and dH (= dG) = 0.04 with c_1 = 0.02, c_t = 0.08, L_t = 0.16 (Figs 45, 48),
     combined errors (Figs 50-52), the stress along the path at dE or dH = 0.08 with c_1 = 0.005,
@@ -554,7 +558,7 @@ def spiral_contact_tables(s: dict, design) -> dict:
     rows, curves = [], []
 
     def add(*a, **k):
-        r, cv = contact_study(s, design, *a, **k)
+        r, cv = contact_study(settings, design, *a, **k)
         rows.append(r)
         curves.append(cv)
 
@@ -562,7 +566,7 @@ def spiral_contact_tables(s: dict, design) -> dict:
         return BevelMisalignment(d_E=dE, d_G=dH, d_gamma=dg * DEG)
 
     rel = dict(tip=(0.16, 0.08), root=(0.16, 0.08))
-    for ang in [0.0] + list(s["bevel_spiral_angles_deg"]):
+    for ang in [0.0] + list(settings["bevel_spiral_angles_deg"]):
         add(f"angular_{ang:g}deg", case, claim="angular_no_TE", crown=0.002, mis=mis(dg=ang))
     add("dE_0.04", case, claim="te_amplitude", crown=0.02, mis=mis(dE=0.04), **rel)
     add("dH_0.04", case, claim="te_amplitude", crown=0.02, mis=mis(dH=0.04), **rel)
@@ -580,7 +584,7 @@ def spiral_contact_tables(s: dict, design) -> dict:
     add("fig46_dE_0.08", case, claim="stress_peak_mid", crown=0.005, mis=mis(dE=0.08), **rel4)
     add("fig49_dH_0.08", case, claim="stress_peak_mid", crown=0.005, mis=mis(dH=0.08), **rel4)
     add("aligned_c1_0.005", case, claim="dE_stronger_than_dH", crown=0.005, **rel)
-    for x in s["bevel_spiral_sweep"]:
+    for x in settings["bevel_spiral_sweep"]:
         add(f"sweep_dE_{x:g}", case, claim="dE_stronger_than_dH", crown=0.005, mis=mis(dE=x), **rel)
         add(f"sweep_dH_{x:g}", case, claim="dE_stronger_than_dH", crown=0.005, mis=mis(dH=x), **rel)
         add(f"sweep_dE_dH_{x:g}", case, claim="dE_stronger_than_dH", crown=0.005, mis=mis(x, x), **rel)

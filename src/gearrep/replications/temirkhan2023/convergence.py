@@ -66,8 +66,8 @@ CONVERGENCE_COLUMNS = [
 EQUATION_ABLATION = {"plain_six": ("plain", "six"), "plain_drop_nz": ("plain", "drop_nz")}
 
 
-def rng(s: dict, study: str) -> np.random.Generator:
-    return np.random.default_rng([int(s["seed"]), STREAMS[study]])
+def rng(settings: dict, study: str) -> np.random.Generator:
+    return np.random.default_rng([int(settings["seed"]), STREAMS[study]])
 
 
 @dataclass(frozen=True)
@@ -110,10 +110,14 @@ def reference_contact(pair: GearPair, phi1: float, tol: float = 1e-12, agree_mm=
     return ref
 
 
-def study_reference(s: dict, pair: GearPair, phi1_thesis: float) -> tuple[ThesisFrame, Reference]:
+def study_reference(settings: dict, pair: GearPair, phi1_thesis: float) -> tuple[ThesisFrame, Reference]:
     fr = ThesisFrame.of(pair)
     return fr, reference_contact(
-        pair, fr.phi1_from_thesis(phi1_thesis), tol=s["tol"], agree_mm=s["agree_tol_mm"], agree_rad=s["agree_tol_rad"]
+        pair,
+        fr.phi1_from_thesis(phi1_thesis),
+        tol=settings["tol"],
+        agree_mm=settings["agree_tol_mm"],
+        agree_rad=settings["agree_tol_rad"],
     )
 
 
@@ -144,7 +148,9 @@ def classify(pair: GearPair, x, status, ref: Reference, tol_mm=1e-6, tol_rad=1e-
 TIMING_REPEATS = 3
 
 
-def run_variant(pair: GearPair, ref: Reference, starts: np.ndarray, variant: str, s: dict, equations: str = "five"):
+def run_variant(
+    pair: GearPair, ref: Reference, starts: np.ndarray, variant: str, settings: dict, equations: str = "five"
+):
     """Solve all ``starts`` with ``variant``; returns (outcomes, iterations, x, seconds): seconds is
     the least CPU time of :data:`TIMING_REPEATS` timed solves (:func:`gearrep.benchmark.time_interleaved`)."""
 
@@ -156,14 +162,14 @@ def run_variant(pair: GearPair, ref: Reference, starts: np.ndarray, variant: str
             variant,
             equations=equations,
             drop=ref.drop,
-            tol=s["tol"],
-            maxiter=s["maxiter"],
-            margin=s["domain_margin"],
+            tol=settings["tol"],
+            maxiter=settings["maxiter"],
+            margin=settings["domain_margin"],
         )
 
     x, status, iters = solve()
     sec = time_interleaved({variant: solve}, repeats=TIMING_REPEATS, warmup=0, clock=time.process_time)[variant]
-    return classify(pair, x, status, ref, s["match_tol_mm"], s["match_tol_rad"]), iters, x, sec
+    return classify(pair, x, status, ref, settings["match_tol_mm"], settings["match_tol_rad"]), iters, x, sec
 
 
 def formulation(variant: str) -> str:
@@ -207,7 +213,7 @@ def convergence_study(
     ref: Reference,
     starts: np.ndarray,
     variants,
-    s: dict,
+    settings: dict,
     *,
     window: float,
     study: str,
@@ -219,7 +225,7 @@ def convergence_study(
     rows, outcomes = [], {}
     jobs = [(v, v, "five") for v in variants] + [(lab, v, e) for lab, (v, e) in (equations or {}).items()]
     for lab, v, eq in jobs:
-        out, it, x, sec = run_variant(pair, ref, starts, v, s, equations=eq)
+        out, it, x, sec = run_variant(pair, ref, starts, v, settings, equations=eq)
         w = window if v in USES_PHI2_START else np.nan
         rows.append(
             summarise(
@@ -302,30 +308,32 @@ class Collected:
 # ----------------------------------------------------------------------------------------------
 # the studies
 # ----------------------------------------------------------------------------------------------
-def table10_starts(s: dict, design: Design):
+def table10_starts(settings: dict, design: Design):
     """Pair, reference and starts of the Table 10 study (spur 52/72, phi2 on the primary window)."""
     pair = design_pair(design, "spur_52_72")
-    fr, ref = study_reference(s, pair, design.pairs["spur_52_72"]["phi1_thesis"])
-    w0 = float(s["primary_phi2_window_rad"])
-    st = draw_starts(pair, int(s["n_starts"]), rng(s, "table10"), phi2_window=(ref.x[4] - w0 / 2, ref.x[4] + w0 / 2))
+    fr, ref = study_reference(settings, pair, design.pairs["spur_52_72"]["phi1_thesis"])
+    w0 = float(settings["primary_phi2_window_rad"])
+    st = draw_starts(
+        pair, int(settings["n_starts"]), rng(settings, "table10"), phi2_window=(ref.x[4] - w0 / 2, ref.x[4] + w0 / 2)
+    )
     return pair, fr, ref, st
 
 
 TABLE10_RULE = "u1,v1,u2,v2 uniform on the flanks; phi2 uniform on the window centred on the root"
 
 
-def table10_studies(s: dict, design: Design, out: Collected) -> None:
+def table10_studies(settings: dict, design: Design, out: Collected) -> None:
     """Table 10 (all variants, equation ablation), its start-rule sensitivity and the window sweep."""
-    pair, fr, ref, st = table10_starts(s, design)
+    pair, fr, ref, st = table10_starts(settings, design)
     out.refs.append(reference_row("spur_52_72", ref, fr))
-    w0 = float(s["primary_phi2_window_rad"])
+    w0 = float(settings["primary_phi2_window_rad"])
     r = convergence_study(
         "spur_52_72",
         pair,
         ref,
         st,
         ALL_VARIANTS,
-        s,
+        settings,
         window=w0,
         study="Table 10",
         start_rule=TABLE10_RULE,
@@ -344,14 +352,14 @@ def table10_studies(s: dict, design: Design, out: Collected) -> None:
         ref,
         st_mid,
         USES_PHI2_START,
-        s,
+        settings,
         window=w0,
         study="Table 10 (start-rule sensitivity)",
         start_rule="as Table 10 but u2,v2 at the mid-point of flank 2",
     ).rows
     # phi2 window sweep: same uniform draws, scaled to each window (the primary window is the Table 10 row)
-    base = draw_starts(pair, int(s["n_starts_window"]), rng(s, "window"), phi2_window=(-0.5, 0.5))
-    for w in s["phi2_windows_rad"]:
+    base = draw_starts(pair, int(settings["n_starts_window"]), rng(settings, "window"), phi2_window=(-0.5, 0.5))
+    for w in settings["phi2_windows_rad"]:
         if abs(w - w0) < 1e-12:
             continue
         stw = base.copy()
@@ -362,16 +370,18 @@ def table10_studies(s: dict, design: Design, out: Collected) -> None:
             ref,
             stw,
             USES_PHI2_START,
-            s,
+            settings,
             window=float(w),
             study="phi2 window sweep",
             start_rule="as Table 10, window width varied",
         ).rows
 
 
-def sec61_guess_studies(s, design, pair, fr, ref, out: Collected) -> None:
+def sec61_guess_studies(settings, design, pair, fr, ref, out: Collected) -> None:
     """Sec 6.1: fixed phi2 guesses (thesis frame), u2, v2 at the mid-point of flank 2."""
-    base = draw_starts(pair, int(s["n_starts_sec61"]), rng(s, "sec61_guess"), phi2_fixed=0.0, uv2="midpoint")
+    base = draw_starts(
+        pair, int(settings["n_starts_sec61"]), rng(settings, "sec61_guess"), phi2_fixed=0.0, uv2="midpoint"
+    )
     for g in design.sec61_phi2_guesses_thesis:
         stg = base.copy()
         stg[:, 4] = fr.phi2_from_thesis(g)
@@ -381,19 +391,19 @@ def sec61_guess_studies(s, design, pair, fr, ref, out: Collected) -> None:
             ref,
             stg,
             USES_PHI2_START,
-            s,
+            settings,
             window=0.0,
             study="sec 6.1 fixed phi2 guess",
             start_rule=f"u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 = {g} rad (thesis frame)",
         ).rows
 
 
-def sec61_printed_flank_studies(s, design, pair, fr, ref, win, out: Collected) -> None:
+def sec61_printed_flank_studies(settings, design, pair, fr, ref, win, out: Collected) -> None:
     """Start-domain sensitivity: the flank as Table 1 prints it (u up to r_b + m)."""
     lo_t, hi_t = design.sec61_phi2_window_thesis
-    n6 = int(s["n_starts_sec61"])
+    n6 = int(settings["n_starts_sec61"])
     rb, m = pair.flank1.r_b, design.pairs["spur_25_25"]["module"]
-    g = rng(s, "sec61_printed")
+    g = rng(settings, "sec61_printed")
     u1p = g.uniform(rb, rb + m, n6)
     v1p = g.uniform(pair.lower1[1], pair.upper1[1], n6)
     php = g.uniform(*win, n6)
@@ -404,7 +414,7 @@ def sec61_printed_flank_studies(s, design, pair, fr, ref, win, out: Collected) -
         ref,
         stp,
         USES_PHI2_START,
-        s,
+        settings,
         window=hi_t - lo_t,
         study="sec 6.1 phi2 window (start-domain sensitivity)",
         start_rule="as sec 6.1 window but u1 uniform on [r_b, r_b + m] and u2 = r_b + m/2 (Table 1 as printed)",
@@ -418,31 +428,31 @@ def sec61_printed_flank_studies(s, design, pair, fr, ref, win, out: Collected) -
             ref,
             stg,
             ("plain",),
-            s,
+            settings,
             window=0.0,
             study="sec 6.1 fixed phi2 guess (start-domain sensitivity)",
             start_rule="as the fixed-guess study with the Table 1 flank as printed",
         ).rows
 
 
-def sec61_studies(s: dict, design: Design, out: Collected) -> None:
+def sec61_studies(settings: dict, design: Design, out: Collected) -> None:
     """Sec 6.1: spur 25/25, m = 2.5: fixed guesses, the printed window, start-domain sensitivity,
     a full turn, and the in-plane misaligned pair."""
     pair = design_pair(design, "spur_25_25")
-    fr, ref = study_reference(s, pair, design.pairs["spur_25_25"]["phi1_thesis"])
+    fr, ref = study_reference(settings, pair, design.pairs["spur_25_25"]["phi1_thesis"])
     out.refs.append(reference_row("spur_25_25", ref, fr))
-    n6 = int(s["n_starts_sec61"])
-    sec61_guess_studies(s, design, pair, fr, ref, out)
+    n6 = int(settings["n_starts_sec61"])
+    sec61_guess_studies(settings, design, pair, fr, ref, out)
     lo_t, hi_t = design.sec61_phi2_window_thesis
     win = fr.window_from_thesis(lo_t, hi_t)
-    stw = draw_starts(pair, n6, rng(s, "sec61_window"), phi2_window=win, uv2="midpoint")
+    stw = draw_starts(pair, n6, rng(settings, "sec61_window"), phi2_window=win, uv2="midpoint")
     r = convergence_study(
         "spur_25_25_window_thesis",
         pair,
         ref,
         stw,
         ALL_VARIANTS,
-        s,
+        settings,
         window=hi_t - lo_t,
         study="sec 6.1 phi2 window",
         start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)",
@@ -450,10 +460,10 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
     out.rows += r.rows
     out.agree += agreement_rows(r, "spur_25_25_window_thesis")
     out.details["sec61"] = r
-    sec61_printed_flank_studies(s, design, pair, fr, ref, win, out)
+    sec61_printed_flank_studies(settings, design, pair, fr, ref, win, out)
     # the widest reading of "random phi2" (claim 003-S6.1-random_phi2_fails): a full turn
     stf = draw_starts(
-        pair, n6, rng(s, "sec61_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi), uv2="midpoint"
+        pair, n6, rng(settings, "sec61_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi), uv2="midpoint"
     )
     out.rows += convergence_study(
         "spur_25_25_full_turn",
@@ -461,7 +471,7 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
         ref,
         stf,
         ("plain",),
-        s,
+        settings,
         window=2 * np.pi,
         study="sec 6.1 random phi2 (full turn)",
         start_rule="u1,v1 uniform; u2,v2 mid-point of flank 2; phi2 uniform on a full turn",
@@ -469,11 +479,13 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
     deg = design.sec61_misalignment_deg
     pair_m = design_pair(design, "spur_25_25", misalignment=Misalignment(d_gamma_in=float(deg) * DEG))
     fr_m = ThesisFrame.of(pair_m)
-    ref_m = reference_contact(pair_m, ref.phi1, tol=s["tol"], agree_mm=s["agree_tol_mm"], agree_rad=s["agree_tol_rad"])
+    ref_m = reference_contact(
+        pair_m, ref.phi1, tol=settings["tol"], agree_mm=settings["agree_tol_mm"], agree_rad=settings["agree_tol_rad"]
+    )
     lab = f"spur_25_25_inplane_{deg:g}deg"
     out.refs.append(reference_row(lab, ref_m, fr_m))
     stm = draw_starts(
-        pair_m, n6, rng(s, "sec61_misaligned"), phi2_window=fr_m.window_from_thesis(lo_t, hi_t), uv2="midpoint"
+        pair_m, n6, rng(settings, "sec61_misaligned"), phi2_window=fr_m.window_from_thesis(lo_t, hi_t), uv2="midpoint"
     )
     r = convergence_study(
         lab,
@@ -481,7 +493,7 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
         ref_m,
         stm,
         ALL_VARIANTS,
-        s,
+        settings,
         window=hi_t - lo_t,
         study="sec 6.1 misaligned",
         start_rule=f"as sec 6.1 window; in-plane misalignment {deg} deg",
@@ -490,24 +502,24 @@ def sec61_studies(s: dict, design: Design, out: Collected) -> None:
     out.agree += agreement_rows(r, lab)
 
 
-def helical_studies(s: dict, design: Design, out: Collected) -> None:
+def helical_studies(settings: dict, design: Design, out: Collected) -> None:
     """Table 9 helical 25/77, aligned and misaligned: the printed window, iteration limit x 4, a full turn."""
     lo_t, hi_t = design.helical_phi2_window_thesis
-    n6 = int(s["n_starts_sec61"])
+    n6 = int(settings["n_starts_sec61"])
     arcmin = design.helical_misalignment_arcmin
     for key, mis in (("helical", None), ("helical_misaligned", Misalignment(d_gamma_in=float(arcmin) * ARCMIN))):
         pair = design_pair(design, "helical_25_77", misalignment=mis)
-        fr, ref = study_reference(s, pair, design.pairs["helical_25_77"]["phi1_thesis"])
+        fr, ref = study_reference(settings, pair, design.pairs["helical_25_77"]["phi1_thesis"])
         lab = "helical_25_77" if mis is None else f"helical_25_77_inplane_{arcmin:g}arcmin"
         out.refs.append(reference_row(lab, ref, fr))
-        sth = draw_starts(pair, n6, rng(s, key), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2="midpoint")
+        sth = draw_starts(pair, n6, rng(settings, key), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2="midpoint")
         r = convergence_study(
             lab,
             pair,
             ref,
             sth,
             ALL_VARIANTS,
-            s,
+            settings,
             window=hi_t - lo_t,
             study="Table 9 helical",
             start_rule=f"u1,v1 uniform; u2,v2 mid-point; phi2 uniform in ({lo_t}, {hi_t}) rad (thesis frame)",
@@ -516,7 +528,7 @@ def helical_studies(s: dict, design: Design, out: Collected) -> None:
         out.agree += agreement_rows(r, lab)
         out.details[key] = r
         if mis is None:  # claim 003-S6.1-helical_more_iterations_no_help: same starts, iteration limit x 4
-            s4 = dict(s, maxiter=4 * int(s["maxiter"]))
+            s4 = dict(settings, maxiter=4 * int(settings["maxiter"]))
             out.rows += convergence_study(
                 f"{lab}_maxiter_x4",
                 pair,
@@ -530,7 +542,11 @@ def helical_studies(s: dict, design: Design, out: Collected) -> None:
             ).rows
         # claim 003-S6.1-helical_random_phi2_fails: phi2 uniform on a full turn
         stf = draw_starts(
-            pair, n6, rng(s, key + "_full_turn"), phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi), uv2="midpoint"
+            pair,
+            n6,
+            rng(settings, key + "_full_turn"),
+            phi2_window=(ref.x[4] - np.pi, ref.x[4] + np.pi),
+            uv2="midpoint",
         )
         out.rows += convergence_study(
             f"{lab}_full_turn",
@@ -538,7 +554,7 @@ def helical_studies(s: dict, design: Design, out: Collected) -> None:
             ref,
             stf,
             ("plain",),
-            s,
+            settings,
             window=2 * np.pi,
             study="Table 9 helical random phi2 (full turn)",
             start_rule="u1,v1 uniform; u2,v2 mid-point; phi2 uniform on a full turn",
@@ -555,11 +571,11 @@ HELICAL_READINGS = [
 ]
 
 
-def helical_sensitivity(s: dict, design: Design) -> list:
+def helical_sensitivity(settings: dict, design: Design) -> list:
     """Table 9 pair, thesis window: plain Newton under other readings of the thesis (each a row)."""
     d = design.pairs["helical_25_77"]
     lo_t, hi_t = design.helical_phi2_window_thesis
-    n = max(10, int(s["n_starts_sec61"]) // 2)
+    n = max(10, int(settings["n_starts_sec61"]) // 2)
     rows = []
     for lab, scale, form, uv2, eq in HELICAL_READINGS:
         pair = helical_pair(
@@ -575,17 +591,19 @@ def helical_sensitivity(s: dict, design: Design) -> list:
             helix_form=form,
         )
         try:
-            fr, ref = study_reference(s, pair, d["phi1_thesis"])
+            fr, ref = study_reference(settings, pair, d["phi1_thesis"])
         except ValueError:
             continue
-        st = draw_starts(pair, n, rng(s, "helical_sensitivity"), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2=uv2)
+        st = draw_starts(
+            pair, n, rng(settings, "helical_sensitivity"), phi2_window=fr.window_from_thesis(lo_t, hi_t), uv2=uv2
+        )
         rows += convergence_study(
             f"helical_25_77_{lab}",
             pair,
             ref,
             st,
             (),
-            s,
+            settings,
             window=hi_t - lo_t,
             study="Table 9 helical (sensitivity)",
             start_rule=f"thesis window; {lab}",
@@ -619,15 +637,15 @@ THESIS_TABLE10_TOTAL_S = {"conventional": 839.62, "reduced": 232.09}
 TIMED_VARIANTS = ("plain", "robust", "reduced", "reduced_robust")
 
 
-def loop_timing(s: dict, pair, ref: Reference, rows: list, starts: np.ndarray, variant: str) -> dict:
+def loop_timing(settings: dict, pair, ref: Reference, rows: list, starts: np.ndarray, variant: str) -> dict:
     """Seconds per solve of ``variant``: the vectorised batch of a study (its row in ``rows``) beside
     a loop of single-start calls over the first ``timing_loop_n`` of its ``starts`` (the way a
     per-point solver such as Mathematica's FindRoot is used)."""
     batch = next(r for r in rows if r["variant"] == variant)
-    sub = starts[: int(s["timing_loop_n"])]
+    sub = starts[: int(settings["timing_loop_n"])]
     t0 = time.perf_counter()
     for i in range(len(sub)):
-        run_variant(pair, ref, sub[i : i + 1], variant, s)
+        run_variant(pair, ref, sub[i : i + 1], variant, settings)
     loop = (time.perf_counter() - t0) / len(sub)
     return dict(
         case=batch["case"],
@@ -640,12 +658,12 @@ def loop_timing(s: dict, pair, ref: Reference, rows: list, starts: np.ndarray, v
     )
 
 
-def timing_table(s: dict, res: StudyResult) -> pd.DataFrame:
+def timing_table(settings: dict, res: StudyResult) -> pd.DataFrame:
     """Seconds per solve of both formulations on the Table 10 starts (:func:`loop_timing` of the
     study ``res``), per correct solve, beside the thesis's totals."""
     rows = []
     for lab in TIMED_VARIANTS:
-        row = loop_timing(s, res.pair, res.ref, res.rows, res.starts, lab)
+        row = loop_timing(settings, res.pair, res.ref, res.rows, res.starts, lab)
         thesis_total = THESIS_TABLE10_TOTAL_S[row["formulation"]]
         ok = row["correct_pct"] > 0
         rows.append(

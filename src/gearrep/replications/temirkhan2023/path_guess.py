@@ -58,17 +58,17 @@ def path_references(pair, phis: np.ndarray, tol: float) -> list:
     return [Reference(float(p), x[k], np.full(5, np.nan), int(drop[k])) for k, p in enumerate(phis)]
 
 
-def path_study(pair, label: str, s: dict, n: int = PATH_POINTS) -> list:
-    phis = path_points(pair, n, float(s["tol"]))
+def path_study(pair, label: str, settings: dict, n: int = PATH_POINTS) -> list:
+    phis = path_points(pair, n, float(settings["tol"]))
     offsets = np.linspace(OFFSET_FIRST_RAD, OFFSET_LAST_RAD, len(phis))
     lo1, hi1, lo2, hi2 = pair.lower1, pair.upper1, pair.lower2, pair.upper2
     mid = [0.5 * (lo1[0] + hi1[0]), 0.5 * (lo1[1] + hi1[1]), 0.5 * (lo2[0] + hi2[0]), 0.5 * (lo2[1] + hi2[1])]
     rows = []
-    for k, (ref, off) in enumerate(zip(path_references(pair, phis, float(s["tol"])), offsets)):
+    for k, (ref, off) in enumerate(zip(path_references(pair, phis, float(settings["tol"])), offsets)):
         phi1 = ref.phi1
         for sign in (1.0, -1.0):
             start = np.array([[*mid, ref.x[4] + sign * off]])
-            outcome, iters, x, _ = run_variant(pair, ref, start, "plain", s)
+            outcome, iters, x, _ = run_variant(pair, ref, start, "plain", settings)
             rows.append(
                 dict(
                     case=label,
@@ -85,14 +85,14 @@ def path_study(pair, label: str, s: dict, n: int = PATH_POINTS) -> list:
     return rows
 
 
-def path_guess_table(s: dict, design: Design) -> dict:
+def path_guess_table(settings: dict, design: Design) -> dict:
     """Job ``path_guess``: the path study on the aligned 25/25 pair and with the sec 6.1 in-plane
     misalignment."""
     deg = float(design.sec61_misalignment_deg)
-    rows = path_study(design_pair(design, "spur_25_25"), "spur_25_25", s)
+    rows = path_study(design_pair(design, "spur_25_25"), "spur_25_25", settings)
     rows += path_study(
         design_pair(design, "spur_25_25", misalignment=Misalignment(d_gamma_in=deg * DEG)),
         f"spur_25_25_inplane_{deg:g}deg",
-        s,
+        settings,
     )
     return dict(path_guess=pd.DataFrame(rows))

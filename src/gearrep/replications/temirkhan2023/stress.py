@@ -152,23 +152,23 @@ def loaded_pressure(pair, design: Design, n_positions: int) -> dict:
     )
 
 
-def stress_table(s: dict, design: Design) -> dict:
+def stress_table(settings: dict, design: Design) -> dict:
     """Job ``stress``: stress ratios of the crowned 40/37 pair at the Fig 29 out-of-plane angles,
     each crown kind and each Table 4 row of ``crowning_rows`` (see the module docstring)."""
     d = design.pairs["helical_40_37"]
-    n = int(s["stress_n_points"])
-    a2 = float(s["crowning_log_a2"])
-    ref = reference_pressure(design, tol=float(s["tol"]))
+    n = int(settings["stress_n_points"])
+    a2 = float(settings["crowning_log_a2"])
+    ref = reference_pressure(design, tol=float(settings["tol"]))
     base = pair_40_37(design)
-    n_loaded = int(s["stress_loaded_positions"])
+    n_loaded = int(settings["stress_loaded_positions"])
     p0_loaded = loaded_pressure(base, design, n_loaded)["p_max_loaded_MPa"]
     rows = []
     for ang in FIG29_ANGLES_DEG:
         amounts, source = crown_amounts(ang)
-        mis = misalignment("out", ang * DEG, base, s["te_pivot"])
+        mis = misalignment("out", ang * DEG, base, settings["te_pivot"])
         for kind in KINDS:
             for i, amount in enumerate(amounts[kind]):
-                if i + 1 not in s["crowning_rows"] or (i > 0 and "no amount" in source):
+                if i + 1 not in settings["crowning_rows"] or (i > 0 and "no amount" in source):
                     continue
                 pair = pair_40_37(design, crowning_object(kind, amount, d["face_width"], a2), mis)
                 r = path_pressure(pair, n, d["load_N"], d["young_modulus_MPa"], d["poisson_ratio"])

@@ -22,11 +22,11 @@ from .te import crowning_areas_table, shift_common_angle_table, te_sensitivity, 
 __all__ = ["JOBS", "errata_table", "protocol_table"]
 
 
-def errata_table(s: dict, design: Design) -> dict:
+def errata_table(settings: dict, design: Design) -> dict:
     """Job ``errata``: the numbers behind the errata of the thesis (see the package docstring)."""
     rows = []
     pair = design_pair(design, "spur_25_25")
-    fr, ref = study_reference(s, pair, np.pi / 2)
+    fr, ref = study_reference(settings, pair, np.pi / 2)
     x = ref.x
     _, n1 = pair.member1(x[:1], x[1:2], ref.phi1)
     _, n2 = pair.member2(x[2:3], x[3:4], np.array([x[4]]))
@@ -52,7 +52,7 @@ def errata_table(s: dict, design: Design) -> dict:
         d = design.pairs[name]
         g = InvoluteGearData(d["n1"], d["module"], d["pressure_angle_deg"] * DEG, d["face_width"])
         pr = design_pair(design, name)
-        _, rr = study_reference(s, pr, np.pi / 2)
+        _, rr = study_reference(settings, pr, np.pi / 2)
         rows.append(
             dict(
                 item=f"Table 1 tip diameter ({name})",
@@ -63,7 +63,7 @@ def errata_table(s: dict, design: Design) -> dict:
             )
         )
     pair = design_pair(design, "helical_25_77")
-    frh, refh = study_reference(s, pair, np.pi / 2)
+    frh, refh = study_reference(settings, pair, np.pi / 2)
     rows.append(
         dict(
             item="Table 9 / sec 6.1 helical reference phi2",
@@ -85,10 +85,10 @@ def errata_table(s: dict, design: Design) -> dict:
     return dict(errata=pd.DataFrame(rows))
 
 
-def protocol_table(s: dict, design: Design) -> dict:
+def protocol_table(settings: dict, design: Design) -> dict:
     """Job ``protocol``: the convergence protocol as items and values (protocol.csv), and the
     settings of the run (run_info.csv; the checks quote the tolerance from it)."""
-    p = s
+    p = settings
     items = [
         ("random generator", f"numpy default_rng([seed, stream]) (PCG64), seed = {p['seed']}, streams {STREAMS}"),
         ("u1 start", "uniform on [u1_min, u1_max] = [max(r_b, r_f), r_a] of flank 1 (Table 1 corrected)"),
@@ -140,7 +140,7 @@ def protocol_table(s: dict, design: Design) -> dict:
         ),
     ]
     items += bevel_protocol_items(p)
-    run_info = pd.DataFrame([{k: (str(v) if isinstance(v, (list, dict)) else v) for k, v in s.items()}])
+    run_info = pd.DataFrame([{k: (str(v) if isinstance(v, (list, dict)) else v) for k, v in settings.items()}])
     return dict(protocol=pd.DataFrame(items, columns=["item", "value"]), run_info=run_info)
 
 

@@ -218,7 +218,7 @@ def _te_at_phi1_0(pair: GearPair, tol: float = 1e-12) -> float:
     return float(c.te[0]) if c.status[0] == Status.CONVERGED else np.nan
 
 
-def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFrame:
+def readings_of(settings: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFrame:
     """Candidate readings of the thesis's Delta phi_max for every computed row of Tables 3-4 (long
     format: one row per table row and reading; magnitudes, since the sign depends on axis
     orientations the thesis does not print). Nothing here is fitted to the printed values: the
@@ -234,7 +234,7 @@ def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFra
     p1 = 2 * np.pi / d["n1"]
     tan_at, tan_b = np.tan(g1.alpha_t), np.tan(d["helix_angle_deg"] * DEG)
     r_p1_transverse = 0.5 * d["n1"] * d["module"]
-    a2 = float(s["crowning_log_a2"])
+    a2 = float(settings["crowning_log_a2"])
     rows = []
     for r in h.itertuples():
         ang = abs(r.misalignment_deg) * DEG
@@ -252,7 +252,7 @@ def readings_of(s: dict, design: Design, te_summary: pd.DataFrame) -> pd.DataFra
                     d_gamma_out=m.d_gamma_out, d_H=m.d_H + hz * np.sin(a), d_Z=m.d_Z + hz * (1 - np.cos(a))
                 )
             )
-            tca[name] = _te_at_phi1_0(pair_40_37(design, crown, m), tol=float(s["tol"]))
+            tca[name] = _te_at_phi1_0(pair_40_37(design, crown, m), tol=float(settings["tol"]))
         vals = {
             "env_max_arcsec": abs(r.te_max_arcsec),
             "cycle_pp_arcsec": r.te_cycle_pp_arcsec,
@@ -310,15 +310,15 @@ def crowning_areas(te_summary: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def spur_te(s: dict, design: Design):
+def spur_te(settings: dict, design: Design):
     """Sec 4.1: spur 25/25, m = 1, crowns a1 on gear 1, no / in-plane / out-of-plane misalignment."""
-    n = int(s["te_n_points"])
+    n = int(settings["te_n_points"])
     gam = float(design.spur_te_misalignment_mrad) * 1e-3
     base = pair_spur_m1(design, None)
     summary, curves, cycles = [], [], []
     for crown in design.spur_te_crowns:
         for plane, ang in (("none", 0.0), ("in", gam), ("out", gam)):
-            pair = pair_spur_m1(design, crown, misalignment(plane, ang, base, s["te_pivot"]))
+            pair = pair_spur_m1(design, crown, misalignment(plane, ang, base, settings["te_pivot"]))
             fr = ThesisFrame.of(pair)
             res = te_study(pair, n)
             fo = first_order_te(base, plane, ang, crown) if plane != "none" else None
@@ -329,23 +329,23 @@ def spur_te(s: dict, design: Design):
     return summary, curves, cycles
 
 
-def table34_te(s: dict, design: Design, select=None):
+def table34_te(settings: dict, design: Design, select=None):
     """Tables 3-4: helical 40/37, each printed crown amount (rows of ``crowning_rows``; ``select(plane,
     angle_deg, row)`` restricts further) under its misalignment, pivot ``te_pivot``."""
-    n = int(s["te_n_points"])
+    n = int(settings["te_n_points"])
     base = pair_40_37(design)
-    a2 = float(s["crowning_log_a2"])
+    a2 = float(settings["crowning_log_a2"])
     b = design.pairs["helical_40_37"]["face_width"]
     summary, curves, cycles = [], [], []
     for (plane, ang_deg), kinds in TABLE34.items():
         for kind, amounts in kinds.items():
             for i, amount in enumerate(amounts):
-                if i + 1 not in s["crowning_rows"] or (select is not None and not select(plane, ang_deg, i + 1)):
+                if i + 1 not in settings["crowning_rows"] or (select is not None and not select(plane, ang_deg, i + 1)):
                     continue
                 pair = pair_40_37(
                     design,
                     crowning_object(kind, amount, b, a2),
-                    misalignment(plane, ang_deg * DEG, base, s["te_pivot"]),
+                    misalignment(plane, ang_deg * DEG, base, settings["te_pivot"]),
                 )
                 fr = ThesisFrame.of(pair)
                 res = te_study(pair, n)
@@ -359,30 +359,30 @@ def table34_te(s: dict, design: Design, select=None):
     return summary, curves, cycles
 
 
-def te_tables(s: dict, design: Design) -> dict:
+def te_tables(settings: dict, design: Design) -> dict:
     """Job ``te``: te_summary, te_curves, te_cycle of the spur (sec 4.1) and helical (Tables 3-4)
     studies, and te_readings (candidate readings of Delta phi_max, read from the same Tables 3-4
     rows: computing them alone would rerun every Tables 3-4 TE study)."""
-    s1, c1, y1 = spur_te(s, design)
-    s2, c2, y2 = table34_te(s, design)
+    s1, c1, y1 = spur_te(settings, design)
+    s2, c2, y2 = table34_te(settings, design)
     summary = pd.DataFrame(s1 + s2)
     return dict(
         te_summary=summary,
         te_curves=pd.concat(c1 + c2, ignore_index=True),
         te_cycle=pd.concat(y1 + y2, ignore_index=True),
-        te_readings=readings_of(s, design, summary),
+        te_readings=readings_of(settings, design, summary),
     )
 
 
-def te_sensitivity(s: dict, design: Design) -> dict:
+def te_sensitivity(settings: dict, design: Design) -> dict:
     """Job ``te_sensitivity``: the unprinted a2 of the logarithmic crown and the misalignment pivot,
     at 0.2 deg (first printed amount of each crown)."""
-    n = int(s["te_n_points"])
-    a2 = float(s["crowning_log_a2"])
+    n = int(settings["te_n_points"])
+    a2 = float(settings["crowning_log_a2"])
     b = design.pairs["helical_40_37"]["face_width"]
     base = pair_40_37(design)
-    other = "axis" if s["te_pivot"] == "pitch_point" else "pitch_point"
-    jobs = [("logarithmic", a2s, s["te_pivot"]) for a2s in s["crowning_log_a2_sensitivity"]]
+    other = "axis" if settings["te_pivot"] == "pitch_point" else "pitch_point"
+    jobs = [("logarithmic", a2s, settings["te_pivot"]) for a2s in settings["crowning_log_a2_sensitivity"]]
     jobs += [(kind, a2, other) for kind in ("circular", "parabolic", "logarithmic")]
     sens = []
     for kind, a2s, pivot in jobs:
@@ -413,13 +413,13 @@ def te_sensitivity(s: dict, design: Design) -> dict:
     return dict(te_sensitivity=pd.DataFrame(sens))
 
 
-def crowning_areas_table(s: dict, design: Design) -> dict:
+def crowning_areas_table(settings: dict, design: Design) -> dict:
     """Job ``crowning_areas``: TE areas of the 0.2 deg, first-row amounts of Tables 3-4 only."""
-    rows, _, _ = table34_te(s, design, select=lambda plane, ang, row: abs(ang) == 0.2 and row == 1)
+    rows, _, _ = table34_te(settings, design, select=lambda plane, ang, row: abs(ang) == 0.2 and row == 1)
     return dict(crowning_areas=crowning_areas(pd.DataFrame(rows)))
 
 
-def shift_common_angle_table(s: dict, design: Design) -> dict:
+def shift_common_angle_table(settings: dict, design: Design) -> dict:
     """Job ``shift_common_angle`` (claim 003-C6-helical_shift_much_larger_than_spur): the contact
     shift from mid-face at phi1 = 0 of the helical 40/37 pair and of the spur 25/25
     (m = 1) pair at the SAME misalignment (each angle and plane of Tables 3-4) with the SAME crown:
@@ -433,7 +433,9 @@ def shift_common_angle_table(s: dict, design: Design) -> dict:
             ("helical_40_37", lambda m: pair_40_37(design, ParabolicCrowning(c1), m), hel0),
             ("spur_25_25_m1", lambda m: pair_spur_m1(design, c1, m), spur0),
         ):
-            c = contact_at_phi1_0(make(misalignment(plane, ang_deg * DEG, base, s["te_pivot"])), float(s["tol"]))
+            c = contact_at_phi1_0(
+                make(misalignment(plane, ang_deg * DEG, base, settings["te_pivot"])), float(settings["tol"])
+            )
             shift[label] = float(c.v1[0]) if c.status[0] == Status.CONVERGED else np.nan
         rows.append(
             dict(
