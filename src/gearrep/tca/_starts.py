@@ -585,10 +585,14 @@ def meshing_sense(pair: GearPair, c):
     forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
     smallest: the loaded tangency maximises s2 TE."""
     r, n = c.position, c.normal
-    v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
-    v2 = np.cross(pair.w2, r - pair.O2)
-    with np.errstate(invalid="ignore"):
-        return np.sign(np.sum(v1 * n, axis=1)), np.sign(np.sum(v2 * n, axis=1))
+    x, y, z = r[:, 0], r[:, 1], r[:, 2]
+    nx, ny, nz = n[:, 0], n[:, 1], n[:, 2]
+    (wx, wy, wz), (ox, oy, oz) = pair._soa["w2"], pair._soa["O2"]
+    dx, dy, dz = x - ox, y - oy, z - oz
+    with np.errstate(invalid="ignore"):  # v1 = z_f x r, v2 = w2 x (r - O2), by components
+        s1 = np.sign(x * ny - y * nx)
+        s2 = np.sign((wy * dz - wz * dy) * nx + (wz * dx - wx * dz) * ny + (wx * dy - wy * dx) * nz)
+    return s1, s2
 
 
 def flank_sense(pair: GearPair, phi1) -> np.ndarray:
