@@ -15,7 +15,8 @@ engagement). Every contact is solved by the library's robust start strategy,
 :func:`gearrep.tca.robust_contact` (each start projected into the domain where member 2's
 explicit surface is defined, then the reduced solve, the conventional one seeded from it; rows
 that fail or reach a root that does not mesh are restarted), from the family's start
-(:meth:`PairFamily.starts`; families whose member 2 has no explicit form also give
+(:meth:`PairFamily.starts`, moved along the path where many angles are solved at once:
+:meth:`PairFamily.robust_solve`; families whose member 2 has no explicit form also give
 :meth:`PairFamily.nominal`, the conventional start it is completed with). The meshing cycle is
 either the library's (:meth:`PairFamily.meshing_cycle_tables`: engagement limits solved on the
 flank boundaries, :func:`gearrep.meshing.meshing_cycle`) or sampled
