@@ -481,16 +481,20 @@ def project_starts(pair: GearPair, phi1, u1, v1):
     return u1, v1
 
 
-def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False):
+def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False, keep_failed=False):
     """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback);
     ``transverse``: the projected starts moved onto the contact line first
-    (:func:`transverse_stage`, its iterations counted)."""
+    (:func:`transverse_stage`, its iterations counted); ``keep_failed``: the last iterates of the
+    rows that fail are kept (:func:`solve_contact`)."""
     u1, v1 = project_starts(pair, ph, u1, v1)
     it = 0
     if transverse:
         u1, it = _transverse(pair, ph, u1, v1, 1e-10, 50)
     if _explicit2(pair):
-        c = solve_contact(pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter)
+        keep = keep_failed and formulation == "reduced"
+        c = solve_contact(
+            pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter, keep_failed=keep
+        )
         c = replace(c, iterations=c.iterations + it)
         if formulation == "reduced":
             return c
@@ -502,8 +506,30 @@ def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, trans
     else:
         x0 = np.array(nominal(pair, ph), dtype=float)
         x0[:, 0], x0[:, 1] = u1, v1
-    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter)
+    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter, keep_failed=keep_failed)
     return replace(out, iterations=out.iterations + it)
+
+
+def _settle_on_boundary(pair, ph, c, formulation, tol, maxiter):
+    """``c`` (its failed rows' last iterates kept) with each OFF_FLANK row settled by one more
+    Newton step from its root, then the status tested again; other failed rows NaN
+    (:meth:`ContactPoints.failed_as_nan`).
+
+    A root solved to ``tol`` is known only to about ||J^-1|| tol, more than the rounding slack of
+    the flank test: a contact on a flank boundary (the engagement limits, where the path leaves
+    a flank) can then be OFF_FLANK by a few 1e-11 mm that the solve does not resolve, although
+    the root lies on the boundary. One full Newton step from a converged root gives it to
+    rounding, and the unchanged flank test then decides on which side it lies; the rows it
+    brings inside are CONVERGED (a restart from other starts would reach the same root), the
+    others stay OFF_FLANK. The step's iteration counts."""
+    rows = np.flatnonzero(c.status == Status.OFF_FLANK)
+    if not len(rows):
+        return c.failed_as_nan()
+    x = c.unknowns(formulation)[rows]
+    kw = dict(formulation=formulation, maxiter=1, damped=False, keep_failed=True)
+    step = solve_contact(pair, ph[rows], x, tol=np.finfo(float).tiny, **kw)  # one step whatever the residual
+    new = solve_contact(pair, ph[rows], step.unknowns(formulation), formulation=formulation, tol=tol, maxiter=maxiter)
+    return _with_rows(c, rows, new, new.converged, step.iterations + new.iterations).failed_as_nan()
 
 
 def _transverse_applies(pair) -> bool:
@@ -512,20 +538,25 @@ def _transverse_applies(pair) -> bool:
     return not pair._INTERSECTING_AXES and bool(getattr(pair.flank2, "cylindrical", False))
 
 
+def _with_rows(c, rows, new, take, spent):
+    """``c`` with its rows ``rows`` (indices) replaced by the rows of ``new`` (one per index) where
+    ``take``; every row of ``rows`` adds the iterations ``spent`` (one per index)."""
+    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+    for f in parts:
+        parts[f][rows[take]] = getattr(new, f)[take]
+    parts["iterations"][rows] = c.iterations[rows] + spent
+    cond = None
+    if c.condition is not None and new.condition is not None:
+        cond = np.array(c.condition, dtype=float)
+        cond[rows[take]] = new.condition[take]
+    return type(c)(formulation=c.formulation, condition=cond, **parts)
+
+
 def _retry(pair, c, new, bad):
     """``c`` with its rows ``bad`` replaced by the rows of ``new`` (one per row of ``bad``) that are
     CONVERGED and mesh; the iterations of every row of ``bad`` add those of ``new``."""
     new = _non_meshing_wrong(pair, new)
-    ok = new.converged
-    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
-    for f in parts:
-        parts[f][bad[ok]] = getattr(new, f)[ok]
-    parts["iterations"][bad] = c.iterations[bad] + new.iterations
-    cond = None
-    if c.condition is not None and new.condition is not None:
-        cond = np.array(c.condition, dtype=float)
-        cond[bad[ok]] = new.condition[ok]
-    return type(c)(formulation=c.formulation, condition=cond, **parts)
+    return _with_rows(c, bad, new, new.converged, new.iterations)
 
 
 def _non_meshing_wrong(pair, c):
@@ -554,22 +585,24 @@ def meshing_sense(pair: GearPair, c):
     forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
     smallest: the loaded tangency maximises s2 TE."""
     r, n = c.position, c.normal
-    v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
-    v2 = np.cross(pair.w2, r - pair.O2)
-    with np.errstate(invalid="ignore"):
-        return np.sign(np.sum(v1 * n, axis=1)), np.sign(np.sum(v2 * n, axis=1))
+    x, y, z = r[:, 0], r[:, 1], r[:, 2]
+    nx, ny, nz = n[:, 0], n[:, 1], n[:, 2]
+    (wx, wy, wz), (ox, oy, oz) = pair._soa["w2"], pair._soa["O2"]
+    dx, dy, dz = x - ox, y - oy, z - oz
+    with np.errstate(invalid="ignore"):  # v1 = z_f x r, v2 = w2 x (r - O2), by components
+        s1 = np.sign(x * ny - y * nx)
+        s2 = np.sign((wy * dz - wz * dy) * nx + (wz * dx - wx * dz) * ny + (wx * dy - wy * dx) * nz)
+    return s1, s2
 
 
 def flank_sense(pair: GearPair, phi1) -> np.ndarray:
     """The side flank 1 faces at each angle ``phi1``: the sign of its point's velocity (member 1
     turning by phi1 > 0) along its outward normal at the middle of its box. A contact of the flank
     pair meshes with s1 = s2 = this sign (:func:`meshing_sense`); a root where flank 1 faces the
-    other way lies on a part of the parametric surface folded back over the tooth."""
+    other way lies on a part of the parametric surface folded back over the tooth. The side is the
+    same at every angle (member 1 turns about z_f), evaluated once per pair."""
     ph = np.atleast_1d(np.asarray(phi1, dtype=float))
-    mid = 0.5 * (pair.lower1 + pair.upper1)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r, n = pair.member1(np.full(len(ph), mid[0]), np.full(len(ph), mid[1]), ph)
-    return np.sign(r[:, 0] * n[:, 1] - r[:, 1] * n[:, 0])
+    return np.full(len(ph), pair._flank1_facing)
 
 
 def _meshes(pair, c) -> np.ndarray:
@@ -602,6 +635,9 @@ def robust_contact(
        seeded with the u2, v2, phi2 that the reduced relations give at the reduced result
        (:func:`seed_from_reduced`). Otherwise the conventional solve from the family's nominal
        start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
+       A root that this solve leaves OFF_FLANK gets one more Newton step and its flank test again
+       (a root on a flank boundary, e.g. at an engagement limit, is known only to the solve's
+       tolerance; :func:`_settle_on_boundary`).
     3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) or
        whose root does not mesh in the sense flank 1 faces (:func:`meshing_sense`,
        :func:`flank_sense`; such a row is WRONG_ROOT) is restarted: on parallel axes with member 2
@@ -673,7 +709,8 @@ def robust_contact(
     check_positive("tol", tol)
     check_integer("maxiter", maxiter)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
+        c = _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, keep_failed=True)
+        c = _non_meshing_wrong(pair, _settle_on_boundary(pair, ph, c, formulation, tol, maxiter))
         if not fallback:
             return c
         if _transverse_applies(pair) and not c.converged.all():
@@ -698,14 +735,4 @@ def robust_contact(
         pick = np.argmax(te, axis=1)
         found = ok.any(axis=1)
         spent = cg.iterations.reshape(len(bad), k).sum(axis=1)
-        chosen = cg.take(np.arange(len(bad)) * k + pick)
-        parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
-        rows = bad[found]
-        for f in parts:
-            parts[f][rows] = getattr(chosen, f)[found]
-        parts["iterations"][bad] = c.iterations[bad] + spent
-        cond = None
-        if c.condition is not None and chosen.condition is not None:
-            cond = np.array(c.condition, dtype=float)
-            cond[rows] = chosen.condition[found]
-        return type(c)(formulation=c.formulation, condition=cond, **parts)
+        return _with_rows(c, bad, cg.take(np.arange(len(bad)) * k + pick), found, spent)
