@@ -28,6 +28,7 @@ from ..ellipse import elastic_ellipse_at
 from ..frames import drot_z, rot_x, rot_y, rot_z
 from ..units import ARCSEC
 from . import _envelope as _te
+from . import _envelope_contact
 from ._envelope import ContactPath, Flank, make_flank, predict, require, solve_points
 
 # a gearrep.surfaces.hob.PairDesign (typed by what is used: n_pinion, n_gear, face_width_mm, hob, cut)
@@ -208,7 +209,7 @@ def physical_contact(pair: Pair, sol: ContactPath, **kw) -> ContactPath:
     search settings)."""
     if not isinstance(pair, Pair):
         raise ValueError(f"pair must be a gearrep.tca.HobbedPair, got {pair!r}")
-    return _te.physical_contact(pair, sol, face_width_mm=pair.face_width_mm, **kw)
+    return _envelope_contact.physical_contact(pair, sol, face_width_mm=pair.face_width_mm, **kw)
 
 
 def ke_table(sol: ContactPath, ratio: float) -> pd.DataFrame:
