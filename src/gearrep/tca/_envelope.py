@@ -54,7 +54,27 @@ class Flank:
     (:class:`gearrep.surfaces.hob.GeneratedGear`, a two-parameter envelope with free (l, psi)
     and solved (phi, theta)) and ``placement``, the 3 x 3 rotation from its generation frame S_2
     into the member frame (the tooth-centred frame ``GeneratedGear.to_tooth_frame``, turned by
-    ``extra_turn_rad`` about Z to face the other member)."""
+    ``extra_turn_rad`` about Z to face the other member).
+
+    Parameters
+    ----------
+    gear : gearrep.surfaces.hob.GeneratedGear
+        The generated flank.
+    placement : numpy.ndarray
+        (3, 3) rotation, generation frame S_2 -> member frame.
+    tool : gearrep.surface.Surface
+        The generating surface of ``gear``'s envelope (the hob thread).
+    motion : gearrep.motion.ChainMotion
+        The generating motion of ``gear``'s envelope.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> from gearrep.tca import envelope_flank
+    >>> flank = envelope_flank(GeneratedGear(n_teeth=20, R_c_mm=100.0))  # tooth-trace radius [mm]
+    >>> type(flank).__name__, flank.n_teeth, flank.r_pitch_mm, flank.r_outside_mm  # mm
+    ('Flank', 20, 30.0, 33.0)
+    """
 
     gear: _GeneratedGear
     placement: np.ndarray
@@ -63,10 +83,12 @@ class Flank:
 
     @property
     def n_teeth(self) -> int:
+        """Number of teeth of the member."""
         return int(self.gear.n_teeth)
 
     @property
     def r_pitch_mm(self) -> float:
+        """Pitch radius [mm] of the member."""
         return float(self.gear.pitch_radius_mm)
 
     @property
@@ -76,7 +98,35 @@ class Flank:
 
 
 def make_flank(gear: _GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
-    """Wrap a generated flank (a :class:`gearrep.surfaces.hob.GeneratedGear`) for the TCA."""
+    """Wrap a generated flank (a :class:`gearrep.surfaces.hob.GeneratedGear`) for the TCA.
+
+    Parameters
+    ----------
+    gear : gearrep.surfaces.hob.GeneratedGear
+        The generated flank.
+    extra_turn_rad : float, optional
+        Further turn of the member frame about Z [rad] (pi for the gear, to face the pinion).
+
+    Returns
+    -------
+    EnvelopeFlank
+        The flank, placed in its tooth frame turned by ``extra_turn_rad``.
+
+    Raises
+    ------
+    ValueError
+        If ``gear`` is not a two-parameter generated flank or ``extra_turn_rad`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> from gearrep.tca import envelope_flank
+    >>> gear = GeneratedGear(n_teeth=40, R_c_mm=110.0, arc_centre=1)  # tooth-trace radius [mm]
+    >>> flank = envelope_flank(gear, np.pi)  # rad
+    >>> np.round(flank.placement @ [1.0, 0.0, 0.0], 6).tolist()  # S_2's x axis, turned by pi / 40 + pi
+    [-0.996917, -0.078459, 0.0]
+    """
     if not all(hasattr(gear, a) for a in ("envelope", "to_tooth_frame", "solve", "outward", "hob")):
         raise ValueError("gear must be a two-parameter generated flank (gearrep.surfaces.hob.GeneratedGear)")
     if not np.isfinite(extra_turn_rad):
@@ -87,7 +137,42 @@ def make_flank(gear: _GeneratedGear, extra_turn_rad: float = 0.0) -> Flank:
 
 def member_geometry(flank: Flank, q):
     """Point, d point/dq, hob normal, d normal/dq (generation frame S_2) and the meshing
-    functions with their Jacobian at q = (l, phi, theta, psi) (n, 4)."""
+    functions with their Jacobian at q = (l, phi, theta, psi) (n, 4).
+
+    Parameters
+    ----------
+    flank : EnvelopeFlank
+        The member's flank.
+    q : (n, 4) array_like
+        Full envelope parameters (l [mm], phi [rad], theta [rad], psi [rad]).
+
+    Returns
+    -------
+    point : numpy.ndarray
+        (n, 3) [mm].
+    d_point : numpy.ndarray
+        (n, 4, 3) derivatives of the point in q [mm per unit of q].
+    normal : numpy.ndarray
+        (n, 3) hob normal.
+    d_normal : numpy.ndarray
+        (n, 4, 3) its derivatives in q.
+    f : numpy.ndarray
+        (n, 2) the two equations of meshing [mm].
+    J : numpy.ndarray
+        (n, 2, 4) their Jacobian in q.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import envelope_member_geometry, hobbed_ideal_start, hobbed_pair
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)  # the contact at phi1' = 0
+    >>> r, dr, n, dn, f, J = envelope_member_geometry(pair.pinion, start.x[:, :4])
+    >>> r.shape, dr.shape, J.shape, bool(np.abs(f).max() < 1e-10)  # the meshing equations hold at the root
+    ((1, 3), (1, 4, 3), (1, 2, 4), True)
+    """
     loc = local_geometry(flank.tool, flank.motion, q)
     # f and J copied: the local geometry's arrays may be shared (envelope._local's reuse, read-only)
     return (*loc.in_member_frame, np.array(loc.f), np.array(loc.J))
@@ -100,7 +185,45 @@ def tangency_system(pair, x, phi1, drop, derivs=True, phi_column=True):
     """F (n, 9); with ``derivs`` also F_x (n, 9, 9) and F_phi1 (n, 9) (None without
     ``phi_column``). Rows: meshing of the pinion (2) and gear (2), r_f^(p) - r_f^(g) (3), two
     components of n_f^(p) x n_f^(g) (the component along the largest |n|, index ``drop``, is
-    dropped)."""
+    dropped).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair (any object with the attributes of the module docstring).
+    x : (n, 9) array_like
+        Unknowns (l_p, phi_p, theta_p, psi_p, l_g, phi_g, theta_g, psi_g, phi2') [mm, rad].
+    phi1 : (n,) array_like
+        Pinion angles phi1' [rad].
+    drop : (n,) array_like of int
+        The component of n_f^(p) x n_f^(g) dropped (:func:`envelope_dropped_component`).
+    derivs : bool, optional
+        Also the Jacobians.
+    phi_column : bool, optional
+        Also F_phi1 (with ``derivs``).
+
+    Returns
+    -------
+    F : numpy.ndarray
+        (n, 9) residuals [mm for the meshing and position rows, 1 for the normal rows].
+    F_x : numpy.ndarray or None
+        (n, 9, 9) Jacobian in x.
+    F_phi1 : numpy.ndarray or None
+        (n, 9) derivative in phi1' [per rad].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import envelope_dropped_component, envelope_tangency_system, hobbed_ideal_start, hobbed_pair
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> drop = envelope_dropped_component(pair, start.x, start.phi1)
+    >>> F, J, F_phi = envelope_tangency_system(pair, start.x, start.phi1, drop)
+    >>> F.shape, J.shape, F_phi.shape, bool(np.abs(F).max() < 1e-10)
+    ((1, 9), (1, 9, 9), (1, 9), True)
+    """
     phi1 = np.asarray(phi1, float)
     rp, Tp, np_, Dnp, fp, Jp = member_geometry(pair.pinion, x[:, 0:4])
     rg, Tg, ng, Dng, fg, Jg = member_geometry(pair.gear, x[:, 4:8])
@@ -141,7 +264,48 @@ class ContactPath:
     (l_p, phi_p, theta_p, psi_p, l_g, phi_g, theta_g, psi_g, phi2') [mm, rad], phi1' [rad], the
     solve record (status WRONG_ROOT where the full normal cross product is not small), the
     contact point r_f and the two hob normals in S_f, Z and radius of the point in each member
-    frame, and the condition number of the 9 x 9 Jacobian."""
+    frame, and the condition number of the 9 x 9 Jacobian.
+
+    Parameters
+    ----------
+    phi1 : numpy.ndarray
+        (n,) pinion angles phi1' [rad].
+    x : numpy.ndarray
+        (n, 9) unknowns [mm, rad].
+    solve : gearrep.solve.SolveResult
+        The solve record (residual, iterations, status).
+    r_f : numpy.ndarray
+        (n, 3) contact points in S_f [mm].
+    n_p, n_g : numpy.ndarray
+        (n, 3) hob normals of pinion and gear in S_f.
+    Z_p, Z_g : numpy.ndarray
+        (n,) axial coordinates of the point in each member frame [mm].
+    radius_p, radius_g : numpy.ndarray
+        (n,) radii of the point in each member frame [mm].
+    cond : numpy.ndarray
+        (n,) 2-norm condition numbers of the 9 x 9 Jacobian.
+    n_tangencies : numpy.ndarray, optional
+        (n,) distinct tangencies found (set by :func:`envelope_physical_contact`).
+    tangency_phi2_spread : numpy.ndarray, optional
+        (n,) spread of their phi2' [rad].
+    tangency_min_gap : numpy.ndarray, optional
+        (n,) first-order normal gap of the kept one at the others [mm].
+    phi2_continuation : numpy.ndarray, optional
+        (n,) phi2' of the continuation root [rad].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> path = hobbed_ideal_start(pair)  # a ContactPath of one row
+    >>> path.status_name.tolist(), np.round(path.radius_p, 4).tolist(), np.round(np.degrees(path.phi2), 4).tolist()
+    (['converged'], [30.8237], [-4.4942])
+    >>> len(path.take([0, 0]).phi1)
+    2
+    """
 
     phi1: np.ndarray
     x: np.ndarray
@@ -164,17 +328,32 @@ class ContactPath:
 
     @property
     def phi2(self):
+        """phi2' [rad] of each point (the last unknown)."""
         return self.x[:, 8]
 
     @property
     def converged(self):
+        """(n,) bool, status CONVERGED."""
         return self.solve.status == Status.CONVERGED
 
     @property
     def status_name(self):
+        """(n,) the status names (``"converged"``, ...)."""
         return status_names(self.solve.status)
 
     def take(self, idx) -> ContactPath:
+        """The rows ``idx`` of the path (every field, the solve record and the diagnostics).
+
+        Parameters
+        ----------
+        idx : int array_like or slice
+            Row indices.
+
+        Returns
+        -------
+        EnvelopeContactPath
+            The selected rows.
+        """
         s = self.solve
         return ContactPath(
             self.phi1[idx],
@@ -196,7 +375,32 @@ _ROW_FIELDS = ("r_f", "n_p", "n_g", "Z_p", "Z_g", "radius_p", "radius_g", "cond"
 
 
 def dropped_component(pair, x, phi1):
-    """Index (n,) of the component of n_f^(p) x n_f^(g) dropped from the system: the largest |n_f^(p)|."""
+    """Index (n,) of the component of n_f^(p) x n_f^(g) dropped from the system: the largest |n_f^(p)|.
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    x : (n, 9) array_like
+        Unknowns [mm, rad].
+    phi1 : (n,) array_like
+        Pinion angles phi1' [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (n,) int, 0, 1 or 2.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import envelope_dropped_component, hobbed_ideal_start, hobbed_pair
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> envelope_dropped_component(pair, start.x, start.phi1).tolist()  # the normal is mostly along y
+    [1]
+    """
     Np = np.einsum("nab,nb->na", pair.pinion_rotation(phi1), member_geometry(pair.pinion, x[:, :4])[2])
     return np.argmax(np.abs(Np), axis=1)
 
@@ -239,7 +443,47 @@ def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_h
     """Solve the 9 x 9 TCA system at pinion angles phi1' (n,) [rad] from starts x0 (n, 9), all
     points at once (:func:`gearrep.solve.newton`, analytic Jacobian, steps by Gauss-Jordan
     elimination with the SVD for the rows it flags near-singular (``inverse_square``), Armijo
-    backtracking with at most ``max_halvings`` halvings per step)."""
+    backtracking with at most ``max_halvings`` halvings per step).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Pinion angles phi1' [rad].
+    x0 : (n, 9) array_like
+        Starts [mm, rad], finite.
+    tol : float, optional
+        Residual tolerance [mm].
+    maxiter : int, optional
+        Iteration limit.
+    max_halvings : int, optional
+        Step halvings of the line search per step.
+
+    Returns
+    -------
+    EnvelopeContactPath
+        One row per angle, status WRONG_ROOT where the normals are not parallel.
+
+    Raises
+    ------
+    ValueError
+        If ``x0`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair, predict_envelope_contact, solve_envelope_points
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> phi1 = np.radians([1.0, 2.0])
+    >>> x0 = predict_envelope_contact(pair, np.repeat(start.x, 2, 0), [0.0, 0.0], phi1)
+    >>> sol = solve_envelope_points(pair, phi1, x0)
+    >>> sol.status_name.tolist(), np.round(sol.radius_p, 4).tolist()  # mm
+    (['converged', 'converged'], [30.6286, 30.4401])
+    """
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     x0 = np.array(x0, float).reshape(len(phi1), 9)
     if not np.all(np.isfinite(x0)):
@@ -271,7 +515,37 @@ def solve_points(pair, phi1, x0, *, tol: float = 1e-11, maxiter: int = 30, max_h
 
 def predict(pair, x, phi1, phi1_new) -> np.ndarray:
     """First-order predictor along the path: x(phi1_new) ~ x + (dx/dphi1)(phi1_new - phi1),
-    dx/dphi1 = -F_x^{-1} F_phi1 at the converged x (n, 9)."""
+    dx/dphi1 = -F_x^{-1} F_phi1 at the converged x (n, 9).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    x : (n, 9) array_like
+        Converged unknowns [mm, rad].
+    phi1 : float or (n,) array_like
+        Their pinion angles phi1' [rad].
+    phi1_new : (n,) array_like
+        The angles predicted for [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 9) predicted unknowns [mm, rad].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair, predict_envelope_contact, solve_envelope_points
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> x1 = predict_envelope_contact(pair, start.x, start.phi1, np.radians([1.0]))
+    >>> root = solve_envelope_points(pair, np.radians([1.0]), x1).x
+    >>> bool(np.abs(x1 - root).max() < 1e-4)  # first order: the error grows with the square of the step
+    True
+    """
     x = np.atleast_2d(x)
     phi1 = np.broadcast_to(np.asarray(phi1, float), (len(x),))
     _, J, Fphi = tangency_system(pair, x, phi1, dropped_component(pair, x, phi1))
@@ -280,12 +554,57 @@ def predict(pair, x, phi1, phi1_new) -> np.ndarray:
 
 
 def hob_pitch_l(hob: _ZAHob) -> float:
-    """Hob parameter l [mm] of the point on the hob's pitch line (axial-section profile)."""
+    """Hob parameter l [mm] of the point on the hob's pitch line (axial-section profile).
+
+    Parameters
+    ----------
+    hob : gearrep.surfaces.hob.ZAHob
+        The hob.
+
+    Returns
+    -------
+    float
+        l [mm].
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.hob import za_hob
+    >>> from gearrep.tca import hob_pitch_l
+    >>> round(float(hob_pitch_l(za_hob(3.0, 20.0, 30.0))), 6)  # module mm, deg, pitch radius mm -> mm
+    6.889052
+    """
     return (hob.pitch_radius_mm - hob.apex_radius_mm) / np.cos(hob.pressure_angle_rad)
 
 
 def require(sol: ContactPath, what: str):
-    """Raise RuntimeError (with the statuses and residuals) unless every point of ``sol`` converged."""
+    """Raise RuntimeError (with the statuses and residuals) unless every point of ``sol`` converged.
+
+    Parameters
+    ----------
+    sol : EnvelopeContactPath
+        The solved points.
+    what : str
+        What was solved (the start of the message).
+
+    Raises
+    ------
+    RuntimeError
+        If a point of ``sol`` did not converge.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair, require_converged, solve_envelope_points
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> require_converged(hobbed_ideal_start(pair), "ideal start")  # passes
+    >>> far = solve_envelope_points(pair, [0.0], np.zeros((1, 9)), maxiter=2)
+    >>> require_converged(far, "from zero")
+    Traceback (most recent call last):
+        ...
+    RuntimeError: from zero: TCA solve did not converge (status [...], residual [...])
+    """
     if not np.all(sol.converged):
         raise RuntimeError(
             f"{what}: TCA solve did not converge (status {list(sol.status_name)}, residual {sol.solve.residual})"
@@ -306,7 +625,39 @@ def trace_path(
     than ``branch_tol`` (mm or rad, any unknown) from its predicted start is another branch (e.g.
     a neighbouring tooth; the predictor error is < 0.01 over +-28 deg) and gets WRONG_ROOT; such
     points and unconverged ones are re-solved by marching from ``start`` in steps of at most
-    ``max_step_rad`` (each step checked the same way)."""
+    ``max_step_rad`` (each step checked the same way).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    start : EnvelopeContactPath
+        One converged point.
+    phi1 : float or (n,) array_like
+        Pinion angles phi1' [rad].
+    tol : float, optional
+        Residual tolerance [mm].
+    max_step_rad : float, optional
+        Largest step of the marching re-solve [rad].
+    branch_tol : float, optional
+        Largest distance of a root from its predicted start [mm or rad].
+
+    Returns
+    -------
+    EnvelopeContactPath
+        One row per angle.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair, trace_envelope_path
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> path = trace_envelope_path(pair, hobbed_ideal_start(pair), np.radians([-5.0, 0.0, 5.0]))
+    >>> path.status_name.tolist(), np.round(path.radius_p, 3).tolist()  # the contact runs down the pinion [mm]
+    (['converged', 'converged', 'converged'], [31.895, 30.824, 29.916])
+    """
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     x0 = predict(pair, np.repeat(start.x, len(phi1), 0), np.repeat(start.phi1, len(phi1)), phi1)
     sol = solve_points(pair, phi1, x0, tol=tol)

@@ -37,7 +37,31 @@ def pinion_outward(pair, sol: ContactPath) -> np.ndarray:
     """Unit normal of the pinion flank in S_f pointing out of its tooth (n, 3). The hob normal
     keeps its side of the flank everywhere, so its outward sign is taken once, at the pitch
     point of the mid-face section (:meth:`GeneratedGear.outward` there; that test by the polar
-    angle fails past the tip, where the extended flank crosses the tooth's centre line)."""
+    angle fails past the tip, where the extended flank crosses the tooth's centre line).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    sol : EnvelopeContactPath
+        Solved points.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 3) unit normals in S_f.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import envelope_pinion_outward, hobbed_ideal_start, hobbed_pair
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> n = envelope_pinion_outward(pair, hobbed_ideal_start(pair))
+    >>> np.round(n[0, :2], 4).tolist()  # x, y in S_f (z is 0 at mid-face)
+    [0.3416, 0.9398]
+    """
     q0 = pair.pinion.gear.solve(hob_pitch_l(pair.pinion.gear.hob), 0.0).params[0]
     r0, _, n0, _, _, _ = member_geometry(pair.pinion, np.asarray(q0, float)[None])
     R = pair.pinion.gear.to_tooth_frame
@@ -80,7 +104,55 @@ def physical_contact(
     whose contact lies on both faces count; roots closer than ``distinct_mm`` in (Z_p, l_p) are one.
     Starts that do not converge are discarded (they only search); the continuation root is always
     a candidate, so every returned row is a converged, verified tangency. The result carries
-    n_tangencies, tangency_phi2_spread [rad], tangency_min_gap [mm] and phi2_continuation [rad]."""
+    n_tangencies, tangency_phi2_spread [rad], tangency_min_gap [mm] and phi2_continuation [rad].
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    sol : EnvelopeContactPath
+        The continuation roots, one per phi1'.
+    face_width_mm : float
+        Face width of both members [mm], > 0.
+    n_starts : int, optional
+        Starts across the face per row, >= 2.
+    tol : float, optional
+        Residual tolerance of the search solves [mm].
+    maxiter : int, optional
+        Iteration limit of the search solves.
+    max_halvings : int, optional
+        Step halvings of their line search.
+    same_tooth_rad : float, optional
+        Largest |phi2' - phi2'_0| of a root of the same tooth pair [rad].
+    distinct_mm : float, optional
+        Smallest distance in (Z_p, l_p) between distinct tangencies [mm].
+
+    Returns
+    -------
+    EnvelopeContactPath
+        One converged, verified tangency per converged row of ``sol``, with the diagnostics set.
+
+    Raises
+    ------
+    ValueError
+        If ``n_starts`` is not an integer >= 2 or ``face_width_mm`` is not > 0.
+
+    Examples
+    --------
+    Equal tooth-trace radii (110 mm) give an almost-line contact: a pair of tangencies off
+    mid-face and one at mid-face, all within 1e-8 rad of one gear angle:
+
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import envelope_physical_contact, hobbed_ideal_start, hobbed_pair, solve_envelope_points
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> localised = hobbed_pair(design, 110.0, 113.0)  # tooth-trace radii [mm]
+    >>> pair = hobbed_pair(design, 110.0, 110.0)
+    >>> sol = solve_envelope_points(pair, [0.0], hobbed_ideal_start(localised).x)  # the mid-face tangency
+    >>> c = envelope_physical_contact(pair, sol, face_width_mm=30.0)
+    >>> c.n_tangencies.tolist(), np.round(c.Z_p, 3).tolist(), bool(c.tangency_phi2_spread[0] < 1e-8)  # mm, rad
+    ([3], [1.097], True)
+    """
     if int(n_starts) != n_starts or n_starts < 2:
         raise ValueError(f"n_starts must be an integer >= 2, got {n_starts!r}")
     if not (np.isfinite(face_width_mm) and face_width_mm > 0):
@@ -150,7 +222,40 @@ def turn_gap(pair, at: ContactPath, phi2_rad) -> np.ndarray:
     """First-order normal gap [mm] between the flanks at the tangency points of ``at`` when the gear
     is turned to ``phi2_rad`` (one per row; same phi1'): (phi2 - phi2'_at) s, s as in
     :func:`physical_contact`; < 0 = the flanks interpenetrate there, > 0 = they are apart. The
-    neglected terms are of second order in the turn (for a turn of 5e-8 rad, ~1e-15 mm)."""
+    neglected terms are of second order in the turn (for a turn of 5e-8 rad, ~1e-15 mm).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    at : EnvelopeContactPath
+        Tangencies.
+    phi2_rad : float or (n,) array_like
+        Gear angles phi2' [rad], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n,) gaps [mm].
+
+    Raises
+    ------
+    ValueError
+        If ``phi2_rad`` is not finite.
+
+    Examples
+    --------
+    At an almost-line contact (equal tooth-trace radii) the mid-face tangency is not the contact:
+    with the gear at its angle the flanks would interpenetrate at the physical contact:
+
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import HobbedAssembly, envelope_tangency_near, envelope_turn_gap, hobbed_continue_to
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair, contact = hobbed_continue_to(design, 110.0, 110.0, HobbedAssembly())  # radii [mm]
+    >>> mid = envelope_tangency_near(pair, contact, 0.0)  # Z_p = 0 mm
+    >>> bool(envelope_turn_gap(pair, contact, mid.phi2)[0] < 0), bool(envelope_turn_gap(pair, mid, contact.phi2)[0] > 0)
+    (True, True)
+    """
     phi2 = np.broadcast_to(np.asarray(phi2_rad, float), at.phi2.shape)
     if not np.all(np.isfinite(phi2)):
         raise ValueError("phi2_rad must be finite")
@@ -164,7 +269,44 @@ def tangency_near(
     contact line (the almost-null direction of the Jacobian, as in :func:`physical_contact`'s
     search) to Z_p = ``Z_p_mm``: e.g. the mid-face tangency (Z_p_mm = 0) of an almost-line
     contact whose physical contact is a pair off mid-face. Rows carry the solver status; the
-    caller checks (:func:`require`) and whether the root is the one wanted (its Z_p)."""
+    caller checks (:func:`require`) and whether the root is the one wanted (its Z_p).
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    sol : EnvelopeContactPath
+        Converged tangencies, one per phi1'.
+    Z_p_mm : float
+        Axial coordinate on the pinion of the start [mm], finite.
+    tol : float, optional
+        Residual tolerance [mm].
+    maxiter : int, optional
+        Iteration limit.
+    max_halvings : int, optional
+        Step halvings of the line search.
+
+    Returns
+    -------
+    EnvelopeContactPath
+        One row per row of ``sol``.
+
+    Raises
+    ------
+    ValueError
+        If ``Z_p_mm`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import HobbedAssembly, envelope_tangency_near, hobbed_continue_to
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair, contact = hobbed_continue_to(design, 110.0, 110.0, HobbedAssembly())  # radii [mm]
+    >>> mid = envelope_tangency_near(pair, contact, 0.0)
+    >>> np.round(contact.Z_p, 3).tolist(), mid.status_name.tolist(), bool(abs(mid.Z_p[0]) < 1e-6)  # mm
+    ([1.097], ['converged'], True)
+    """
     if not np.isfinite(Z_p_mm):
         raise ValueError(f"Z_p_mm must be finite, got {Z_p_mm!r}")
     x0, _ = _starts_along_face(pair, sol, np.array([float(Z_p_mm)]))
@@ -222,7 +364,51 @@ def robust_points(
     a row that does not converge, whose root is not a tangency or lies on another branch of a
     member's equation of meshing (WRONG_ROOT), or off either tooth (past its outside radius or the
     face: OFF_FLANK) is solved again from the nominal start itself (unless ``fallback`` is False). Where several tangencies meet at one angle (an almost-line
-    contact) :func:`physical_contact` picks the physical one."""
+    contact) :func:`physical_contact` picks the physical one.
+
+    Parameters
+    ----------
+    pair : HobbedPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Pinion angles phi1' [rad].
+    l_p : float or (n,) array_like
+        Hob parameter of the starts [mm], finite.
+    psi_p : float or (n,) array_like
+        Swivel angle of the starts [rad], finite.
+    nominal : callable
+        ``nominal(phi1)`` -> (n, 9) the family's nominal starts [mm, rad].
+    tol : float, optional
+        Residual tolerance [mm].
+    maxiter : int, optional
+        Iteration limit.
+    fallback : bool, optional
+        Solve failed rows again from the nominal start.
+
+    Returns
+    -------
+    EnvelopeContactPath
+        One row per angle (iterations: both passes).
+
+    Raises
+    ------
+    ValueError
+        If a start is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import hobbed_ideal_start, hobbed_pair, predict_envelope_contact, robust_envelope_points
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> def nominal(phi1):  # the first-order prediction off the contact at phi1' = 0
+    ...     return predict_envelope_contact(pair, np.repeat(start.x, len(phi1), 0), np.zeros(len(phi1)), phi1)
+    >>> sol = robust_envelope_points(pair, np.radians([0.0, 2.0]), [5.0, 7.0], [0.0, 0.02], nominal)  # mm, rad
+    >>> sol.status_name.tolist(), np.round(sol.x[:, 0], 4).tolist()  # l_p [mm]
+    (['converged', 'converged'], [6.0869, 6.4439])
+    """
     phi1 = np.atleast_1d(np.asarray(phi1, float))
     l_p, psi_p = (np.broadcast_to(np.asarray(a, float), phi1.shape) for a in (l_p, psi_p))
     if not (np.all(np.isfinite(l_p)) and np.all(np.isfinite(psi_p))):
@@ -280,7 +466,38 @@ def classify_points(sol: ContactPath, ref: ContactPath, *, tol: float = 1e-6):
     """(outcomes, iterations) of the solves ``sol`` against the reference ``ref`` (same rows), as
     :func:`gearrep.tca.classify_contacts` names them: ``"correct"`` (CONVERGED and every unknown
     within ``tol`` [mm, rad] of the reference), ``"wrong_root"`` (a root elsewhere, or not a
-    tangency), ``"not_converged"``."""
+    tangency), ``"not_converged"``.
+
+    Parameters
+    ----------
+    sol : EnvelopeContactPath
+        The solves.
+    ref : EnvelopeContactPath
+        The reference, row for row.
+    tol : float, optional
+        Largest difference of an unknown from the reference [mm, rad].
+
+    Returns
+    -------
+    outcomes : numpy.ndarray
+        (n,) object array of the outcome names.
+    iterations : numpy.ndarray
+        (n,) the solves' iterations.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> from gearrep.tca import classify_envelope_points, hobbed_ideal_start, hobbed_pair, solve_envelope_points
+    >>> from gearrep.tca import trace_envelope_path
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pair = hobbed_pair(design, 100.0, 110.0)  # tooth-trace radii [mm]
+    >>> start = hobbed_ideal_start(pair)
+    >>> ref = trace_envelope_path(pair, start, [0.0, 0.0])  # rad
+    >>> sol = solve_envelope_points(pair, [0.0, 0.0], np.vstack([start.x, np.zeros((1, 9))]), maxiter=3)
+    >>> classify_envelope_points(sol, ref)[0].tolist()
+    ['correct', 'not_converged']
+    """
     with np.errstate(invalid="ignore"):
         same = np.all(np.abs(sol.x - ref.x) < tol, axis=1)
     st = sol.solve.status

@@ -62,7 +62,60 @@ def offset_start(
     changes slowly with the angle the moved starts lead to the roots the nominal ones reach
     (tested on the seed-002 pair). A stronger start strategy (a robust solve of the reference)
     plugs in here. Where no reference converges, or ``phi1`` has at most order + 1 angles (the
-    references would be the solves themselves), the nominal starts are returned unchanged."""
+    references would be the solves themselves), the nominal starts are returned unchanged.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (or a :class:`BevelPair`).
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+    nominal : callable
+        ``nominal(pair, phi1)`` -> the family's nominal starts, (n, 5) conventional or (n, 2)
+        reduced unknowns [flank units (mm for involute flanks), rad].
+    formulation : {"conventional", "reduced"}, optional
+        The unknowns of the starts and of the reference solves.
+    solve : callable, optional
+        ``solve(pair, phi_ref, start)`` -> :class:`ContactPoints`, the reference solve (see above).
+    tol : float, optional
+        Residual tolerance of the default reference solve [flank units].
+    maxiter : int, optional
+        Iteration limit of the default reference solve.
+    order : {0, 1, 2, 3}, optional
+        Degree of the offset's polynomial in the angle.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) or (n, 2) starts, the nominal ones moved [flank units, rad].
+
+    Raises
+    ------
+    ValueError
+        If ``formulation`` is unknown, ``order`` is not 0 to 3, or ``nominal`` returns starts of
+        another shape.
+
+    Examples
+    --------
+    A crossing error of 0.05 deg moves the contact of a crowned spur pair 4.1 mm along the face,
+    away from the aligned pair's mid-face starts:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, default_start, offset_start, solve_contact
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> flanks = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # crown 1/mm
+    >>> pair = GearPair(*flanks, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_gamma_out=math.radians(0.05)))
+    >>> phi1 = np.linspace(-0.1, 0.1, 5)  # rad
+    >>> def nominal(pair, phi1):
+    ...     return default_start(pair, phi1, "conventional")
+    >>> x0 = offset_start(pair, phi1, nominal)
+    >>> np.round(nominal(pair, phi1)[:, 1], 3).tolist(), np.round(x0[:, 1], 3).tolist()  # v1 [mm]
+    ([0.0, 0.0, 0.0, 0.0, 0.0], [4.1, 4.1, 4.1, 4.1, 4.1])
+    >>> solve_contact(pair, phi1, x0, formulation="conventional").status_name.tolist()
+    ['converged', 'converged', 'converged', 'converged', 'converged']
+    """
     check_formulation(formulation)
     if order not in (0, 1, 2, 3) or type(order) is bool:
         raise ValueError(f"order must be 0 (a constant offset) to 3 (a polynomial in phi1), got {order!r}")
@@ -122,7 +175,38 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     tooth angle away, pi/(2 N1) for a standard tooth: see the package docstring) and moves it along
     the line of action by r_b1 phi1 (direction by trial solve: the one that converges in fewer
     iterations); the Newton solve absorbs that offset of a few tenths of a module. Falls back to
-    (r_p1, 0)."""
+    (r_p1, 0).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 1 a cylindrical involute flank.
+    phi1 : float
+        The angle of member 1 [rad], one finite angle.
+
+    Returns
+    -------
+    numpy.ndarray
+        (2,) start (u1, v1) [mm].
+
+    Raises
+    ------
+    ValueError
+        If ``phi1`` is not one finite angle or member 1 is not a cylindrical involute flank.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, line_of_action_start
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> np.round(line_of_action_start(pair, 0.0), 4).tolist()  # the pitch point, r_p1 = 34.5 mm
+    [34.5, 0.0]
+    >>> np.round(line_of_action_start(pair, 0.1), 4).tolist()  # rad -> mm
+    [35.7389, 0.0]
+    """
     a = np.asarray(phi1, dtype=float)
     if a.ndim != 0 or not np.isfinite(a):
         raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
@@ -146,7 +230,36 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
 
 def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
     """First-order (u1, v1 = 0) starts along the line of action for the angles ``phi1`` (array);
-    the direction in which the contact climbs member 1's flank is found by one trial solve."""
+    the direction in which the contact climbs member 1's flank is found by one trial solve.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 1 a cylindrical involute flank.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 2) starts (u1, v1 = 0) [mm], u1 clipped onto flank 1.
+
+    Raises
+    ------
+    ValueError
+        If an angle is not finite or member 1 is not a cylindrical involute flank.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, line_of_action_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> np.round(line_of_action_starts(pair, [-0.1, 0.0, 0.1]), 4).tolist()  # rad -> (u1, v1) [mm]
+    [[33.5299, 0.0], [34.5, 0.0], [35.7389, 0.0]]
+    """
     phi1 = _angles(phi1)
     if not np.all(np.isfinite(phi1)):
         raise ValueError("phi1 must be finite")
@@ -168,7 +281,48 @@ def draw_starts(
 ) -> np.ndarray:
     """Random conventional starts (n, 5), drawn in a fixed order from ``rng``: u1, v1 uniform on
     flank 1, then u2, v2 uniform on flank 2 (``uv2="uniform"``) or its mid-point
-    (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``."""
+    (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (flank boxes ``lower1``, ``upper1``, ``lower2``, ``upper2``).
+    n : int
+        Number of starts.
+    rng : numpy.random.Generator
+        The random source.
+    phi2_window : (float, float), optional
+        The interval of phi2 [rad] (exactly one of ``phi2_window`` and ``phi2_fixed``).
+    phi2_fixed : float, optional
+        One phi2 for every start [rad].
+    uv2 : {"uniform", "midpoint"}, optional
+        How (u2, v2) are chosen.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) starts (u1, v1, u2, v2, phi2) [flank units (mm for involute flanks), rad].
+
+    Raises
+    ------
+    ValueError
+        If both or neither of ``phi2_window`` and ``phi2_fixed`` are given, or ``uv2`` is unknown.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, draw_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> x0 = draw_starts(pair, 100, np.random.default_rng(1), phi2_window=(-0.1, 0.1))  # rad
+    >>> x0.shape, bool(np.all((x0[:, 0] >= pair.lower1[0]) & (x0[:, 0] <= pair.upper1[0])))
+    ((100, 5), True)
+    >>> x0 = draw_starts(pair, 2, np.random.default_rng(1), phi2_fixed=0.0, uv2="midpoint")
+    >>> np.round(x0[:, 2:], 3).tolist()  # u2, v2 [mm] at flank 2's mid-point, phi2 [rad]
+    [[61.146, 0.0, 0.0], [61.146, 0.0, 0.0]]
+    """
     if (phi2_window is None) == (phi2_fixed is None):
         raise ValueError("give exactly one of phi2_window and phi2_fixed")
     if uv2 not in ("uniform", "midpoint"):
@@ -204,7 +358,40 @@ def project_starts(pair: GearPair, phi1, u1, v1):
     """(u1, v1) starts projected into the domain where member 2's explicit surface is defined:
     clipped onto flank 1's box, then moved down flank 1's profile until the explicit u2 (eq 40)
     lies on flank 2 (:func:`guard_reduced_starts`; member 2 in explicit form only). ``phi1`` one
-    angle or one per start. Returns (u1, v1)."""
+    angle or one per start. Returns (u1, v1).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start (finite).
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks]; a NaN becomes the middle of the box.
+
+    Returns
+    -------
+    u1, v1 : numpy.ndarray
+        (n,) projected starts [flank units].
+
+    Raises
+    ------
+    ValueError
+        If the starts are not 1-D arrays of one length or ``phi1`` is not finite or matches neither
+        one angle nor one per start.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, project_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> u1, v1 = project_starts(pair, 0.0, [30.0, 36.0, np.nan], [0.0, 20.0, 1.0])  # rad, mm, mm
+    >>> np.round(u1, 4).tolist(), np.round(v1, 4).tolist()  # onto the box (root 32.4194 mm, face +-12.5 mm)
+    ([32.4194, 36.0, 34.9597], [0.0, 12.5, 1.0])
+    """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     lo, hi = pair.lower1, pair.upper1
     u1 = np.clip(np.where(np.isfinite(u1), u1, 0.5 * (lo[0] + hi[0])), lo[0], hi[0])
@@ -285,7 +472,33 @@ def meshing_sense(pair: GearPair, c):
     alike along the common normal); one with s1 != s2 touches from the side that turning separates
     at once (not a contact of the flank pair that transmits the motion). Where member 2 turning
     forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
-    smallest: the loaded tangency maximises s2 TE."""
+    smallest: the loaded tangency maximises s2 TE.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    c : ContactPoints
+        Contact points of ``pair``.
+
+    Returns
+    -------
+    s1, s2 : numpy.ndarray
+        (n,) signs (+1, -1; 0 or NaN where undefined) of the two velocities along the normal.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, default_start, meshing_sense, solve_contact
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> c = solve_contact(pair, [0.0, 0.05], default_start(pair, [0.0, 0.05]))  # rad
+    >>> s1, s2 = meshing_sense(pair, c)
+    >>> s1.tolist(), s2.tolist()  # both contacts mesh
+    ([1.0, 1.0], [1.0, 1.0])
+    """
     r, n = c.position, c.normal
     v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
     v2 = np.cross(pair.w2, r - pair.O2)
@@ -297,7 +510,30 @@ def flank_sense(pair: GearPair, phi1) -> np.ndarray:
     """The side flank 1 faces at each angle ``phi1``: the sign of its point's velocity (member 1
     turning by phi1 > 0) along its outward normal at the middle of its box. A contact of the flank
     pair meshes with s1 = s2 = this sign (:func:`meshing_sense`); a root where flank 1 faces the
-    other way lies on a part of the parametric surface folded back over the tooth."""
+    other way lies on a part of the parametric surface folded back over the tooth.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (n,) signs, +1 or -1.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, flank_sense
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> flank_sense(pair, [0.0, 0.05]).tolist()  # rad
+    [1.0, 1.0]
+    """
     ph = np.atleast_1d(np.asarray(phi1, dtype=float))
     mid = 0.5 * (pair.lower1 + pair.upper1)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

@@ -36,7 +36,9 @@ __all__ = [
     "solve_variant",
 ]
 
+#: the solver variants of the conventional formulation (module docstring)
 CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
+#: the solver variants of the reduced formulation (module docstring)
 REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
 
 
@@ -83,7 +85,39 @@ def _check_margin(margin) -> None:
 
 def flank_boxes(pair: GearPair, margin: float = 0.0):
     """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
-    moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
+    moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (its flanks' ``lower``, ``upper``; unbounded where a flank has none).
+    margin : float, optional
+        Fraction of each flank's height [1] by which both u limits move inward, in [0, 0.5).
+
+    Returns
+    -------
+    lower, upper : numpy.ndarray
+        (5,) bounds in the flanks' units (mm for involute flanks) and rad; phi2 is -inf .. inf.
+
+    Raises
+    ------
+    ValueError
+        If ``margin`` is not in [0, 0.5).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, flank_boxes
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> lo, hi = flank_boxes(pair, margin=0.1)
+    >>> np.round(lo, 4).tolist()  # u1 [mm], v1 [mm], u2 [mm], v2 [mm], phi2 [rad]
+    [32.9275, -12.5, 58.462, -12.5, -inf]
+    >>> np.round(hi, 4).tolist()
+    [36.9919, 12.5, 63.8291, 12.5, inf]
+    """
     _check_margin(margin)
     lo = np.concatenate([pair.lower1, pair.lower2, [-np.inf]]).astype(float)
     hi = np.concatenate([pair.upper1, pair.upper2, [np.inf]]).astype(float)
@@ -113,6 +147,52 @@ def solve_conventional(
     ``equations``: ``"five"`` drops normal component ``drop``, ``"six"`` keeps all three (least
     squares), ``"drop_nz"`` drops the axial component z (singular for spur gears). The status is
     the solver's; roots outside the flank boxes are OFF_FLANK.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float
+        The angle of member 1 [rad], one finite angle.
+    x0 : (n, 5) array_like
+        Starts (u1, v1, u2, v2, phi2) [flank units (mm for involute flanks), rad].
+    variant : str, optional
+        One of :data:`CONVENTIONAL_VARIANTS`.
+    equations : {"five", "six", "drop_nz"}, optional
+        Which components of the normal equation are kept (see above).
+    drop : {0, 1, 2}, optional
+        The normal component dropped with ``equations="five"``.
+    tol : float, optional
+        Residual tolerance [flank units] (> 0, finite).
+    maxiter : int, optional
+        Iteration limit.
+    margin : float, optional
+        The ``domain`` variant's inward margin, a fraction of the flank height in [0, 0.5)
+        (:func:`flank_boxes`).
+
+    Returns
+    -------
+    gearrep.solve.SolveResult
+        The solver's record: x (n, 5), residual, iterations, status per start.
+
+    Raises
+    ------
+    ValueError
+        Before any solve: an unknown variant or equation set, a ``drop`` outside (0, 1, 2), ``phi1``
+        not one finite angle, ``x0`` not (n, 5), a bad tolerance, iteration limit or margin.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, default_start, solve_conventional
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> x0 = default_start(pair, 0.0, "conventional")  # the middle of both flanks, phi2 = 0
+    >>> r = solve_conventional(pair, 0.0, x0, variant="damped")
+    >>> r.status.tolist(), np.round(r.x[:, [0, 2]], 4).tolist()  # converged; u1, u2 [mm]
+    ([0], [[35.3186, 60.7784]])
     """
     if variant not in CONVENTIONAL_VARIANTS:
         raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS}, got {variant!r}")
@@ -139,7 +219,35 @@ def solve_conventional(
 
 def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
     """Conventional starts (u1, v1, u2, v2, phi2) with u2, v2, phi2 from the reduced relations
-    (eq 39-44) for the given (u1, v1)."""
+    (eq 39-44) for the given (u1, v1).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 2 in explicit (cylindrical or spherical) form.
+    phi1 : float
+        The angle of member 1 [rad].
+    u1, v1 : (n,) array_like
+        Points of flank 1 [flank units, mm for involute flanks].
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) starts (u1, v1, u2, v2, phi2) [flank units, rad]; NaN where the explicit u2 or phi2 is
+        undefined (the point maps inside member 2's base circle).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, seed_from_reduced
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> x0 = seed_from_reduced(pair, 0.0, np.array([35.0]), np.array([0.0]))  # rad, mm, mm
+    >>> x0.shape, round(float(x0[0, 2]), 4)  # u2 [mm] of the point of member 2 where u1 lies
+    ((1, 5), 61.1083)
+    """
     with np.errstate(invalid="ignore", divide="ignore"):
         u2, v2, phi2 = reduced_unknowns(pair, u1, v1, np.full(np.shape(u1), phi1))
     return np.column_stack([u1, v1, u2, v2, phi2])
@@ -148,7 +256,44 @@ def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
 def guard_reduced_starts(pair: GearPair, phi1, u1, v1, n_bisect: int = 40):
     """Move starts whose explicit u2 (eq 40) is below flank 2 (or undefined) down the profile of
     flank 1 (bisection in u1 towards u1_min) onto the part of flank 1 that maps onto flank 2.
-    ``phi1`` scalar or one angle per start. Returns (u1, moved mask)."""
+    ``phi1`` scalar or one angle per start. Returns (u1, moved mask).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 2 in explicit form.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start (finite).
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks], 1-D of one length n >= 1.
+    n_bisect : int, optional
+        Bisection steps.
+
+    Returns
+    -------
+    u1 : numpy.ndarray
+        (n,) guarded u1 [flank units].
+    moved : numpy.ndarray
+        (n,) bool, the starts whose explicit u2 was below flank 2 or undefined.
+
+    Raises
+    ------
+    ValueError
+        If the starts are not 1-D arrays of one length, ``phi1`` is not finite or matches neither
+        one angle nor one per start, or ``n_bisect`` is not an integer.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, guard_reduced_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> u1, moved = guard_reduced_starts(pair, 0.0, [31.0, 35.0], [0.0, 0.0])  # rad, mm, mm
+    >>> np.round(u1, 4).tolist(), moved.tolist()  # the first start lay below flank 1's root (32.4194 mm)
+    ([32.4194, 35.0], [True, False])
+    """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     check_integer("n_bisect", n_bisect)
     return _guard(pair, ph, u1.copy(), v1, n_bisect)
@@ -184,6 +329,44 @@ def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: 
     the normals, which vanishes on the plane of action; the remaining (v1) direction is the nearly
     flat valley along the contact line that crowning makes a point. ``phi1`` scalar or one angle
     per start. Returns (u1, iterations); rows that fail keep their u1.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 2 in explicit form.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start (finite).
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks], 1-D of one length n >= 1.
+    tol : float, optional
+        Tolerance on the axial component of n_f1 x n_f2 [1] (> 0, finite).
+    maxiter : int, optional
+        Iteration limit of the 1-D damped Newton solve.
+
+    Returns
+    -------
+    u1 : numpy.ndarray
+        (n,) u1 on the contact line [flank units] (the start's own where the solve fails).
+    iterations : numpy.ndarray
+        (n,) iterations of the 1-D solve.
+
+    Raises
+    ------
+    ValueError
+        If the starts or angles are malformed (as :func:`guard_reduced_starts`), or the tolerance or
+        iteration limit is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, transverse_stage
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> u1, it = transverse_stage(pair, 0.0, [33.0, 37.0], [0.0, 5.0])  # rad, mm, mm
+    >>> np.round(u1, 4).tolist()  # the contact line of the unmodified pair [mm]
+    [35.3186, 35.3176]
     """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     check_positive("tol", tol)
@@ -210,7 +393,41 @@ def _transverse(pair, ph, u1, v1, tol, maxiter):
 
 def robust_start(pair: GearPair, phi1, u1, v1):
     """Guarded start (:func:`guard_reduced_starts`) moved onto the contact line
-    (:func:`transverse_stage`). Returns (u1, iterations of the 1-D stage)."""
+    (:func:`transverse_stage`). Returns (u1, iterations of the 1-D stage).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 2 in explicit form.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start (finite).
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks], 1-D of one length n >= 1.
+
+    Returns
+    -------
+    u1 : numpy.ndarray
+        (n,) moved u1 [flank units].
+    iterations : numpy.ndarray
+        (n,) iterations of the 1-D stage.
+
+    Raises
+    ------
+    ValueError
+        If the starts or angles are malformed (as :func:`guard_reduced_starts`).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, robust_start
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> u1, it = robust_start(pair, 0.0, [33.0, 37.0], [0.0, 5.0])  # rad, mm, mm
+    >>> np.round(u1, 4).tolist()
+    [35.3186, 35.3176]
+    """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     u1g, _ = _guard(pair, ph, u1.copy(), v1, 40)
     return _transverse(pair, ph, u1g, v1, 1e-10, 50)
@@ -219,7 +436,51 @@ def robust_start(pair: GearPair, phi1, u1, v1):
 def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduced", tol=1e-12, maxiter=50):
     """Reduced TCA (:func:`solve_contact`) from (u1, v1) starts with solver ``variant``
     (:data:`REDUCED_VARIANTS`). Returns (x (n, 5) = (u1, v1, u2, v2, phi2), status, iterations,
-    residual); the iterations of the transverse stage are included."""
+    residual); the iterations of the transverse stage are included.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 2 in explicit form.
+    phi1 : float
+        The angle of member 1 [rad].
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks].
+    variant : str, optional
+        One of :data:`REDUCED_VARIANTS`.
+    tol : float, optional
+        Residual tolerance of the solve [1, components of n_f1 x n_f2].
+    maxiter : int, optional
+        Iteration limit.
+
+    Returns
+    -------
+    x : numpy.ndarray
+        (n, 5) (u1, v1, u2, v2, phi2) [flank units, rad]; NaN where the row did not converge.
+    status : numpy.ndarray
+        (n,) :class:`gearrep.solve.Status` codes.
+    iterations : numpy.ndarray
+        (n,) Newton iterations, the transverse stage's included.
+    residual : numpy.ndarray
+        (n,) final residual norms.
+
+    Raises
+    ------
+    ValueError
+        If ``variant`` is unknown (and, from the solve, on bad starts, angle or solver settings).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, solve_reduced
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> x, status, it, res = solve_reduced(pair, 0.0, [33.0, 37.0], [-10.0, 12.0], variant="reduced_robust")
+    >>> status.tolist(), np.round(x[:, 0], 4).tolist()  # both converged to the one contact, u1 [mm]
+    ([0, 0], [35.3186, 35.3186])
+    """
     if variant not in REDUCED_VARIANTS:
         raise ValueError(f"variant must be one of {REDUCED_VARIANTS}, got {variant!r}")
     u1 = np.asarray(u1, float)
@@ -254,7 +515,61 @@ def solve_variant(
 ):
     """Solve conventional starts ``starts`` (n, 5) with any variant of either formulation (the
     reduced ones use only the (u1, v1) columns). Returns (x (n, 5), status, iterations); a seeded
-    or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED."""
+    or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float
+        The angle of member 1 [rad], one finite angle.
+    starts : (n, 5) array_like
+        Conventional starts (u1, v1, u2, v2, phi2) [flank units (mm for involute flanks), rad].
+    variant : str
+        One of :data:`CONVENTIONAL_VARIANTS` or :data:`REDUCED_VARIANTS`.
+    equations, drop, margin : optional
+        The conventional system and the ``domain`` margin, as in :func:`solve_conventional`.
+    tol : float, optional
+        Residual tolerance [flank units for the conventional system, 1 for the reduced].
+    maxiter : int, optional
+        Iteration limit.
+
+    Returns
+    -------
+    x : numpy.ndarray
+        (n, 5) solved unknowns [flank units, rad].
+    status : numpy.ndarray
+        (n,) :class:`gearrep.solve.Status` codes.
+    iterations : numpy.ndarray
+        (n,) iterations, a start stage's included.
+
+    Raises
+    ------
+    ValueError
+        Before any solve: an unknown variant, ``phi1`` not one finite angle, ``starts`` not (n, 5),
+        or bad solver settings (:func:`solve_conventional`).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import CONVENTIONAL_VARIANTS, REDUCED_VARIANTS, GearPair, solve_variant
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> starts = np.array([[33.0, -10.0, 60.0, 5.0, 0.0], [37.0, 12.0, 60.0, -5.0, 0.0]])  # mm, rad
+    >>> for variant in CONVENTIONAL_VARIANTS + REDUCED_VARIANTS:
+    ...     x, status, it = solve_variant(pair, 0.0, starts, variant)
+    ...     print(variant, status.tolist(), np.round(x[:, 0], 4).tolist())
+    plain [0, 0] [35.3186, 35.3186]
+    damped [0, 0] [35.3186, 35.3186]
+    domain [0, 0] [35.3186, 35.3186]
+    seeded [0, 0] [35.3186, 35.3186]
+    robust [0, 0] [35.3186, 35.3186]
+    reduced [0, 0] [35.3186, 35.3186]
+    reduced_damped [0, 0] [35.3186, 35.3186]
+    reduced_robust [0, 0] [35.3186, 35.3186]
+    """
     if variant not in CONVENTIONAL_VARIANTS + REDUCED_VARIANTS:
         raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS + REDUCED_VARIANTS}, got {variant!r}")
     phi1 = _one_angle(phi1)

@@ -38,6 +38,7 @@ CHECKED = (
     "gearrep.settings",
     "gearrep.motion",
     "gearrep.checks",
+    "gearrep.tca",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
