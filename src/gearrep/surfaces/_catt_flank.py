@@ -21,9 +21,36 @@ __all__ = ["CATTGearData", "CATTFlank", "turn_over"]
 class CATTGearData:
     """Design data of one CATT gear (lengths in mm, angles in rad).
 
-    n_teeth : number of teeth z; module : module m of the middle section (eq 5); R_T : cutter
-    (tooth-line) radius; face_width : B; pressure_angle : blade angle alpha (20 deg standard);
-    addendum, clearance : coefficients h*, c* (1 and 0.25 standard, seed 004 sec. 4).
+    Parameters
+    ----------
+    n_teeth : int
+        Number of teeth z [1], in [5, 10000].
+    module : float
+        Module m of the middle section [mm] (eq 5), > 0.
+    R_T : float
+        Cutter (tooth-line) radius [mm], above face_width / 2 + pi m.
+    face_width : float
+        Face width B [mm], > 0.
+    pressure_angle : float, optional
+        Blade angle alpha [rad] (20 deg standard), in (0.05, 0.8).
+    addendum, clearance : float, optional
+        Coefficients h*, c* [in modules] (1 and 0.25 standard, seed 004 sec. 4), >= 0.
+
+    Raises
+    ------
+    ValueError
+        If a value is not a finite number in its range.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import CATTGearData
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm (seed 004)
+    >>> gear.r_p, gear.r_a, gear.r_root, round(float(gear.r_b), 4)  # pitch, tip, root and base radii [mm]
+    (76.0, 84.0, 66.0, 71.4166)
+    >>> CATTGearData(19, 8.0, 40.0, 80.0)
+    Traceback (most recent call last):
+        ...
+    ValueError: R_T must exceed face_width/2 + pi*module = 65.1327, got 40.0
     """
 
     n_teeth: int
@@ -95,17 +122,39 @@ def _real_or_complex(x):
 
 
 class CATTFlank(Surface):
-    """One flank of a CATT gear, r(theta, phi) of eq (6) in the closed form (C) of the module docstring.
+    """One flank of a CATT gear, r(theta, phi) of eq (6) in the closed form (C) of the module docstring
+    (:mod:`gearrep.surfaces.catt`).
 
     Parameters
     ----------
     gear : CATTGearData
-    side : +1 for the upper signs of eq (5)-(6) (inside blade, convex flank), -1 for the lower
-        signs (outside blade, concave flank)
+        The gear.
+    side : {1, -1}, optional
+        +1 for the upper signs of eq (5)-(6) (inside blade, convex flank), -1 for the lower signs
+        (outside blade, concave flank).
 
+    Raises
+    ------
+    ValueError
+        If ``gear`` is not a :class:`CATTGearData` or ``side`` is not +1 or -1.
+
+    Notes
+    -----
     The parameter domain used for bounds is a box in (theta, phi) that contains the flank (radius
     between :attr:`CATTGearData.r_form` and r_a, |z| <= B/2); :meth:`contains` tests the true
     boundaries.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import CATTFlank, CATTGearData
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> flank = CATTFlank(gear, 1)  # the convex flank
+    >>> phi = flank.middle_section_phi(gear.r_p)  # the pitch point of the middle section [rad]
+    >>> round(float(np.hypot(*flank.position(0.0, phi)[:2])), 9)  # its radius [mm]
+    76.0
+    >>> np.round(flank.outward_normal(0.0, phi)[:2], 6).tolist()
+    [-0.908239, -0.418451]
     """
 
     outward_sign = 1  #: unit(r_theta x r_phi) points out of the tooth on the working flank
@@ -133,6 +182,7 @@ class CATTFlank(Surface):
 
     @property
     def convex(self) -> bool:
+        """Whether the flank is convex (side +1, inside blade)."""
         return self.side == 1
 
     def __repr__(self) -> str:
@@ -144,14 +194,38 @@ class CATTFlank(Surface):
 
     # -- the paper's equations as printed ------------------------------------------------------
     def blade_u(self, theta, phi):
-        """Blade coordinate u from the equation of meshing, eq (6) fourth line as printed."""
+        """Blade coordinate u from the equation of meshing, eq (6) fourth line as printed.
+
+        Parameters
+        ----------
+        theta, phi : float or array_like
+            Cutter angle and roll angle [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            u [mm] along the blade.
+        """
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
         s, q = self.side, self.gear.q
         return -s * self.sa * (np.cos(theta) * (self.R_T - s * q) - (self.R_T + self.R * phi)) / np.cos(theta)
 
     def cutter_point(self, u, theta):
         """Blade point of eq (5) turned by theta (eq 1) and carried into S_2 by eq (2) (homogeneous
-        product M_21 M_1d0 r_d0), i.e. the generating surface in the rack frame (before the roll)."""
+        product M_21 M_1d0 r_d0), i.e. the generating surface in the rack frame (before the roll).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Blade coordinate [mm] (complex for complex-step differentiation).
+        theta : float or array_like
+            Cutter angle [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) points [mm].
+        """
         u, theta = np.broadcast_arrays(_real_or_complex(u), _real_or_complex(theta))
         s, q = self.side, self.gear.q
         x0 = -(self.R_T - s * q + s * u * self.sa)  # eq (5), x_d0
@@ -164,7 +238,18 @@ class CATTFlank(Surface):
         return np.stack([x1 + self.R_T, z1 - self.R, -y1], axis=-1)
 
     def position_eq6(self, theta, phi):
-        """Eq (6) evaluated literally (u from its fourth line)."""
+        """Eq (6) evaluated literally (u from its fourth line).
+
+        Parameters
+        ----------
+        theta, phi : float or array_like
+            Cutter angle and roll angle [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) flank points in S_2 [mm].
+        """
         theta, phi = np.broadcast_arrays(np.asarray(theta, float), np.asarray(phi, float))
         s, q = self.side, self.gear.q
         u = self.blade_u(theta, phi)
@@ -177,7 +262,20 @@ class CATTFlank(Surface):
 
     def position_by_transforms(self, u, theta, phi):
         """Blade point (u, theta) carried by M_d2 M_21 M_1d0 (eq 4) at roll angle phi (any u).
-        Accepts complex arguments (complex-step differentiation); real input gives real output."""
+        Accepts complex arguments (complex-step differentiation); real input gives real output.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Blade coordinate [mm].
+        theta, phi : float or array_like
+            Cutter angle and roll angle [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) points in S_2 [mm].
+        """
         p = self.cutter_point(u, theta)
         phi = np.broadcast_to(_real_or_complex(phi), p.shape[:-1])
         c, s = np.cos(phi), np.sin(phi)
@@ -188,7 +286,20 @@ class CATTFlank(Surface):
 
     def meshing_residual(self, u, theta, phi):
         """n . v of the generating surface at blade point (u, theta), roll angle phi, in S_2:
-        zero where the blade point touches the generated flank (Litvin ch. 6)."""
+        zero where the blade point touches the generated flank (Litvin ch. 6).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Blade coordinate [mm].
+        theta, phi : float or array_like
+            Cutter angle and roll angle [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            n . v [mm per rad of roll], with n the unit normal of the generating surface.
+        """
         u, theta, phi = np.broadcast_arrays(*(np.asarray(a, float) for a in (u, theta, phi)))
         s = self.side
         p = self.cutter_point(u, theta) + np.stack([self.R * phi, 0 * phi, 0 * phi], axis=-1)
@@ -265,12 +376,34 @@ class CATTFlank(Surface):
         )
 
     def outward_normal(self, theta, phi) -> np.ndarray:
-        """Unit normal pointing out of the tooth material."""
+        """Unit normal pointing out of the tooth material.
+
+        Parameters
+        ----------
+        theta, phi : float or array_like
+            Surface parameters [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) unit normals.
+        """
         return self.outward_sign * self.evaluate(theta, phi).normal
 
     # -- positions on the flank --------------------------------------------------------------
     def middle_section_phi(self, radius):
-        """Roll angle phi of the middle-section (theta = 0) point at ``radius`` (closed form)."""
+        """Roll angle phi of the middle-section (theta = 0) point at ``radius`` (closed form).
+
+        Parameters
+        ----------
+        radius : float or array_like
+            Radius [mm] (NaN below the base circle).
+
+        Returns
+        -------
+        numpy.ndarray
+            phi [rad].
+        """
         r = np.asarray(radius, float)
         s, g = self.side, self.gear
         with np.errstate(invalid="ignore"):
@@ -279,7 +412,24 @@ class CATTFlank(Surface):
 
     def solve_point(self, z, radius, *, tol=1e-11, maxiter=40) -> SolveResult:
         """Parameters (theta, phi) of the flank point at axial coordinate ``z`` and ``radius``
-        (Newton on z(theta, phi) - z = 0, |r_xy| - radius = 0; start from the middle section)."""
+        (Newton on z(theta, phi) - z = 0, |r_xy| - radius = 0; start from the middle section).
+
+        Parameters
+        ----------
+        z : float or array_like
+            Axial coordinates [mm].
+        radius : float or array_like
+            Radii [mm] (broadcast with ``z``).
+        tol : float, optional
+            Residual tolerance [mm].
+        maxiter : int, optional
+            Iteration limit.
+
+        Returns
+        -------
+        gearrep.solve.SolveResult
+            x (n, 2) = (theta, phi) [rad], residual, iterations, status.
+        """
         z, radius = np.broadcast_arrays(np.atleast_1d(np.asarray(z, float)), np.atleast_1d(np.asarray(radius, float)))
         z, radius = z.ravel(), radius.ravel()
         th0 = np.arcsin(np.clip(z / self.rho0, -0.99, 0.99))
@@ -310,13 +460,41 @@ class CATTFlank(Surface):
         return SolveResult(res.x[:, :2], res.residual, res.iterations, st, res.condition)
 
     def section_profile(self, z, radii):
-        """Transverse profile at axial coordinate ``z``: points (n, 3) at ``radii`` and the solve record."""
+        """Transverse profile at axial coordinate ``z``: points (n, 3) at ``radii`` and the solve record.
+
+        Parameters
+        ----------
+        z : float
+            Axial coordinate [mm].
+        radii : float or array_like
+            Radii [mm].
+
+        Returns
+        -------
+        points : numpy.ndarray
+            (n, 3) [mm].
+        result : gearrep.solve.SolveResult
+            The solve record (:meth:`solve_point`).
+        """
         radii = np.atleast_1d(np.asarray(radii, float))
         res = self.solve_point(np.full_like(radii, float(z)), radii)
         return self.position(res.x[:, 0], res.x[:, 1]), res
 
     def contains(self, theta, phi, tol: float = 1e-9) -> np.ndarray:
-        """True where (theta, phi) is on the flank: r_form <= radius <= r_a and |z| <= B/2."""
+        """True where (theta, phi) is on the flank: r_form <= radius <= r_a and |z| <= B/2.
+
+        Parameters
+        ----------
+        theta, phi : float or array_like
+            Surface parameters [rad].
+        tol : float, optional
+            Slack of the bounds [mm].
+
+        Returns
+        -------
+        numpy.ndarray
+            bool.
+        """
         p = self.position(theta, phi)
         rad = np.hypot(p[..., 0], p[..., 1])
         g = self.gear
@@ -328,7 +506,20 @@ class CATTFlank(Surface):
         )
 
     def tip_edge(self, z):
-        """Points (n, 3) of the tip edge (intersection with the tip cylinder) at axial coordinates z."""
+        """Points (n, 3) of the tip edge (intersection with the tip cylinder) at axial coordinates z.
+
+        Parameters
+        ----------
+        z : float or array_like
+            Axial coordinates [mm].
+
+        Returns
+        -------
+        points : numpy.ndarray
+            (n, 3) [mm].
+        result : gearrep.solve.SolveResult
+            The solve record (:meth:`solve_point`).
+        """
         z = np.atleast_1d(np.asarray(z, float))
         res = self.solve_point(z, np.full_like(z, self.gear.r_a))
         return self.position(res.x[:, 0], res.x[:, 1]), res
@@ -336,5 +527,17 @@ class CATTFlank(Surface):
 
 def turn_over() -> np.ndarray:
     """Rotation by pi about the x axis, (x, y, z) -> (x, -y, -z): the mate is turned over so that
-    its tooth traces bend the same way as the pinion's in the common pitch plane."""
+    its tooth traces bend the same way as the pinion's in the common pitch plane.
+
+    Returns
+    -------
+    numpy.ndarray
+        The 3 x 3 rotation.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import turn_over
+    >>> (turn_over() @ [1.0, 2.0, 3.0]).tolist()  # mm
+    [1.0, -2.0, -3.0]
+    """
     return np.diag([1.0, -1.0, -1.0])

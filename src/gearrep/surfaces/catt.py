@@ -119,7 +119,39 @@ __all__ = [
 def middle_section_curvatures(gear: CATTGearData, side: int, radius):
     """Principal curvatures (w.r.t. the outward normal) of a flank at its middle-section point of
     given radius: (k_profile, k_axial, rho_blade, l) with l the signed position on the line of
-    action, measured from the pitch point along (c, s a_s) of the rack frame."""
+    action, measured from the pitch point along (c, s a_s) of the rack frame.
+
+    Parameters
+    ----------
+    gear : CATTGearData
+        The gear.
+    side : {1, -1}
+        +1 convex flank (inside blade), -1 concave flank (outside blade).
+    radius : float or array_like
+        Radii of the middle-section points [mm], at or above the base radius.
+
+    Returns
+    -------
+    k_profile, k_axial : numpy.ndarray
+        Principal curvatures [1/mm] along the profile and along the axis.
+    rho_blade : numpy.ndarray
+        Radius of the blade circle that cut the point [mm].
+    l : numpy.ndarray
+        Signed position on the line of action [mm].
+
+    Examples
+    --------
+    At the pitch point (l = 0) the axial curvature is that of the blade circle, radius
+    R_T -+ pi m / 4:
+
+    >>> from gearrep.surfaces.catt import CATTGearData, middle_section_curvatures
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> k_p, k_a, rho, l = middle_section_curvatures(gear, 1, gear.r_p)  # convex flank, mm
+    >>> round(float(k_p), 6), round(float(k_a), 6), round(float(rho), 4)  # 1/mm, 1/mm, mm
+    (-0.038471, -0.001903, 493.7168)
+    >>> round(float(middle_section_curvatures(gear, -1, gear.r_p)[1]), 6)  # concave: positive [1/mm]
+    0.001856
+    """
     r = np.asarray(radius, float)
     s, c, a = side, np.cos(gear.pressure_angle), np.sin(gear.pressure_angle)
     with np.errstate(invalid="ignore"):
@@ -132,7 +164,28 @@ def middle_section_curvatures(gear: CATTGearData, side: int, radius):
 def pitch_thickness_closed_form(gear: CATTGearData, z):
     """Transverse arc tooth thickness on the pitch circle at axial offset z (exact):
     pi m - [sqrt((R_T + q)^2 - z^2) - sqrt((R_T - q)^2 - z^2)] (rack space width on the pitch line,
-    which rolls on the pitch circle in every transverse section)."""
+    which rolls on the pitch circle in every transverse section).
+
+    Parameters
+    ----------
+    gear : CATTGearData
+        The gear.
+    z : float or array_like
+        Axial offsets of the sections [mm].
+
+    Returns
+    -------
+    numpy.ndarray
+        Thicknesses [mm].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import CATTGearData, pitch_thickness_closed_form
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> np.round(pitch_thickness_closed_form(gear, [0.0, 30.0]), 6).tolist()  # mm; pi m / 2 in the middle
+    [12.566371, 12.543686]
+    """
     z = np.asarray(z, float)
     q, RT = gear.q, gear.R_T
     return np.pi * gear.module - (np.sqrt((RT + q) ** 2 - z * z) - np.sqrt((RT - q) ** 2 - z * z))
@@ -141,7 +194,38 @@ def pitch_thickness_closed_form(gear: CATTGearData, z):
 def tooth_thickness(gear: CATTGearData, z, radius=None):
     """Transverse arc tooth thickness at ``radius`` (default pitch radius) in the section at axial
     coordinate ``z``, between the convex flank (s = +1, space 0) and the concave flank (s = -1 of
-    space 1, i.e. space 0 turned by 2 pi / z). Returns (thickness (n,), max solve residual)."""
+    space 1, i.e. space 0 turned by 2 pi / z). Returns (thickness (n,), max solve residual).
+
+    Parameters
+    ----------
+    gear : CATTGearData
+        The gear.
+    z : float or array_like
+        Axial coordinates of the sections [mm].
+    radius : float, optional
+        Radius [mm] (default: the pitch radius).
+
+    Returns
+    -------
+    thickness : numpy.ndarray
+        (n,) arc thicknesses [mm].
+    residual : float
+        The largest residual of the section-point solves [mm].
+
+    Raises
+    ------
+    RuntimeError
+        If a section-point solve does not converge.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import CATTGearData, tooth_thickness
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> t, res = tooth_thickness(gear, [0.0, 30.0])  # mm
+    >>> np.round(t, 6).tolist(), bool(res < 1e-9)  # the closed form on the pitch circle
+    ([12.566371, 12.543686], True)
+    """
     z = np.atleast_1d(np.asarray(z, float))
     radius = gear.r_p if radius is None else float(radius)
     rr = np.full_like(z, radius)
@@ -165,7 +249,42 @@ def tooth_thickness(gear: CATTGearData, z, radius=None):
 # ----------------------------------------------------------------------------------------------
 def eq28_profile(gear: CATTGearData, upper: bool, b, theta):
     """Eq (28) as printed: transverse profile at section offset ``b`` parameterised by theta.
-    ``upper`` selects the upper of its double signs. Returns (x1, y1, phi1, u)."""
+    ``upper`` selects the upper of its double signs. Returns (x1, y1, phi1, u).
+
+    Parameters
+    ----------
+    gear : CATTGearData
+        The gear.
+    upper : bool
+        The upper signs of eq (28).
+    b : float
+        Section offset [mm].
+    theta : float or array_like
+        Cutter angles [rad].
+
+    Returns
+    -------
+    x1, y1 : numpy.ndarray
+        Profile points [mm].
+    phi1 : numpy.ndarray
+        Roll angles [rad].
+    u : numpy.ndarray
+        Blade coordinates [mm].
+
+    Examples
+    --------
+    Eq (28) upper at offset b lies on eq (6)'s concave flank at z = -b (module docstring):
+
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import CATTFlank, CATTGearData, eq28_profile
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> flank = CATTFlank(gear, -1)
+    >>> theta = np.arcsin(20.0 / flank.rho0)  # rad
+    >>> x1, y1, phi1, u = eq28_profile(gear, True, 20.0, theta)  # b = 20 mm
+    >>> p = flank.position(theta, phi1)
+    >>> round(float(p[2]), 9), bool(np.allclose([x1, -y1], p[:2], atol=1e-9))  # mm
+    (-20.0, True)
+    """
     theta = np.asarray(theta, float)
     sg = 1.0 if upper else -1.0  # the +- of eq (28); its -+ is -sg
     a, c = np.sin(gear.pressure_angle), np.cos(gear.pressure_angle)
@@ -179,7 +298,35 @@ def eq28_profile(gear: CATTGearData, upper: bool, b, theta):
 
 
 def eq29_profile(gear: CATTGearData, upper: bool, phi1):
-    """Eq (29) as printed: middle-section profile parameterised by phi1 (upper/lower signs)."""
+    """Eq (29) as printed: middle-section profile parameterised by phi1 (upper/lower signs).
+
+    Parameters
+    ----------
+    gear : CATTGearData
+        The gear.
+    upper : bool
+        The upper signs of eq (29).
+    phi1 : float or array_like
+        Roll angles [rad].
+
+    Returns
+    -------
+    x1, y1 : numpy.ndarray
+        Profile points [mm].
+
+    Examples
+    --------
+    Eq (29) upper is eq (6)'s concave flank at theta = 0 with y -> -y (module docstring):
+
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import CATTFlank, CATTGearData, eq29_profile
+    >>> gear = CATTGearData(19, 8.0, 500.0, 80.0)  # teeth, module mm, cutter radius mm, face mm
+    >>> phi = np.array([0.0, 0.05])  # rad
+    >>> x1, y1 = eq29_profile(gear, True, phi)
+    >>> p = CATTFlank(gear, -1).position(0.0 * phi, phi)
+    >>> bool(np.allclose(np.column_stack([x1, -y1]), p[:, :2], atol=1e-10))
+    True
+    """
     phi1 = np.asarray(phi1, float)
     sg = 1.0 if upper else -1.0
     a, c = np.sin(gear.pressure_angle), np.cos(gear.pressure_angle)
@@ -211,7 +358,32 @@ _PRM_KEYS = ("pressure_angle_deg", "addendum", "clearance")
 class Mesh:
     """One assembled CATT pair with flank pair ``pair_id`` ("A" or "B"): the design dict it was
     built from, the gear data and flanks of both members, the flanks mounted in the pair's frames
-    (``p1``, ``p2``) and the :class:`gearrep.tca.GearPair` (``gear_pair``)."""
+    (``p1``, ``p2``) and the :class:`gearrep.tca.GearPair` (``gear_pair``).
+
+    Parameters
+    ----------
+    design : dict
+        The design (:func:`assemble`).
+    pair_id : str
+        The flank pair, a key of :data:`PAIRS`.
+    g1, g2 : CATTGearData
+        Gear data of pinion and gear.
+    f1, f2 : CATTFlank
+        Their flanks.
+    p1, p2 : gearrep.surface.RotatedSurface
+        The flanks mounted in the pair's frames.
+    gear_pair : gearrep.tca.GearPair
+        The pair for the TCA.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import assemble
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> mesh = assemble(design, "A", prm)
+    >>> mesh.s1, round(mesh.ratio, 6), type(mesh.gear_pair).__name__  # convex pinion flank, z1 / z2
+    (1, 0.724138, 'GearPair')
+    """
 
     design: dict
     pair_id: str
@@ -245,7 +417,37 @@ def _require_keys(name: str, d: dict, keys) -> None:
 def gear_data(design: dict, prm: dict, member: int) -> CATTGearData:
     """Gear data of member 1 (pinion, ``design["z1"]`` teeth) or 2 (gear, ``z2``) of ``design``
     (``module``, cutter radius ``R_T`` and ``face_width`` in mm); ``prm`` brings the pressure angle
-    ``pressure_angle_deg`` (deg) and the ``addendum`` and ``clearance`` coefficients (in modules)."""
+    ``pressure_angle_deg`` (deg) and the ``addendum`` and ``clearance`` coefficients (in modules).
+
+    Parameters
+    ----------
+    design : dict
+        ``z1``, ``z2`` (teeth), ``module``, ``R_T``, ``face_width`` [mm].
+    prm : dict
+        ``pressure_angle_deg`` [deg], ``addendum``, ``clearance`` [in modules].
+    member : {1, 2}
+        Pinion or gear.
+
+    Returns
+    -------
+    CATTGearData
+        The member's data.
+
+    Raises
+    ------
+    ValueError
+        If a key is missing, ``member`` is not 1 or 2, or a value is out of range
+        (:class:`CATTGearData`).
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import gear_data
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> g2 = gear_data(design, prm, 2)
+    >>> g2.n_teeth, g2.r_p  # mm
+    (29, 58.0)
+    """
     _require_keys("design", design, _DESIGN_KEYS)
     _require_keys("prm", prm, _PRM_KEYS)
     if member not in (1, 2):
@@ -264,7 +466,36 @@ def gear_data(design: dict, prm: dict, member: int) -> CATTGearData:
 def assemble(design: dict, pair_id: str, prm: dict) -> Mesh:
     """Mount the pinion and the turned-over gear of ``design`` (keys ``z1``, ``z2``, ``module``,
     ``R_T``, ``face_width``; mm) with flank pair ``pair_id`` (a key of :data:`PAIRS`) in the frames
-    of :mod:`gearrep.tca`; ``prm`` as in :func:`gear_data`."""
+    of :mod:`gearrep.tca`; ``prm`` as in :func:`gear_data`.
+
+    Parameters
+    ----------
+    design : dict
+        ``z1``, ``z2`` (teeth), ``module``, ``R_T``, ``face_width`` [mm].
+    pair_id : {"A", "B"}
+        The flank pair.
+    prm : dict
+        ``pressure_angle_deg`` [deg], ``addendum``, ``clearance`` [in modules].
+
+    Returns
+    -------
+    Mesh
+        The assembled pair.
+
+    Raises
+    ------
+    ValueError
+        If ``pair_id`` is unknown or the design or parameters are bad (:func:`gear_data`).
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import assemble
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> mesh = assemble(design, "B", prm)  # pinion concave, gear convex
+    >>> mesh.f1.convex, mesh.f2.convex, mesh.gear_pair.centre_distance  # mm
+    (False, True, 100.0)
+    """
     if pair_id not in PAIRS:
         raise ValueError(f"pair_id must be one of {sorted(PAIRS)}, got {pair_id!r}")
     s1, s2 = PAIRS[pair_id]
@@ -283,7 +514,32 @@ def path_limits(mesh: Mesh) -> dict:
     The middle-section contact at pinion angle phi1 lies at line-of-action coordinate D = R1 phi1
     (mm) from the pitch point; radii r_i^2 = c^2 D^2 - 2 s_i a_s c R_i D + R_i^2. The cycle is
     where both radii are below the tips. Returns ``phi1_lo``, ``phi1_hi`` (rad), ``D_lo``,
-    ``D_hi`` (mm) and the transverse ``contact_ratio``."""
+    ``D_hi`` (mm) and the transverse ``contact_ratio``.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The assembled pair.
+
+    Returns
+    -------
+    dict
+        The limits and the contact ratio [1].
+
+    Raises
+    ------
+    ValueError
+        If ``mesh`` is not a :class:`Mesh`.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.catt import assemble, path_limits
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> lim = path_limits(assemble(design, "A", prm))
+    >>> round(float(lim["phi1_lo"]), 6), round(float(lim["phi1_hi"]), 6), round(float(lim["contact_ratio"]), 4)
+    (-0.234741, 0.246233, 1.6075)
+    """
     if not isinstance(mesh, Mesh):
         raise ValueError(f"mesh must be a gearrep.surfaces.catt.Mesh (from assemble), got {type(mesh).__name__}")
     g1, g2 = mesh.g1, mesh.g2
@@ -308,7 +564,37 @@ def path_limits(mesh: Mesh) -> dict:
 def starts(mesh: Mesh, phi1, offset_mm):
     """TCA starting points (theta1, phi_g1, theta2, phi_g2, phi2) at mesh pinion angles ``phi1``
     (rad): the middle-section estimate moved ``offset_mm`` (mm) off the middle section on both
-    members and slightly off in roll and phi2 (so that the solve must find the contact)."""
+    members and slightly off in roll and phi2 (so that the solve must find the contact).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The assembled pair.
+    phi1 : (n,) array_like
+        Pinion angles [rad].
+    offset_mm : float
+        Offset off the middle section [mm], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) conventional starts [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``offset_mm`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import assemble, starts
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> x0 = starts(assemble(design, "A", prm), [0.0, 0.1], 5.0)  # rad, mm
+    >>> x0.shape, np.round(x0[:, 0], 5).tolist()  # theta1 = 5 mm / blade radius [rad]
+    ((2, 5), [0.01006, 0.01006])
+    """
     if not np.isfinite(float(offset_mm)):
         raise ValueError(f"offset_mm must be finite, got {offset_mm!r}")
     g1, g2 = mesh.g1, mesh.g2
@@ -325,7 +611,42 @@ def starts(mesh: Mesh, phi1, offset_mm):
 def solve_cycle(mesh: Mesh, phi1, prm: dict):
     """TCA at mesh pinion angles ``phi1`` (rad) by :func:`gearrep.tca.solve_contact`
     (conventional) from :func:`starts`; ``prm`` brings ``start_offset_mm`` (mm), ``tol`` and
-    ``maxiter``. Returns the :class:`gearrep.tca.ContactPoints` (status per point)."""
+    ``maxiter``. Returns the :class:`gearrep.tca.ContactPoints` (status per point).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The assembled pair.
+    phi1 : (n,) array_like
+        Pinion angles [rad].
+    prm : dict
+        ``start_offset_mm`` [mm], ``tol`` [mm], ``maxiter``.
+
+    Returns
+    -------
+    gearrep.tca.ContactPoints
+        One row per angle.
+
+    Raises
+    ------
+    ValueError
+        If a key of ``prm`` is missing, or the offset or the solver settings are bad.
+
+    Examples
+    --------
+    The ideal pair meshes on its middle section with no transmission error:
+
+    >>> import numpy as np
+    >>> from gearrep.surfaces.catt import assemble, path_limits, solve_cycle
+    >>> design = {"z1": 21, "z2": 29, "module": 4.0, "R_T": 500.0, "face_width": 80.0}  # teeth, mm
+    >>> prm = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}  # deg, modules
+    >>> mesh = assemble(design, "A", prm)
+    >>> lim = path_limits(mesh)
+    >>> phi1 = np.linspace(lim["phi1_lo"], lim["phi1_hi"], 3)  # rad
+    >>> c = solve_cycle(mesh, phi1, {"start_offset_mm": 5.0, "tol": 1e-11, "maxiter": 50})
+    >>> c.status_name.tolist(), bool(np.all(np.abs(c.position[:, 2]) < 1e-9)), bool(np.all(np.abs(c.te) < 1e-12))
+    (['converged', 'converged', 'converged'], True, True)
+    """
     _require_keys("prm", prm, ("start_offset_mm", "tol", "maxiter"))
     start = starts(mesh, phi1, prm["start_offset_mm"])
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

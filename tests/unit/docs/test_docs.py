@@ -39,6 +39,7 @@ CHECKED = (
     "gearrep.motion",
     "gearrep.checks",
     "gearrep.tca",
+    "gearrep.surfaces.catt",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
