@@ -48,7 +48,34 @@ __all__ = [
 
 
 def pitch_radius(N: int, P_n: float, beta: float) -> float:
-    """Transverse pitch radius r_p = N / (2 P_n cos beta) (inches for P_n in 1/in)."""
+    """Transverse pitch radius r_p = N / (2 P_n cos beta) (inches for P_n in 1/in).
+
+    Parameters
+    ----------
+    N : int
+        Number of teeth [1], >= 1.
+    P_n : float
+        Normal diametral pitch [1/in], > 0.
+    beta : float
+        Helix angle [rad], |beta| < pi/2.
+
+    Returns
+    -------
+    float
+        r_p [in].
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import pitch_radius
+    >>> round(pitch_radius(17, 5.0, math.radians(19.548)), 6)  # teeth, 1/in, rad -> in (seed 002 sec. 2.5)
+    1.803979
+    """
     if not (int(N) == N and N >= 1):
         raise ValueError(f"N (tooth number) must be a positive integer, got {N!r}")
     if not (np.isfinite(P_n) and P_n > 0):
@@ -76,7 +103,59 @@ def member_flank(
     (rad); the rack's helix angle is ``beta_rack`` (default ``beta``; the pinion's lead-angle error
     is beta - d_lambda with the pitch cylinder kept). The outward sign is chosen so that the
     pinion's normal is the rack normal (its curvatures are then negative in gearrep's convention:
-    a convex surface) and the gear's the opposite. Lengths in one unit (inches for P_n in 1/in)."""
+    a convex surface) and the gear's the opposite. Lengths in one unit (inches for P_n in 1/in).
+
+    Parameters
+    ----------
+    N : int
+        Number of teeth [1].
+    P_n : float
+        Normal diametral pitch [1/length].
+    a : float
+        Parabola coefficient of the rack profile [1/length] (a_c or a_t, 1/(2 rho)).
+    alpha_n : float
+        Normal pressure angle [rad].
+    l : float
+        |QP| [length].
+    beta : float
+        Helix angle of the member [rad].
+    member : {"pinion", "gear"}
+        Which member.
+    tol : float, optional
+        Tolerance of the meshing solve.
+    beta_rack : float, optional
+        Helix angle of the rack [rad], |beta_rack| < pi/2 (default ``beta``).
+
+    Returns
+    -------
+    RackGeneratedFlank
+        The flank, its ``outward_sign`` set.
+
+    Raises
+    ------
+    ValueError
+        If ``member`` is unknown or an angle or the pitch is out of range.
+
+    Examples
+    --------
+    The pinion and gear of seed 002 sec. 2.5 in mesh, aligned: no transmission error.
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import aligned_start, member_flank
+    >>> from gearrep.tca import GearPair, solve_contact
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.548)  # rad, 1/in, rad
+    >>> l = math.cos(an) / P_n  # in
+    >>> f1 = member_flank(17, P_n, 0.425, an, l, beta, "pinion")  # a_c [1/in]
+    >>> f2 = member_flank(77, P_n, 0.394, an, l, beta, "gear")  # a_t [1/in]
+    >>> f1.outward_sign, f2.outward_sign
+    (1, -1)
+    >>> pair = GearPair(f1, f2, 17, 77, f1.r_p + f2.r_p, phase2=0.0)  # in
+    >>> phi1 = np.array([0.0, 0.05])  # rad
+    >>> c = solve_contact(pair, phi1, aligned_start(pair, phi1), formulation="conventional")
+    >>> c.status_name.tolist(), bool(np.all(np.abs(c.te) < 1e-12))
+    (['converged', 'converged'], True)
+    """
     if member not in ("pinion", "gear"):
         raise ValueError(f"member must be 'pinion' or 'gear', got {member!r}")
     if beta_rack is not None and not (np.isfinite(beta_rack) and abs(beta_rack) < np.pi / 2):
@@ -95,7 +174,38 @@ def aligned_start(pair, phi1) -> np.ndarray:
     :class:`RackGeneratedFlank` in :class:`gearrep.tca.GearPair` frames at pinion angles ``phi1``
     (rad): the aligned contact on the helices u = 0 (both rolling angles are -phi1 and
     -(N1/N2) phi1: module doc), theta solved from the closed-form rolling angle
-    (:meth:`RackGeneratedFlank.rolling_angle`)."""
+    (:meth:`RackGeneratedFlank.rolling_angle`).
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        A pair of two :class:`RackGeneratedFlank`.
+    phi1 : float or (n,) array_like
+        Pinion angles [rad], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) starts [in, rad].
+
+    Raises
+    ------
+    ValueError
+        If the flanks are not rack-generated or an angle is not finite.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import aligned_start, member_flank
+    >>> from gearrep.tca import GearPair
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.548)  # rad, 1/in, rad
+    >>> f1 = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, beta, "pinion")  # in
+    >>> f2 = member_flank(77, P_n, 0.394, an, math.cos(an) / P_n, beta, "gear")
+    >>> pair = GearPair(f1, f2, 17, 77, f1.r_p + f2.r_p, phase2=0.0)
+    >>> np.round(aligned_start(pair, [0.05]), 6).tolist()  # u1, theta1 [in], u2, theta2 [in], phi2 [rad]
+    [[0.0, -0.269575, 0.0, -0.269575, 0.011039]]
+    """
     if not all(hasattr(getattr(pair, k, None), "rolling_angle") for k in ("flank1", "flank2")):
         raise ValueError(f"pair must have two rack-generated flanks (flank1, flank2 with rolling_angle), got {pair!r}")
     phi1 = np.atleast_1d(np.asarray(phi1, float))
@@ -114,7 +224,39 @@ def undercut_limit(flank: RackGeneratedFlank, u_guess: float) -> tuple[float, fl
     points generate singular points of the member (:func:`gearrep.envelope.singular_points` at
     theta = 0; the line is parallel to the rack generatrix) and its height x_b(u*) from the rack
     pitch line (negative: on the member's side). Rack points beyond u* undercut the member.
-    ``u_guess``: a start on the side of interest. Raises RuntimeError if the solve fails."""
+    ``u_guess``: a start on the side of interest. Raises RuntimeError if the solve fails.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u_guess : float
+        Start [in], finite.
+
+    Returns
+    -------
+    u : float
+        u* [in].
+    x_b : float
+        Its height from the rack pitch line [in].
+
+    Raises
+    ------
+    ValueError
+        If ``u_guess`` is not finite.
+    RuntimeError
+        If the singular-point solve does not converge.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import member_flank, undercut_limit
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> u, x_b = undercut_limit(pinion, -0.3)  # in
+    >>> round(u, 5), round(x_b, 5)
+    (-0.19656, -0.10848)
+    """
     if not np.isfinite(u_guess):
         raise ValueError(f"u_guess must be finite, got {u_guess!r}")
     phi0 = flank.rolling_angle(np.array([u_guess]), np.array([0.0]))[0]
@@ -141,7 +283,41 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
 
     All three are bracketed on ``n`` samples (a sample on the generation's pole, where the
     rolling angle is undefined, is skipped) and refined by Brent's method (xtol 1e-15).
-    Returns (u, x_b(u), kind); (NaN, NaN, "none") if neither occurs before ``u_end``."""
+    Returns (u, x_b(u), kind); (NaN, NaN, "none") if neither occurs before ``u_end``.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u_end : float
+        End of the scan [in], finite and nonzero (its sign picks the side of Q).
+    n : int, optional
+        Samples, >= 10.
+
+    Returns
+    -------
+    u : float
+        [in].
+    x_b : float
+        Height from the rack pitch line [in].
+    kind : str
+        ``"singular"``, ``"zero_pressure_angle"``, ``"profile_end"`` or ``"none"``.
+
+    Raises
+    ------
+    ValueError
+        If ``u_end`` or ``n`` is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import addendum_limit, member_flank
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> u, x_b, kind = addendum_limit(pinion, -0.4, n=100)  # in
+    >>> round(u, 5), round(x_b, 5), kind  # Litvin's limiting point (as undercut_limit)
+    (-0.19656, -0.10848, 'singular')
+    """
     from scipy.optimize import brentq
 
     if not (np.isfinite(u_end) and u_end != 0):
@@ -186,7 +362,33 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
 def transverse_point(flank: RackGeneratedFlank, u) -> tuple[np.ndarray, np.ndarray]:
     """(radius, polar angle) of the member's transverse section z = 0 generated by rack profile
     parameter ``u``: the rack point with theta = y_b(u) tan(beta) lies in that plane (z of the
-    generated point is theta cos(beta) - y_b sin(beta) at every rolling angle)."""
+    generated point is theta cos(beta) - y_b sin(beta) at every rolling angle).
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u : float or array_like
+        Rack profile parameters [in].
+
+    Returns
+    -------
+    radius : numpy.ndarray
+        [in].
+    angle : numpy.ndarray
+        Polar angle [rad].
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import member_flank, transverse_point
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> radius, angle = transverse_point(pinion, [0.0, 0.1])  # in
+    >>> np.round(radius, 5).tolist(), np.round(angle, 5).tolist()  # in, rad
+    ([1.88694, 1.98805], [-0.09295, -0.056])
+    """
     u = np.atleast_1d(np.asarray(u, float))
     th = flank.rack.profile(u)[1] * np.tan(flank.rack.beta)
     r = flank.evaluate(u, th).r
@@ -202,7 +404,48 @@ def pointing_limit(flank: RackGeneratedFlank, pitch_n: float, rack_tooth_n: floa
     the normal pitch pi/P_n, ``rack_tooth_n`` the rack tooth thickness at the pitch line, normal
     section). Searches u between the pitch line and ``u_max`` (on the rack dedendum side, away
     from the member).
-    Returns (u, x_b(u), tip radius); NaN everywhere if the top land stays above ``top_land``."""
+    Returns (u, x_b(u), tip radius); NaN everywhere if the top land stays above ``top_land``.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    pitch_n : float
+        Normal pitch pi / P_n [in], > 0.
+    rack_tooth_n : float
+        Rack tooth thickness at the pitch line, normal section [in], in (0, pitch_n).
+    top_land : float
+        The smallest top land [in], >= 0.
+    u_max : float
+        End of the search on the rack dedendum [in].
+
+    Returns
+    -------
+    u : float
+        [in].
+    x_b : float
+        Height from the rack pitch line [in].
+    radius : float
+        The member's tip radius there [in].
+
+    Raises
+    ------
+    ValueError
+        If a length is out of range or ``u_max`` lies before the pitch line.
+    RuntimeError
+        If the rack profile does not cross its pitch line.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import member_flank, pointing_limit
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> p_n = math.pi / P_n  # in
+    >>> u, x_b, r_tip = pointing_limit(pinion, p_n, 0.5 * p_n, 0.0, 0.5)  # the pointed tooth [in]
+    >>> round(u, 5), round(x_b, 5), round(r_tip, 5)
+    (0.17721, 0.23157, 2.06195)
+    """
     from scipy.optimize import brentq
 
     for name, v in (("pitch_n", pitch_n), ("rack_tooth_n", rack_tooth_n)):
@@ -271,6 +514,48 @@ class DiskGroundPinion(Surface):
     the screw motion and the plunge (:meth:`evaluate_components`); :meth:`fd_evaluate` is the
     same surface differentiated by finite differences (the reference they are tested against).
     The report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The profile-crowned pinion helicoid.
+    N : int
+        Pinion teeth [1], >= 3.
+    pitch_n : float
+        Normal pitch [in], > 0.
+    rack_tooth_n : float
+        Rack tooth thickness at the pitch line, normal section [in], in (0, pitch_n).
+    E_d : float
+        Disk-pinion shortest distance [in], above the pinion's pitch radius.
+    a_pd : float
+        Plunging coefficient [1/in], >= 0.
+    u_range : (float, float), optional
+        Rack-parameter range of the grinding line [in].
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+    RuntimeError
+        If the grinding line cannot be solved.
+
+    Examples
+    --------
+    At psi = 0 the plunge vanishes; half a radian away it moves the surface by
+    a_pd (p psi)^2:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import DiskGroundPinion, member_flank
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.95), "pinion")  # in
+    >>> p_n = math.pi / P_n  # in
+    >>> ground = DiskGroundPinion(pinion, 17, p_n, 0.5 * p_n, 6.0, 0.0013)  # E_d [in], a_pd [1/in]
+    >>> flat = DiskGroundPinion(pinion, 17, p_n, 0.5 * p_n, 6.0, 0.0)
+    >>> float(np.linalg.norm(ground.position(0.3, 0.0) - flat.position(0.3, 0.0)))  # u [in], psi [rad]
+    0.0
+    >>> round(float(np.linalg.norm(ground.position(0.0, 0.5) - flat.position(0.0, 0.5))), 5)  # in
+    0.00807
     """
 
     fd_step = (1e-4, 1e-4)
@@ -347,7 +632,18 @@ class DiskGroundPinion(Surface):
         return th
 
     def line(self, u) -> np.ndarray:
-        """Points of the grinding line L (frame turned by -phi_s), interpolated."""
+        """Points of the grinding line L (frame turned by -phi_s), interpolated.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Rack profile parameters [in].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) points [in].
+        """
         return self._line(np.asarray(u, float))
 
     def position(self, u, v) -> np.ndarray:
@@ -388,7 +684,20 @@ class DiskGroundPinion(Surface):
 
     def fd_evaluate(self, u, v) -> SurfacePoint:
         """The derivatives by fourth-order central differences of :meth:`position` (the surface
-        protocol's default; the reference of the analytic ones)."""
+        protocol's default; the reference of the analytic ones).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Rack profile parameter [in].
+        v : float or array_like
+            Screw-motion angle psi [rad].
+
+        Returns
+        -------
+        gearrep.surface.SurfacePoint
+            Position and derivatives.
+        """
         return Surface.evaluate(self, u, v)
 
     def evaluate_components(self, u, v) -> tuple:

@@ -40,6 +40,8 @@ CHECKED = (
     "gearrep.checks",
     "gearrep.tca",
     "gearrep.surfaces.catt",
+    "gearrep.surfaces.novikov",
+    "gearrep.surfaces.worm_ground",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
