@@ -42,6 +42,8 @@ CHECKED = (
     "gearrep.surfaces.catt",
     "gearrep.surfaces.novikov",
     "gearrep.surfaces.worm_ground",
+    "gearrep.surfaces.hob",
+    "gearrep.surfaces.bevel",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
