@@ -74,11 +74,11 @@ tests/unit/surfaces/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
-from functools import cached_property
+from dataclasses import fields
 
 import numpy as np
 
+from ._envelope_records import EnvelopeResult, LocalGeometry
 from .inputs import check_integer, check_positive
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
@@ -100,41 +100,6 @@ __all__ = [
 # --------------------------------------------------------------------------------------------
 # local envelope geometry
 # --------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class LocalGeometry:
-    """Local quantities at a batch of parameter points q (n, 2+k); every vector in the tool
-    frame S_1 (rotate by M[:, :3, :3] into S_2). Returned by :meth:`Envelope.local`."""
-
-    M: np.ndarray  # (n,4,4)
-    tool: SurfacePoint  # tool point and derivatives in S_1
-    N: np.ndarray  # (n,3) r_u x r_v
-    n: np.ndarray  # (n,3) unit normal
-    w: np.ndarray  # (n,k,3) relative velocities v^(12,j)
-    omega: np.ndarray  # (n,k,3) relative angular velocities
-    Xr: np.ndarray  # (n,k,k,3) M^-1 d2M_ij r_h (direction part)
-    f: np.ndarray  # (n,k) meshing functions (unit normal)
-    J: np.ndarray  # (n,k,2+k) Jacobian of f in q
-    T: np.ndarray  # (n,2+k,3) dr_2/dq in S_1
-    H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
-    n_q: np.ndarray  # (n,2+k,3) dn/dq in S_1: (n_u, n_v) of the tool, omega_j x n of the motion
-
-    @cached_property
-    def in_member_frame(self) -> tuple:
-        """(point, dpoint/dq (n, 2+k, 3), normal, dnormal/dq (n, 2+k, 3)) in the generated member's
-        frame S_2 (the tool frame's vectors turned by M), formed once per local geometry (a solve's
-        record evaluates the converged iterate again: :data:`_RECENT`); read-only arrays."""
-        R = self.M[:, :3, :3]
-        out = (
-            (R @ self.tool.r[:, :, None])[:, :, 0] + self.M[:, :3, 3],
-            self.T @ np.swapaxes(R, 1, 2),
-            (R @ self.n[:, :, None])[:, :, 0],
-            self.n_q @ np.swapaxes(R, 1, 2),
-        )
-        for a in out:
-            a.flags.writeable = False
-        return out
-
-
 def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     """:meth:`Envelope.local` without input validation, for use inside a solver's iterations: a
     non-finite row of ``q`` (n, 2+k) gives non-finite outputs in that row (which
@@ -262,63 +227,8 @@ def _local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeomet
 
 
 # --------------------------------------------------------------------------------------------
-# result record
+# singularity of the generated surface (Litvin's matrix)
 # --------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class EnvelopeResult:
-    """Points of an envelope with their generating parameters and the solve record.
-
-    Attributes
-    ----------
-    names : parameter names, ("u", "v") + motion names
-    params : (n, 2 + k) generating parameters q = (u, v, m) (last iterate where not converged)
-    point : (n, 3) generated point in S_2
-    normal : (n, 3) unit tool normal n_1 = unit(r_u x r_v) carried into S_2 (the common normal)
-    tangents : (n, 2, 3) derivatives of the generated point in the two free parameters (S_2)
-    singular_measure : (n,) smallest / largest singular value of Litvin's (2+k)-square matrix
-        with unit-scaled rows (0 at a singular point of the generated surface)
-    singular : (n,) singular_measure < singular_tol
-    litvin_det : (n,) determinant of that matrix (tangential components in the basis
-        t1 = unit(r_u), t2 = n x t1); changes sign across Litvin's limiting line
-    solve : the :class:`gearrep.solve.SolveResult` of the solved parameters
-    """
-
-    names: tuple[str, ...]
-    params: np.ndarray
-    point: np.ndarray
-    normal: np.ndarray
-    tangents: np.ndarray
-    singular_measure: np.ndarray
-    singular: np.ndarray
-    litvin_det: np.ndarray
-    solve: SolveResult
-
-    def param(self, name: str) -> np.ndarray:
-        """Column of ``params`` by name."""
-        if name not in self.names:
-            raise ValueError(f"name must be one of {self.names}, got {name!r}")
-        return self.params[:, self.names.index(name)]
-
-    @property
-    def status(self) -> np.ndarray:
-        return self.solve.status
-
-    @property
-    def residual(self) -> np.ndarray:
-        return self.solve.residual
-
-    @property
-    def iterations(self) -> np.ndarray:
-        return self.solve.iterations
-
-    @property
-    def converged(self) -> np.ndarray:
-        return self.solve.converged
-
-    def __len__(self) -> int:
-        return self.params.shape[0]
-
-
 def _litvin_matrix(loc: LocalGeometry):
     """Litvin's singularity matrix [[T . t1], [T . t2], [J]] ((2+k)-square) per point."""
     t1 = loc.tool.r_u / np.linalg.norm(loc.tool.r_u, axis=-1, keepdims=True)
