@@ -44,6 +44,8 @@ CHECKED = (
     "gearrep.surfaces.worm_ground",
     "gearrep.surfaces.hob",
     "gearrep.surfaces.bevel",
+    "gearrep.envelope",
+    "gearrep.curvature_relations",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
@@ -167,9 +169,20 @@ def _attribute_docs(module) -> set[str]:
     return names
 
 
+def _documented_where_defined(module, name) -> bool:
+    """Whether the constant ``name`` that ``module`` re-exports from another gearrep module (the
+    same object under the same name) has its ``#:`` comment there."""
+    obj = getattr(importlib.import_module(module), name)
+    for other in sorted(m for m in sys.modules if m.startswith("gearrep.") and m != module):
+        if getattr(sys.modules[other], name, None) is obj and name in _attribute_docs(other):
+            return True
+    return False
+
+
 @pytest.mark.parametrize("module", CHECKED)
 def test_public_constants_are_documented(module):
     documented = _attribute_docs(module)
     constants = [n for n, obj in _public(module) if not (inspect.isclass(obj) or inspect.isroutine(obj))]
     constants = [n for n in constants if not inspect.ismodule(getattr(importlib.import_module(module), n))]
-    assert not [n for n in constants if n not in documented], f"{module}: constants without a #: comment"
+    missing = [n for n in constants if n not in documented and not _documented_where_defined(module, n)]
+    assert not missing, f"{module}: constants without a #: comment"
