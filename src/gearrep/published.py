@@ -15,7 +15,6 @@ import fnmatch
 import hashlib
 import io
 import math
-import os
 import re
 import sys
 from dataclasses import dataclass
@@ -23,6 +22,25 @@ from pathlib import Path
 
 import pandas as pd
 
+from ._published_format import (
+    CLAIM_COLUMNS,
+    CLAIM_KINDS,
+    PAPERS,
+    PARAM_COLUMNS,
+    PRECISION_KINDS,
+    ROUNDINGS,
+    SEEDS,
+    VALUE_COLUMNS,
+    PublishedDataError,
+)
+from ._published_lookup import design_table, document_order, param_table, parse_row, values_by
+from ._published_perturb import (
+    PERTURB_ENV,
+    PERTURBED_UNITS,
+    perturb_ulps_from_env,
+    perturbed_params,
+    perturbed_value,
+)
 from .units import KNOWN_UNITS
 
 __all__ = [
@@ -65,52 +83,7 @@ __all__ = [
     "main",
 ]
 
-VALUE_COLUMNS = [
-    "id",
-    "seed",
-    "source",
-    "line",
-    "row",
-    "quantity",
-    "printed",
-    "value",
-    "unit",
-    "precision_kind",
-    "precision",
-    "rounding",
-    "notes",
-]
-PARAM_COLUMNS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
-CLAIM_COLUMNS = [
-    "id",
-    "seed",
-    "source",
-    "line",
-    "kind",
-    "statement",
-    "parameters",
-    "confirm_if",
-    "refute_if",
-    "notes",
-]
-SEEDS = ("000", "002", "003", "004")
-PRECISION_KINDS = ("decimals", "sig")
-ROUNDINGS = ("round", "truncate")
-CLAIM_KINDS = ("trend", "approximate", "missing-table")
-
-#: Human-readable names of the seed documents (for the scorecard and report).
-PAPERS = {
-    "000": "Curvilinear-tooth gears cut by a ZA hob (dissertation, ch. 4-5)",
-    "002": "NASA CR-2000-209415: Novikov-Wildhaber helical gears",
-    "003": "PhD thesis 2023: conventional vs reduced TCA",
-    "004": "Ma et al. 2021: CATT cylindrical gears",
-}
-
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-
-
-class PublishedDataError(ValueError):
-    """A published-data file does not follow data/published/README.md."""
 
 
 @dataclass(frozen=True)
@@ -316,65 +289,6 @@ def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
     return c
 
 
-#: environment variable of the portability check (``docs/validation.md``): a whole number k >= 1
-#: moves every design length and angle read by :func:`load` by 1 to k units in the last place
-#: (:func:`perturbed_params`); unset, empty or 0 reads the data as printed
-PERTURB_ENV = "GEARREP_PERTURB_ULPS"
-#: the units of the parameters it moves: lengths, angles and curvatures (not counts or ratios,
-#: whose printed values are exact)
-PERTURBED_UNITS = frozenset({"mm", "in", "deg", "rad", "arcmin", "per_mm", "per_in"})
-
-
-def perturbed_value(value: float, ulps: int) -> float:
-    """``value`` moved by 1 to ``ulps`` units in the last place, up or down, the count and direction
-    drawn from a hash of the value itself (the same in every process; equal values move alike).
-    Zero, NaN and infinities are returned as they are; ``ulps`` = 0 returns ``value``."""
-    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
-        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
-    value = float(value)
-    if ulps == 0 or value == 0.0 or not math.isfinite(value):
-        return value
-    h = int.from_bytes(hashlib.blake2b(repr(value).encode(), digest_size=4).digest(), "little")
-    step, toward = 1 + h % ulps, math.inf if (h >> 16) & 1 else -math.inf
-    for _ in range(step):
-        value = math.nextafter(value, toward)
-    return value
-
-
-def perturbed_params(params: pd.DataFrame, ulps: int) -> pd.DataFrame:
-    """``params`` with every value in :data:`PERTURBED_UNITS` moved by 1 to ``ulps`` units in the
-    last place, up or down.
-
-    A result that such a nudge of its inputs moves beyond its stated tolerance is ill-conditioned
-    or tested too tightly; the portability check runs the number-comparing tests on these inputs.
-    The count and direction come from a hash of the printed value, so they are the same in every
-    process, and equal values stay equal (a design's stated equalities, such as equal cutter radii
-    or a symmetric pair, are part of the design); zero stays zero (an exact statement, such as an
-    aligned assembly).
-    """
-    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
-        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
-    out = params.copy()
-    if ulps == 0:
-        return out
-    values = out["value"].to_numpy(dtype=float).copy()
-    for i, unit in enumerate(out["unit"].tolist()):
-        if unit in PERTURBED_UNITS:
-            values[i] = perturbed_value(values[i], ulps)
-    out["value"] = values
-    return out
-
-
-def perturb_ulps_from_env() -> int:
-    """The ulps of :data:`PERTURB_ENV` (0 when unset or empty); anything but a whole number is refused."""
-    text = os.environ.get(PERTURB_ENV, "").strip()
-    if not text:
-        return 0
-    if not text.isdigit():
-        raise ValueError(f"environment variable {PERTURB_ENV}={text!r}: must be a whole number >= 0 (0 or unset: off)")
-    return int(text)
-
-
 def load(directory, files=None) -> Published:
     """Read and validate every ``values_*``, ``params_*`` and ``claims_*`` CSV in ``directory``
     (only those whose names match one of the glob patterns ``files``, if given: a workflow job
@@ -427,92 +341,6 @@ def _duplicates(frame: pd.DataFrame, column: str, message: str) -> None:
     if dup.any():
         where = sorted({f"{f} {column}={v!r}" for f, v in zip(frame.loc[dup, "file"], frame.loc[dup, column])})
         raise PublishedDataError(f"{message}: {where[:10]}")
-
-
-def parse_row(row: str) -> dict[str, str]:
-    """``'l1_mm=4.381;side=L'`` -> ``{'l1_mm': '4.381', 'side': 'L'}``."""
-    out = {}
-    for part in filter(None, (p.strip() for p in str(row).split(";"))):
-        k, sep, val = part.partition("=")
-        if not sep:
-            raise PublishedDataError(f"row key part {part!r} is not name=value")
-        out[k.strip()] = val.strip()
-    return out
-
-
-def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> dict[str, float]:
-    """``{parameter: value}`` of one params file (and example), in the file's units."""
-    # on the columns' lists: the studies call this for every design they read, and two boolean
-    # selections of the frame cost a few milliseconds each time
-    files, examples = params["file"].tolist(), params["example"].tolist()
-    keep = [i for i, f in enumerate(files) if f == file and (example is None or examples[i] == example)]
-    if not keep:
-        raise KeyError(f"no parameters for file={file!r} example={example!r}")
-    names, values = params["parameter"].tolist(), params["value"].tolist()
-    return {names[i]: values[i] for i in keep}
-
-
-def values_by(frame: pd.DataFrame, keys: list[str]) -> dict[tuple, list]:
-    """``{(frame[keys[0]], ...): [value, ...]}`` of a values or params frame, in row order: every
-    look-up of a study's design data from one pass over the frame (a boolean selection per
-    parameter cost more than the rest of reading the design). A key with other than one value is
-    the caller's to refuse."""
-    out: dict[tuple, list] = {}
-    for key, v in zip(zip(*(frame[k].tolist() for k in keys)), frame["value"].tolist()):
-        out.setdefault(key, []).append(v)
-    return out
-
-
-def design_table(params: pd.DataFrame, seed: str | None = None) -> pd.DataFrame:
-    """The design data of every example (of ``seed``, if given), one row per example in the
-    order the document prints them: columns ``seed``, ``example``, ``source`` (where it is
-    printed, with its first seed-file line), ``file`` (its params files) and ``design``
-    (``name = printed unit; ...`` as printed, in the files' order; ``name = (not printed)`` for a
-    value the text only implies)."""
-    missing = [c for c in ("file", *PARAM_COLUMNS) if c not in params.columns]
-    if missing:
-        raise ValueError(f"params lacks columns {missing} (pass Published.params of load())")
-    if seed is not None and seed not in SEEDS:
-        raise ValueError(f"seed={seed!r} is not one of {list(SEEDS)}")
-    p = params if seed is None else params[params["seed"] == seed]
-    rows = []
-    for (s, example), g in p.groupby(["seed", "example"], sort=False):
-        items = []
-        for r in g.itertuples(index=False):
-            printed = str(r.printed).strip()
-            unit = "" if r.unit in ("1", "count") else f" {r.unit}"
-            items.append(f"{r.parameter} = {printed}{unit}" if printed else f"{r.parameter} = (not printed)")
-        sources = list(dict.fromkeys(str(x) for x in g["source"]))
-        rows.append(
-            {
-                "seed": s,
-                "example": example,
-                "source": "; ".join(sources) + f" (line {int(g['line'].min())})",
-                "file": "; ".join(dict.fromkeys(g["file"])),
-                "design": "; ".join(items),
-                "_line": int(g["line"].min()),
-            }
-        )
-    out = pd.DataFrame(rows, columns=["seed", "example", "source", "file", "design", "_line"])
-    return (
-        out.sort_values(["seed", "_line", "file", "example"], kind="stable")
-        .drop(columns="_line")
-        .reset_index(drop=True)
-    )
-
-
-def document_order(*frames: pd.DataFrame) -> dict[tuple[str, str], int]:
-    """``{(seed, source): line}``: the first seed-file line of each source over the given values /
-    claims / params frames, i.e. where the paper prints it. Sorting sources by it gives the paper's
-    order ("Table 4.3" before "Fig. 5.7" before "Section 5.5"), not the string order."""
-    order: dict[tuple[str, str], int] = {}
-    for f in frames:
-        missing = [c for c in ("seed", "source", "line") if c not in f.columns]
-        if missing:
-            raise ValueError(f"frame lacks columns {missing} (pass frames of load())")
-        for (s, src), line in f.groupby(["seed", "source"])["line"].min().items():
-            order[(s, src)] = min(int(line), order.get((s, src), int(line)))
-    return order
 
 
 # ----------------------------------------------------------------------------- manifest
