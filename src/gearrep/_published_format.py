@@ -1,9 +1,12 @@
 """The vocabulary of the published-data files (``data/published/README.md``): their columns, the
-seeds, the precision and claim kinds, the papers' names and the error a file that breaks the format
-raises. Public names of :mod:`gearrep.published`; this module is their home.
+seeds, the precision and claim kinds, the papers' names, the error a file that breaks the format
+raises and the precision a printed number implies. Public names of :mod:`gearrep.published`; this
+module is their home.
 """
 
 from __future__ import annotations
+
+import re
 
 __all__ = [
     "VALUE_COLUMNS",
@@ -15,6 +18,7 @@ __all__ = [
     "CLAIM_KINDS",
     "PAPERS",
     "PublishedDataError",
+    "printed_precision",
 ]
 
 VALUE_COLUMNS = [
@@ -61,3 +65,23 @@ PAPERS = {
 
 class PublishedDataError(ValueError):
     """A published-data file does not follow data/published/README.md."""
+
+
+_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+
+
+def printed_precision(printed: str) -> tuple[str, int]:
+    """(precision_kind, precision) implied by a printed number string.
+
+    Plain decimals give ("decimals", digits after the point); E-notation gives ("sig",
+    significant digits of the mantissa).
+    """
+    s = str(printed).strip()
+    if not _NUMBER.match(s):
+        raise PublishedDataError(f"printed value {printed!r} is not a number")
+    mant, _, exp = s.lower().partition("e")
+    mant = mant.lstrip("+-")
+    if exp:
+        digits = mant.replace(".", "").lstrip("0")
+        return "sig", max(len(digits), 1)
+    return "decimals", len(mant.partition(".")[2])

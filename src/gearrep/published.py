@@ -15,7 +15,6 @@ import fnmatch
 import hashlib
 import io
 import math
-import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -32,6 +31,7 @@ from ._published_format import (
     SEEDS,
     VALUE_COLUMNS,
     PublishedDataError,
+    printed_precision,
 )
 from ._published_lookup import design_table, document_order, param_table, parse_row, values_by
 from ._published_perturb import (
@@ -83,8 +83,6 @@ __all__ = [
     "main",
 ]
 
-_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-
 
 @dataclass(frozen=True)
 class Published:
@@ -93,23 +91,6 @@ class Published:
     values: pd.DataFrame
     params: pd.DataFrame
     claims: pd.DataFrame
-
-
-def printed_precision(printed: str) -> tuple[str, int]:
-    """(precision_kind, precision) implied by a printed number string.
-
-    Plain decimals give ("decimals", digits after the point); E-notation gives ("sig",
-    significant digits of the mantissa).
-    """
-    s = str(printed).strip()
-    if not _NUMBER.match(s):
-        raise PublishedDataError(f"printed value {printed!r} is not a number")
-    mant, _, exp = s.lower().partition("e")
-    mant = mant.lstrip("+-")
-    if exp:
-        digits = mant.replace(".", "").lstrip("0")
-        return "sig", max(len(digits), 1)
-    return "decimals", len(mant.partition(".")[2])
 
 
 def _read_rows(path: Path) -> tuple[list[str], list[list[str]]]:
