@@ -21,6 +21,8 @@ __all__ = [
     "printed_precision",
 ]
 
+#: the columns of a ``values_*.csv`` file: one row per printed number, with its printed string,
+#: unit and precision
 VALUE_COLUMNS = [
     "id",
     "seed",
@@ -36,7 +38,10 @@ VALUE_COLUMNS = [
     "rounding",
     "notes",
 ]
+#: the columns of a ``params_*.csv`` file: one row per design parameter of an example
 PARAM_COLUMNS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
+#: the columns of a ``claims_*.csv`` file: one row per statement of a paper, with what confirms and
+#: what refutes it
 CLAIM_COLUMNS = [
     "id",
     "seed",
@@ -49,9 +54,13 @@ CLAIM_COLUMNS = [
     "refute_if",
     "notes",
 ]
+#: the seed documents (papers) the data come from
 SEEDS = ("000", "002", "003", "004")
+#: how a value's precision is counted: digits after the point, or significant digits
 PRECISION_KINDS = ("decimals", "sig")
+#: how a paper reduced a value to its printed digits
 ROUNDINGS = ("round", "truncate")
+#: the kinds of claims: a trend, an approximate value, or a table the text lost
 CLAIM_KINDS = ("trend", "approximate", "missing-table")
 
 #: Human-readable names of the seed documents (for the scorecard and report).
@@ -64,7 +73,19 @@ PAPERS = {
 
 
 class PublishedDataError(ValueError):
-    """A published-data file does not follow data/published/README.md."""
+    """A published-data file does not follow data/published/README.md.
+
+    Examples
+    --------
+    >>> from gearrep.published import PublishedDataError, printed_precision
+    >>> try:
+    ...     printed_precision("1,5")
+    ... except PublishedDataError as exc:
+    ...     print(exc)
+    printed value '1,5' is not a number
+    >>> issubclass(PublishedDataError, ValueError)
+    True
+    """
 
 
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
@@ -75,6 +96,29 @@ def printed_precision(printed: str) -> tuple[str, int]:
 
     Plain decimals give ("decimals", digits after the point); E-notation gives ("sig",
     significant digits of the mantissa).
+
+    Parameters
+    ----------
+    printed : str
+        The number as printed.
+
+    Returns
+    -------
+    kind : {"decimals", "sig"}
+        The kind of precision.
+    precision : int
+        Digits after the point, or significant digits.
+
+    Raises
+    ------
+    PublishedDataError
+        If ``printed`` is not a number.
+
+    Examples
+    --------
+    >>> from gearrep.published import printed_precision
+    >>> printed_precision("0.008067"), printed_precision("1.20e-3"), printed_precision("20")
+    (('decimals', 6), ('sig', 3), ('decimals', 0))
     """
     s = str(printed).strip()
     if not _NUMBER.match(s):

@@ -25,7 +25,34 @@ PERTURBED_UNITS = frozenset({"mm", "in", "deg", "rad", "arcmin", "per_mm", "per_
 def perturbed_value(value: float, ulps: int) -> float:
     """``value`` moved by 1 to ``ulps`` units in the last place, up or down, the count and direction
     drawn from a hash of the value itself (the same in every process; equal values move alike).
-    Zero, NaN and infinities are returned as they are; ``ulps`` = 0 returns ``value``."""
+    Zero, NaN and infinities are returned as they are; ``ulps`` = 0 returns ``value``.
+
+    Parameters
+    ----------
+    value : float
+        The value [any unit].
+    ulps : int
+        The largest move, in units in the last place, >= 0.
+
+    Returns
+    -------
+    float
+        The moved value.
+
+    Raises
+    ------
+    ValueError
+        If ``ulps`` is not a whole number >= 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.published import perturbed_value
+    >>> (3.0 - perturbed_value(3.0, 2)) / math.ulp(2.9)  # 3 mm moved down by 2 ulps
+    2.0
+    >>> perturbed_value(0.0, 2), perturbed_value(3.0, 0)
+    (0.0, 3.0)
+    """
     if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
         raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
     value = float(value)
@@ -48,6 +75,32 @@ def perturbed_params(params: pd.DataFrame, ulps: int) -> pd.DataFrame:
     process, and equal values stay equal (a design's stated equalities, such as equal cutter radii
     or a symmetric pair, are part of the design); zero stays zero (an exact statement, such as an
     aligned assembly).
+
+    Parameters
+    ----------
+    params : pandas.DataFrame
+        A typed params frame (:func:`validate_params`).
+    ulps : int
+        The largest move, in units in the last place, >= 0.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with the values moved.
+
+    Raises
+    ------
+    ValueError
+        If ``ulps`` is not a whole number >= 0.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.published import perturbed_params
+    >>> params = pd.DataFrame({"parameter": ["module", "teeth"], "value": [3.0, 20.0], "unit": ["mm", "1"]})
+    >>> moved = perturbed_params(params, 4)["value"].tolist()
+    >>> moved[0] != 3.0, moved[1]  # a length moves, a tooth count does not
+    (True, 20.0)
     """
     if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
         raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
@@ -63,7 +116,33 @@ def perturbed_params(params: pd.DataFrame, ulps: int) -> pd.DataFrame:
 
 
 def perturb_ulps_from_env() -> int:
-    """The ulps of :data:`PERTURB_ENV` (0 when unset or empty); anything but a whole number is refused."""
+    """The ulps of :data:`PERTURB_ENV` (0 when unset or empty); anything but a whole number is refused.
+
+    Returns
+    -------
+    int
+        k >= 0.
+
+    Raises
+    ------
+    ValueError
+        If the variable holds anything but a whole number.
+
+    Examples
+    --------
+    >>> import os
+    >>> from gearrep.published import PERTURB_ENV, perturb_ulps_from_env
+    >>> saved = os.environ.pop(PERTURB_ENV, None)
+    >>> perturb_ulps_from_env()
+    0
+    >>> os.environ[PERTURB_ENV] = "4"
+    >>> perturb_ulps_from_env()
+    4
+    >>> if saved is None:
+    ...     del os.environ[PERTURB_ENV]
+    ... else:
+    ...     os.environ[PERTURB_ENV] = saved
+    """
     text = os.environ.get(PERTURB_ENV, "").strip()
     if not text:
         return 0

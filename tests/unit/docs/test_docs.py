@@ -46,6 +46,7 @@ CHECKED = (
     "gearrep.surfaces.bevel",
     "gearrep.envelope",
     "gearrep.curvature_relations",
+    "gearrep.published",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
