@@ -47,6 +47,7 @@ CHECKED = (
     "gearrep.envelope",
     "gearrep.curvature_relations",
     "gearrep.published",
+    "gearrep.report",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
