@@ -48,6 +48,8 @@ CHECKED = (
     "gearrep.curvature_relations",
     "gearrep.published",
     "gearrep.report",
+    "gearrep.ltca",
+    "gearrep.ltca.iso",
 )
 
 #: the input checks whose call means the function raises ``ValueError`` on bad input
