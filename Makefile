@@ -50,7 +50,7 @@ test: lint bytecode
 	$(BIN)/python -m pytest
 
 # The API reference (Sphinx, numpydoc docstrings) as HTML in build/docs/html; a warning fails the
-# build (tests/unit/test_docs.py builds it too, so `make test` fails on one).
+# build (tests/unit/docs/test_docs.py builds it too, so `make test` fails on one).
 docs: $(STAMP)
 	$(BIN)/sphinx-build -W --keep-going -q -b html docs/api build/docs/html
 	@echo "API reference: build/docs/html/index.html"

@@ -95,15 +95,42 @@ class GeneratedCurvatures:
     All vectors are in the generated member's frame S_2; curvatures are signed with respect to
     ``normal`` (the tool normal n_1 = unit(r_u x r_v) carried into S_2).
 
-    k1, k2 : principal curvatures of the generated surface, k1 >= k2 (k_s, k_q of seed 000
-        in the algebraic order; see :func:`two_parameter_principal_curvatures` for the seed's labels)
+    Parameters
+    ----------
+    k1, k2 : numpy.ndarray
+        (n,) principal curvatures of the generated surface [1/length], k1 >= k2 (k_s, k_q of
+        seed 000 in the algebraic order; see :func:`two_parameter_principal_curvatures` for the
+        seed's labels).
+    e1, e2 : numpy.ndarray
+        (n, 3) its principal directions (unit, e1 x e2 = normal).
+    normal : numpy.ndarray
+        (n, 3) the tool normal in S_2.
+    k_f, k_h : numpy.ndarray
+        (n,) tool principal curvatures [1/length] (k_f >= k_h).
+    e_f, e_h : numpy.ndarray
+        (n, 3) tool principal directions in S_2.
+    sigma : numpy.ndarray
+        (n,) angle from e_f to e1 about ``normal`` [rad], in (-pi/2, pi/2].
+    A : numpy.ndarray
+        (n, 2+k, 2+k) [[K_2 - K_1, C], [C^T, E]] in the basis (e_f, e_h); rank k. For k = 1
+        A = [[a11, a12, a13], [a12, a22, a23], [a13, a23, a33]] (GGAT ch. 8 notation).
 
-    e1, e2 : its principal directions (unit, e1 x e2 = normal)
-    k_f, k_h, e_f, e_h : tool principal curvatures (k_f >= k_h) and directions
-    sigma : angle from e_f to e1 about ``normal``, in (-pi/2, pi/2]
+    Examples
+    --------
+    A straight rack (a plane, k_f = k_h = 0) generates an involute cylinder: at the pitch point its
+    profile curvature is 1 / (r_p sin alpha):
 
-    A : (n, 2+k, 2+k) [[K_2 - K_1, C], [C^T, E]] in the basis (e_f, e_h); rank k. For k = 1
-        A = [[a11, a12, a13], [a12, a22, a23], [a13, a23, a33]] (GGAT ch. 8 notation)
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import generated_curvatures
+    >>> from gearrep.envelope import Envelope, rack_generation_motion
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> env = Envelope(StraightRackCutter(math.radians(20)), rack_generation_motion(30.0))  # rad, r_p mm
+    >>> gc = generated_curvatures(env, env.solve(0.0, 0.0, guess=0.0).params)  # u, v [mm]
+    >>> np.round([gc.k1[0], gc.k2[0]], 6).tolist(), round(1 / (30.0 * math.sin(math.radians(20))), 6)  # 1/mm
+    ([0.0, -0.09746], 0.09746)
+    >>> gc.C.shape, gc.E.shape  # k = 1
+    ((1, 2, 1), (1, 1, 1))
     """
 
     k1: np.ndarray
@@ -154,6 +181,34 @@ def generated_curvatures(envelope: Envelope, q) -> GeneratedCurvatures:
     (n, 2+k) of ``envelope`` (k = 1: GGAT ch. 8; k = 2: seed 000 eq 4.33-4.39 corrected):
     K_2 = K_1 + C E^{-1} C^T (eq * of the module doc). q must satisfy the equations of meshing
     (e.g. ``EnvelopeResult.params``); E singular (a singular point) gives non-finite values.
+
+    Parameters
+    ----------
+    envelope : gearrep.envelope.Envelope
+        The envelope.
+    q : array_like
+        (n, 2+k) finite contact parameters.
+
+    Returns
+    -------
+    GeneratedCurvatures
+        Curvatures [1/length] and directions in S_2.
+
+    Raises
+    ------
+    ValueError
+        If ``envelope`` is not an :class:`~gearrep.envelope.Envelope` or ``q`` is malformed.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import generated_curvatures
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> gear = GeneratedGear()  # the convex flank of seed 000's pinion (20 teeth, R_c = 110 mm)
+    >>> rec = gear.solve([6.0], [0.0])  # l [mm], psi [rad]
+    >>> gc = generated_curvatures(gear.envelope(), rec.params)
+    >>> np.round(gc.k1, 6).tolist(), np.round(gc.k2, 6).tolist()  # 1/mm
+    ([0.078881], [0.008369])
     """
     if not isinstance(envelope, Envelope):
         raise ValueError("envelope must be a gearrep.envelope.Envelope")
@@ -195,6 +250,39 @@ def litvin_one_parameter(k_f, k_h, a13, a23, a33):
     in the sign convention of the module doc (a_ij = entries of ``GeneratedCurvatures.A``).
     Returns (k_s, k_q, sigma) with k_s >= k_q and sigma in (-pi/2, pi/2] the angle from e_f to
     e_s. Vectorised; a33 must be nonzero (a33 = 0 is a singular point).
+
+    Parameters
+    ----------
+    k_f, k_h : float or array_like
+        Tool principal curvatures [1/length].
+    a13, a23, a33 : float or array_like
+        Entries of A [1/length, 1, length] (``GeneratedCurvatures.A``); a33 nonzero.
+
+    Returns
+    -------
+    k_s, k_q : numpy.ndarray
+        [1/length], k_s >= k_q.
+    sigma : numpy.ndarray
+        [rad].
+
+    Raises
+    ------
+    ValueError
+        If some a33 is zero.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import generated_curvatures, litvin_one_parameter
+    >>> from gearrep.envelope import Envelope, rack_generation_motion
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> env = Envelope(StraightRackCutter(math.radians(20)), rack_generation_motion(30.0))  # rad, r_p mm
+    >>> gc = generated_curvatures(env, env.solve(0.0, 0.0, guess=0.0).params)  # u, v [mm]
+    >>> A = gc.A[0]
+    >>> k_s, k_q, sigma = litvin_one_parameter(gc.k_f, gc.k_h, A[0, 2], A[1, 2], A[2, 2])
+    >>> np.round([k_s[0], k_q[0]], 6).tolist()  # 1/mm, as generated_curvatures
+    [0.0, -0.09746]
     """
     k_f, k_h, a13, a23, a33 = np.broadcast_arrays(*(np.asarray(x, float) for x in (k_f, k_h, a13, a23, a33)))
     if np.any(a33 == 0):
@@ -207,7 +295,35 @@ def two_parameter_system(envelope: Envelope, q) -> np.ndarray:
     """The 4 x 4 matrix of seed 000 eq 4.33 in the seed's arrangement (rows 4.18, 4.27, 4.30;
     unknowns (v_f^(2), v_h^(2), dtheta/dt, dpsi/dt)) at contact points q (n, 4) of a
     two-parameter envelope: [[B, -C], [C^T, -E]] with the unknown block B = (b_11, b_12; b_21,
-    b_22) returned as NaN (it follows from :func:`two_parameter_b_coefficients`)."""
+    b_22) returned as NaN (it follows from :func:`two_parameter_b_coefficients`).
+
+    Parameters
+    ----------
+    envelope : gearrep.envelope.Envelope
+        A two-parameter envelope.
+    q : array_like
+        (n, 4) contact parameters.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 4, 4), the block B NaN.
+
+    Raises
+    ------
+    ValueError
+        If the envelope is not a two-parameter one.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import two_parameter_system
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> gear = GeneratedGear()
+    >>> b = two_parameter_system(gear.envelope(), gear.solve([6.0], [0.0]).params)  # l [mm], psi [rad]
+    >>> b.shape, bool(np.isnan(b[0, :2, :2]).all())
+    ((1, 4, 4), True)
+    """
     if envelope.k != 2:
         raise ValueError(f"envelope must be a two-parameter envelope (k = 2), got k = {envelope.k}")
     q = np.atleast_2d(np.asarray(q, dtype=float))
@@ -227,7 +343,38 @@ def two_parameter_b_coefficients(b) -> tuple[np.ndarray, np.ndarray, np.ndarray]
         b_11 = (b_13 b_31 b_44 - b_13 b_34 b_41 - b_14 b_31 b_43 + b_14 b_33 b_41)
                / (b_33 b_44 - b_34 b_43).
 
-    ``b`` (..., 4, 4); entries b_11..b_22 are ignored."""
+    ``b`` (..., 4, 4); entries b_11..b_22 are ignored.
+
+    Parameters
+    ----------
+    b : array_like
+        (..., 4, 4) the system of :func:`two_parameter_system`.
+
+    Returns
+    -------
+    b11, b12, b22 : numpy.ndarray
+        [1/length].
+
+    Raises
+    ------
+    ValueError
+        If ``b`` is not (..., 4, 4) or b_33 b_44 - b_34 b_43 vanishes.
+
+    Examples
+    --------
+    The corrected coefficients are K_2 - K_1 of :func:`generated_curvatures`, entry by entry:
+
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import generated_curvatures, two_parameter_b_coefficients
+    >>> from gearrep.curvature_relations import two_parameter_system
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> gear = GeneratedGear()
+    >>> q = gear.solve([6.0], [0.0]).params  # l [mm], psi [rad]
+    >>> b11, b12, b22 = two_parameter_b_coefficients(two_parameter_system(gear.envelope(), q))
+    >>> A = generated_curvatures(gear.envelope(), q).A[0]
+    >>> bool(np.allclose([b11[0], b12[0], b22[0]], [A[0, 0], A[0, 1], A[1, 1]], rtol=1e-12, atol=0))
+    True
+    """
     b = np.asarray(b, dtype=float)
     if b.shape[-2:] != (4, 4):
         raise ValueError(f"b must have shape (..., 4, 4), got {b.shape}")
@@ -290,6 +437,33 @@ def two_parameter_principal_curvatures(b11, b12, b22, k_f, k_h):
     labelling; k_s may be smaller than k_q), and
     k_s, k_q = 0.5 (b_11 + b_22 + k_f + k_h +- 2 b_12 / sin 2 sigma), evaluated as
     +- sign(D) hypot(2 b_12, D), D = b_11 - b_22 + k_f - k_h (equal, and finite at b_12 = 0).
+
+    Parameters
+    ----------
+    b11, b12, b22 : float or array_like
+        Coefficients of :func:`two_parameter_b_coefficients` [1/length].
+    k_f, k_h : float or array_like
+        Tool principal curvatures [1/length].
+
+    Returns
+    -------
+    k_s, k_q : numpy.ndarray
+        [1/length], the seed's labels.
+    sigma : numpy.ndarray
+        [rad], in [-pi/4, pi/4].
+
+    Raises
+    ------
+    ValueError
+        If a value is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.curvature_relations import two_parameter_principal_curvatures
+    >>> k_s, k_q, sigma = two_parameter_principal_curvatures(0.0772, 0.0099, 0.0217, 0.0002, 0.0)  # 1/mm
+    >>> np.round([k_s, k_q, sigma], 6).tolist()  # 1/mm, 1/mm, rad
+    [0.079107, 0.019993, 0.170772]
     """
     b11, b12, b22, k_f, k_h = np.broadcast_arrays(*(np.asarray(x, float) for x in (b11, b12, b22, k_f, k_h)))
     if not all(np.all(np.isfinite(x)) for x in (b11, b12, b22, k_f, k_h)):

@@ -74,11 +74,11 @@ tests/unit/surfaces/test_hob.py::test_hob_case_is_the_other_arc_centre.)
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
-from functools import cached_property
+from dataclasses import fields
 
 import numpy as np
 
+from ._envelope_records import EnvelopeResult, LocalGeometry
 from .inputs import check_integer, check_positive
 from .motion import *  # noqa: F403  (the motions are part of this module's face, re-exported)
 from .motion import TOOL_NAMES, Motion
@@ -100,45 +100,34 @@ __all__ = [
 # --------------------------------------------------------------------------------------------
 # local envelope geometry
 # --------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class LocalGeometry:
-    """Local quantities at a batch of parameter points q (n, 2+k); every vector in the tool
-    frame S_1 (rotate by M[:, :3, :3] into S_2). Returned by :meth:`Envelope.local`."""
-
-    M: np.ndarray  # (n,4,4)
-    tool: SurfacePoint  # tool point and derivatives in S_1
-    N: np.ndarray  # (n,3) r_u x r_v
-    n: np.ndarray  # (n,3) unit normal
-    w: np.ndarray  # (n,k,3) relative velocities v^(12,j)
-    omega: np.ndarray  # (n,k,3) relative angular velocities
-    Xr: np.ndarray  # (n,k,k,3) M^-1 d2M_ij r_h (direction part)
-    f: np.ndarray  # (n,k) meshing functions (unit normal)
-    J: np.ndarray  # (n,k,2+k) Jacobian of f in q
-    T: np.ndarray  # (n,2+k,3) dr_2/dq in S_1
-    H: np.ndarray  # (n,2+k,2+k,3) d^2 r_2/dq dq in S_1
-    n_q: np.ndarray  # (n,2+k,3) dn/dq in S_1: (n_u, n_v) of the tool, omega_j x n of the motion
-
-    @cached_property
-    def in_member_frame(self) -> tuple:
-        """(point, dpoint/dq (n, 2+k, 3), normal, dnormal/dq (n, 2+k, 3)) in the generated member's
-        frame S_2 (the tool frame's vectors turned by M), formed once per local geometry (a solve's
-        record evaluates the converged iterate again: :data:`_RECENT`); read-only arrays."""
-        R = self.M[:, :3, :3]
-        out = (
-            (R @ self.tool.r[:, :, None])[:, :, 0] + self.M[:, :3, 3],
-            self.T @ np.swapaxes(R, 1, 2),
-            (R @ self.n[:, :, None])[:, :, 0],
-            self.n_q @ np.swapaxes(R, 1, 2),
-        )
-        for a in out:
-            a.flags.writeable = False
-        return out
-
-
 def local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeometry:
     """:meth:`Envelope.local` without input validation, for use inside a solver's iterations: a
     non-finite row of ``q`` (n, 2+k) gives non-finite outputs in that row (which
-    :func:`gearrep.solve.newton` reports as DIVERGED) instead of raising for the whole batch."""
+    :func:`gearrep.solve.newton` reports as DIVERGED) instead of raising for the whole batch.
+
+    Parameters
+    ----------
+    tool : gearrep.surface.Surface
+        The tool surface.
+    motion : gearrep.motion.Motion
+        The motion.
+    q : (n, 2+k) array_like
+        Parameters (u, v, m).
+
+    Returns
+    -------
+    LocalGeometry
+        The local quantities (read-only arrays for up to 256 points).
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.envelope import local_geometry, rack_generation_motion
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> loc = local_geometry(StraightRackCutter(math.radians(20)), rack_generation_motion(30.0), [[0.0, 0.0, 0.0]])
+    >>> loc.f.tolist()  # the rack's pitch point meshes at phi = 0 [mm]
+    [[0.0]]
+    """
     return _local(tool, motion, np.asarray(q, dtype=float))
 
 
@@ -262,63 +251,8 @@ def _local_geometry(tool: Surface, motion: Motion, q: np.ndarray) -> LocalGeomet
 
 
 # --------------------------------------------------------------------------------------------
-# result record
+# singularity of the generated surface (Litvin's matrix)
 # --------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class EnvelopeResult:
-    """Points of an envelope with their generating parameters and the solve record.
-
-    Attributes
-    ----------
-    names : parameter names, ("u", "v") + motion names
-    params : (n, 2 + k) generating parameters q = (u, v, m) (last iterate where not converged)
-    point : (n, 3) generated point in S_2
-    normal : (n, 3) unit tool normal n_1 = unit(r_u x r_v) carried into S_2 (the common normal)
-    tangents : (n, 2, 3) derivatives of the generated point in the two free parameters (S_2)
-    singular_measure : (n,) smallest / largest singular value of Litvin's (2+k)-square matrix
-        with unit-scaled rows (0 at a singular point of the generated surface)
-    singular : (n,) singular_measure < singular_tol
-    litvin_det : (n,) determinant of that matrix (tangential components in the basis
-        t1 = unit(r_u), t2 = n x t1); changes sign across Litvin's limiting line
-    solve : the :class:`gearrep.solve.SolveResult` of the solved parameters
-    """
-
-    names: tuple[str, ...]
-    params: np.ndarray
-    point: np.ndarray
-    normal: np.ndarray
-    tangents: np.ndarray
-    singular_measure: np.ndarray
-    singular: np.ndarray
-    litvin_det: np.ndarray
-    solve: SolveResult
-
-    def param(self, name: str) -> np.ndarray:
-        """Column of ``params`` by name."""
-        if name not in self.names:
-            raise ValueError(f"name must be one of {self.names}, got {name!r}")
-        return self.params[:, self.names.index(name)]
-
-    @property
-    def status(self) -> np.ndarray:
-        return self.solve.status
-
-    @property
-    def residual(self) -> np.ndarray:
-        return self.solve.residual
-
-    @property
-    def iterations(self) -> np.ndarray:
-        return self.solve.iterations
-
-    @property
-    def converged(self) -> np.ndarray:
-        return self.solve.converged
-
-    def __len__(self) -> int:
-        return self.params.shape[0]
-
-
 def _litvin_matrix(loc: LocalGeometry):
     """Litvin's singularity matrix [[T . t1], [T . t2], [J]] ((2+k)-square) per point."""
     t1 = loc.tool.r_u / np.linalg.norm(loc.tool.r_u, axis=-1, keepdims=True)
@@ -353,14 +287,42 @@ class Envelope:
 
     Parameters
     ----------
-    tool : the generating surface (a :class:`gearrep.surface.Surface` in S_1)
-    motion : a :class:`Motion` with k = 1 or 2 parameters
-    free : the two parameters (names or indices into ("u", "v") + motion.names) that
-        parameterise the generated surface; the other k are solved from the meshing equations
-    lower, upper : bounds of the SOLVED parameters (k,), giving status OFF_FLANK outside
-    tol, maxiter : passed to :func:`gearrep.solve.newton` (tol on the meshing residual, whose
-        unit is length for a rotation parameter)
-    singular_tol : threshold on ``singular_measure`` for the ``singular`` flag
+    tool : gearrep.surface.Surface
+        The generating surface (in S_1).
+    motion : Motion
+        k = 1 or 2 parameters.
+    free : (str or int, str or int), optional
+        The two parameters (names or indices into ("u", "v") + motion.names) that parameterise the
+        generated surface; the other k are solved from the meshing equations.
+    lower, upper : array_like, optional
+        Bounds of the SOLVED parameters (k,), giving status OFF_FLANK outside.
+    tol : float, optional
+        Passed to :func:`gearrep.solve.newton`: tolerance on the meshing residual (whose unit is
+        length for a rotation parameter).
+    maxiter : int, optional
+        Passed to :func:`gearrep.solve.newton`.
+    singular_tol : float, optional
+        Threshold on ``singular_measure`` for the ``singular`` flag, >= 0.
+
+    Raises
+    ------
+    ValueError
+        If the tool, motion, free parameters, bounds or solver settings are bad.
+
+    Examples
+    --------
+    A straight rack (20 deg) generating a gear of pitch radius 30 mm:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.envelope import Envelope, rack_generation_motion
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> env = Envelope(StraightRackCutter(math.radians(20)), rack_generation_motion(30.0), free=("u", "v"))
+    >>> env.free_names, env.solved_names
+    (('u', 'v'), ('phi',))
+    >>> rec = env.solve(1.0, 0.0, guess=0.0)  # u [mm], v [mm]
+    >>> np.round(rec.point, 5).tolist(), bool(abs(env.meshing(rec.params)[0, 0]) < 1e-12)  # mm
+    ([[31.04409, 0.44108, 0.0]], True)
     """
 
     def __init__(
@@ -417,19 +379,52 @@ class Envelope:
 
     def meshing(self, q) -> np.ndarray:
         """Equations of meshing f_j = n_1 . v^(12, j) (eq E; seed 000 eq 4.4-4.5;
-        seed 002 eq 2.2.7) at q (..., 2+k) -> (..., k)."""
+        seed 002 eq 2.2.7) at q (..., 2+k) -> (..., k).
+
+        Parameters
+        ----------
+        q : array_like
+            (..., 2+k) parameters (u, v, m).
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., k) [length per unit of m].
+        """
         q = self._q(q)
         flat = q.reshape(-1, 2 + self.k)
         return np.array(_local(self.tool, self.motion, flat).f).reshape(q.shape[:-1] + (self.k,))
 
     def meshing_jacobian(self, q) -> np.ndarray:
-        """Partial derivatives of the meshing functions in q: (..., k, 2+k)."""
+        """Partial derivatives of the meshing functions in q: (..., k, 2+k).
+
+        Parameters
+        ----------
+        q : array_like
+            (..., 2+k) parameters.
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., k, 2+k).
+        """
         q = self._q(q)
         flat = q.reshape(-1, 2 + self.k)
         return np.array(_local(self.tool, self.motion, flat).J).reshape(q.shape[:-1] + (self.k, 2 + self.k))
 
     def family(self, q) -> np.ndarray:
-        """Family of tool surfaces in S_2, r_2 = M_21(m) r_1(u, v) (eq F) at q -> (..., 3)."""
+        """Family of tool surfaces in S_2, r_2 = M_21(m) r_1(u, v) (eq F) at q -> (..., 3).
+
+        Parameters
+        ----------
+        q : array_like
+            (..., 2+k) parameters.
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) points [length].
+        """
         q = self._q(q)
         flat = q.reshape(-1, 2 + self.k)
         r = self.tool.position(flat[:, 0], flat[:, 1])
@@ -441,7 +436,23 @@ class Envelope:
         """All local quantities at flat q (n, 2+k) (vectors in the tool frame S_1): the tool
         point and derivatives, unit normal, w_j = v^(12, j), omega_j, the meshing functions and
         their Jacobian (used by :mod:`gearrep.curvature_relations`). For up to 256 points the arrays
-        are read-only: the same geometry is returned to a repeated call (copy one to change it)."""
+        are read-only: the same geometry is returned to a repeated call (copy one to change it).
+
+        Parameters
+        ----------
+        q : array_like
+            (n, 2+k) finite parameters.
+
+        Returns
+        -------
+        LocalGeometry
+            The local quantities.
+
+        Raises
+        ------
+        ValueError
+            If ``q`` has the wrong shape or is not finite.
+        """
         q = np.atleast_2d(self._q(q))
         if q.ndim != 2 or not np.all(np.isfinite(q)):
             raise ValueError(f"q must be a finite (n, {2 + self.k}) array")
@@ -506,10 +517,12 @@ class Envelope:
 
     @property
     def free_names(self):
+        """Names of the two free parameters."""
         return tuple(self.names[i] for i in self.free)
 
     @property
     def solved_names(self):
+        """Names of the k solved parameters."""
         return tuple(self.names[i] for i in self.solved)
 
     def _derivs(self, loc: LocalGeometry):
@@ -531,9 +544,17 @@ class Envelope:
     def solve(self, a, b, guess=None) -> EnvelopeResult:
         """Solve the meshing equations for the solved parameters at free values (a, b).
 
-        ``a``, ``b`` broadcast to a common shape S; ``guess`` (callable (a, b) -> S + (k,), or
-        an array broadcastable to it) starts the Newton iteration. Returns an
-        :class:`EnvelopeResult` of n = prod(S) points (flattened, C order).
+        Parameters
+        ----------
+        a, b : float or array_like
+            Free parameter values, broadcast to a common shape S (finite).
+        guess : callable or array_like
+            Start of the Newton iteration: (a, b) -> S + (k,), or an array broadcastable to it.
+
+        Returns
+        -------
+        EnvelopeResult
+            n = prod(S) points (flattened, C order).
         """
         a, b = self._free_values(a, b)
         x0 = self._guess(guess, a, b)
@@ -556,7 +577,18 @@ class Envelope:
 
     def at(self, q) -> EnvelopeResult:
         """Record at given full parameters q (n, 2+k) without solving (status CONVERGED where
-        the meshing residual is below ``tol``, NOT_CONVERGED elsewhere)."""
+        the meshing residual is below ``tol``, NOT_CONVERGED elsewhere).
+
+        Parameters
+        ----------
+        q : array_like
+            (n, 2+k) parameters.
+
+        Returns
+        -------
+        EnvelopeResult
+            The record.
+        """
         q = np.atleast_2d(self._q(q)).astype(float)
         f = self.meshing(q)
         r = np.linalg.norm(f, axis=-1)
@@ -566,7 +598,20 @@ class Envelope:
 
     def surface(self, guess, fd_step=(1e-3, 1e-3)) -> EnvelopeSurface:
         """The generated surface as a :class:`gearrep.surface.Surface` of the two free
-        parameters (see :class:`EnvelopeSurface`)."""
+        parameters (see :class:`EnvelopeSurface`).
+
+        Parameters
+        ----------
+        guess : callable or array_like
+            Start of the solves (:meth:`solve`).
+        fd_step : (float, float), optional
+            Steps of the finite differences [units of the free parameters].
+
+        Returns
+        -------
+        EnvelopeSurface
+            The surface.
+        """
         return EnvelopeSurface(self, guess, fd_step)
 
 
@@ -579,6 +624,31 @@ class EnvelopeSurface(Surface):
     components use 4th-order central differences of the analytic first derivatives with steps
     ``fd_step`` (error ~ h^4 + 1e-16/h relative). Its normal unit(r_a x r_b) is +- the tool
     normal; compare with :meth:`EnvelopeSurface.solve` (``normal``) to know which.
+
+    Parameters
+    ----------
+    envelope : Envelope
+        The envelope.
+    guess : callable or array_like
+        Start of the solves (:meth:`Envelope.solve`).
+    fd_step : (float, float), optional
+        Positive steps [units of the free parameters].
+
+    Raises
+    ------
+    ValueError
+        If ``envelope`` is not an :class:`Envelope` or a step is not > 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.envelope import Envelope, rack_generation_motion
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> env = Envelope(StraightRackCutter(math.radians(20)), rack_generation_motion(30.0))  # rad, r_p mm
+    >>> surface = env.surface(guess=0.0)
+    >>> np.round(surface.position(1.0, 0.0), 5).tolist()  # u [mm], v [mm] -> mm
+    [31.04409, 0.44108, 0.0]
     """
 
     def __init__(self, envelope: Envelope, guess, fd_step=(1e-3, 1e-3)):
@@ -590,7 +660,18 @@ class EnvelopeSurface(Surface):
         self.envelope, self.guess, self.fd_step = envelope, guess, h
 
     def solve(self, u, v) -> EnvelopeResult:
-        """The :class:`EnvelopeResult` at free parameters (u, v)."""
+        """The :class:`EnvelopeResult` at free parameters (u, v).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Free parameter values.
+
+        Returns
+        -------
+        EnvelopeResult
+            The solve.
+        """
         return self.envelope.solve(u, v, self.guess)
 
     def position(self, u, v):
@@ -651,7 +732,44 @@ def singular_points(envelope: Envelope, fixed_name, fixed_value, guess) -> Envel
     ``guess`` (n, 1+k) or broadcastable: starting values of the other 1 + k parameters in the
     order of ``envelope.names`` without the fixed one. The points found on the tool surface
     form Litvin's line L: tool points beyond it generate an undercut (self-intersecting)
-    surface. Returns an :class:`EnvelopeResult` (its ``solve`` holds the combined solve)."""
+    surface. Returns an :class:`EnvelopeResult` (its ``solve`` holds the combined solve).
+
+    Parameters
+    ----------
+    envelope : Envelope
+        The envelope.
+    fixed_name : str
+        One of ``envelope.names``.
+    fixed_value : float or array_like
+        Its values (finite).
+    guess : array_like
+        (n, 1+k) starts of the other parameters.
+
+    Returns
+    -------
+    EnvelopeResult
+        The limiting points.
+
+    Raises
+    ------
+    ValueError
+        If ``fixed_name`` is unknown, a value is not finite or ``guess`` does not broadcast.
+
+    Examples
+    --------
+    A straight rack (20 deg) undercuts a gear of pitch radius 5 mm below the height
+    r_p sin^2(alpha) = 0.58489 mm from its pitch line:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.envelope import Envelope, rack_generation_motion, singular_points
+    >>> from gearrep.surfaces.rack import StraightRackCutter
+    >>> rack = StraightRackCutter(math.radians(20))
+    >>> env = Envelope(rack, rack_generation_motion(5.0))  # r_p [mm]
+    >>> sp = singular_points(env, "v", [0.0], guess=[[-1.0, 0.0]])  # v = 0 mm; starts u [mm], phi [rad]
+    >>> sp.converged.tolist(), np.round(rack.profile(sp.param("u"))[0], 5).tolist()  # height x_b [mm]
+    ([True], [-0.58489])
+    """
     if fixed_name not in envelope.names:
         raise ValueError(f"fixed_name must be one of {envelope.names}, got {fixed_name!r}")
     j = envelope.names.index(fixed_name)

@@ -15,14 +15,33 @@ import fnmatch
 import hashlib
 import io
 import math
-import os
-import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
 
 import pandas as pd
 
+from ._published_format import (
+    CLAIM_COLUMNS,
+    CLAIM_KINDS,
+    PAPER_NAMES,
+    PAPERS,
+    PARAM_COLUMNS,
+    PRECISION_KINDS,
+    ROUNDINGS,
+    SEEDS,
+    VALUE_COLUMNS,
+    PublishedDataError,
+    printed_precision,
+)
+from ._published_lookup import design_table, document_order, param_table, parse_row, values_by
+from ._published_perturb import (
+    PERTURB_ENV,
+    PERTURBED_UNITS,
+    perturb_ulps_from_env,
+    perturbed_params,
+    perturbed_value,
+)
 from .units import KNOWN_UNITS
 
 __all__ = [
@@ -66,84 +85,38 @@ __all__ = [
     "main",
 ]
 
-VALUE_COLUMNS = [
-    "id",
-    "seed",
-    "source",
-    "line",
-    "row",
-    "quantity",
-    "printed",
-    "value",
-    "unit",
-    "precision_kind",
-    "precision",
-    "rounding",
-    "notes",
-]
-PARAM_COLUMNS = ["seed", "source", "line", "example", "parameter", "printed", "value", "unit", "notes"]
-CLAIM_COLUMNS = [
-    "id",
-    "seed",
-    "source",
-    "line",
-    "kind",
-    "statement",
-    "parameters",
-    "confirm_if",
-    "refute_if",
-    "notes",
-]
-SEEDS = ("000", "002", "003", "004")
-PRECISION_KINDS = ("decimals", "sig")
-ROUNDINGS = ("round", "truncate")
-CLAIM_KINDS = ("trend", "approximate", "missing-table")
-
-#: Human-readable names of the seed documents (for the scorecard and report).
-PAPERS = {
-    "000": "Curvilinear-tooth gears cut by a ZA hob (dissertation, ch. 4-5)",
-    "002": "NASA CR-2000-209415: Novikov-Wildhaber helical gears",
-    "003": "PhD thesis 2023: conventional vs reduced TCA",
-    "004": "Ma et al. 2021: CATT cylindrical gears",
-}
-
-#: One name per seed document, the name its studies, results, notebooks and report section go by
-#: (a study key is the name, or ``<name>_<part>`` for one of two studies of the same document): the
-#: first author and year. Seed 000 prints neither (CITATION.cff), so its name says its subject, the
-#: hob-cut curvilinear gear (docs/architecture.md says why). The seed ids stay the data's ids.
-PAPER_NAMES = {"000": "hobcut", "002": "litvin2000", "003": "temirkhan2023", "004": "ma2021"}
-
-_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-
-
-class PublishedDataError(ValueError):
-    """A published-data file does not follow data/published/README.md."""
-
 
 @dataclass(frozen=True)
 class Published:
-    """All published data: ``values`` (one row per printed number), ``params``, ``claims``."""
+    """All published data: ``values`` (one row per printed number), ``params``, ``claims``.
+
+    Parameters
+    ----------
+    values : pandas.DataFrame
+        One row per printed number (:data:`VALUE_COLUMNS` after a ``file`` column), typed.
+    params : pandas.DataFrame
+        One row per design parameter (:data:`PARAM_COLUMNS` after ``file``).
+    claims : pandas.DataFrame
+        One row per claim (:data:`CLAIM_COLUMNS` after ``file``).
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import load
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(
+    ...     "seed,source,line,example,parameter,printed,value,unit,notes\\n000,Table 5.1,600,5.1,module,3,3,mm,\\n"
+    ... )
+    >>> published = load(tmp.name)
+    >>> len(published.values), published.params[["parameter", "value", "unit"]].values.tolist()  # mm
+    (0, [['module', 3.0, 'mm']])
+    >>> tmp.cleanup()
+    """
 
     values: pd.DataFrame
     params: pd.DataFrame
     claims: pd.DataFrame
-
-
-def printed_precision(printed: str) -> tuple[str, int]:
-    """(precision_kind, precision) implied by a printed number string.
-
-    Plain decimals give ("decimals", digits after the point); E-notation gives ("sig",
-    significant digits of the mantissa).
-    """
-    s = str(printed).strip()
-    if not _NUMBER.match(s):
-        raise PublishedDataError(f"printed value {printed!r} is not a number")
-    mant, _, exp = s.lower().partition("e")
-    mant = mant.lstrip("+-")
-    if exp:
-        digits = mant.replace(".", "").lstrip("0")
-        return "sig", max(len(digits), 1)
-    return "decimals", len(mant.partition(".")[2])
 
 
 def _read_rows(path: Path) -> tuple[list[str], list[list[str]]]:
@@ -237,7 +210,39 @@ def _numbered_rows(df: pd.DataFrame):
 
 
 def validate_values(values: pd.DataFrame) -> pd.DataFrame:
-    """Type and validate a values frame; raises PublishedDataError naming file, id and column."""
+    """Type and validate a values frame; raises PublishedDataError naming file, id and column.
+
+    Parameters
+    ----------
+    values : pandas.DataFrame
+        Strings of :data:`VALUE_COLUMNS` after a ``file`` column.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with ``value`` float and ``precision``, ``line`` int.
+
+    Raises
+    ------
+    PublishedDataError
+        On the first bad cell or a repeated id.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.published import VALUE_COLUMNS, PublishedDataError, validate_values
+    >>> cells = ["000-T4.3-k_s", "000", "Table 4.3", "366", "l1_mm=4.381", "k_s", "0.008067", "0.008067", "per_mm"]
+    >>> cells += ["decimals", "6", "round", ""]
+    >>> frame = pd.DataFrame([["values_000_x.csv", *cells]], columns=["file", *VALUE_COLUMNS])
+    >>> validate_values(frame)[["value", "precision"]].values.tolist()  # 1/mm, 6 decimals
+    [[0.008067, 6.0]]
+    >>> frame.loc[0, "precision"] = "5"
+    >>> try:
+    ...     validate_values(frame)
+    ... except PublishedDataError as exc:
+    ...     print(exc)
+    values_000_x.csv id='000-T4.3-k_s': printed '0.008067' implies decimals=6, file says decimals=5
+    """
     v = values.copy()
     for r, n in _numbered_rows(v):
         where = _where(r, n)
@@ -277,7 +282,32 @@ def validate_values(values: pd.DataFrame) -> pd.DataFrame:
 
 def validate_params(params: pd.DataFrame) -> pd.DataFrame:
     """Type and validate a params frame; raises PublishedDataError naming file, example/parameter
-    and column."""
+    and column.
+
+    Parameters
+    ----------
+    params : pandas.DataFrame
+        Strings of :data:`PARAM_COLUMNS` after a ``file`` column.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with ``value`` float (NaN where not printed) and ``line`` int.
+
+    Raises
+    ------
+    PublishedDataError
+        On the first bad cell or a repeated parameter.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.published import PARAM_COLUMNS, validate_params
+    >>> cells = ["000", "Table 5.1", "600", "5.1", "module", "3", "3", "mm", ""]
+    >>> frame = pd.DataFrame([["params_000_x.csv", *cells]], columns=["file", *PARAM_COLUMNS])
+    >>> validate_params(frame)[["parameter", "value", "line"]].values.tolist()  # mm
+    [['module', 3.0, 600]]
+    """
     p = params.copy()
     blank = p["value"].str.strip() == ""
     for r, n in _numbered_rows(p):
@@ -305,7 +335,34 @@ def validate_params(params: pd.DataFrame) -> pd.DataFrame:
 
 
 def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
-    """Type and validate a claims frame; raises PublishedDataError naming file, id and column."""
+    """Type and validate a claims frame; raises PublishedDataError naming file, id and column.
+
+    Parameters
+    ----------
+    claims : pandas.DataFrame
+        Strings of :data:`CLAIM_COLUMNS` after a ``file`` column.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with ``line`` int.
+
+    Raises
+    ------
+    PublishedDataError
+        On the first bad cell or a repeated id.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.published import CLAIM_COLUMNS, PublishedDataError, validate_claims
+    >>> cells = ["000-KE", "000", "Section 5.5", "606", "guess", "The KE is small.", "", "KE < 5 arcsec", "KE > 50", ""]
+    >>> try:
+    ...     validate_claims(pd.DataFrame([["claims_000_x.csv", *cells]], columns=["file", *CLAIM_COLUMNS]))
+    ... except PublishedDataError as exc:
+    ...     print(exc)
+    claims_000_x.csv id='000-KE' column 'kind': 'guess' not in ('trend', 'approximate', 'missing-table')
+    """
     c = claims.copy()
     for r, n in _numbered_rows(c):
         where = _where(r, n)
@@ -323,72 +380,44 @@ def validate_claims(claims: pd.DataFrame) -> pd.DataFrame:
     return c
 
 
-#: environment variable of the portability check (``docs/validation.md``): a whole number k >= 1
-#: moves every design length and angle read by :func:`load` by 1 to k units in the last place
-#: (:func:`perturbed_params`); unset, empty or 0 reads the data as printed
-PERTURB_ENV = "GEARREP_PERTURB_ULPS"
-#: the units of the parameters it moves: lengths, angles and curvatures (not counts or ratios,
-#: whose printed values are exact)
-PERTURBED_UNITS = frozenset({"mm", "in", "deg", "rad", "arcmin", "per_mm", "per_in"})
-
-
-def perturbed_value(value: float, ulps: int) -> float:
-    """``value`` moved by 1 to ``ulps`` units in the last place, up or down, the count and direction
-    drawn from a hash of the value itself (the same in every process; equal values move alike).
-    Zero, NaN and infinities are returned as they are; ``ulps`` = 0 returns ``value``."""
-    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
-        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
-    value = float(value)
-    if ulps == 0 or value == 0.0 or not math.isfinite(value):
-        return value
-    h = int.from_bytes(hashlib.blake2b(repr(value).encode(), digest_size=4).digest(), "little")
-    step, toward = 1 + h % ulps, math.inf if (h >> 16) & 1 else -math.inf
-    for _ in range(step):
-        value = math.nextafter(value, toward)
-    return value
-
-
-def perturbed_params(params: pd.DataFrame, ulps: int) -> pd.DataFrame:
-    """``params`` with every value in :data:`PERTURBED_UNITS` moved by 1 to ``ulps`` units in the
-    last place, up or down.
-
-    A result that such a nudge of its inputs moves beyond its stated tolerance is ill-conditioned
-    or tested too tightly; the portability check runs the number-comparing tests on these inputs.
-    The count and direction come from a hash of the printed value, so they are the same in every
-    process, and equal values stay equal (a design's stated equalities, such as equal cutter radii
-    or a symmetric pair, are part of the design); zero stays zero (an exact statement, such as an
-    aligned assembly).
-    """
-    if isinstance(ulps, bool) or not isinstance(ulps, int) or ulps < 0:
-        raise ValueError(f"ulps must be a whole number >= 0, got {ulps!r}")
-    out = params.copy()
-    if ulps == 0:
-        return out
-    values = out["value"].to_numpy(dtype=float).copy()
-    for i, unit in enumerate(out["unit"].tolist()):
-        if unit in PERTURBED_UNITS:
-            values[i] = perturbed_value(values[i], ulps)
-    out["value"] = values
-    return out
-
-
-def perturb_ulps_from_env() -> int:
-    """The ulps of :data:`PERTURB_ENV` (0 when unset or empty); anything but a whole number is refused."""
-    text = os.environ.get(PERTURB_ENV, "").strip()
-    if not text:
-        return 0
-    if not text.isdigit():
-        raise ValueError(f"environment variable {PERTURB_ENV}={text!r}: must be a whole number >= 0 (0 or unset: off)")
-    return int(text)
-
-
 def load(directory, files=None) -> Published:
     """Read and validate every ``values_*``, ``params_*`` and ``claims_*`` CSV in ``directory``
     (only those whose names match one of the glob patterns ``files``, if given: a workflow job
     reads exactly the files it declares as inputs).
 
     With the environment variable :data:`PERTURB_ENV` set to k >= 1 the design parameters are
-    returned nudged by :func:`perturbed_params` (the portability check; never in a normal run)."""
+    returned nudged by :func:`perturbed_params` (the portability check; never in a normal run).
+
+    Parameters
+    ----------
+    directory : str or path-like
+        The published-data directory.
+    files : iterable of str, optional
+        Glob patterns of the file names to read (their directory part is ignored).
+
+    Returns
+    -------
+    Published
+        The typed frames.
+
+    Raises
+    ------
+    PublishedDataError
+        If the directory does not exist, a file breaks the format, or an id repeats.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import load
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> header = "seed,source,line,example,parameter,printed,value,unit,notes\\n"
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(header + "000,Table 5.1,600,5.1,module,3,3,mm,\\n")
+    >>> _ = (pathlib.Path(tmp.name) / "params_002_y.csv").write_text(header + "002,Sec. 2.5,40,S2.5,N1,17,17,1,\\n")
+    >>> load(tmp.name).params["parameter"].tolist(), load(tmp.name, files=["params_002_*"]).params["parameter"].tolist()
+    (['module', 'N1'], ['N1'])
+    >>> tmp.cleanup()
+    """
     d = Path(directory)
     if not d.is_dir():
         raise PublishedDataError(f"published-data directory {d} does not exist")
@@ -404,13 +433,45 @@ def load(directory, files=None) -> Published:
     return Published(values=values, params=params, claims=claims)
 
 
+#: the columns of the errata file (``data/errata.csv``)
 ERRATA_COLUMNS = ["seed", "location", "printed", "correction", "evidence"]
 
 
 def load_errata(path) -> pd.DataFrame:
     """The errata file (``data/errata.csv``): one row per erratum with its seed, location, the
     printed form, the correction and the evidence. An empty or header-only file, a missing
-    column, an unknown seed or an erratum without evidence is refused naming the file and row."""
+    column, an unknown seed or an erratum without evidence is refused naming the file and row.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The errata file.
+
+    Returns
+    -------
+    pandas.DataFrame
+        :data:`ERRATA_COLUMNS` as strings.
+
+    Raises
+    ------
+    PublishedDataError
+        If the file is missing or breaks its format.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import load_errata
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(tmp.name) / "errata.csv"
+    >>> _ = path.write_text(
+    ...     "seed,location,printed,correction,evidence\\n"
+    ...     "000,eq 4.37,b_11 as printed,the sign changes,expanding the determinant gives the opposite sign\\n"
+    ... )
+    >>> load_errata(path)[["seed", "location"]].values.tolist()
+    [['000', 'eq 4.37']]
+    >>> tmp.cleanup()
+    """
     path = Path(path)
     if not path.is_file():
         raise PublishedDataError(f"{path}: the errata file does not exist")
@@ -436,98 +497,13 @@ def _duplicates(frame: pd.DataFrame, column: str, message: str) -> None:
         raise PublishedDataError(f"{message}: {where[:10]}")
 
 
-def parse_row(row: str) -> dict[str, str]:
-    """``'l1_mm=4.381;side=L'`` -> ``{'l1_mm': '4.381', 'side': 'L'}``."""
-    out = {}
-    for part in filter(None, (p.strip() for p in str(row).split(";"))):
-        k, sep, val = part.partition("=")
-        if not sep:
-            raise PublishedDataError(f"row key part {part!r} is not name=value")
-        out[k.strip()] = val.strip()
-    return out
-
-
-def param_table(params: pd.DataFrame, file: str, example: str | None = None) -> dict[str, float]:
-    """``{parameter: value}`` of one params file (and example), in the file's units."""
-    # on the columns' lists: the studies call this for every design they read, and two boolean
-    # selections of the frame cost a few milliseconds each time
-    files, examples = params["file"].tolist(), params["example"].tolist()
-    keep = [i for i, f in enumerate(files) if f == file and (example is None or examples[i] == example)]
-    if not keep:
-        raise KeyError(f"no parameters for file={file!r} example={example!r}")
-    names, values = params["parameter"].tolist(), params["value"].tolist()
-    return {names[i]: values[i] for i in keep}
-
-
-def values_by(frame: pd.DataFrame, keys: list[str]) -> dict[tuple, list]:
-    """``{(frame[keys[0]], ...): [value, ...]}`` of a values or params frame, in row order: every
-    look-up of a study's design data from one pass over the frame (a boolean selection per
-    parameter cost more than the rest of reading the design). A key with other than one value is
-    the caller's to refuse."""
-    out: dict[tuple, list] = {}
-    for key, v in zip(zip(*(frame[k].tolist() for k in keys)), frame["value"].tolist()):
-        out.setdefault(key, []).append(v)
-    return out
-
-
-def design_table(params: pd.DataFrame, seed: str | None = None) -> pd.DataFrame:
-    """The design data of every example (of ``seed``, if given), one row per example in the
-    order the document prints them: columns ``seed``, ``example``, ``source`` (where it is
-    printed, with its first seed-file line), ``file`` (its params files) and ``design``
-    (``name = printed unit; ...`` as printed, in the files' order; ``name = (not printed)`` for a
-    value the text only implies)."""
-    missing = [c for c in ("file", *PARAM_COLUMNS) if c not in params.columns]
-    if missing:
-        raise ValueError(f"params lacks columns {missing} (pass Published.params of load())")
-    if seed is not None and seed not in SEEDS:
-        raise ValueError(f"seed={seed!r} is not one of {list(SEEDS)}")
-    p = params if seed is None else params[params["seed"] == seed]
-    rows = []
-    for (s, example), g in p.groupby(["seed", "example"], sort=False):
-        items = []
-        for r in g.itertuples(index=False):
-            printed = str(r.printed).strip()
-            unit = "" if r.unit in ("1", "count") else f" {r.unit}"
-            items.append(f"{r.parameter} = {printed}{unit}" if printed else f"{r.parameter} = (not printed)")
-        sources = list(dict.fromkeys(str(x) for x in g["source"]))
-        rows.append(
-            {
-                "seed": s,
-                "example": example,
-                "source": "; ".join(sources) + f" (line {int(g['line'].min())})",
-                "file": "; ".join(dict.fromkeys(g["file"])),
-                "design": "; ".join(items),
-                "_line": int(g["line"].min()),
-            }
-        )
-    out = pd.DataFrame(rows, columns=["seed", "example", "source", "file", "design", "_line"])
-    return (
-        out.sort_values(["seed", "_line", "file", "example"], kind="stable")
-        .drop(columns="_line")
-        .reset_index(drop=True)
-    )
-
-
-def document_order(*frames: pd.DataFrame) -> dict[tuple[str, str], int]:
-    """``{(seed, source): line}``: the first seed-file line of each source over the given values /
-    claims / params frames, i.e. where the paper prints it. Sorting sources by it gives the paper's
-    order ("Table 4.3" before "Fig. 5.7" before "Section 5.5"), not the string order."""
-    order: dict[tuple[str, str], int] = {}
-    for f in frames:
-        missing = [c for c in ("seed", "source", "line") if c not in f.columns]
-        if missing:
-            raise ValueError(f"frame lacks columns {missing} (pass frames of load())")
-        for (s, src), line in f.groupby(["seed", "source"])["line"].min().items():
-            order[(s, src)] = min(int(line), order.get((s, src), int(line)))
-    return order
-
-
 # ----------------------------------------------------------------------------- manifest
 
 #: The manifest of a published-data directory: one row per data file.
 MANIFEST_NAME = "MANIFEST.csv"
 #: The data files :func:`load` reads, by kind.
 DATA_PATTERNS = {"values": "values_*.csv", "params": "params_*.csv", "claims": "claims_*.csv"}
+#: the columns of the manifest: the file, its kind, checksum, bytes and data rows (all and per seed)
 MANIFEST_COLUMNS = ["file", "kind", "sha256", "bytes", "rows", *(f"rows_{s}" for s in SEEDS)]
 _COUNT_COLUMNS = ["bytes", "rows", *(f"rows_{s}" for s in SEEDS)]
 _REGENERATE = "python -m gearrep.published --write-manifest"
@@ -545,7 +521,36 @@ def _data_files(directory: Path) -> list[Path]:
 def file_entry(path) -> dict:
     """The manifest row of one data file: kind, sha256 and size of its bytes, number of data rows
     (the header not counted, quoted line breaks inside a field not splitting a row) and the
-    number of rows of each seed."""
+    number of rows of each seed.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A data file.
+
+    Returns
+    -------
+    dict
+        One row of :data:`MANIFEST_COLUMNS` (``bytes`` [bytes]).
+
+    Raises
+    ------
+    PublishedDataError
+        If the name is not a data file's, or the file is not UTF-8 CSV with a ``seed`` column.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import file_entry
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(tmp.name) / "params_000_x.csv"
+    >>> _ = path.write_text("seed,source,line,example,parameter,printed,value,unit,notes\\n000,T5.1,600,5.1,m,3,3,mm,\\n")
+    >>> entry = file_entry(path)
+    >>> entry["kind"], entry["rows"], entry["rows_000"], entry["bytes"] == path.stat().st_size, len(entry["sha256"])
+    ('params', 1, 1, True, 64)
+    >>> tmp.cleanup()
+    """
     path = Path(path)
     kind = _kind(path.name)
     if kind is None:
@@ -575,7 +580,36 @@ def file_entry(path) -> dict:
 
 def build_manifest(directory) -> pd.DataFrame:
     """The manifest of a published-data directory (:data:`MANIFEST_COLUMNS`, one row per file,
-    sorted by file name)."""
+    sorted by file name).
+
+    Parameters
+    ----------
+    directory : str or path-like
+        The published-data directory.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The manifest.
+
+    Raises
+    ------
+    PublishedDataError
+        If the directory does not exist, holds no data file, or a file is not a data file.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import build_manifest
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(
+    ...     "seed,source,line,example,parameter,printed,value,unit,notes\\n000,T5.1,600,5.1,m,3,3,mm,\\n"
+    ... )
+    >>> build_manifest(tmp.name)[["file", "kind", "rows"]].values.tolist()
+    [['params_000_x.csv', 'params', 1]]
+    >>> tmp.cleanup()
+    """
     d = Path(directory)
     if not d.is_dir():
         raise PublishedDataError(f"published-data directory {d} does not exist")
@@ -586,7 +620,36 @@ def build_manifest(directory) -> pd.DataFrame:
 
 
 def write_manifest(directory) -> Path:
-    """(Re)write ``<directory>/MANIFEST.csv`` from the files as they are; returns its path."""
+    """(Re)write ``<directory>/MANIFEST.csv`` from the files as they are; returns its path.
+
+    Parameters
+    ----------
+    directory : str or path-like
+        The published-data directory.
+
+    Returns
+    -------
+    pathlib.Path
+        The manifest's path.
+
+    Raises
+    ------
+    PublishedDataError
+        As :func:`build_manifest`.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import write_manifest
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(
+    ...     "seed,source,line,example,parameter,printed,value,unit,notes\\n000,T5.1,600,5.1,m,3,3,mm,\\n"
+    ... )
+    >>> write_manifest(tmp.name).name
+    'MANIFEST.csv'
+    >>> tmp.cleanup()
+    """
     d = Path(directory)
     manifest = build_manifest(d)
     out = d / MANIFEST_NAME
@@ -595,7 +658,38 @@ def write_manifest(directory) -> Path:
 
 
 def read_manifest(directory) -> pd.DataFrame:
-    """``<directory>/MANIFEST.csv`` as a frame (counts as int)."""
+    """``<directory>/MANIFEST.csv`` as a frame (counts as int).
+
+    Parameters
+    ----------
+    directory : str or path-like
+        The published-data directory.
+
+    Returns
+    -------
+    pandas.DataFrame
+        :data:`MANIFEST_COLUMNS`.
+
+    Raises
+    ------
+    PublishedDataError
+        If the manifest is missing, lacks a column, has a count that is not an integer or lists a
+        file twice.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import read_manifest, write_manifest
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(
+    ...     "seed,source,line,example,parameter,printed,value,unit,notes\\n000,T5.1,600,5.1,m,3,3,mm,\\n"
+    ... )
+    >>> _ = write_manifest(tmp.name)
+    >>> read_manifest(tmp.name)[["file", "rows", "rows_000"]].values.tolist()
+    [['params_000_x.csv', 1, 1]]
+    >>> tmp.cleanup()
+    """
     path = Path(directory) / MANIFEST_NAME
     if not path.is_file():
         raise PublishedDataError(f"{path}: no manifest; write it with `{_REGENERATE} {directory}`")
@@ -646,7 +740,45 @@ def verify_manifest(directory, manifest: pd.DataFrame | None = None) -> pd.DataF
     unless ``manifest`` is given): every listed file present with the listed checksum, and no
     CSV that the manifest does not list. Raises one PublishedDataError naming every file that
     is missing, emptied, cut to its header, shrunk, grown, altered or unlisted; returns the
-    manifest when all match."""
+    manifest when all match.
+
+    Parameters
+    ----------
+    directory : str or path-like
+        The published-data directory.
+    manifest : pandas.DataFrame, optional
+        The manifest to check against (default: the directory's).
+
+    Returns
+    -------
+    pandas.DataFrame
+        The manifest.
+
+    Raises
+    ------
+    PublishedDataError
+        If the directory or its manifest is missing, or a file differs from it.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import PublishedDataError, verify_manifest, write_manifest
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> path = pathlib.Path(tmp.name) / "params_000_x.csv"
+    >>> header = "seed,source,line,example,parameter,printed,value,unit,notes\\n"
+    >>> _ = path.write_text(header + "000,T5.1,600,5.1,m,3,3,mm,\\n")
+    >>> _ = write_manifest(tmp.name)
+    >>> len(verify_manifest(tmp.name))
+    1
+    >>> _ = path.write_text(header)  # the data cut to the header row
+    >>> try:
+    ...     verify_manifest(tmp.name)
+    ... except PublishedDataError as exc:
+    ...     print(str(exc).splitlines()[1])
+      params_000_x.csv: cut to its header row (MANIFEST.csv lists 1 rows)
+    >>> tmp.cleanup()
+    """
     d = Path(directory)
     if not d.is_dir():
         raise PublishedDataError(f"published-data directory {d} does not exist")
@@ -665,13 +797,69 @@ def verify_manifest(directory, manifest: pd.DataFrame | None = None) -> pd.DataF
 
 
 def scored_rows_per_seed(manifest: pd.DataFrame) -> dict[str, int]:
-    """``{seed: rows}`` of the values and claims files: the scorecard has one row for each."""
+    """``{seed: rows}`` of the values and claims files: the scorecard has one row for each.
+
+    Parameters
+    ----------
+    manifest : pandas.DataFrame
+        A manifest (:func:`read_manifest`).
+
+    Returns
+    -------
+    dict
+        Rows of values and claims per seed.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import CLAIM_COLUMNS, build_manifest, scored_rows_per_seed
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "claims_000_x.csv").write_text(
+    ...     ",".join(CLAIM_COLUMNS) + "\\n000-KE,000,Sec. 5.5,606,trend,The KE is small.,,KE < 5,KE > 50,\\n"
+    ... )
+    >>> scored_rows_per_seed(build_manifest(tmp.name))
+    {'000': 1, '002': 0, '003': 0, '004': 0}
+    >>> tmp.cleanup()
+    """
     scored = manifest[manifest["kind"].isin(["values", "claims"])]
     return {s: int(scored[f"rows_{s}"].astype(int).sum()) for s in SEEDS}
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m gearrep.published --write-manifest DIR`` / ``--verify DIR``."""
+    """``python -m gearrep.published --write-manifest DIR`` / ``--verify DIR``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: the command line's).
+
+    Returns
+    -------
+    int
+        The exit status: 0, or 1 after an error message.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> from gearrep.published import main
+    >>> tmp = tempfile.TemporaryDirectory()
+    >>> _ = (pathlib.Path(tmp.name) / "params_000_x.csv").write_text(
+    ...     "seed,source,line,example,parameter,printed,value,unit,notes\\n000,T5.1,600,5.1,m,3,3,mm,\\n"
+    ... )
+    >>> main(["--write-manifest", tmp.name])
+    wrote .../MANIFEST.csv: 1 files, 1 rows; scored rows per seed {'000': 0, '002': 0, '003': 0, '004': 0}
+    0
+    >>> import contextlib
+    >>> import io
+    >>> printed = io.StringIO()
+    >>> with contextlib.redirect_stdout(printed):
+    ...     status = main(["--verify", tmp.name])
+    >>> status, printed.getvalue().endswith(": 1 files match MANIFEST.csv and load\\n")
+    (0, True)
+    >>> tmp.cleanup()
+    """
     import argparse
 
     ap = argparse.ArgumentParser(prog="python -m gearrep.published", description=main.__doc__)

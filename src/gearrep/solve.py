@@ -9,8 +9,9 @@ The step is the least-squares Newton step (private module ``_newton_steps``): by
 square (n equations, n unknowns) and over-determined systems (more equations than unknowns, e.g.
 the vector equations of tooth contact) are handled alike and a rank-deficient Jacobian is detected
 from its singular values instead of being inverted; 2 x 2 systems take a closed form, and with
-``inverse_square`` larger square ones Gauss-Jordan elimination, each with a bound of the condition
-that sends the rows it cannot clear of singularity to the SVD.
+``inverse_square`` larger square ones Gauss-Jordan elimination (up to 6 x 6; LAPACK's inverse
+above), each with a bound of the condition that sends the rows it cannot clear of singularity to
+the SVD.
 
 Each algorithm (the Newton iteration, the 2 x 2 closed form, Gauss-Jordan elimination) exists in
 two forms: on arrays for a batch, and on Python floats for one problem, which :func:`newton` takes
@@ -481,7 +482,8 @@ def newton(
         Jacobian).
     inverse_square : bool, optional
         Square systems larger than 2 x 2 take their step and inverse from Gauss-Jordan
-        elimination over the batch (:func:`step_square`: a Frobenius-norm bound clears most rows of singularity, the SVD
+        elimination over the batch (LAPACK's inverse above 6 x 6; :func:`step_square`: a
+        Frobenius-norm bound clears most rows of singularity, the SVD
         examines the rest), several times cheaper than the SVD of every row; ``condition`` is then
         the Frobenius condition number (see :class:`SolveResult`). The TCA solves use it.
     floats : callable, optional

@@ -1,4 +1,4 @@
-"""Seed 004 (CATT gears): figures like the paper's Figs 12-15 from results/catt/ (Snakemake script:
+"""Seed 004 (CATT gears): figures like the paper's Figs 12-15 from results/ma2021/ (Snakemake script:
 input.tables = every table of the study, output.<key> for each key of ma2021.FIGURES).
 
 The paper prints no numbers for Figs 12-15 (only curves), so there are no published markers:

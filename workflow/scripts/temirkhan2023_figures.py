@@ -1,4 +1,4 @@
-"""Seed 003 (thesis): figures from the tables in results/thesis/ (Snakemake script).
+"""Seed 003 (thesis): figures from the tables in results/temirkhan2023/ (Snakemake script).
 
 Convergence clouds coloured by outcome, convergence rate against the phi2 guess window and
 against fixed phi2 guesses (published values as markers), TE curves and paths of contact."""

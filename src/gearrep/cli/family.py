@@ -15,7 +15,8 @@ engagement). Every contact is solved by the library's robust start strategy,
 :func:`gearrep.tca.robust_contact` (each start projected into the domain where member 2's
 explicit surface is defined, then the reduced solve, the conventional one seeded from it; rows
 that fail or reach a root that does not mesh are restarted), from the family's start
-(:meth:`PairFamily.starts`; families whose member 2 has no explicit form also give
+(:meth:`PairFamily.starts`, moved along the path where many angles are solved at once:
+:meth:`PairFamily.robust_solve`; families whose member 2 has no explicit form also give
 :meth:`PairFamily.nominal`, the conventional start it is completed with). The meshing cycle is
 either the library's (:meth:`PairFamily.meshing_cycle_tables`: engagement limits solved on the
 flank boundaries, :func:`gearrep.meshing.meshing_cycle`) or sampled
@@ -37,7 +38,7 @@ from ..ltca import refusal
 from ..meshing import contact_ratio, engagement_limits, meshing_cycle
 from ..settings import SettingError
 from ..solve import Status
-from ..tca import contact_ellipse, flank_sense, robust_contact, solve_contact
+from ..tca import contact_ellipse, flank_sense, offset_start, robust_contact, solve_contact
 from ..units import ARCSEC
 from .edges import axial_edges, cut_at_edges
 from .keys import misalignment, set_dotted
@@ -234,26 +235,40 @@ class PairFamily(Family):
         extends its flanks along the face. By default ``c``."""
         return c
 
+    #: the degree in the angle of the offset by which :meth:`robust_solve` moves the starts of many
+    #: angles along the path (:func:`gearrep.tca.offset_start`)
+    start_order = 2
+
     def robust_solve(self, d: Design, phi1, fallback: bool = True):
         """:func:`gearrep.tca.robust_contact` at pinion angles ``phi1`` [rad] from :meth:`starts`
         (completed by :meth:`nominal`), with the design's tolerance and iteration limit;
-        ``fallback=False``: the strategy's first step alone (projection and solve)."""
+        ``fallback=False``: the strategy's first step alone (projection and solve).
+
+        Where member 2 is explicit (no :meth:`nominal`), the starts of more than
+        :attr:`start_order` + 1 angles are first moved along the path: by the offset, a
+        polynomial of degree :attr:`start_order` in the angle, of the contacts that the same
+        robust solve finds from the family's start at a few of the angles
+        (:func:`gearrep.tca.offset_start`). The family's start (the middle of flank 1) is far from
+        the contact near the ends of a long path, where damped Newton creeps or fails and the
+        strategy restarts from its grid: the spiral bevel example's 1001-angle path took 20.4
+        Newton iterations per angle from it, 2.2 from the moved starts, the same contacts."""
         s = d.analysis
         phi1 = np.atleast_1d(np.asarray(phi1, float))
+        kw = dict(formulation=self.formulation, tol=s["tol"], maxiter=s["maxiter"])
         with np.errstate(all="ignore"):
             nominal = self.nominal(d, phi1)
             u1, v1 = self.starts(d, phi1, nominal)
-            return robust_contact(
-                d.pair,
-                phi1,
-                u1,
-                v1,
-                formulation=self.formulation,
-                tol=s["tol"],
-                maxiter=s["maxiter"],
-                nominal=nominal,
-                fallback=fallback,
-            )
+            if nominal is None:
+                moved = offset_start(
+                    d.pair,
+                    phi1,
+                    lambda pair, ph: np.column_stack(self.starts(d, ph)),
+                    formulation="reduced",
+                    solve=lambda pair, ph, x0: robust_contact(pair, ph, x0[:, 0], x0[:, 1], **kw),
+                    order=self.start_order,
+                )
+                u1, v1 = moved[:, 0], moved[:, 1]
+            return robust_contact(d.pair, phi1, u1, v1, nominal=nominal, fallback=fallback, **kw)
 
     def contact_at(self, design: Design, phi1, face: bool = True):
         """Contact points (:class:`gearrep.tca.ContactPoints`) at pinion angles ``phi1`` [rad], one

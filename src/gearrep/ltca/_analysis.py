@@ -26,7 +26,38 @@ _DRIVING = ("pinion", "gear")
 def cycle_positions(pair: GearPair, n_positions: int = 41) -> np.ndarray:
     """Member-1 angles [rad] of one meshing cycle (one angular pitch 2 pi / N1, both ends included)
     centred on the position where tooth pair 0's mid-face section is at the pitch point (the middle
-    position for odd ``n_positions``)."""
+    position for odd ``n_positions``).
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        The pair.
+    n_positions : int, optional
+        Positions, >= 2.
+
+    Returns
+    -------
+    numpy.ndarray
+        Angles [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``n_positions`` is not an integer >= 2 (or the flanks are not of a supported family).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.ltca import cycle_positions
+    >>> from gearrep.surfaces.involute import InvoluteGearData, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2), 23, 41, g1.r_p + g2.r_p)
+    >>> phi1 = cycle_positions(pair, 3)
+    >>> round(float(phi1[2] - phi1[0]), 12) == round(2 * math.pi / 23, 12)  # one angular pitch [rad]
+    True
+    """
     n = check_integer("n_positions", n_positions, 2)
     m1, _ = members(pair)
     return pitch_phi1(pair, m1) + (2.0 * np.pi / pair.n1) * np.linspace(-0.5, 0.5, n)
@@ -38,7 +69,39 @@ class PressureMap:
     n_across) at the nodes' axial positions ``z_mm`` (n_pairs, n_nodes) and offsets ``across_mm``
     (n_across,) across the contact line from each node's contact point ``position_mm`` (n_pairs,
     n_nodes, 3; fixed frame), whose across direction is ``across`` (n_pairs, n_nodes, 3); ``kind``
-    the node's contact kind (:data:`gearrep.ltca.KINDS`, 0 none; NaN pressure there)."""
+    the node's contact kind (:data:`gearrep.ltca.KINDS`, 0 none; NaN pressure there).
+
+    Parameters
+    ----------
+    pairs : numpy.ndarray
+        (n_pairs,) tooth-pair offsets.
+    z_mm : numpy.ndarray
+        (n_pairs, n_nodes) node positions [mm].
+    across_mm : numpy.ndarray
+        (n_across,) offsets across the line [mm].
+    position_mm : numpy.ndarray
+        (n_pairs, n_nodes, 3) contact points [mm].
+    across : numpy.ndarray
+        (n_pairs, n_nodes, 3) across directions.
+    kind : numpy.ndarray
+        (n_pairs, n_nodes) contact kinds.
+    pressure_MPa : numpy.ndarray
+        (n_pairs, n_nodes, n_across) [MPa].
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.ltca import cycle_positions, loaded_contact
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> lc = loaded_contact(pair, 100.0, cycle_positions(pair, 3), n_nodes=11)  # N m on the pinion
+    >>> pm = lc.pressure_map(1, n_across=5)
+    >>> pm.pressure_MPa.shape, bool(np.isclose(np.nanmax(pm.pressure_MPa), lc.max_pressure_MPa[1]))
+    ((9, 11, 5), True)
+    """
 
     pairs: np.ndarray
     z_mm: np.ndarray
@@ -55,7 +118,47 @@ class CycleSummary:
     ``max_contact_pressure_MPa``: on the flanks (tip edges apart); ``tip_edge_*``: positions where
     a tip edge carries load, the largest share of the normal load it carries and its Hertz pressure
     (for the stated edge radius); ``face_end_contact_positions``: positions where the load reaches
-    a face end (of member 1, or member 2's inside member 1's face)."""
+    a face end (of member 1, or member 2's inside member 1's face).
+
+    Parameters
+    ----------
+    torque_Nm : float
+        [N m].
+    normal_load_N : float
+        Mean normal load [N].
+    lte_peak_to_peak_urad, lte_peak_to_peak_um : float
+        Peak-to-peak loaded TE [urad, um].
+    mesh_stiffness_mean_N_per_mm_um : float
+        Mean mesh stiffness [N/(mm um)].
+    single_pair_stiffness_max_N_per_mm_um : float
+        Largest stiffness where one pair is loaded [N/(mm um)].
+    max_contact_pressure_MPa : float
+        [MPa].
+    load_share_max, load_share_min : float
+        Largest and smallest share of the most loaded pair [1].
+    tip_edge_contact_positions : int
+        Positions with a loaded tip edge.
+    tip_edge_load_share_max : float
+        [1].
+    max_tip_edge_pressure_MPa : float
+        [MPa].
+    face_end_contact_positions : int
+        Positions where the load reaches a face end.
+    n_positions, n_failed : int
+        Positions, and those not converged.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.ltca import cycle_positions, loaded_contact
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> s = loaded_contact(pair, 100.0, cycle_positions(pair, 3), n_nodes=11).summary()  # N m
+    >>> s.n_positions, s.n_failed, s.load_share_max, s.tip_edge_contact_positions  # one pair alone at the pitch point
+    (3, 0, 1.0, 0)
+    """
 
     torque_Nm: float
     normal_load_N: float
@@ -78,18 +181,61 @@ class CycleSummary:
 class LoadedContact:
     """Loaded contact of a pair at mesh positions (arrays over positions unless noted).
 
-    phi1_rad; te_unloaded_rad (rigid TCA); te_loaded_rad; lte_urad, lte_um (loaded TE in micro-radians
-    of member 2 and in micrometres along the transverse line of action, r_b2 TE); normal_load_N (sum of
-    the loads); pair_load_N (n_pos, n_pairs) per tooth pair; pairs_loaded; max_pressure_MPa (on
-    the flanks, tip edges apart); tip_edge_load_N and tip_edge_pressure_MPa (load carried at tip
-    edges and its largest Hertz pressure for the edge radius ``separations.edge_radius_mm``; a sharp
-    edge has none); face_end_load_N (load carried by nodes at a face end);
-    mesh_stiffness_N_per_um (transverse base tangential force / elastic transverse approach r_b2
-    (TE_unloaded - TE_loaded)) and per face width ``_N_per_mm_um``; moment_residual (relative torque
-    balance); iterations (fixed-point iterations); status (:class:`gearrep.solve.Status`; NaN results
-    where not CONVERGED). Per node (n_pos, n_pairs, n_nodes): node_load_N, pressure_MPa (peak of
-    the Hertz strip), half_width_mm. ``separations`` holds the geometry of the last refinement
-    (:class:`Separations`); ``passes`` the number of node placements (1 + refinements).
+    Parameters
+    ----------
+    torque_Nm : float
+        Torque on the driving member [N m].
+    driving : {"pinion", "gear"}
+        The driving member.
+    face_width_mm : float
+        [mm].
+    separations : Separations
+        The geometry of the last refinement.
+    phi1_rad : numpy.ndarray
+        Member-1 angles [rad].
+    te_unloaded_rad, te_loaded_rad : numpy.ndarray
+        Rigid TCA and loaded TE [rad].
+    lte_urad, lte_um : numpy.ndarray
+        Loaded TE in micro-radians of member 2 and in micrometres along the transverse line of
+        action (r_b2 TE).
+    normal_load_N : numpy.ndarray
+        Sum of the loads [N].
+    pair_load_N : numpy.ndarray
+        (n_pos, n_pairs) per tooth pair [N].
+    pairs_loaded : numpy.ndarray
+        Tooth pairs carrying load.
+    max_pressure_MPa : numpy.ndarray
+        On the flanks, tip edges apart [MPa].
+    tip_edge_load_N, tip_edge_pressure_MPa : numpy.ndarray
+        Load carried at tip edges [N] and its largest Hertz pressure [MPa] for the edge radius
+        ``separations.edge_radius_mm`` (a sharp edge has none).
+    face_end_load_N : numpy.ndarray
+        Load carried by nodes at a face end [N].
+    mesh_stiffness_N_per_um, mesh_stiffness_N_per_mm_um : numpy.ndarray
+        Transverse base tangential force / elastic transverse approach r_b2 (TE_unloaded -
+        TE_loaded) [N/um], and per face width [N/(mm um)].
+    moment_residual : numpy.ndarray
+        Relative torque balance.
+    iterations : numpy.ndarray
+        Fixed-point iterations.
+    status : numpy.ndarray
+        :class:`gearrep.solve.Status`; NaN results where not CONVERGED.
+    node_load_N, pressure_MPa, half_width_mm : numpy.ndarray
+        Per node (n_pos, n_pairs, n_nodes): load [N], peak of the Hertz strip [MPa], half-width [mm].
+    passes : int
+        Node placements (1 + refinements).
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.ltca import loaded_contact
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> lc = loaded_contact(pair, 100.0, [0.0], n_nodes=11)  # N m, rad
+    >>> lc.converged.tolist(), bool(lc.te_loaded_rad[0] < lc.te_unloaded_rad[0])  # the load holds member 2 back
+    ([True], True)
     """
 
     torque_Nm: float
@@ -120,10 +266,17 @@ class LoadedContact:
 
     @property
     def converged(self) -> np.ndarray:
+        """(n_pos,) bool, status CONVERGED."""
         return self.status == Status.CONVERGED
 
     def summary(self) -> CycleSummary:
-        """Cycle results over the converged positions (NaN if none)."""
+        """Cycle results over the converged positions (NaN if none).
+
+        Returns
+        -------
+        CycleSummary
+            One row of cycle results.
+        """
         ok = self.converged
         nan = float("nan")
 
@@ -156,7 +309,25 @@ class LoadedContact:
         )
 
     def pressure_map(self, position: int, n_across: int = 21) -> PressureMap:
-        """Semi-elliptic Hertz pressure across every loaded node of position ``position`` (index)."""
+        """Semi-elliptic Hertz pressure across every loaded node of position ``position`` (index).
+
+        Parameters
+        ----------
+        position : int
+            Index of the position.
+        n_across : int, optional
+            Points across the contact line, >= 3.
+
+        Returns
+        -------
+        PressureMap
+            The pressures [MPa].
+
+        Raises
+        ------
+        ValueError
+            If ``n_across`` is not an integer >= 3.
+        """
         i = int(position)
         n = check_integer("n_across", n_across, 3)
         b = self.half_width_mm[i]
@@ -366,6 +537,65 @@ def loaded_contact(
     the root radius); ``pairs``: tooth-pair offsets (default -4 ... 4); ``tol``: relative load
     change that ends the fixed-point iteration; ``maxiter`` its limit. The flanks must be of a
     family of :data:`gearrep.ltca.SUPPORTED` (ValueError otherwise).
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        The pair.
+    torque_Nm : float
+        Torque on the driving member [N m].
+    phi1 : array_like, optional
+        Member-1 angles [rad].
+    driving : {"pinion", "gear"}, optional
+        The driving member.
+    materials : Material or (Material, Material), optional
+        Of both members, or of each.
+    n_nodes : int, optional
+        Nodes along the face.
+    refine : bool, optional
+        Place the nodes again over a narrow loaded span.
+    coupling : bool, optional
+        The half-space coupling of the nodes.
+    tooth_bending : bool, optional
+        Include the tooth compliance.
+    edge_radius_mm : float, optional
+        Tip-edge radius [mm].
+    bore_radius_mm : (float or None, float or None), optional
+        Gear-body bores [mm].
+    pairs : array_like of int, optional
+        Tooth-pair offsets.
+    tol : float, optional
+        Relative load change that ends the fixed-point iteration.
+    maxiter : int, optional
+        Its limit.
+
+    Returns
+    -------
+    LoadedContact
+        The results per position.
+
+    Raises
+    ------
+    ValueError
+        Before any solve: a pair of an unsupported family, a torque that is not > 0, an unknown
+        driving member, a bad material, bore or solver setting.
+
+    Examples
+    --------
+    A spur pair under 100 N m: the normal load is the torque over the pinion's base radius, carried
+    by two tooth pairs at the ends of the cycle and one at the pitch point:
+
+    >>> import math
+    >>> from gearrep.ltca import cycle_positions, loaded_contact
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> lc = loaded_contact(pair, 100.0, cycle_positions(pair, 3), n_nodes=11)  # N m
+    >>> lc.status.tolist(), lc.pairs_loaded.tolist(), round(float(100e3 / g1.r_b), 1)  # N
+    ([0, 0, 0], [2, 1, 2], 3084.6)
+    >>> [round(float(f), 1) for f in lc.normal_load_N]  # N
+    [3084.6, 3084.6, 3084.6]
     """
     T, materials = _check_inputs(pair, torque_Nm, driving, materials, tol, maxiter, bore_radius_mm)
     m1, m2 = members(pair)

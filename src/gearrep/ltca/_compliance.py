@@ -92,7 +92,30 @@ SHEAR_FACTOR = 1.2
 class Material:
     """Isotropic elastic material of a gear member: Young's modulus ``E_MPa`` [MPa] > 0 and Poisson
     ratio ``poisson`` in (-1, 0.5]. The default is steel, 206 000 MPa and 0.3 (ISO 6336-2's
-    reference for Z_E = 189.8 sqrt(MPa))."""
+    reference for Z_E = 189.8 sqrt(MPa)).
+
+    Parameters
+    ----------
+    E_MPa : float, optional
+        Young's modulus [MPa], > 0.
+    poisson : float, optional
+        Poisson ratio [1], in (-1, 0.5].
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    >>> from gearrep.ltca import STEEL, Material
+    >>> Material() == STEEL, STEEL.E_MPa, STEEL.poisson  # MPa, 1
+    (True, 206000.0, 0.3)
+    >>> Material(200000.0, 0.6)
+    Traceback (most recent call last):
+        ...
+    ValueError: poisson must be in (-1, 0.5], got 0.6
+    """
 
     E_MPa: float = 206000.0
     poisson: float = 0.3
@@ -104,6 +127,7 @@ class Material:
             raise ValueError(f"poisson must be in (-1, 0.5], got {self.poisson!r}")
 
 
+#: structural steel, 206 000 MPa and 0.3 (the default material)
 STEEL = Material()
 
 
@@ -113,19 +137,45 @@ class ToothCompliance:
 
     Parameters
     ----------
-    member : a flank of a supported family (:data:`gearrep.ltca.SUPPORTED`) or its
-        :class:`gearrep.ltca._families.Member`
-    material : :class:`Material`
-    bore_radius_mm : radius of the gear body's bore [mm], default half the root radius (h_f = 2);
-        must be below the root radius
-    n_gauss : Gauss-Legendre nodes of the beam integrals
+    member : gearrep.surface.Surface
+        A flank of a supported family (:data:`gearrep.ltca.SUPPORTED`) or its
+        :class:`gearrep.ltca._families.Member`.
+    material : Material, optional
+        The member's material.
+    bore_radius_mm : float, optional
+        Radius of the gear body's bore [mm], default half the root radius (h_f = 2); must be below
+        the root radius.
+    n_gauss : int, optional
+        Gauss-Legendre nodes of the beam integrals.
 
+    Raises
+    ------
+    ValueError
+        If the flank's family is not supported, ``material`` is not a :class:`Material` or the bore
+        is not inside the root circle.
+
+    Notes
+    -----
     The section is read from the flank (:mod:`gearrep.ltca._families`): the tooth half angle theta
     at each radius, about the section's centre line, down to the root circle (an involute tooth with
     the root fillet of the basic rack's tip radius, a CATT tooth continued radially below its
     working profile). Where the
     section changes along the face (CATT) the compliance is computed with the two tabulated
     sections around the contact's axial position and interpolated linearly between them.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.ltca import ToothCompliance
+    >>> from gearrep.surfaces.involute import InvoluteGearData, mating_flanks
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> tooth = ToothCompliance(mating_flanks(g1, g2)[0])  # the pinion's, steel
+    >>> c_low, c_high = tooth.compliance([33.0, 36.0], 0.0)  # radius [mm], axial position [mm] -> mm^2/N
+    >>> bool(0 < c_low < c_high)  # a load nearer the tip bends the tooth more
+    True
+    >>> bool(np.isclose(sum(tooth.terms(36.0).values()), c_high, rtol=1e-12))  # the four terms
+    True
     """
 
     def __init__(self, member, material: Material = STEEL, bore_radius_mm=None, *, n_gauss: int = 64):
@@ -152,7 +202,18 @@ class ToothCompliance:
         """(alpha_F [rad], y_F [mm], h [mm], theta_c [rad]) at flank parameters (u, v) (for an
         involute flank u = radius, v = axial position): load angle, where the load line meets the
         centre line, the distance from the contact point to the centre line along the load line, and
-        the contact point's angle from the centre line."""
+        the contact point's angle from the centre line.
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters [mm for an involute flank].
+
+        Returns
+        -------
+        alpha_F, y_F, h, theta_c : numpy.ndarray
+            [rad], [mm], [mm], [rad].
+        """
         m = self.member
         u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
         P = m.base.evaluate(u, v)
@@ -167,7 +228,18 @@ class ToothCompliance:
     def cantilever_length(self, u, v=0.0) -> np.ndarray:
         """Length [mm] of the tooth as a cantilever at flank parameters (u, v): from the root chord to
         where the load line meets the centre line (y_F - y_root), the length of the plate whose
-        bending spreads a load along the face (:func:`plate_kernel`)."""
+        bending spreads a load along the face (:func:`plate_kernel`).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters [mm for an involute flank].
+
+        Returns
+        -------
+        numpy.ndarray
+            H [mm].
+        """
         y_F = self.load_geometry(u, v)[1]
         m = self.member
         y0 = self._y[:, 0]
@@ -203,7 +275,23 @@ class ToothCompliance:
 
     def terms(self, u, v=0.0) -> dict:
         """The terms of :meth:`compliance` [mm^2/N] (bending, shear, compression, foundation) at
-        flank parameters (u, v) of a section that does not change along the face (involute)."""
+        flank parameters (u, v) of a section that does not change along the face (involute).
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters [mm].
+
+        Returns
+        -------
+        dict
+            ``{"bending", "shear", "compression", "foundation"}`` [mm^2/N].
+
+        Raises
+        ------
+        ValueError
+            If the section changes along the face (a CATT tooth).
+        """
         if not self.member.z_independent:
             raise ValueError("terms() needs a tooth section that is the same along the face (an involute flank)")
         alpha, y_F, _, _ = self.load_geometry(u, v)
@@ -212,7 +300,18 @@ class ToothCompliance:
     def compliance(self, u, v=0.0) -> np.ndarray:
         """Tooth compliance [mm^2 / N] (deflection along the load line per unit load per unit length
         of contact line) at flank parameters (u, v); the sum of the four terms of the module
-        docstring."""
+        docstring.
+
+        Parameters
+        ----------
+        u, v : float or array_like
+            Flank parameters [mm for an involute flank].
+
+        Returns
+        -------
+        numpy.ndarray
+            [mm^2/N].
+        """
         alpha, y_F, _, _ = self.load_geometry(u, v)
         m = self.member
         if m.z_independent:
@@ -233,14 +332,60 @@ class ToothCompliance:
 
 def contact_half_width_mm(w_N_per_mm, k_rel_per_mm, Estar_MPa) -> np.ndarray:
     """Hertz line-contact half-width b_H = sqrt(4 w / (pi E* k)) [mm] (Johnson eq 4.45) for the load
-    per unit length ``w`` [N/mm] >= 0 (0 gives 0), relative curvature across the line ``k`` [1/mm]."""
+    per unit length ``w`` [N/mm] >= 0 (0 gives 0), relative curvature across the line ``k`` [1/mm].
+
+    Parameters
+    ----------
+    w_N_per_mm : float or array_like
+        Load per unit length [N/mm].
+    k_rel_per_mm : float or array_like
+        Relative curvature [1/mm], > 0.
+    Estar_MPa : float
+        Effective modulus E* [MPa] (:func:`gearrep.ellipse.effective_modulus`).
+
+    Returns
+    -------
+    numpy.ndarray
+        b_H [mm].
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import effective_modulus
+    >>> from gearrep.ltca import contact_half_width_mm
+    >>> Es = effective_modulus(206000.0, 0.3, 206000.0, 0.3)  # steel on steel [MPa]
+    >>> round(float(contact_half_width_mm(100.0, 0.05, Es)), 6), float(contact_half_width_mm(0.0, 0.05, Es))  # mm
+    (0.149993, 0.0)
+    """
     w = np.asarray(w_N_per_mm, dtype=float)
     return np.sqrt(4.0 * np.maximum(w, 0.0) / (np.pi * Estar_MPa * np.asarray(k_rel_per_mm, dtype=float)))
 
 
 def line_contact_pressure_MPa(w_N_per_mm, k_rel_per_mm, Estar_MPa) -> np.ndarray:
     """Maximum Hertz line-contact pressure sqrt(w E* k / pi) [MPa] (Johnson eq 4.45; the formula of
-    :func:`gearrep.ellipse.hertz_line_max_pressure_MPa`, here accepting zero loads, which give 0)."""
+    :func:`gearrep.ellipse.hertz_line_max_pressure_MPa`, here accepting zero loads, which give 0).
+
+    Parameters
+    ----------
+    w_N_per_mm : float or array_like
+        Load per unit length [N/mm].
+    k_rel_per_mm : float or array_like
+        Relative curvature [1/mm].
+    Estar_MPa : float
+        Effective modulus E* [MPa].
+
+    Returns
+    -------
+    numpy.ndarray
+        p_max [MPa].
+
+    Examples
+    --------
+    >>> from gearrep.ellipse import effective_modulus
+    >>> from gearrep.ltca import line_contact_pressure_MPa
+    >>> Es = effective_modulus(206000.0, 0.3, 206000.0, 0.3)  # MPa
+    >>> round(float(line_contact_pressure_MPa(100.0, 0.05, Es)), 3)  # 100 N/mm, 1/mm -> MPa
+    424.432
+    """
     w = np.asarray(w_N_per_mm, dtype=float)
     return np.sqrt(np.maximum(w, 0.0) * Estar_MPa * np.asarray(k_rel_per_mm, dtype=float) / np.pi)
 
@@ -248,7 +393,30 @@ def line_contact_pressure_MPa(w_N_per_mm, k_rel_per_mm, Estar_MPa) -> np.ndarray
 def weber_contact_approach_mm(w_N_per_mm, k_rel_per_mm, h1_mm, h2_mm, material1: Material, material2: Material):
     """Weber's approach [mm] of two tooth flanks in line contact under the load ``w`` [N/mm] per unit
     length (module docstring); ``h1_mm``, ``h2_mm`` the distances of the contact point from the
-    tooth centre lines along the load line. 0 where w = 0."""
+    tooth centre lines along the load line. 0 where w = 0.
+
+    Parameters
+    ----------
+    w_N_per_mm : float or array_like
+        Load per unit length [N/mm].
+    k_rel_per_mm : float or array_like
+        Relative curvature across the line [1/mm].
+    h1_mm, h2_mm : float or array_like
+        Distances of the contact point from the two tooth centre lines along the load line [mm].
+    material1, material2 : Material
+        The members' materials.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta_H [mm].
+
+    Examples
+    --------
+    >>> from gearrep.ltca import STEEL, weber_contact_approach_mm
+    >>> round(float(weber_contact_approach_mm(100.0, 0.05, 5.0, 5.0, STEEL, STEEL)), 7)  # N/mm, 1/mm, mm -> mm
+    0.0022416
+    """
     w = np.maximum(np.asarray(w_N_per_mm, dtype=float), 0.0)
     Es = float(effective_modulus(material1.E_MPa, material1.poisson, material2.E_MPa, material2.poisson))
     b = contact_half_width_mm(w, k_rel_per_mm, Es)
@@ -271,7 +439,36 @@ def half_space_segment_mm2_per_N(x1, x2, lateral_mm, depth_mm, material: Materia
     the segment integral of the difference between z = 0 and z = h is in closed form (asinh). Over
     an infinite line with the lateral offset y_e = (b/2) exp(-1/2) this is exactly Weber's
     line-contact approach for a Hertz strip of half-width b (:func:`weber_contact_approach_mm`, to
-    O((b/h)^2)): the mean of ln|y| over the semi-elliptic pressure is ln(b/2) - 1/2."""
+    O((b/h)^2)): the mean of ln|y| over the semi-elliptic pressure is ln(b/2) - 1/2.
+
+    Parameters
+    ----------
+    x1, x2 : float or array_like
+        Ends of the loaded segment along the line [mm].
+    lateral_mm : float or array_like
+        Lateral offset of the line from the point [mm], > 0.
+    depth_mm : float or array_like
+        Depth of the reference point [mm].
+    material : Material
+        The body's material.
+
+    Returns
+    -------
+    numpy.ndarray
+        [mm per N/mm].
+
+    Examples
+    --------
+    Over a long line at the offset of a Hertz strip, both bodies together give Weber's approach:
+
+    >>> from gearrep.ellipse import effective_modulus
+    >>> from gearrep.ltca import STEEL, contact_half_width_mm, half_space_segment_mm2_per_N, weber_contact_approach_mm
+    >>> b = float(contact_half_width_mm(100.0, 0.05, effective_modulus(206000.0, 0.3, 206000.0, 0.3)))  # mm
+    >>> y_e = 0.5 * b * 2.718281828459045**-0.5  # the strip's equivalent offset [mm]
+    >>> one = float(half_space_segment_mm2_per_N(-1e6, 1e6, y_e, 5.0, STEEL))  # mm per N/mm
+    >>> round(2 * 100.0 * one / float(weber_contact_approach_mm(100.0, 0.05, 5.0, 5.0, STEEL, STEEL)), 4)
+    1.0
+    """
     a = np.asarray(lateral_mm, dtype=float)
     surf = _surface_coefficient(material) * (np.arcsinh(x2 / a) - np.arcsinh(x1 / a))
     return surf - _depth_term(x1, x2, a, np.asarray(depth_mm, dtype=float), material)
@@ -310,7 +507,27 @@ def cantilever_plate_ratio(q, nu: float) -> np.ndarray:
     (no overflow for large k; below q = 0.05, where it degenerates, the quadratic Taylor form) gives w(H); this is the Fourier form of Jaramillo's concentrated load
     on a cantilever plate of infinite length (J. Appl. Mech. 17 (1950) 67-72), applied to gear
     teeth by Wellauer & Seireg (J. Eng. Ind. 82 (1960) 213-222). R(0) = 1, R ~ 6 / ((1 - nu)(3 + nu) q^3)
-    for large q."""
+    for large q.
+
+    Parameters
+    ----------
+    q : float or array_like
+        k H [1], >= 0.
+    nu : float
+        Poisson ratio [1].
+
+    Returns
+    -------
+    numpy.ndarray
+        R(q) [1].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.ltca import cantilever_plate_ratio
+    >>> np.round(cantilever_plate_ratio([0.0, 1.0, 10.0], 0.3), 6).tolist()
+    [1.0, 0.635465, 0.002597]
+    """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     out = np.ones_like(q)
     small = q < _Q_SMALL  # the basis degenerates as q -> 0: R is even in q, R = 1 + (R(q_s) - 1) (q/q_s)^2
@@ -375,7 +592,27 @@ def plate_kernel(u, nu: float) -> np.ndarray:
     beam value (odd in u, P(+-inf) = +-1/2). The deflection at a point due to a load on [x1, x2] is
     (P(x2/H) - P(x1/H)) times the slice compliance; over a uniformly loaded face it is the slice
     compliance itself. Tabulated once per nu (:func:`_plate_table`) and interpolated; 1/2 beyond
-    |u| = 20, where the kernel's remainder is below 1e-6."""
+    |u| = 20, where the kernel's remainder is below 1e-6.
+
+    Parameters
+    ----------
+    u : float or array_like
+        Load extent over the cantilever length [1].
+    nu : float
+        Poisson ratio [1].
+
+    Returns
+    -------
+    numpy.ndarray
+        P(u) [1].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.ltca import plate_kernel
+    >>> np.round(plate_kernel([-30.0, 0.0, 1.0, 30.0], 0.3), 4).tolist()
+    [-0.5, 0.0, 0.362, 0.5]
+    """
     key = round(float(nu), 12)
     if key not in _PLATE_TABLES:
         _PLATE_TABLES[key] = _plate_table(key)

@@ -35,11 +35,31 @@ __all__ = ["ContactLoads", "solve_contact_loads", "solve_checked"]
 class ContactLoads:
     """Solution of the contact problem.
 
-    loads_N : (n,) loads F_j >= 0 [N]; rotation : theta (driving member's rotation that closes the
-    gaps) [rad]; gaps_mm : (n,) deformed gaps (0 where loaded); moment_residual : |h.F - M| / M;
-    complementarity : max_j F_j gap_j / (M max h) (relative; 0 at the exact solution);
-    iterations, status : :class:`gearrep.solve.Status` (NOT_CONVERGED at the iteration limit,
-    SINGULAR if a working-set system could not be solved)
+    Parameters
+    ----------
+    loads_N : numpy.ndarray
+        (n,) loads F_j >= 0 [N].
+    rotation : float
+        theta, the driving member's rotation that closes the gaps [rad].
+    gaps_mm : numpy.ndarray
+        (n,) deformed gaps [mm] (0 where loaded).
+    moment_residual : float
+        |h.F - M| / M.
+    complementarity : float
+        max_j F_j gap_j / (M max h) (relative; 0 at the exact solution).
+    iterations : int
+        Working-set changes.
+    status : int
+        :class:`gearrep.solve.Status` (NOT_CONVERGED at the iteration limit, SINGULAR if a
+        working-set system could not be solved).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.ltca import solve_contact_loads
+    >>> loads = solve_contact_loads(np.array([1e-5, 1e-5]), [0.0, 0.002], [30.0, 30.0], 3000.0)  # mm/N, mm, mm, N mm
+    >>> loads.loads_N.tolist(), np.round(loads.gaps_mm, 9).tolist(), loads.status  # N, mm
+    ([100.0, 0.0], [0.0, 0.001], 0)
     """
 
     loads_N: np.ndarray
@@ -102,6 +122,43 @@ def solve_contact_loads(
     ``maxiter`` defaults to 3 n + 10 working-set changes; ``working`` an initial guess of the loaded
     points (indices; default those of smallest s/h), used only if it gives non-negative loads (else
     the whole load on the point of smallest s/h, a feasible start).
+
+    Parameters
+    ----------
+    C : array_like
+        (n, n) compliance matrix, or its diagonal (n,) [mm/N], positive definite.
+    s : array_like
+        (n,) initial separations [mm], >= 0.
+    h : array_like
+        (n,) moment arms [mm], > 0.
+    moment : float
+        Applied moment M [N mm], > 0.
+    tol : float, optional
+        Relative tolerance of the gap and load tests.
+    maxiter : int, optional
+        Working-set changes at most.
+    working : array_like of int, optional
+        Initial loaded points.
+
+    Returns
+    -------
+    ContactLoads
+        The loads, gaps and the solve record.
+
+    Raises
+    ------
+    ValueError
+        If the shapes or values are out of range.
+
+    Examples
+    --------
+    Two equal springs, the second one 0.1 um farther away: both carry load, the nearer more.
+
+    >>> import numpy as np
+    >>> from gearrep.ltca import solve_contact_loads
+    >>> r = solve_contact_loads(np.array([1e-5, 1e-5]), [0.0, 1e-4], [30.0, 30.0], 3000.0)  # mm/N, mm, mm, N mm
+    >>> np.round(r.loads_N, 9).tolist(), r.status  # N
+    ([55.0, 45.0], 0)
     """
     C, s, h = _check(C, s, h, moment)
     return solve_checked(C, s, h, float(moment), tol=tol, maxiter=maxiter, working=working)

@@ -80,7 +80,29 @@ def _supported(flank) -> bool:
 
 def refusal(flank) -> str:
     """Why the loaded analysis refuses ``flank`` (a mounted flank, or the surface of a generated
-    member): its class and the reason, one line; "" for a flank of a :data:`SUPPORTED` family."""
+    member): its class and the reason, one line; "" for a flank of a :data:`SUPPORTED` family.
+
+    Parameters
+    ----------
+    flank : gearrep.surface.Surface
+        A flank as mounted in a pair, or a member's surface.
+
+    Returns
+    -------
+    str
+        The refusal (class name and reason), or "" where the loaded analysis supports the flank.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.ltca import refusal
+    >>> from gearrep.surfaces.bevel import BevelGearData, SphericalInvoluteFlank
+    >>> from gearrep.surfaces.involute import InvoluteFlank, InvoluteGearData
+    >>> refusal(InvoluteFlank(InvoluteGearData(20, 2.0, math.radians(20), 20.0), 1, 1))  # module mm, rad, face mm
+    ''
+    >>> refusal(SphericalInvoluteFlank(BevelGearData(17, 17, 1.0, math.radians(20), 4.0), 1)).split(" (")[0]
+    'SphericalInvoluteFlank'
+    """
     if _supported(flank):
         return ""
     base, _, _ = base_flank(flank)

@@ -71,7 +71,39 @@ _FACE2 = (4, 5)  # the systems of member 2's two face ends (both recorded as kin
 def face_nodes(m1: Member, n_nodes: int, windows=None):
     """Node positions z [mm] along member 1's axis and their tributary widths [mm]: ``n_nodes``
     equally spaced over the face (default) or over each window (..., 2) = (z_a, z_b) inside it,
-    the end nodes on the window's ends with half a spacing each."""
+    the end nodes on the window's ends with half a spacing each.
+
+    Parameters
+    ----------
+    m1 : gearrep.ltca._families.Member
+        Member 1's tooth (``ToothCompliance(flank).member``).
+    n_nodes : int
+        Nodes per window, >= 2.
+    windows : array_like, optional
+        (..., 2) axial windows [mm] (default the face).
+
+    Returns
+    -------
+    z : numpy.ndarray
+        (..., n_nodes) node positions [mm].
+    width : numpy.ndarray
+        (..., n_nodes) tributary widths [mm].
+
+    Raises
+    ------
+    ValueError
+        If ``n_nodes`` is not an integer >= 2 or the face is not finite.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.ltca import ToothCompliance, face_nodes
+    >>> from gearrep.surfaces.involute import InvoluteGearData, mating_flanks
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> z, width = face_nodes(ToothCompliance(mating_flanks(g1, g2)[0]).member, 5)
+    >>> z.tolist(), width.tolist()  # mm over the 25 mm face
+    ([-12.5, -6.25, 0.0, 6.25, 12.5], [3.125, 6.25, 6.25, 6.25, 3.125])
+    """
     if isinstance(n_nodes, bool) or not isinstance(n_nodes, (int, np.integer)) or n_nodes < 2:
         raise ValueError(f"n_nodes must be an integer >= 2, got {n_nodes!r}")
     lo, hi = m1.z_lo, m1.z_hi
@@ -269,7 +301,44 @@ def section_contacts(pair: GearPair, phi1, z, start=None, *, tol: float = 1e-10,
     angles ``phi1`` (equal-length arrays; module docstring). ``start`` (n, 5) = (u1, v1, u2, v2,
     phi2), default the family's closed form. ``sense`` (+1/-1) orders the candidates (the first
     touch has the largest sense x TE; default from the interior tangencies' moment arms). Returns (:class:`gearrep.tca.ContactPoints`, kind
-    (n,)); status CONVERGED only where a candidate lies on both working flanks."""
+    (n,)); status CONVERGED only where a candidate lies on both working flanks.
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        The pair (flanks of a supported family).
+    phi1 : float or array_like
+        Member-1 angles [rad].
+    z : float or array_like
+        Axial positions of the sections [mm].
+    start : array_like, optional
+        (n, 5) starts [mm, rad].
+    tol : float, optional
+        Residual tolerance [mm].
+    maxiter : int, optional
+        Iteration limit.
+    sense : {1, -1}, optional
+        The order of the candidates.
+
+    Returns
+    -------
+    contacts : gearrep.tca.ContactPoints
+        One row per section.
+    kind : numpy.ndarray
+        (n,) :data:`KINDS` key, 0 none.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.ltca import section_contacts
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> c, kind = section_contacts(pair, [0.0, 0.0], [0.0, 10.0])  # rad, mm
+    >>> c.status_name.tolist(), kind.tolist(), bool(c.te[1] < c.te[0])  # the crowned section touches later
+    (['converged', 'converged'], [1, 1], True)
+    """
     m1, m2 = members(pair)
     phi1, z = np.broadcast_arrays(np.asarray(phi1, float).ravel(), np.asarray(z, float).ravel())
     phi1, z = phi1.copy(), z.copy()
@@ -368,18 +437,55 @@ def _common_face(pair, m1, m2, phi_eff, windows, x, st, tol, maxiter):
 class Separations:
     """First touches of every tooth pair and node at each position, shape (n_pos, n_pairs, n_nodes).
 
-    pairs : (n_pairs,) tooth-pair offsets k; z_mm, width_mm : node positions along member 1's axis
-    and tributary face widths; contacts : :class:`gearrep.tca.ContactPoints` of all rows (flattened
-    in that order; ``normal`` = the contact force's line); kind : :data:`KINDS` key, 0 none;
-    in_contact : a candidate on both flanks; expected : the family's closed-form start lies inside
-    both flanks with a margin (a node that must be found: a failure there makes the position
-    NOT_CONVERGED); sense : +1 if member 1 drives these flanks turning by increasing phi1 (moment
-    arms positive), -1 if by decreasing phi1; te_rad : TE at which the node touches;
-    te_rigid_rad : (n_pos,) unloaded TE (the first touch); gap_mm : initial separation (NaN where
-    not a candidate); arm1_mm, arm2_mm : signed moment arms of the force line about the axes;
-    k_rel_per_mm : relative curvature across the contact line (with 1/edge_radius_mm at a tip
-    edge); across : (..., 3) unit direction across the line; line_length_mm : contact-line length
-    of the node; edge_radius_mm : the tip-edge radius used.
+    Parameters
+    ----------
+    phi1_rad : numpy.ndarray
+        (n_pos,) member-1 angles [rad].
+    pairs : numpy.ndarray
+        (n_pairs,) tooth-pair offsets k.
+    z_mm, width_mm : numpy.ndarray
+        Node positions along member 1's axis and tributary face widths [mm].
+    contacts : gearrep.tca.ContactPoints
+        All rows (flattened in that order; ``normal`` = the contact force's line).
+    kind : numpy.ndarray
+        :data:`KINDS` key, 0 none.
+    in_contact : numpy.ndarray
+        A candidate on both flanks.
+    expected : numpy.ndarray
+        The family's closed-form start lies inside both flanks with a margin (a node that must be
+        found: a failure there makes the position NOT_CONVERGED).
+    sense : int
+        +1 if member 1 drives these flanks turning by increasing phi1 (moment arms positive), -1 if
+        by decreasing phi1.
+    te_rad : numpy.ndarray
+        TE at which the node touches [rad].
+    te_rigid_rad : numpy.ndarray
+        (n_pos,) unloaded TE (the first touch) [rad].
+    gap_mm : numpy.ndarray
+        Initial separation [mm] (NaN where not a candidate).
+    arm1_mm, arm2_mm : numpy.ndarray
+        Signed moment arms of the force line about the axes [mm].
+    k_rel_per_mm : numpy.ndarray
+        Relative curvature across the contact line [1/mm] (with 1/edge_radius_mm at a tip edge).
+    across : numpy.ndarray
+        (..., 3) unit direction across the line.
+    line_length_mm : numpy.ndarray
+        Contact-line length of the node [mm].
+    edge_radius_mm : float
+        The tip-edge radius used [mm].
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.ltca import initial_separations
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> sep = initial_separations(pair, [0.0], n_nodes=5, pairs=[0])  # rad
+    >>> sep.shape, sep.kind.tolist(), np.round(sep.gap_mm * 1e3, 3).tolist()  # the crown's gaps [um]
+    ((1, 1, 5), [[[1, 1, 1, 1, 1]]], [[[15.625, 3.906, 0.0, 3.906, 15.625]]])
     """
 
     phi1_rad: np.ndarray
@@ -403,6 +509,7 @@ class Separations:
 
     @property
     def shape(self) -> tuple:
+        """(n_pos, n_pairs, n_nodes)."""
         return self.in_contact.shape
 
     @property
@@ -514,7 +621,54 @@ def initial_separations(
     (default a tenth of member 1's module); ``margin``: fraction of each flank's profile span and
     face width inside which a closed-form start counts as an expected contact. ``previous`` and
     ``keep`` (n_pos, n_pairs): the tooth pairs whose nodes are those of ``previous`` (their windows
-    its node ranges) are taken from it, not solved again."""
+    its node ranges) are taken from it, not solved again.
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        The pair (flanks of a supported family).
+    phi1 : float or array_like
+        Member-1 angles [rad], finite.
+    n_nodes : int, optional
+        Nodes per tooth pair.
+    windows : array_like, optional
+        (n_pos, n_pairs, 2) axial windows [mm].
+    pairs : array_like of int, optional
+        Tooth-pair offsets.
+    edge_radius_mm : float, optional
+        Tip-edge radius [mm], > 0.
+    tol : float, optional
+        Residual tolerance of the section solves [mm].
+    margin : float, optional
+        Fraction of the flank spans [1].
+    previous : Separations, optional
+        Separations to reuse.
+    keep : array_like of bool, optional
+        (n_pos, n_pairs) the tooth pairs taken from ``previous``.
+
+    Returns
+    -------
+    Separations
+        The first touches.
+
+    Raises
+    ------
+    ValueError
+        If an angle is not finite, the edge radius is not > 0 or the windows have another shape.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.ltca import KINDS, initial_separations
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> sep = initial_separations(pair, [0.0], n_nodes=5, pairs=[-1, 0, 1])  # rad
+    >>> [KINDS[k] for k in sep.kind[0, :, 2]], np.round(sep.gap_mm[0, :, 2] * 1e3, 1).tolist()  # mid-face, um
+    (['tip1', 'interior', 'interior'], [398.9, 0.0, 0.0])
+    """
     m1, m2 = members(pair)
     phi1 = np.atleast_1d(np.asarray(phi1, dtype=float))
     if phi1.ndim != 1 or not np.all(np.isfinite(phi1)):

@@ -44,6 +44,39 @@ def findings(
     3. the errata we found in the paper (``errata``: rows of data/errata.csv for this paper);
     4. what is reproduced in full, table by table, in the paper's order;
     5. the statements that hold and those that fail.
+
+    Parameters
+    ----------
+    grp : pandas.DataFrame
+        One paper's scorecard rows.
+    errata : pandas.DataFrame, optional
+        The paper's errata (``location``).
+    order : mapping, optional
+        ``{(seed, source): line}``, the paper's order of its tables.
+
+    Returns
+    -------
+    list of str
+        At most five HTML fragments.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import findings
+    >>> card = pd.DataFrame(
+    ...     {
+    ...         "seed": ["000"] * 3,
+    ...         "source": ["Table 4.3"] * 3,
+    ...         "id": ["000-a", "000-b", "000-c"],
+    ...         "status": ["reproduced", "reproduced", "deviates"],
+    ...         "published": [1.0, 2.0, 3.0],
+    ...         "note": ["", "", "an OCR slip"],
+    ...     }
+    ... )
+    >>> for line in findings(card):
+    ...     print(line)
+    <b>1 printed number deviates</b>, most in Table 4.3 (1). Recorded explanations: 1 of them: an OCR slip
+    <b>Reproduced within printed precision</b>: no table in full; in part: Table 4.3 (2 of 3).
     """
     res = grp[grp["status"].isin(result_statuses())]
     out = []
@@ -107,7 +140,41 @@ def highlight(card: pd.DataFrame, text: str, ids, statuses) -> tuple[bool, str]:
     finding claims for all of them. Returns (supported, HTML): the text with the evidence
     ("12 records, all reproduced"), or, when a record is missing or now has another status, the
     text struck through and the records that no longer support it, so a finding can never
-    outlive its evidence silently."""
+    outlive its evidence silently.
+
+    Parameters
+    ----------
+    card : pandas.DataFrame
+        The scorecard (``id``, ``status``).
+    text : str
+        The finding.
+    ids : iterable of str
+        Check ids or fnmatch patterns, at least one.
+    statuses : iterable of str
+        Statuses of :data:`gearrep.checks.STATUSES`, at least one.
+
+    Returns
+    -------
+    supported : bool
+        Whether every record named has one of ``statuses``.
+    html : str
+        The finding as HTML.
+
+    Raises
+    ------
+    ValueError
+        If ``ids`` or ``statuses`` is empty or a status is unknown.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import highlight
+    >>> card = pd.DataFrame({"id": ["000-a", "000-b", "000-c"], "status": ["reproduced", "reproduced", "deviates"]})
+    >>> highlight(card, "Both hold", ["000-a", "000-b"], ["reproduced"])
+    (True, "Both hold <span class='apart'>(check records: 2, all reproduced)</span>")
+    >>> highlight(card, "All hold", ["000-*"], ["reproduced"])[0]  # 000-c deviates: struck through
+    False
+    """
     ids, statuses = list(ids or []), set(statuses or [])
     if not ids or not statuses:
         raise ValueError(f"highlight {text[:40]!r}: needs ids and statuses (got ids={ids}, statuses={statuses})")

@@ -71,7 +71,24 @@ def _status(status: str) -> str:
 
 def anchor(text: str) -> str:
     """The id nbconvert gives a markdown heading (also one displayed from a code cell): spaces become
-    '-', then URL quoting that keeps ?/:@!$&'()*+,;= (nbconvert.filters.strings._convert_header_id)."""
+    '-', then URL quoting that keeps ?/:@!$&'()*+,;= (nbconvert.filters.strings._convert_header_id).
+
+    Parameters
+    ----------
+    text : str
+        The heading.
+
+    Returns
+    -------
+    str
+        The id.
+
+    Examples
+    --------
+    >>> from gearrep.report import anchor
+    >>> anchor("Table 4.3 (Sigma_2R)")
+    'Table-4.3-(Sigma_2R)'
+    """
     return quote(re.sub(r"\s+", " ", str(text).strip()).replace(" ", "-"), safe="?/:@!$&'()*+,;=")
 
 
@@ -93,7 +110,24 @@ _ABSOLUTE_POSIX = re.compile(_POSIX)
 
 def absolute_paths(text: str) -> list[str]:
     """Absolute machine paths found in ``text`` (a rendered page must show none). A text without
-    ``:\\`` and ``file://`` can hold only POSIX paths, found by the fast POSIX pattern alone."""
+    ``:\\`` and ``file://`` can hold only POSIX paths, found by the fast POSIX pattern alone.
+
+    Parameters
+    ----------
+    text : str
+        The page.
+
+    Returns
+    -------
+    list of str
+        The paths found.
+
+    Examples
+    --------
+    >>> from gearrep.report import absolute_paths
+    >>> absolute_paths("see /home/me/x.csv, not data/published/MANIFEST.csv")
+    ['/home/me/x.csv,']
+    """
     if ":\\" in text or "file://" in text:
         return _ABSOLUTE.findall(text)
     return _ABSOLUTE_POSIX.findall(text)
@@ -407,28 +441,57 @@ def render(
 ) -> str:
     """HTML of the report.
 
-    card : the scorecard (columns of gearrep.checks.scorecard plus ``replication``)
+    Parameters
+    ----------
+    card : pandas.DataFrame
+        The scorecard (columns of gearrep.checks.scorecard plus ``replication``).
+    figures : dict
+        {caption: PNG bytes}, embedded in order (the caption says what the figure shows and
+        whether it agrees).
+    errata : pandas.DataFrame
+        Columns seed, location, printed, correction, evidence (None: no errata).
+    environment : dict
+        {name: value} (versions, git commit, config hash).
+    notebooks : dict, optional
+        {replication: relative href of its rendered notebook}.
+    runtime_s : float, optional
+        Total workflow run time [s] (sum of the jobs' benchmarks).
+    order : mapping, optional
+        {(seed, source): line of the seed text}, the paper's order of its tables
+        (gearrep.published.document_order); without it sources sort as strings.
+    design : pandas.DataFrame, optional
+        gearrep.published.design_table of every paper (one row per example).
+    parity : bool or mapping, optional
+        The parity plot of every source with computed numbers: True draws them here, False leaves
+        them out, and {seed: {source: PNG}} embeds plots drawn beforehand by :func:`parity_pngs`
+        (exactly one per source of :func:`parity_rows`, else ValueError).
+    highlights : mapping, optional
+        {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each checked
+        against its records by :func:`highlight`; the findings of a paper are these followed by
+        :func:`findings`, five at most.
 
-    figures : {caption: PNG bytes}, embedded in order (the caption says what the figure shows and
-        whether it agrees)
+    Returns
+    -------
+    str
+        The page.
 
-    errata : columns seed, location, printed, correction, evidence
-    environment : {name: value} (versions, git commit, config hash)
-    notebooks : {replication: relative href of its rendered notebook}
-    runtime_s : total workflow run time in seconds (sum of the jobs' benchmarks)
-
-    order : {(seed, source): line of the seed text}, the paper's order of its tables
-        (gearrep.published.document_order); without it sources sort as strings
-
-    design : gearrep.published.design_table of every paper (one row per example)
-
-    parity : the parity plot of every source with computed numbers: True draws them here, False
-        leaves them out, and {seed: {source: PNG}} embeds plots drawn beforehand by
-        :func:`parity_pngs` (exactly one per source of :func:`parity_rows`, else ValueError)
-
-    highlights : {seed: [{"text", "ids", "statuses"}, ...]}, hand-written headline findings, each
-        checked against its records by :func:`highlight`; the findings of a paper are these
-        followed by :func:`findings`, five at most
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import absolute_paths, render
+    >>> card = pd.DataFrame(
+    ...     {
+    ...         "seed": ["000"] * 2,
+    ...         "source": ["Table 4.3"] * 2,
+    ...         "id": ["000-a", "000-b"],
+    ...         "status": ["reproduced", "deviates"],
+    ...         "published": [1.0, 3.0],
+    ...         "computed": [1.0, 3.5],
+    ...     }
+    ... )
+    >>> page = render(card, {}, None, {"python": "3.11"}, parity=False)
+    >>> page.startswith("<!doctype html>"), "partially reproduced" in page, absolute_paths(page)
+    (True, True, [])
     """
     card = _checked_card(card)
     notebooks = notebooks or {}

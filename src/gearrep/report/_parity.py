@@ -22,7 +22,39 @@ __all__ = [
 def parity_rows(grp: pd.DataFrame) -> dict[str, pd.DataFrame]:
     """{source: rows} of one paper's scorecard rows for every source that gets a parity plot: the
     source's printed numbers with a result status (printed inputs are not results), for the sources
-    where at least one of them is computed. The rows are those :func:`parity_png` draws."""
+    where at least one of them is computed. The rows are those :func:`parity_png` draws.
+
+    Parameters
+    ----------
+    grp : pandas.DataFrame
+        One paper's scorecard rows (``source``, ``published``, ``computed``, ``status``).
+
+    Returns
+    -------
+    dict
+        ``{source: rows}``.
+
+    Raises
+    ------
+    ValueError
+        If a column is missing.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pandas as pd
+    >>> from gearrep.report import parity_rows
+    >>> card = pd.DataFrame(
+    ...     {
+    ...         "source": ["Table 4.3", "Table 4.3", "Table 5.3"],
+    ...         "status": ["reproduced", "deviates", "not-computed"],
+    ...         "published": [1.0, 3.0, 2.0],
+    ...         "computed": [1.0, 3.5, np.nan],
+    ...     }
+    ... )
+    >>> {source: len(rows) for source, rows in parity_rows(card).items()}  # Table 5.3: nothing computed
+    {'Table 4.3': 2}
+    """
     missing = [c for c in ("source", "published", "computed", "status") if c not in grp.columns]
     if missing:
         raise ValueError(f"parity rows need scorecard columns {missing}")
@@ -41,7 +73,41 @@ def parity_png(rows: pd.DataFrame, title: str) -> bytes:
     tolerance per value in table order, with the band |.| <= 1 that means "reproduced".
 
     ``rows``: scorecard rows with ``published``, ``computed``, ``tolerance``, ``status``,
-    ``quantity``; rows without a finite computed value are left out (and counted in the title)."""
+    ``quantity``; rows without a finite computed value are left out (and counted in the title).
+
+    Parameters
+    ----------
+    rows : pandas.DataFrame
+        The rows (see above).
+    title : str
+        The plot's title (the source).
+
+    Returns
+    -------
+    bytes
+        The PNG.
+
+    Raises
+    ------
+    ValueError
+        If a column is missing or no row has both a published and a computed value.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import parity_png
+    >>> rows = pd.DataFrame(
+    ...     {
+    ...         "published": [1.0, 2.0, 3.0],
+    ...         "computed": [1.0, 2.01, 3.5],
+    ...         "tolerance": [0.05, 0.05, 0.05],
+    ...         "status": ["reproduced", "reproduced", "deviates"],
+    ...         "quantity": ["k_s"] * 3,
+    ...     }
+    ... )
+    >>> parity_png(rows, "Table 4.3")[1:4]
+    b'PNG'
+    """
     plotted = _parity_plotted(rows, title)  # bad rows are refused before a figure is made
     with _parity_canvas() as fig:
         return _draw_parity(fig, rows, plotted, title)
@@ -50,7 +116,40 @@ def parity_png(rows: pd.DataFrame, title: str) -> bytes:
 def parity_pngs(grp: pd.DataFrame) -> dict[str, bytes]:
     """{source: PNG} of the parity plots of one paper (its scorecard rows ``grp``): one per source
     of :func:`parity_rows`. The workflow draws them per seed, as soon as that seed's checks exist,
-    and hands them to :func:`render`."""
+    and hands them to :func:`render`.
+
+    Parameters
+    ----------
+    grp : pandas.DataFrame
+        One paper's scorecard rows.
+
+    Returns
+    -------
+    dict
+        ``{source: PNG bytes}``.
+
+    Raises
+    ------
+    ValueError
+        If a column is missing or a plot has no row to draw.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import parity_pngs
+    >>> card = pd.DataFrame(
+    ...     {
+    ...         "source": ["Table 4.3"] * 2,
+    ...         "published": [1.0, 3.0],
+    ...         "computed": [1.0, 3.5],
+    ...         "tolerance": [0.05, 0.05],
+    ...         "status": ["reproduced", "deviates"],
+    ...         "quantity": ["k_s", "k_s"],
+    ...     }
+    ... )
+    >>> {source: png[1:4] for source, png in parity_pngs(card).items()}
+    {'Table 4.3': b'PNG'}
+    """
     todo = parity_rows(grp)
     plotted = {src: _parity_plotted(rows, src) for src, rows in todo.items()}  # all refused before drawing
     with _parity_canvas() as fig:

@@ -38,6 +38,7 @@ DISAGREE = ("deviates", "qualitative-fails")
 OPEN = ("not-computed",)
 
 
+#: what each status means, as the page's legend says it
 STATUS_MEANINGS = {
     "reproduced": "a printed number that our computation gives at the precision the paper printed it: the "
     "computed value, rounded (or truncated, where the paper truncates) to the printed digits, is the printed "
@@ -59,6 +60,7 @@ STATUS_MEANINGS = {
 }
 
 
+#: the verdicts of a paper, from best to worst (:func:`verdict`)
 VERDICTS = ("reproduced", "partially reproduced", "not reproduced")
 
 
@@ -88,17 +90,63 @@ _VERDICT_COLOURS = {"reproduced": "#1a7f37", "partially reproduced": "#9a6700", 
 
 
 def result_statuses() -> tuple[str, ...]:
-    """The statuses of gearrep.checks that are comparison results (agree, disagree or open)."""
+    """The statuses of gearrep.checks that are comparison results (agree, disagree or open).
+
+    Returns
+    -------
+    tuple of str
+        The result statuses, in the order of :data:`gearrep.checks.STATUSES`.
+
+    Examples
+    --------
+    >>> from gearrep.report import result_statuses
+    >>> result_statuses()
+    ('reproduced', 'deviates', 'qualitative-holds', 'qualitative-fails', 'not-computed')
+    """
     return tuple(s for s in _checks.STATUSES if s in AGREE + DISAGREE + OPEN)
 
 
 def apart_statuses() -> tuple[str, ...]:
-    """Statuses of gearrep.checks that are not comparison results (shown apart, never in a verdict)."""
+    """Statuses of gearrep.checks that are not comparison results (shown apart, never in a verdict).
+
+    Returns
+    -------
+    tuple of str
+        The other statuses.
+
+    Examples
+    --------
+    >>> from gearrep.report import apart_statuses
+    >>> apart_statuses()
+    ('input',)
+    """
     return tuple(s for s in _checks.STATUSES if s not in AGREE + DISAGREE + OPEN)
 
 
 def status_meaning(status: str) -> str:
-    """What a status means, for the legend; a status unknown here is described as not a result."""
+    """What a status means, for the legend; a status unknown here is described as not a result.
+
+    Parameters
+    ----------
+    status : str
+        One of :data:`gearrep.checks.STATUSES`.
+
+    Returns
+    -------
+    str
+        Its meaning, one paragraph.
+
+    Raises
+    ------
+    ValueError
+        If ``status`` is not a status of :mod:`gearrep.checks`.
+
+    Examples
+    --------
+    >>> from gearrep.report import status_meaning
+    >>> status_meaning("deviates").split(";")[0]
+    'a printed number that our computation does not give within that tolerance (or for which it returns no finite value)'
+    """
     if status in STATUS_MEANINGS:
         return STATUS_MEANINGS[status]
     if status not in _checks.STATUSES:
@@ -131,7 +179,28 @@ def _checked_card(card: pd.DataFrame) -> pd.DataFrame:
 def ordered_sources(card: pd.DataFrame, order: Mapping[tuple[str, str], int] | None = None) -> list[tuple[str, str]]:
     """(seed, source) pairs of ``card`` in document order: by seed, then by the line where the paper
     prints the source (``order``, from :func:`gearrep.published.document_order`); sources without
-    a line come last, in string order."""
+    a line come last, in string order.
+
+    Parameters
+    ----------
+    card : pandas.DataFrame
+        Scorecard rows (``seed``, ``source``).
+    order : mapping, optional
+        ``{(seed, source): line}``.
+
+    Returns
+    -------
+    list of (str, str)
+        The (seed, source) pairs, each once.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import ordered_sources
+    >>> card = pd.DataFrame({"seed": ["000", "000", "000"], "source": ["Table 5.3", "Table 4.3", "Fig. 5.5"]})
+    >>> ordered_sources(card, {("000", "Table 4.3"): 366, ("000", "Table 5.3"): 640})  # Fig. 5.5: no line
+    [('000', 'Table 4.3'), ('000', 'Table 5.3'), ('000', 'Fig. 5.5')]
+    """
     order = order or {}
     pairs = list(dict.fromkeys(zip(card["seed"], card["source"])))
     big = 10**9
@@ -141,7 +210,35 @@ def ordered_sources(card: pd.DataFrame, order: Mapping[tuple[str, str], int] | N
 def verdict(grp: pd.DataFrame) -> tuple[str, str]:
     """(verdict, one-line reason) of one paper's scorecard rows by :data:`VERDICT_CRITERIA`.
 
-    Only result statuses count (:func:`result_statuses`); rows of any other status are left out."""
+    Only result statuses count (:func:`result_statuses`); rows of any other status are left out.
+
+    Parameters
+    ----------
+    grp : pandas.DataFrame
+        One paper's scorecard rows (``status``, ``published``).
+
+    Returns
+    -------
+    verdict : str
+        One of :data:`VERDICTS`.
+    reason : str
+        The counts behind it.
+
+    Raises
+    ------
+    ValueError
+        If no row has a result status.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import verdict
+    >>> card = pd.DataFrame({"status": ["reproduced", "reproduced", "deviates"], "published": [1.0, 2.0, 3.0]})
+    >>> verdict(card)[0]
+    'partially reproduced'
+    >>> verdict(card)[1]
+    '2 of 3 scored items agree (67 %): 2 of 3 printed numbers reproduced, 0 of 0 statements hold; 1 deviate or fail, 0 not computed.'
+    """
     res = grp[grp["status"].isin(result_statuses())]
     if res.empty:
         raise ValueError("verdict needs at least one scorecard row with a result status")
@@ -169,7 +266,31 @@ def verdict(grp: pd.DataFrame) -> tuple[str, str]:
 def paper_verdicts(card: pd.DataFrame) -> dict[str, tuple[str, str]]:
     """{seed: (verdict, one-line reason)} of every paper of the scorecard, in seed order ("no
     results" for a paper without a row of a result status); the validation studies' rows (seed
-    :data:`gearrep.checks.VALIDATION`) are no paper and have no verdict."""
+    :data:`gearrep.checks.VALIDATION`) are no paper and have no verdict.
+
+    Parameters
+    ----------
+    card : pandas.DataFrame
+        The scorecard (``seed``, ``status``; every status one of :data:`gearrep.checks.STATUSES`).
+
+    Returns
+    -------
+    dict
+        ``{seed: (verdict, reason)}``.
+
+    Raises
+    ------
+    ValueError
+        If ``seed`` or ``status`` is missing or a status is unknown.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from gearrep.report import paper_verdicts
+    >>> card = pd.DataFrame({"seed": ["000", "000", "002"], "status": ["reproduced", "reproduced", "input"]})
+    >>> {seed: v for seed, (v, _) in paper_verdicts(card).items()}
+    {'000': 'reproduced', '002': 'no results'}
+    """
     card = _checked_card(card)
     card = card[card["seed"] != _checks.VALIDATION]
     return {

@@ -118,7 +118,33 @@ def spherical_involute_azimuth(u, base_cone_angle):
     """Azimuth I(u) of the spherical involute of base cone ``base_cone_angle`` (rad) at polar angle
     ``u`` (rad), for the involute leaving the base cone at azimuth 0 (module docstring, eq B).
 
-    NaN for u < base_cone_angle (inside the base cone)."""
+    NaN for u < base_cone_angle (inside the base cone).
+
+    Parameters
+    ----------
+    u : float or array_like
+        Polar angles [rad].
+    base_cone_angle : float
+        a_b [rad], in (0, pi/2).
+
+    Returns
+    -------
+    numpy.ndarray
+        I(u) [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``base_cone_angle`` is not a finite angle in (0, pi/2).
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.bevel import spherical_involute_azimuth
+    >>> np.round(spherical_involute_azimuth([math.radians(37.0), math.radians(40.0)], math.radians(38.0)), 6).tolist()
+    [nan, 0.011035]
+    """
     a = _check_finite("base_cone_angle", base_cone_angle)
     if not 0.0 < a < np.pi / 2:
         raise ValueError(f"base_cone_angle must be in (0, pi/2) rad, got {base_cone_angle!r}")
@@ -128,7 +154,39 @@ def spherical_involute_azimuth(u, base_cone_angle):
 def spherical_involute_eq48(beta, R, base_cone_angle, theta=0.0, sign: int = 1):
     """The thesis's eq (48) (= eq 7 for theta = 0, eq 8 with the spiral turn): the point of the
     spherical involute with generating angle ``beta`` at cone distance ``R``, turned by
-    ``sign * theta`` about the axis. Kept as printed for the evidence test against (A)-(B)."""
+    ``sign * theta`` about the axis. Kept as printed for the evidence test against (A)-(B).
+
+    Parameters
+    ----------
+    beta : float or array_like
+        Generating angle [rad].
+    R : float or array_like
+        Cone distance [length].
+    base_cone_angle : float
+        a_b [rad].
+    theta : float or array_like, optional
+        Spiral turn [rad].
+    sign : {1, -1}, optional
+        Sense of the turn.
+
+    Returns
+    -------
+    numpy.ndarray
+        (..., 3) points [length].
+
+    Examples
+    --------
+    The point of generating angle beta lies at the polar angle u of Napier's rule
+    cos u = cos a_b cos(beta sin a_b) and at the azimuth I(u) of (B):
+
+    >>> import math
+    >>> from gearrep.surfaces.bevel import spherical_involute_azimuth, spherical_involute_eq48
+    >>> a_b, beta, R = math.radians(46.59), 0.2, 56.06  # rad, rad, mm
+    >>> x, y, z = spherical_involute_eq48(beta, R, a_b)
+    >>> u = math.acos(math.cos(a_b) * math.cos(beta * math.sin(a_b)))
+    >>> abs(math.acos(z / R) - u) < 1e-12, abs(math.atan2(y, x) - float(spherical_involute_azimuth(u, a_b))) < 1e-12
+    (True, True)
+    """
     a = float(base_cone_angle)
     sa, ca = np.sin(a), np.cos(a)
     beta = np.asarray(beta, float)
@@ -148,6 +206,40 @@ class BevelGearData:
     ``module`` is the transverse module at the outer cone distance, ``pressure_angle`` the profile
     angle at the pitch cone, ``face_width`` b along the generatrix, ``spiral_angle`` Phi of eq (51)
     (on the base cone; 0 for straight teeth), ``h_a``, ``h_f`` addendum and dedendum coefficients.
+
+    Parameters
+    ----------
+    n_teeth, mate_teeth : int
+        Tooth numbers of this member and its mate [1], >= 3.
+    module : float
+        Transverse module at the outer cone distance [mm], > 0.
+    pressure_angle : float
+        Profile angle at the pitch cone [rad], in (0, pi/2).
+    face_width : float
+        b along the generatrix [mm], below the outer cone distance.
+    shaft_angle : float, optional
+        Sigma [rad], in (0, pi).
+    spiral_angle : float, optional
+        Phi on the base cone [rad], in [0, pi/2).
+    h_a, h_f : float, optional
+        Addendum and dedendum coefficients [in modules], > 0.
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    The straight bevel pair of the thesis's Table 5 (39 and 32 teeth, m = 2.5 mm, 20 deg, b = 14 mm):
+
+    >>> import math
+    >>> from gearrep.surfaces.bevel import BevelGearData
+    >>> g1 = BevelGearData(39, 32, 2.5, math.radians(20.0), 14.0)
+    >>> round(math.degrees(g1.pitch_cone_angle), 4), round(float(g1.outer_cone_distance), 4)  # deg, mm
+    (50.6307, 63.06)
+    >>> round(math.degrees(g1.face_cone_angle), 2), round(math.degrees(g1.root_cone_angle), 2)  # Table 5: 52.90, 47.79
+    (52.9, 47.79)
     """
 
     n_teeth: int
@@ -206,10 +298,12 @@ class BevelGearData:
 
     @property
     def addendum_angle(self) -> float:
+        """atan(h_a m / R_e) [rad]."""
         return float(np.arctan(self.h_a * self.module / self.outer_cone_distance))
 
     @property
     def dedendum_angle(self) -> float:
+        """atan(h_f m / R_e) [rad]."""
         return float(np.arctan(self.h_f * self.module / self.outer_cone_distance))
 
     @property
@@ -226,7 +320,38 @@ class BevelGearData:
 def relief_from_length(gear: BevelGearData, length: float, amount: float, *, root: bool = False):
     """Tip (or root) relief of eq (13) with a relief length ``length`` (length units along the
     profile at the mean cone distance) and ``amount`` (length along the normal, reached at the tip):
-    the polar-angle relief starts ``length / R_m`` below the face cone (above the root cone)."""
+    the polar-angle relief starts ``length / R_m`` below the face cone (above the root cone).
+
+    Parameters
+    ----------
+    gear : BevelGearData
+        The member.
+    length : float
+        Relief length along the profile at R_m [mm], > 0.
+    amount : float
+        Relief at the tip (root) along the normal [mm], >= 0.
+    root : bool, optional
+        A root relief instead.
+
+    Returns
+    -------
+    TipRelief or RootRelief
+        The relief in the polar angle u [rad].
+
+    Raises
+    ------
+    ValueError
+        If ``length`` or ``amount`` is out of range.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.bevel import BevelGearData, relief_from_length
+    >>> gear = BevelGearData(39, 32, 2.5, math.radians(20.0), 14.0)
+    >>> relief = relief_from_length(gear, 1.0, 0.01)  # 1 mm long, 0.01 mm deep
+    >>> round(float(relief.length), 6), round(float(relief.u0 + relief.length - gear.face_cone_angle), 12)  # rad
+    (0.017838, 0.0)
+    """
     L = _check_finite("length", length, positive=True)
     c = _check_finite("amount", amount, nonneg=True)
     w = L / gear.mean_cone_distance
@@ -241,12 +366,36 @@ class SphericalInvoluteFlank(Surface):
     Parameters
     ----------
     gear : BevelGearData
-    side : +1 (flank on the +y_i side of the tooth centred on x_i) or -1
-    hand : +1 or -1, sense of the spiral turn theta(v) (mating members have opposite hands)
-    crowning : ParabolicCrowning | CircularCrowning | LogarithmicCrowning | None, a function of the
-        cone distance v (give it v0 = R_m)
-    relief : TipRelief / RootRelief in the polar angle u (see :func:`relief_from_length`)
-    u_min, u_max : flank limits in u (defaults: max(base cone, root cone) and the face cone)
+        The member.
+    side : {1, -1}, optional
+        +1 (flank on the +y_i side of the tooth centred on x_i) or -1.
+    hand : {1, -1}, optional
+        Sense of the spiral turn theta(v) (mating members have opposite hands).
+    crowning : ParabolicCrowning, CircularCrowning, LogarithmicCrowning or None, optional
+        A function of the cone distance v [mm] (give it v0 = R_m).
+    relief : TipRelief or RootRelief, or a sequence of them, optional
+        In the polar angle u (see :func:`relief_from_length`).
+    u_min, u_max : float, optional
+        Flank limits in u [rad] (defaults: max(base cone, root cone) and the face cone).
+
+    Raises
+    ------
+    ValueError
+        If ``gear`` is not a :class:`BevelGearData`, an option is bad or the limits are out of
+        range.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.bevel import BevelGearData, SphericalInvoluteFlank
+    >>> gear = BevelGearData(39, 32, 2.5, math.radians(20.0), 14.0)  # teeth, module mm, rad, face mm
+    >>> flank = SphericalInvoluteFlank(gear)
+    >>> u, v = 0.5 * (flank.u_min + flank.u_max), flank.R_m  # rad, mm
+    >>> bool(abs(np.linalg.norm(flank.position(u, v)) - v) < 1e-12)  # on the sphere |r| = v
+    True
+    >>> round(float(flank.azimuth(u, v)), 6)  # rad
+    0.042569
     """
 
     spherical = True  #: r = v (sin u cos psi, sin u sin psi, cos u): u = polar angle, v = cone distance
@@ -283,7 +432,18 @@ class SphericalInvoluteFlank(Surface):
     contains = InvoluteFlank.contains
 
     def twist(self, v):
-        """hand * theta(v) of eq (51) and its two v-derivatives."""
+        """hand * theta(v) of eq (51) and its two v-derivatives.
+
+        Parameters
+        ----------
+        v : float or array_like
+            Cone distance [mm].
+
+        Returns
+        -------
+        theta, theta_v, theta_vv : numpy.ndarray
+            [rad], [rad/mm], [rad/mm^2].
+        """
         v = np.asarray(v, float)
         k = self.hand * self.k_spiral
         if k == 0.0:
@@ -293,7 +453,20 @@ class SphericalInvoluteFlank(Surface):
             return k * np.log(self.R_m / v), -k / v, k / (v * v)
 
     def azimuth_derivs(self, u, v):
-        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B)."""
+        """psi and its partials (psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv) at (u, v) (eq B).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Polar angle [rad].
+        v : float or array_like
+            Cone distance [mm].
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            psi [rad] and its partials in u [rad] and v [mm].
+        """
         u, v = _broadcast2(np.asarray(u, float), np.asarray(v, float))
         _, inv, i1, i2 = _sigma_derivs(u, self.a_b)
         dp = np.zeros(u.shape)
@@ -325,6 +498,20 @@ class SphericalInvoluteFlank(Surface):
         return psi, psi_u, psi_v, psi_uu, psi_uv, psi_vv
 
     def azimuth(self, u, v):
+        """psi(u, v) of eq (B) [rad] (:meth:`azimuth_derivs`).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Polar angle [rad].
+        v : float or array_like
+            Cone distance [mm].
+
+        Returns
+        -------
+        numpy.ndarray
+            psi [rad].
+        """
         return self.azimuth_derivs(u, v)[0]
 
     def position(self, u, v) -> np.ndarray:
@@ -411,6 +598,20 @@ class SphericalInvoluteFlank(Surface):
         return self._azimuth(v, inv, i1, i2, (dp, dp1, dp2), (dl, dl1, dl2), tw, float(self.c), float(self.sin_ab))
 
     def outward_normal(self, u, v) -> np.ndarray:
+        """Unit normal pointing out of the tooth.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Polar angle [rad].
+        v : float or array_like
+            Cone distance [mm].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) unit normals.
+        """
         return self.outward_sign * self.evaluate(u, v).normal
 
     def __repr__(self) -> str:
@@ -433,7 +634,45 @@ def mating_bevel_flanks(
     relief2=(),
 ):
     """The two drive flanks of a bevel pair: same ``side``, opposite spiral hands. Checks that the
-    members mesh (each is the other's mate; equal module, pressure angle, shaft and spiral angle)."""
+    members mesh (each is the other's mate; equal module, pressure angle, shaft and spiral angle).
+
+    Parameters
+    ----------
+    gear1, gear2 : BevelGearData
+        The members, each the other's mate.
+    side : {1, -1}, optional
+        The drive side.
+    hand1 : {1, -1}, optional
+        Spiral hand of member 1 (member 2 has the other).
+    crowning1, crowning2 : optional
+        Lengthwise crowning of each member (functions of the cone distance [mm]).
+    relief1, relief2 : optional
+        Tip and root reliefs of each member.
+
+    Returns
+    -------
+    flank1, flank2 : SphericalInvoluteFlank
+        The two flanks.
+
+    Raises
+    ------
+    ValueError
+        If the members do not mesh or an option is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.bevel import BevelGearData, mating_bevel_flanks
+    >>> g1 = BevelGearData(39, 32, 2.5, math.radians(20.0), 14.0)  # teeth, module mm, rad, face mm
+    >>> g2 = BevelGearData(32, 39, 2.5, math.radians(20.0), 14.0)
+    >>> f1, f2 = mating_bevel_flanks(g1, g2)
+    >>> (f1.side, f1.hand), (f2.side, f2.hand)
+    ((1, 1), (1, -1))
+    >>> mating_bevel_flanks(g1, g1)
+    Traceback (most recent call last):
+        ...
+    ValueError: gear1.mate_teeth = 32 must equal gear2.n_teeth = 39 and vice versa
+    """
     if not (isinstance(gear1, BevelGearData) and isinstance(gear2, BevelGearData)):
         raise ValueError("gear1 and gear2 must be BevelGearData")
     if gear1.mate_teeth != gear2.n_teeth or gear2.mate_teeth != gear1.n_teeth:

@@ -80,6 +80,7 @@ __all__ = [
     "PairDesign",
 ]
 
+#: the thread profiles of :class:`ZAHob` (``variant``): a true ZA hob, or eq 4.40 as printed
 HOB_VARIANTS = ("axial", "printed")
 #: thread side (sign of eq 4.40) that generates each flank of the tables with arc_centre = -1
 FLANK_SIDE = {"R": +1, "L": -1}
@@ -89,10 +90,29 @@ FLANK_SIDE = {"R": +1, "L": -1}
 class ZAHob:
     """Design data of the ZA worm-type hob (defaults: Table 5.1 of seed 000).
 
-    module_mm : normal module m (> 0)
-    pressure_angle_rad : alpha_n, in (0, pi/2)
-    pitch_radius_mm : r_h (> m / 2, so that the lead angle exists)
-    variant : "axial" (true ZA, reproduces the tables) or "printed" (eq 4.40 as printed)
+    Parameters
+    ----------
+    module_mm : float, optional
+        Normal module m [mm] (> 0).
+    pressure_angle_rad : float, optional
+        alpha_n [rad], in (0, pi/2).
+    pitch_radius_mm : float, optional
+        r_h [mm] (> m / 2, so that the lead angle exists).
+    variant : {"axial", "printed"}, optional
+        "axial" (true ZA, reproduces the tables) or "printed" (eq 4.40 as printed).
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range, or the groove apex radius r_t would be <= 0.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.hob import ZAHob
+    >>> hob = ZAHob()  # m = 3 mm, alpha_n = 20 deg, r_h = 30 mm
+    >>> round(math.degrees(hob.lead_angle_rad), 3), round(hob.apex_radius_mm, 5)  # deg (Table 5.1: 2.866), mm
+    (2.866, 23.52641)
     """
 
     module_mm: float = 3.0
@@ -134,7 +154,18 @@ class ZAHob:
         return self.lead_angle_rad if self.variant == "printed" else 0.0
 
     def thread(self, side: int) -> HobThread:
-        """The thread surface of eq 4.40: side +1 = upper sign (right side), -1 = lower sign."""
+        """The thread surface of eq 4.40: side +1 = upper sign (right side), -1 = lower sign.
+
+        Parameters
+        ----------
+        side : {1, -1}
+            The sign of eq 4.40.
+
+        Returns
+        -------
+        HobThread
+            The thread surface.
+        """
         return HobThread(self, side)
 
 
@@ -142,7 +173,30 @@ class HobThread(Surface):
     """Hob thread surface r_1(l, phi) of seed 000 eq 4.40 in the hob frame S_1, with the
     analytic derivatives of eq 4.41 (r_l, r_phi), 4.46 (r_ll = 0), 4.47, 4.48. Surface
     parameters u = l (mm, along the straight profile line from the groove apex) and v = phi
-    (rad). The normal is unit(r_l x r_phi) (eq 4.41)."""
+    (rad). The normal is unit(r_l x r_phi) (eq 4.41).
+
+    Parameters
+    ----------
+    hob : ZAHob
+        The hob.
+    side : {1, -1}
+        +1 upper sign of eq 4.40 (right side), -1 lower sign.
+
+    Raises
+    ------
+    ValueError
+        If ``hob`` is not a :class:`ZAHob` or ``side`` is not +-1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import ZAHob
+    >>> thread = ZAHob().thread(1)
+    >>> np.round(thread.position(5.0, 0.1), 5).tolist()  # l [mm], phi [rad] -> mm
+    [28.08387, -2.81779, 1.55991]
+    >>> round(float(thread.principal(np.array([5.0]), np.array([0.1])).k1[0]), 8)  # k_f [1/mm]
+    0.00022317
+    """
 
     def __init__(self, hob: ZAHob, side: int):
         if not isinstance(hob, ZAHob):
@@ -180,29 +234,58 @@ class HobThread(Surface):
         return SurfacePoint(r, r_l, r_p, np.zeros_like(r), r_lp, r_pp)
 
     def principal(self, l, p) -> PrincipalCurvatures:
-        """k_f >= k_h and e_f, e_h of the thread (eq 4.42-4.45), signed for unit(r_l x r_phi)."""
+        """k_f >= k_h and e_f, e_h of the thread (eq 4.42-4.45), signed for unit(r_l x r_phi).
+
+        Parameters
+        ----------
+        l : array_like
+            Profile parameter [mm].
+        p : array_like
+            Thread angle phi [rad].
+
+        Returns
+        -------
+        gearrep.curvature.PrincipalCurvatures
+            Curvatures [1/mm] and directions.
+        """
         return principal_curvatures(self.evaluate(l, p))
 
 
 class FlankCurvatures(NamedTuple):
     """Principal curvatures of the generated flank labelled as in seed 000 Tables 4.2-4.5, in
-    the tooth frame S_f.
+    the tooth frame S_f. Curvatures are signed w.r.t. ``normal`` = the hob normal
+    unit(r_l x r_phi) of eq 4.41 carried into S_f (the tables' convention: k > 0 where the flank
+    bends toward it).
 
-    k_s, e_s : the principal direction nearest the gear axis Z_f (along Z_f at mid-face), with
-        e_s . Z_f >= 0
+    Parameters
+    ----------
+    k_s, e_s : numpy.ndarray
+        The principal curvature [1/mm] and direction nearest the gear axis Z_f (along Z_f at
+        mid-face), with e_s . Z_f >= 0.
+    k_q, e_q : numpy.ndarray
+        The other one [1/mm]; e_q = n_out x e_s (n_out the normal pointing out of the tooth): the
+        orientation the printed tables use for both flanks (see the replication module).
+    normal : numpy.ndarray
+        (n, 3) the hob normal in S_f.
+    normal_out : numpy.ndarray
+        (n, 3) n_out.
+    point : numpy.ndarray
+        (n, 3) the flank point [mm] in S_f.
+    k_s_two_parameter, k_q_two_parameter, sigma_two_parameter : numpy.ndarray
+        The same pair [1/mm] and the angle [rad] from the two-parameter-envelope system of seed 000
+        (eq 4.33-4.39 with the corrected signs, then 4.24-4.26; e_s nearest the hob direction e_f).
+    generated : gearrep.curvature_relations.GeneratedCurvatures
+        The curvatures from K_2 = K_1 + C E^-1 C^T, generation frame.
+    result : gearrep.envelope.EnvelopeResult
+        The envelope solve (generation frame) with the statuses.
 
-    k_q, e_q : the other one; e_q = n_out x e_s (n_out the normal pointing out of the tooth):
-        the orientation the printed tables use for both flanks (see the replication module)
-
-    Curvatures are signed w.r.t. ``normal`` = the hob normal unit(r_l x r_phi) of eq 4.41
-    carried into S_f (the tables' convention: k > 0 where the flank bends toward it).
-    normal_out : n_out; point : the flank point (mm) in S_f
-
-    k_s_two_parameter, k_q_two_parameter, sigma_two_parameter : the same pair from the
-        two-parameter-envelope system of seed 000 (eq 4.33-4.39 with the corrected signs, then
-        4.24-4.26; e_s nearest the hob direction e_f)
-
-    result : the :class:`gearrep.envelope.EnvelopeResult` (generation frame) with the statuses
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> c = GeneratedGear().curvatures([6.0], 0.0)  # the convex flank, l [mm], psi [rad]
+    >>> np.round(c.k_s, 6).tolist(), np.round(c.k_q, 6).tolist()  # 1/mm
+    ([0.008369], [0.078881])
     """
 
     k_s: np.ndarray
@@ -223,20 +306,43 @@ class FlankCurvatures(NamedTuple):
 class GeneratedGear:
     """One flank of the curvilinear-tooth gear generated by the ZA hob (module doc).
 
-    hob : :class:`ZAHob`
-    n_teeth : N of the work gear (>= 4)
-
-    R_c_mm : nominal radius of the circular-arc tooth trace (> 0); ``np.inf`` gives the spur-gear
+    Parameters
+    ----------
+    hob : ZAHob, optional
+        The hob.
+    n_teeth : int, optional
+        N of the work gear (>= 4).
+    R_c_mm : float, optional
+        Nominal radius of the circular-arc tooth trace [mm] (> 0); ``np.inf`` gives the spur-gear
         limit, where the swivel becomes a translation along the gear axis and psi is that axial
-        feed in mm (Z_f = psi for arc_centre = -1)
+        feed in mm (Z_f = psi for arc_centre = -1).
+    side : {1, -1}, optional
+        Thread side (+1 upper sign of eq 4.40, -1 lower sign); with arc_centre = -1, +1 generates
+        Sigma_2R (convex) and -1 Sigma_2L (concave): see :data:`FLANK_SIDE`.
+    arc_centre : {-1, 1}, optional
+        Side of the arc centre, -1 (default, the tables' convention) or +1.
+    tol : float, optional
+        Tolerance on the meshing residual [mm] for R_c <= 100 mm (see :attr:`effective_tol`).
+    maxiter : int, optional
+        Iteration limit of the meshing solve.
 
-    side : thread side (+1 upper sign of eq 4.40, -1 lower sign); with arc_centre = -1,
-        +1 generates Sigma_2R (convex) and -1 Sigma_2L (concave): see :data:`FLANK_SIDE`
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
 
-    arc_centre : side of the arc centre, -1 (default, the tables' convention) or +1
+    Examples
+    --------
+    The addendum tip of the Table 5.1 pinion (r_a = 33 mm) is generated at l = 4.381 mm
+    (seed 000 sec. 4.5):
 
-    tol, maxiter : Newton settings of the meshing solve (tol on the meshing residual, mm, for
-        R_c <= 100 mm; see :attr:`effective_tol`)
+    >>> import numpy as np
+    >>> from gearrep.surfaces.hob import GeneratedGear
+    >>> gear = GeneratedGear()  # 20 teeth, R_c = 110 mm, the convex flank
+    >>> gear.pitch_radius_mm, gear.centre_distance_mm  # mm
+    (30.0, 60.0)
+    >>> np.round(gear.l_at_radius(33.0).x[:, 0], 3).tolist()  # mm
+    [4.381]
     """
 
     hob: ZAHob = field(default_factory=ZAHob)
@@ -263,7 +369,25 @@ class GeneratedGear:
 
     @classmethod
     def flank(cls, name: str, **kw) -> GeneratedGear:
-        """Sigma_2R (``name="R"``) or Sigma_2L (``"L"``) of seed 000 with arc_centre = -1."""
+        """Sigma_2R (``name="R"``) or Sigma_2L (``"L"``) of seed 000 with arc_centre = -1.
+
+        Parameters
+        ----------
+        name : {"R", "L"}
+            The flank.
+        **kw
+            The other fields of :class:`GeneratedGear`.
+
+        Returns
+        -------
+        GeneratedGear
+            The flank.
+
+        Raises
+        ------
+        ValueError
+            If ``name`` is not "R" or "L".
+        """
         if name not in FLANK_SIDE:
             raise ValueError(f"name must be 'R' or 'L', got {name!r}")
         return cls(side=FLANK_SIDE[name], **kw)
@@ -271,6 +395,7 @@ class GeneratedGear:
     # ---- set-up ---------------------------------------------------------------------------
     @property
     def pitch_radius_mm(self) -> float:
+        """Pitch radius m N / 2 [mm]."""
         return self.hob.module_mm * self.n_teeth / 2
 
     @property
@@ -289,10 +414,23 @@ class GeneratedGear:
         return frames.rot_z(self.frame_rotation_rad)
 
     def thread(self) -> HobThread:
+        """The hob thread surface of this flank's side.
+
+        Returns
+        -------
+        HobThread
+            The thread.
+        """
         return self.hob.thread(self.side)
 
     def motion(self) -> ChainMotion:
-        """M_21(theta, psi) of the module doc (hob frame -> generation frame S_2)."""
+        """M_21(theta, psi) of the module doc (hob frame -> generation frame S_2).
+
+        Returns
+        -------
+        gearrep.motion.ChainMotion
+            The motion, parameters (theta, psi).
+        """
         E, lam = self.centre_distance_mm, self.hob.lead_angle_rad
         if np.isinf(self.R_c_mm):  # spur-gear limit: the swivel becomes an axial feed (psi in mm)
             swivel = translation((0.0, 0.0, -float(self.arc_centre)), [0.0, 1.0])
@@ -318,7 +456,13 @@ class GeneratedGear:
         return self.tol * scale
 
     def envelope(self) -> Envelope:
-        """The two-parameter envelope with free (l, psi) and solved (phi, theta)."""
+        """The two-parameter envelope with free (l, psi) and solved (phi, theta).
+
+        Returns
+        -------
+        gearrep.envelope.Envelope
+            The envelope (tolerance :attr:`effective_tol`).
+        """
         return Envelope(self.thread(), self.motion(), free=("u", "psi"), tol=self.effective_tol, maxiter=self.maxiter)
 
     DEFAULT_GUESS = (np.pi, 0.0)  #: (phi, theta) start: the thread at the work gear's tooth space
@@ -332,7 +476,22 @@ class GeneratedGear:
         of the meshing equations for large R_c); away from mid-face continued in psi when the
         direct start fails. Every converged point is verified (:meth:`verify`): a root outside
         the generated tooth (radial band r_p +- 2.5 m, angular sector +-pi/N about X_f) gets
-        status WRONG_ROOT, never passed on as converged."""
+        status WRONG_ROOT, never passed on as converged.
+
+        Parameters
+        ----------
+        l_mm : float or array_like
+            Hob profile parameter l [mm].
+        psi_rad : float or array_like
+            Swivel psi [rad] (axial feed [mm] for R_c = inf).
+        guess : array_like, optional
+            Start for (phi, theta) [rad].
+
+        Returns
+        -------
+        gearrep.envelope.EnvelopeResult
+            Points and normals in S_2, with the statuses.
+        """
         env = self.envelope()
         l, ps = np.broadcast_arrays(np.asarray(l_mm, float), np.asarray(psi_rad, float))
         lf, pf = l.reshape(-1), ps.reshape(-1)
@@ -364,7 +523,18 @@ class GeneratedGear:
         return rec
 
     def verify(self, rec: EnvelopeResult) -> EnvelopeResult:
-        """Mark converged roots outside the generated tooth as WRONG_ROOT (see :meth:`solve`)."""
+        """Mark converged roots outside the generated tooth as WRONG_ROOT (see :meth:`solve`).
+
+        Parameters
+        ----------
+        rec : gearrep.envelope.EnvelopeResult
+            A solve of this flank's envelope.
+
+        Returns
+        -------
+        gearrep.envelope.EnvelopeResult
+            ``rec`` with the statuses of such roots changed.
+        """
         pt = rec.point @ self.to_tooth_frame.T
         r = np.hypot(pt[:, 0], pt[:, 1])
         ang = np.arctan2(pt[:, 1], pt[:, 0])
@@ -379,14 +549,53 @@ class GeneratedGear:
         return rec
 
     def points(self, l_mm, psi_rad, guess=None):
-        """(point, hob normal, EnvelopeResult) with point and normal in the tooth frame S_f."""
+        """(point, hob normal, EnvelopeResult) with point and normal in the tooth frame S_f.
+
+        Parameters
+        ----------
+        l_mm : float or array_like
+            Hob profile parameter l [mm].
+        psi_rad : float or array_like
+            Swivel psi [rad].
+        guess : array_like, optional
+            Start for (phi, theta) [rad].
+
+        Returns
+        -------
+        point : numpy.ndarray
+            (n, 3) [mm] in S_f.
+        normal : numpy.ndarray
+            (n, 3) in S_f.
+        result : gearrep.envelope.EnvelopeResult
+            The solve (generation frame).
+        """
         rec = self.solve(l_mm, psi_rad, guess)
         R = self.to_tooth_frame
         return rec.point @ R.T, rec.normal @ R.T, rec
 
     def l_at_radius(self, radius_mm, psi_rad=0.0, l0_mm=6.0) -> SolveResult:
         """The l whose generated point at psi lies at distance ``radius_mm`` from the gear axis
-        (e.g. the tip r_a = 33 mm: first row of Tables 4.2-4.5). Newton on l (one unknown)."""
+        (e.g. the tip r_a = 33 mm: first row of Tables 4.2-4.5). Newton on l (one unknown).
+
+        Parameters
+        ----------
+        radius_mm : float or array_like
+            Radii [mm], > 0.
+        psi_rad : float or array_like, optional
+            Swivel [rad].
+        l0_mm : float, optional
+            Start [mm].
+
+        Returns
+        -------
+        gearrep.solve.SolveResult
+            x (n, 1) = l [mm], residual [mm], iterations, status.
+
+        Raises
+        ------
+        ValueError
+            If a radius is not finite and > 0.
+        """
         r_target, ps = np.broadcast_arrays(
             np.atleast_1d(np.asarray(radius_mm, float)), np.atleast_1d(np.asarray(psi_rad, float))
         )
@@ -408,7 +617,22 @@ class GeneratedGear:
         """Principal curvatures and directions of the generated flank at (l, psi), labelled
         and oriented as in seed 000 Tables 4.2-4.5 (see :class:`FlankCurvatures`), from
         K_2 = K_1 + C E^-1 C^T (:func:`gearrep.curvature_relations.generated_curvatures`) and,
-        independently, from the chapter's eq 4.33-4.39 (corrected) and 4.24-4.26."""
+        independently, from the chapter's eq 4.33-4.39 (corrected) and 4.24-4.26.
+
+        Parameters
+        ----------
+        l_mm : float or array_like
+            Hob profile parameter l [mm].
+        psi_rad : float or array_like, optional
+            Swivel psi [rad].
+        guess : array_like, optional
+            Start for (phi, theta) [rad].
+
+        Returns
+        -------
+        FlankCurvatures
+            Curvatures [1/mm] and directions in S_f.
+        """
         rec = self.solve(l_mm, psi_rad, guess)
         env = self.envelope()
         gc = generated_curvatures(env, rec.params)
@@ -432,7 +656,20 @@ class GeneratedGear:
     @staticmethod
     def outward(point, normal) -> np.ndarray:
         """+-normal pointing out of the tooth (away from its centre line X_f) at tooth-frame
-        points: the sign of (polar angle of the point) * (normal . e_theta)."""
+        points: the sign of (polar angle of the point) * (normal . e_theta).
+
+        Parameters
+        ----------
+        point : array_like
+            (..., 3) points in S_f [mm].
+        normal : array_like
+            (..., 3) normals there.
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) the normals, reversed where they point into the tooth.
+        """
         point, normal = np.asarray(point, float), np.asarray(normal, float)
         ang = np.arctan2(point[..., 1], point[..., 0])
         e_th = np.stack([-np.sin(ang), np.cos(ang), np.zeros_like(ang)], -1)
@@ -443,7 +680,25 @@ class GeneratedGear:
         """The generated flank as a :class:`gearrep.surface.Surface` of (l, psi) (for
         direct differential geometry and TCA): analytic first derivatives, second derivatives
         with analytic normal components (:class:`gearrep.envelope.EnvelopeSurface`). ``frame``
-        "tooth" (S_f, the tooth centred on X_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal."""
+        "tooth" (S_f, the tooth centred on X_f) or "generation" (S_2). Its normal unit(r_l x r_psi) is +- the hob normal.
+
+        Parameters
+        ----------
+        frame : {"tooth", "generation"}, optional
+            The frame of the surface.
+        fd_step : (float, float), optional
+            Finite-difference steps in (l [mm], psi [rad]) of the solved parameters' derivatives.
+
+        Returns
+        -------
+        gearrep.surface.Surface
+            The flank, parameters (l [mm], psi [rad]).
+
+        Raises
+        ------
+        ValueError
+            If ``frame`` is unknown.
+        """
         s = EnvelopeSurface(self.envelope(), self.DEFAULT_GUESS, fd_step)
         if frame == "generation":
             return s
@@ -454,7 +709,35 @@ class GeneratedGear:
 
 def za_hob(module_mm: float, pressure_angle_deg: float, pitch_radius_mm: float, variant: str = "axial") -> ZAHob:
     """The single-start ZA hob of normal module ``module_mm`` [mm], normal pressure angle
-    ``pressure_angle_deg`` [deg] and pitch radius ``pitch_radius_mm`` [mm] (ranges: :class:`ZAHob`)."""
+    ``pressure_angle_deg`` [deg] and pitch radius ``pitch_radius_mm`` [mm] (ranges: :class:`ZAHob`).
+
+    Parameters
+    ----------
+    module_mm : float
+        Normal module [mm].
+    pressure_angle_deg : float
+        Normal pressure angle [deg], in (0, 90).
+    pitch_radius_mm : float
+        Pitch radius [mm].
+    variant : {"axial", "printed"}, optional
+        The thread profile (:class:`ZAHob`).
+
+    Returns
+    -------
+    ZAHob
+        The hob.
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.hob import ZAHob, za_hob
+    >>> za_hob(3.0, 20.0, 30.0) == ZAHob()  # mm, deg, mm: the hob of Table 5.1
+    True
+    """
     a = float(pressure_angle_deg)
     if not (np.isfinite(a) and 0.0 < a < 90.0):
         raise ValueError(f"pressure_angle_deg must be in (0, 90) deg, got {pressure_angle_deg!r}")
@@ -471,7 +754,32 @@ class PairDesign:
     """The pinion and gear of a curvilinear-tooth pair cut by one hob: tooth numbers ``n_pinion``,
     ``n_gear`` (integers in [4, 10000]), the face width ``face_width_mm`` of both members (in
     (0, 1000] mm) and the :class:`ZAHob`. :meth:`cut` generates the two working flanks; the pair
-    for the TCA is :func:`gearrep.tca.hobbed_pair`."""
+    for the TCA is :func:`gearrep.tca.hobbed_pair`.
+
+    Parameters
+    ----------
+    n_pinion, n_gear : int
+        Tooth numbers [1], in [4, 10000].
+    face_width_mm : float
+        Face width of both members [mm], in (0, 1000].
+    hob : ZAHob
+        The hob.
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    >>> from gearrep.surfaces.hob import PairDesign, za_hob
+    >>> design = PairDesign(20, 40, 30.0, za_hob(3.0, 20.0, 30.0))  # teeth, face mm; module mm, deg, radius mm
+    >>> pinion, gear = design.cut(100.0, 110.0)  # tooth-trace radii [mm]
+    >>> (pinion.n_teeth, pinion.arc_centre), (gear.n_teeth, gear.arc_centre)
+    ((20, -1), (40, 1))
+    >>> design.with_hob(pitch_radius_mm=40.0).hob.pitch_radius_mm  # mm
+    40.0
+    """
 
     n_pinion: int
     n_gear: int
@@ -490,13 +798,40 @@ class PairDesign:
             raise ValueError(f"hob must be a ZAHob, got {self.hob!r}")
 
     def with_hob(self, **changes) -> PairDesign:
-        """The same pair cut by a hob with ``changes`` (e.g. ``pitch_radius_mm``)."""
+        """The same pair cut by a hob with ``changes`` (e.g. ``pitch_radius_mm``).
+
+        Parameters
+        ----------
+        **changes
+            Fields of :class:`ZAHob`.
+
+        Returns
+        -------
+        PairDesign
+            The new design.
+        """
         return replace(self, hob=replace(self.hob, **changes))
 
     def cut(self, R_cp_mm: float, R_cg_mm: float) -> tuple[GeneratedGear, GeneratedGear]:
         """(pinion, gear) flanks for tooth-trace radii ``R_cp_mm``, ``R_cg_mm`` [mm]: the pinion's
         convex flank (thread side +1, arc centre -1: Sigma_2R) and the gear's concave flank (thread
-        side +1, arc centre +1), each in its generation frame."""
+        side +1, arc centre +1), each in its generation frame.
+
+        Parameters
+        ----------
+        R_cp_mm, R_cg_mm : float
+            Tooth-trace radii of pinion and gear [mm], finite and > 0.
+
+        Returns
+        -------
+        pinion, gear : GeneratedGear
+            The two flanks.
+
+        Raises
+        ------
+        ValueError
+            If a radius is not finite and > 0.
+        """
         for name, v in (("R_cp_mm", R_cp_mm), ("R_cg_mm", R_cg_mm)):
             if not (np.isfinite(v) and v > 0):
                 raise ValueError(f"{name} must be a finite radius > 0 mm, got {v!r}")

@@ -29,12 +29,9 @@ import math
 import numpy as np
 
 from .. import frames
-from ..curvature_relations import generated_curvatures
-from ..envelope import Envelope, singular_points
-from ..motion import rack_generation_motion
-from ..solve import Status
+from ..envelope import singular_points
 from ..surface import Surface, SurfacePoint
-from .rack import CircularArcRackCutter, ParabolicRackCutter
+from ._rack_generated import NormalPartSurface, RackGeneratedFlank
 
 __all__ = [
     "RackGeneratedFlank",
@@ -51,7 +48,34 @@ __all__ = [
 
 
 def pitch_radius(N: int, P_n: float, beta: float) -> float:
-    """Transverse pitch radius r_p = N / (2 P_n cos beta) (inches for P_n in 1/in)."""
+    """Transverse pitch radius r_p = N / (2 P_n cos beta) (inches for P_n in 1/in).
+
+    Parameters
+    ----------
+    N : int
+        Number of teeth [1], >= 1.
+    P_n : float
+        Normal diametral pitch [1/in], > 0.
+    beta : float
+        Helix angle [rad], |beta| < pi/2.
+
+    Returns
+    -------
+    float
+        r_p [in].
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import pitch_radius
+    >>> round(pitch_radius(17, 5.0, math.radians(19.548)), 6)  # teeth, 1/in, rad -> in (seed 002 sec. 2.5)
+    1.803979
+    """
     if not (int(N) == N and N >= 1):
         raise ValueError(f"N (tooth number) must be a positive integer, got {N!r}")
     if not (np.isfinite(P_n) and P_n > 0):
@@ -79,7 +103,59 @@ def member_flank(
     (rad); the rack's helix angle is ``beta_rack`` (default ``beta``; the pinion's lead-angle error
     is beta - d_lambda with the pitch cylinder kept). The outward sign is chosen so that the
     pinion's normal is the rack normal (its curvatures are then negative in gearrep's convention:
-    a convex surface) and the gear's the opposite. Lengths in one unit (inches for P_n in 1/in)."""
+    a convex surface) and the gear's the opposite. Lengths in one unit (inches for P_n in 1/in).
+
+    Parameters
+    ----------
+    N : int
+        Number of teeth [1].
+    P_n : float
+        Normal diametral pitch [1/length].
+    a : float
+        Parabola coefficient of the rack profile [1/length] (a_c or a_t, 1/(2 rho)).
+    alpha_n : float
+        Normal pressure angle [rad].
+    l : float
+        |QP| [length].
+    beta : float
+        Helix angle of the member [rad].
+    member : {"pinion", "gear"}
+        Which member.
+    tol : float, optional
+        Tolerance of the meshing solve.
+    beta_rack : float, optional
+        Helix angle of the rack [rad], |beta_rack| < pi/2 (default ``beta``).
+
+    Returns
+    -------
+    RackGeneratedFlank
+        The flank, its ``outward_sign`` set.
+
+    Raises
+    ------
+    ValueError
+        If ``member`` is unknown or an angle or the pitch is out of range.
+
+    Examples
+    --------
+    The pinion and gear of seed 002 sec. 2.5 in mesh, aligned: no transmission error.
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import aligned_start, member_flank
+    >>> from gearrep.tca import GearPair, solve_contact
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.548)  # rad, 1/in, rad
+    >>> l = math.cos(an) / P_n  # in
+    >>> f1 = member_flank(17, P_n, 0.425, an, l, beta, "pinion")  # a_c [1/in]
+    >>> f2 = member_flank(77, P_n, 0.394, an, l, beta, "gear")  # a_t [1/in]
+    >>> f1.outward_sign, f2.outward_sign
+    (1, -1)
+    >>> pair = GearPair(f1, f2, 17, 77, f1.r_p + f2.r_p, phase2=0.0)  # in
+    >>> phi1 = np.array([0.0, 0.05])  # rad
+    >>> c = solve_contact(pair, phi1, aligned_start(pair, phi1), formulation="conventional")
+    >>> c.status_name.tolist(), bool(np.all(np.abs(c.te) < 1e-12))
+    (['converged', 'converged'], True)
+    """
     if member not in ("pinion", "gear"):
         raise ValueError(f"member must be 'pinion' or 'gear', got {member!r}")
     if beta_rack is not None and not (np.isfinite(beta_rack) and abs(beta_rack) < np.pi / 2):
@@ -98,7 +174,38 @@ def aligned_start(pair, phi1) -> np.ndarray:
     :class:`RackGeneratedFlank` in :class:`gearrep.tca.GearPair` frames at pinion angles ``phi1``
     (rad): the aligned contact on the helices u = 0 (both rolling angles are -phi1 and
     -(N1/N2) phi1: module doc), theta solved from the closed-form rolling angle
-    (:meth:`RackGeneratedFlank.rolling_angle`)."""
+    (:meth:`RackGeneratedFlank.rolling_angle`).
+
+    Parameters
+    ----------
+    pair : gearrep.tca.GearPair
+        A pair of two :class:`RackGeneratedFlank`.
+    phi1 : float or (n,) array_like
+        Pinion angles [rad], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) starts [in, rad].
+
+    Raises
+    ------
+    ValueError
+        If the flanks are not rack-generated or an angle is not finite.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import aligned_start, member_flank
+    >>> from gearrep.tca import GearPair
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.548)  # rad, 1/in, rad
+    >>> f1 = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, beta, "pinion")  # in
+    >>> f2 = member_flank(77, P_n, 0.394, an, math.cos(an) / P_n, beta, "gear")
+    >>> pair = GearPair(f1, f2, 17, 77, f1.r_p + f2.r_p, phase2=0.0)
+    >>> np.round(aligned_start(pair, [0.05]), 6).tolist()  # u1, theta1 [in], u2, theta2 [in], phi2 [rad]
+    [[0.0, -0.269575, 0.0, -0.269575, 0.011039]]
+    """
     if not all(hasattr(getattr(pair, k, None), "rolling_angle") for k in ("flank1", "flank2")):
         raise ValueError(f"pair must have two rack-generated flanks (flank1, flank2 with rolling_angle), got {pair!r}")
     phi1 = np.atleast_1d(np.asarray(phi1, float))
@@ -112,163 +219,44 @@ def aligned_start(pair, phi1) -> np.ndarray:
     return np.column_stack([z, out[0], z, out[1], pair.ratio * phi1])
 
 
-class RackGeneratedFlank(Surface):
-    """Tooth surface generated by a parabolic (or circular-arc) rack-cutter (module doc), usable as
-    a TCA flank.
-
-    Parameters
-    ----------
-    a : parabola coefficient of the rack normal profile, 1/in (a_c or a_t; 1/(2 rho)); for
-        ``profile="circular_arc"`` the arc of radius rho = 1/(2 a) (nonzero a)
-    alpha_n : normal pressure angle at Q, rad, in (0, pi/2)
-    l : |QP|, in, signed (:mod:`gearrep.surfaces.rack`: l < 0 puts Q below the pitch line)
-    beta : helix angle of the rack teeth, rad (the pinion's lead-angle error is simulated by
-        generating it with beta + d_lambda while keeping r_p)
-    r_p : pitch radius of the generated member, in (> 0)
-    member_side : -1 pinion (x_c < 0), +1 gear (x_c > 0)
-    outward_sign : +1 or -1, multiplies the unit normal for :class:`gearrep.tca.GearPair`
-        (the two members of a pair need opposite signs)
-    u_range, theta_range : flank domain (lower, upper) of the rack parameters, in
-    tol, maxiter : Newton settings of the meshing solve
-    profile : ``"parabola"`` (:class:`gearrep.surfaces.rack.ParabolicRackCutter`, seed 002 sec. 2)
-        or ``"circular_arc"`` (:class:`gearrep.surfaces.rack.CircularArcRackCutter`, the
-        osculating circle at Q: the racks of seed 002 sec. 6.2 versions 1-2)
-    """
-
-    def __init__(
-        self,
-        a: float,
-        alpha_n: float,
-        l: float,
-        beta: float,
-        r_p: float,
-        member_side: int,
-        outward_sign: int = 1,
-        u_range=(-0.5, 0.5),
-        theta_range=(-10.0, 10.0),
-        tol: float = 1e-13,
-        maxiter: int = 30,
-        profile: str = "parabola",
-    ):
-        if profile not in ("parabola", "circular_arc"):
-            raise ValueError(f"profile must be 'parabola' or 'circular_arc', got {profile!r}")
-        if profile == "circular_arc" and not (np.isfinite(a) and a != 0):
-            raise ValueError(f"a must be finite and nonzero for a circular-arc profile (rho = 1/(2a)), got {a!r}")
-        if outward_sign not in (1, -1):
-            raise ValueError(f"outward_sign must be +1 or -1, got {outward_sign!r}")
-        for name, rng in (("u_range", u_range), ("theta_range", theta_range)):
-            lo, hi = (float(x) for x in rng)
-            if not (np.isfinite(lo) and np.isfinite(hi) and lo < hi):
-                raise ValueError(f"{name} must be (lower, upper) with lower < upper, got {rng!r}")
-        if profile == "parabola":
-            self.rack = ParabolicRackCutter(a, alpha_n, l, beta=beta)
-        else:
-            self.rack = CircularArcRackCutter(1.0 / (2.0 * a), alpha_n, l, beta=beta)
-        self.r_p = float(r_p)
-        self.member_side = int(member_side)
-        self.envelope = Envelope(
-            self.rack, rack_generation_motion(self.r_p, self.member_side), free=("u", "v"), tol=tol, maxiter=maxiter
-        )
-        self._surface = self.envelope.surface(0.0)
-        self.outward_sign = int(outward_sign)
-        self.lower = np.array([float(u_range[0]), float(theta_range[0])])
-        self.upper = np.array([float(u_range[1]), float(theta_range[1])])
-
-    def solve(self, u, theta):
-        """:class:`gearrep.envelope.EnvelopeResult` (rolling angle, point, tool normal) at (u, theta)."""
-        return self.envelope.solve(u, theta, guess=0.0)
-
-    def rolling_angle(self, u, theta):
-        """Rolling angle phi(u, theta) and its derivatives (phi, phi_u, phi_uu, phi_theta) in closed
-        form: the equation of meshing (r_p phi - y_c) N_x + x_c N_y = 0 (seed 002 eq 2.3.6) is
-        linear in phi. With x_c = x_b(u), y_c = y_b(u) cos(beta) + theta sin(beta), N_x = y_b'(u),
-
-        N_y = -x_b'(u) cos(beta) (:mod:`gearrep.surfaces.rack`):
-            phi = [cos(beta) y_P(u) + theta sin(beta)] / r_p,
-
-        y_P = y_b + x_b x_b' / y_b' the point where the profile normal meets the pitch line
-        (:meth:`gearrep.surfaces.rack.RackCutter.pitch_crossing`).
-        """
-        one = type(u) is float and type(theta) is float  # one point on Python floats: floats
-        if not one:
-            u, theta = np.broadcast_arrays(np.asarray(u, float), np.asarray(theta, float))
-        yp, yp1, yp2 = self.rack.pitch_crossing(u)
-        cb, sb = self.rack._cb, self.rack._sb
-        rp = self.r_p
-        return (
-            (yp * cb + theta * sb) / rp,
-            yp1 * cb / rp,
-            yp2 * cb / rp,
-            sb / rp if one else np.full(u.shape, sb / rp),
-        )
-
-    def position(self, u, v) -> np.ndarray:
-        return self.evaluate(u, v).r
-
-    def evaluate(self, u, v) -> SurfacePoint:
-        """Position and analytic first and second derivatives of r = Rz(s phi)(r_c + T(phi)),
-        s = -member_side, T = (s r_p, -r_p phi, 0) (the motion of
-        :func:`gearrep.motion.rack_generation_motion`), phi(u, theta) from :meth:`rolling_angle`
-        (phi_u_theta = phi_theta_theta = 0). Tested against the envelope solve and
-        :class:`gearrep.envelope.EnvelopeSurface` (tests/unit/surfaces/test_novikov.py)."""
-        return SurfacePoint.from_components(self.evaluate_components(u, v))
-
-    def evaluate_components(self, u, v) -> tuple:
-        """:meth:`evaluate` by components (structure of arrays): with K w = e_z x w = (-w_y, w_x, 0)
-        and T' = (0, -r_p, 0), q = r_c + T, dq/dj = r_c,j + T' phi_j,
-        q_j = dq/dj + s K q phi_j, d(q_i)/dj = r_c,ij + T' phi_ij + s K (dq/dj) phi_i + s K q phi_ij,
-        r_ij = s K q_i phi_j + d(q_i)/dj, each turned by Rz(s phi); the terms with a zero component
-        of K or T' are left out of the axial (and T' of the x) components."""
-        one = type(u) is float and type(v) is float and type(self.rack) is ParabolicRackCutter
-        if not one:  # (one point of a parabolic rack on Python floats: floats throughout)
-            u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
-        c_r, c_u, c_v, c_uu, c_uv, c_vv = self.rack.evaluate_components(u, v)
-        phi, pu, puu, pv = self.rolling_angle(u, v)
-        s = -float(self.member_side)
-        rp = self.r_p
-        q = (c_r[0] + s * rp, c_r[1] + -rp * phi, c_r[2])
-        dq_u = (c_u[0], c_u[1] + -rp * pu, c_u[2])
-        dq_v = (c_v[0], c_v[1] + -rp * pv, c_v[2])
-
-        def sK(w, f):  # (s K w) f, x and y components
-            return s * -w[1] * f, s * w[0] * f
-
-        def plus(a, w, f):  # a + (s K w) f (a 3-tuple; K w has no axial component)
-            x, y = sK(w, f)
-            return (a[0] + x, a[1] + y, a[2])
-
-        qu = plus(dq_u, q, pu)
-        qv = plus(dq_v, q, pv)
-        dqu_u = plus(plus((c_uu[0], c_uu[1] + -rp * puu, c_uu[2]), dq_u, pu), q, puu)
-        dqu_v = plus(c_uv, dq_v, pu)
-        dqv_v = plus(c_vv, dq_v, pv)
-
-        def then(w, f, a):  # (s K w) f + a
-            x, y = sK(w, f)
-            return (x + a[0], y + a[1], a[2])
-
-        r_uu = then(qu, pu, dqu_u)
-        r_uv = then(qu, pv, dqu_v)
-        r_vv = then(qv, pv, dqv_v)
-        cz, sz = (math.cos(s * phi), math.sin(s * phi)) if one else (np.cos(s * phi), np.sin(s * phi))
-        return tuple(frames.rotate_z(cz, sz, w) for w in (q, qu, qv, r_uu, r_uv, r_vv))
-
-    def profile_angle(self, u) -> np.ndarray:
-        """Turn of the rack profile tangent from Q to parameter u (rad): atan(2 a u) for the
-        parabola, u / rho for the circular arc (u its arc length): the change of the normal
-        pressure angle at a contact point generated by rack point u."""
-        u = np.asarray(u, float)
-        if isinstance(self.rack, CircularArcRackCutter):
-            return u / self.rack.rho
-        return np.arctan(2.0 * self.rack.a * u)
-
-
 def undercut_limit(flank: RackGeneratedFlank, u_guess: float) -> tuple[float, float]:
     """Litvin's limiting line on the rack (seed 002 sec. 2.4): the rack profile parameter u* whose
     points generate singular points of the member (:func:`gearrep.envelope.singular_points` at
     theta = 0; the line is parallel to the rack generatrix) and its height x_b(u*) from the rack
     pitch line (negative: on the member's side). Rack points beyond u* undercut the member.
-    ``u_guess``: a start on the side of interest. Raises RuntimeError if the solve fails."""
+    ``u_guess``: a start on the side of interest. Raises RuntimeError if the solve fails.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u_guess : float
+        Start [in], finite.
+
+    Returns
+    -------
+    u : float
+        u* [in].
+    x_b : float
+        Its height from the rack pitch line [in].
+
+    Raises
+    ------
+    ValueError
+        If ``u_guess`` is not finite.
+    RuntimeError
+        If the singular-point solve does not converge.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import member_flank, undercut_limit
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> u, x_b = undercut_limit(pinion, -0.3)  # in
+    >>> round(u, 5), round(x_b, 5)
+    (-0.19656, -0.10848)
+    """
     if not np.isfinite(u_guess):
         raise ValueError(f"u_guess must be finite, got {u_guess!r}")
     phi0 = flank.rolling_angle(np.array([u_guess]), np.array([0.0]))[0]
@@ -295,7 +283,41 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
 
     All three are bracketed on ``n`` samples (a sample on the generation's pole, where the
     rolling angle is undefined, is skipped) and refined by Brent's method (xtol 1e-15).
-    Returns (u, x_b(u), kind); (NaN, NaN, "none") if neither occurs before ``u_end``."""
+    Returns (u, x_b(u), kind); (NaN, NaN, "none") if neither occurs before ``u_end``.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u_end : float
+        End of the scan [in], finite and nonzero (its sign picks the side of Q).
+    n : int, optional
+        Samples, >= 10.
+
+    Returns
+    -------
+    u : float
+        [in].
+    x_b : float
+        Height from the rack pitch line [in].
+    kind : str
+        ``"singular"``, ``"zero_pressure_angle"``, ``"profile_end"`` or ``"none"``.
+
+    Raises
+    ------
+    ValueError
+        If ``u_end`` or ``n`` is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import addendum_limit, member_flank
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> u, x_b, kind = addendum_limit(pinion, -0.4, n=100)  # in
+    >>> round(u, 5), round(x_b, 5), kind  # Litvin's limiting point (as undercut_limit)
+    (-0.19656, -0.10848, 'singular')
+    """
     from scipy.optimize import brentq
 
     if not (np.isfinite(u_end) and u_end != 0):
@@ -340,7 +362,33 @@ def addendum_limit(flank: RackGeneratedFlank, u_end: float, n: int = 400) -> tup
 def transverse_point(flank: RackGeneratedFlank, u) -> tuple[np.ndarray, np.ndarray]:
     """(radius, polar angle) of the member's transverse section z = 0 generated by rack profile
     parameter ``u``: the rack point with theta = y_b(u) tan(beta) lies in that plane (z of the
-    generated point is theta cos(beta) - y_b sin(beta) at every rolling angle)."""
+    generated point is theta cos(beta) - y_b sin(beta) at every rolling angle).
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    u : float or array_like
+        Rack profile parameters [in].
+
+    Returns
+    -------
+    radius : numpy.ndarray
+        [in].
+    angle : numpy.ndarray
+        Polar angle [rad].
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import member_flank, transverse_point
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> radius, angle = transverse_point(pinion, [0.0, 0.1])  # in
+    >>> np.round(radius, 5).tolist(), np.round(angle, 5).tolist()  # in, rad
+    ([1.88694, 1.98805], [-0.09295, -0.056])
+    """
     u = np.atleast_1d(np.asarray(u, float))
     th = flank.rack.profile(u)[1] * np.tan(flank.rack.beta)
     r = flank.evaluate(u, th).r
@@ -356,7 +404,48 @@ def pointing_limit(flank: RackGeneratedFlank, pitch_n: float, rack_tooth_n: floa
     the normal pitch pi/P_n, ``rack_tooth_n`` the rack tooth thickness at the pitch line, normal
     section). Searches u between the pitch line and ``u_max`` (on the rack dedendum side, away
     from the member).
-    Returns (u, x_b(u), tip radius); NaN everywhere if the top land stays above ``top_land``."""
+    Returns (u, x_b(u), tip radius); NaN everywhere if the top land stays above ``top_land``.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The member's flank.
+    pitch_n : float
+        Normal pitch pi / P_n [in], > 0.
+    rack_tooth_n : float
+        Rack tooth thickness at the pitch line, normal section [in], in (0, pitch_n).
+    top_land : float
+        The smallest top land [in], >= 0.
+    u_max : float
+        End of the search on the rack dedendum [in].
+
+    Returns
+    -------
+    u : float
+        [in].
+    x_b : float
+        Height from the rack pitch line [in].
+    radius : float
+        The member's tip radius there [in].
+
+    Raises
+    ------
+    ValueError
+        If a length is out of range or ``u_max`` lies before the pitch line.
+    RuntimeError
+        If the rack profile does not cross its pitch line.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.novikov import member_flank, pointing_limit
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.548), "pinion")  # in
+    >>> p_n = math.pi / P_n  # in
+    >>> u, x_b, r_tip = pointing_limit(pinion, p_n, 0.5 * p_n, 0.0, 0.5)  # the pointed tooth [in]
+    >>> round(u, 5), round(x_b, 5), round(r_tip, 5)
+    (0.17721, 0.23157, 2.06195)
+    """
     from scipy.optimize import brentq
 
     for name, v in (("pitch_n", pitch_n), ("rack_tooth_n", rack_tooth_n)):
@@ -425,6 +514,48 @@ class DiskGroundPinion(Surface):
     the screw motion and the plunge (:meth:`evaluate_components`); :meth:`fd_evaluate` is the
     same surface differentiated by finite differences (the reference they are tested against).
     The report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
+
+    Parameters
+    ----------
+    flank : RackGeneratedFlank
+        The profile-crowned pinion helicoid.
+    N : int
+        Pinion teeth [1], >= 3.
+    pitch_n : float
+        Normal pitch [in], > 0.
+    rack_tooth_n : float
+        Rack tooth thickness at the pitch line, normal section [in], in (0, pitch_n).
+    E_d : float
+        Disk-pinion shortest distance [in], above the pinion's pitch radius.
+    a_pd : float
+        Plunging coefficient [1/in], >= 0.
+    u_range : (float, float), optional
+        Rack-parameter range of the grinding line [in].
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+    RuntimeError
+        If the grinding line cannot be solved.
+
+    Examples
+    --------
+    At psi = 0 the plunge vanishes; half a radian away it moves the surface by
+    a_pd (p psi)^2:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import DiskGroundPinion, member_flank
+    >>> an, P_n = math.radians(25.0), 5.0  # rad, 1/in
+    >>> pinion = member_flank(17, P_n, 0.425, an, math.cos(an) / P_n, math.radians(19.95), "pinion")  # in
+    >>> p_n = math.pi / P_n  # in
+    >>> ground = DiskGroundPinion(pinion, 17, p_n, 0.5 * p_n, 6.0, 0.0013)  # E_d [in], a_pd [1/in]
+    >>> flat = DiskGroundPinion(pinion, 17, p_n, 0.5 * p_n, 6.0, 0.0)
+    >>> float(np.linalg.norm(ground.position(0.3, 0.0) - flat.position(0.3, 0.0)))  # u [in], psi [rad]
+    0.0
+    >>> round(float(np.linalg.norm(ground.position(0.0, 0.5) - flat.position(0.0, 0.5))), 5)  # in
+    0.00807
     """
 
     fd_step = (1e-4, 1e-4)
@@ -501,7 +632,18 @@ class DiskGroundPinion(Surface):
         return th
 
     def line(self, u) -> np.ndarray:
-        """Points of the grinding line L (frame turned by -phi_s), interpolated."""
+        """Points of the grinding line L (frame turned by -phi_s), interpolated.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Rack profile parameters [in].
+
+        Returns
+        -------
+        numpy.ndarray
+            (..., 3) points [in].
+        """
         return self._line(np.asarray(u, float))
 
     def position(self, u, v) -> np.ndarray:
@@ -542,7 +684,20 @@ class DiskGroundPinion(Surface):
 
     def fd_evaluate(self, u, v) -> SurfacePoint:
         """The derivatives by fourth-order central differences of :meth:`position` (the surface
-        protocol's default; the reference of the analytic ones)."""
+        protocol's default; the reference of the analytic ones).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Rack profile parameter [in].
+        v : float or array_like
+            Screw-motion angle psi [rad].
+
+        Returns
+        -------
+        gearrep.surface.SurfacePoint
+            Position and derivatives.
+        """
         return Surface.evaluate(self, u, v)
 
     def evaluate_components(self, u, v) -> tuple:
@@ -571,44 +726,3 @@ class DiskGroundPinion(Surface):
             (-gx - 2.0 * s * qv + c * qvv, -gy - 2.0 * c * qv - s * qvv, zero),
         )
         return tuple(frames.rotate_z(self._cs, self._ss, w) for w in parts)
-
-
-class NormalPartSurface(Surface):
-    """An enveloping surface whose ``evaluate`` returns the exact position and first derivatives
-    (one envelope solve) and only the NORMAL components of the second derivatives, from the
-    generated curvatures (Litvin's relations, :func:`gearrep.curvature_relations.generated_curvatures`):
-    r_ij = II(r_i, r_j) n. The tangential components are set to zero: they enter neither the
-    derivative of the unit normal ((I - n n^T) d(r_u x r_v) / |r_u x r_v| removes them) nor any
-    curvature, which is all :mod:`gearrep.tca` uses second derivatives for. About 9 times cheaper
-    than :class:`gearrep.envelope.EnvelopeSurface` (which differentiates the solved parameters
-    numerically). Attributes of the wrapped surface (``outward_sign``, ``lower``, ``upper``, ...)
-    are forwarded."""
-
-    def __init__(self, base):
-        self.base = base
-
-    def __getattr__(self, name):
-        if name == "base":
-            raise AttributeError(name)
-        return getattr(self.base, name)
-
-    def position(self, u, v) -> np.ndarray:
-        return self.base.position(u, v)
-
-    def evaluate(self, u, v) -> SurfacePoint:
-        u, v = np.broadcast_arrays(np.asarray(u, float), np.asarray(v, float))
-        shape = u.shape
-        rec = self.base.solve(u.reshape(-1), v.reshape(-1))
-        ok = np.isin(rec.status, (int(Status.CONVERGED), int(Status.OFF_FLANK)))
-        r, ru, rv = rec.point, rec.tangents[:, 0], rec.tangents[:, 1]
-        gc = generated_curvatures(self.base.envelope, rec.params)
-
-        def II(a, b):
-            return (
-                gc.k1 * np.sum(a * gc.e1, -1) * np.sum(b * gc.e1, -1)
-                + gc.k2 * np.sum(a * gc.e2, -1) * np.sum(b * gc.e2, -1)
-            )[:, None] * gc.normal
-
-        out = [r, ru, rv, II(ru, ru), II(ru, rv), II(rv, rv)]
-        out = [np.where(ok[:, None], x, np.nan).reshape(shape + (3,)) for x in out]
-        return SurfacePoint(*out)

@@ -106,6 +106,67 @@ class WormGeneratedPinion(Surface):
     one-dimensional reduction of the equations of meshing
     (:class:`gearrep.surfaces.worm_ground.ReducedWormSurface`: one unknown by Newton's method,
     the other in closed form), tested against the envelope solve.
+
+    Parameters
+    ----------
+    a : float
+        Parabola coefficient of the rack profile [1/in] (the pinion's a_c).
+    alpha_n : float
+        Normal pressure angle [rad].
+    l : float
+        |QP| [in].
+    beta : float
+        Helix angle of the pinion [rad] (its sign the hand).
+    r_p : float
+        Pitch radius of the pinion [in].
+    P_n : float
+        Normal diametral pitch [1/in].
+    r_pw : float
+        Worm pitch radius [in], > 0.
+    a_pl : float
+        Plunging coefficient [1/in], >= 0.
+    N_w : int, optional
+        Worm threads [1], with N_w / (2 P_n r_pw) < 1.
+    outward_sign : {1, -1}, optional
+        Multiplies the unit normal for :class:`gearrep.tca.GearPair`.
+    psi_range : (float, float), optional
+        Domain of psi [rad].
+    l_range : (float, float), optional
+        Domain of the feed l [in].
+    tol : float, optional
+        Tolerance of the meshing solve.
+    maxiter : int, optional
+        Iteration limit of the meshing solve.
+    feed : {"translation", "rotation"}, optional
+        The feed along the pinion helix (above).
+    worm_hand : {"same", "opposite"}, optional
+        The worm's hand relative to the pinion's.
+
+    Raises
+    ------
+    ValueError
+        If a value is out of range.
+    RuntimeError
+        If the reference contact of worm and pinion does not converge.
+
+    Examples
+    --------
+    The worm of seed 002 sec. 5.4 (r_pw = 3.82 in, a_pl = 0.00139 1/in, one thread):
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import pitch_radius
+    >>> from gearrep.surfaces.worm_ground import WormGeneratedPinion
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.95)  # rad, 1/in, rad
+    >>> worm = WormGeneratedPinion(0.425, an, math.cos(an) / P_n, beta, pitch_radius(17, P_n, beta), P_n, 3.82, 0.00139)
+    >>> round(math.degrees(worm.lambda_w), 4)  # the worm's lead angle [deg]
+    1.5001
+    >>> psi, l = np.array([0.0, 0.1]), np.array([0.0, 0.5])  # rad, in
+    >>> rec = worm.solve(psi, l)
+    >>> rec.status.tolist(), np.round(rec.point[:, 2], 5).tolist()  # converged; axial coordinates [in]
+    ([0, 0], [0.05605, 0.60608])
+    >>> bool(np.allclose(worm.light().evaluate(psi, l).r, rec.point, atol=1e-12))  # the reduced surface agrees
+    True
     """
 
     def __init__(
@@ -214,7 +275,20 @@ class WormGeneratedPinion(Surface):
         return self._q0[2:] + d @ self._J.T
 
     def solve(self, psi, l):
-        """:class:`gearrep.envelope.EnvelopeResult` at generating parameters (psi, l)."""
+        """:class:`gearrep.envelope.EnvelopeResult` at generating parameters (psi, l).
+
+        Parameters
+        ----------
+        psi : float or array_like
+            Generating rotation [rad].
+        l : float or array_like
+            Feed along the pinion axis [in].
+
+        Returns
+        -------
+        gearrep.envelope.EnvelopeResult
+            The envelope solve's record (points in the pinion frame [in]).
+        """
         return self.envelope.solve(psi, l, guess=self._guess)
 
     def position(self, u, v) -> np.ndarray:
@@ -226,7 +300,13 @@ class WormGeneratedPinion(Surface):
     def light(self) -> NormalPartSurface:
         """This surface for TCA: the exact position and first derivatives and the normal parts of
         the second derivatives, by the one-dimensional reduction of the equations of meshing
-        (:class:`ReducedWormSurface`, a :class:`NormalPartSurface`)."""
+        (:class:`ReducedWormSurface`, a :class:`NormalPartSurface`).
+
+        Returns
+        -------
+        ReducedWormSurface
+            The reduced surface.
+        """
         return ReducedWormSurface(self)
 
 
@@ -268,8 +348,37 @@ class ReducedWormSurface(NormalPartSurface):
     components of the second derivatives (tangential components zero, as :class:`NormalPartSurface`,
     whose attributes it shares). Python floats (one point) compute on floats.
 
-    ``tol``: convergence when |f_psi| (and so the meshing residual) is below it (default the
-    envelope's tolerance); ``maxiter``: Newton iterations at most (0: the start only)."""
+    Parameters
+    ----------
+    base : WormGeneratedPinion
+        The worm-ground pinion (its worm's rack a parabola).
+    tol : float, optional
+        Convergence when |f_psi| (and so the meshing residual) is below it [in] (default the
+        envelope's tolerance).
+    maxiter : int, optional
+        Newton iterations at most (0: the start only).
+
+    Raises
+    ------
+    ValueError
+        If ``base`` is not a :class:`WormGeneratedPinion` with a parabolic rack, or ``tol`` or
+        ``maxiter`` is bad.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.novikov import pitch_radius
+    >>> from gearrep.surfaces.worm_ground import ReducedWormSurface, WormGeneratedPinion
+    >>> an, P_n, beta = math.radians(25.0), 5.0, math.radians(19.95)  # rad, 1/in, rad
+    >>> worm = WormGeneratedPinion(0.425, an, math.cos(an) / P_n, beta, pitch_radius(17, P_n, beta), P_n, 3.82, 0.00139)
+    >>> fast = ReducedWormSurface(worm)
+    >>> state, converged, iterations = fast.solve_reduced(0.1, 0.5)  # psi [rad], l [in]: floats
+    >>> converged, bool(abs(state["residual"]) < fast.tol)
+    (True, True)
+    >>> bool(np.allclose(fast.evaluate(0.1, 0.5).r, worm.solve(0.1, 0.5).point[0], atol=1e-12))  # in
+    True
+    """
 
     #: largest change of psi (rad) and of l (length) from the last evaluation that starts from its
     #: prediction (a step of the outer solve; a new batch starts from the linear start)
@@ -448,7 +557,26 @@ class ReducedWormSurface(NormalPartSurface):
     def solve_reduced(self, psi, l, start=None):
         """The one-dimensional solve at generating parameters (psi, l) (arrays of one shape, or two
         Python floats) from ``start`` = (u, tau) (default the linear start of :meth:`_start`):
-        (state dict of :meth:`_state` at the last iterate, converged (bool or array), iterations)."""
+        (state dict of :meth:`_state` at the last iterate, converged (bool or array), iterations).
+
+        Parameters
+        ----------
+        psi : float or array_like
+            Generating rotation [rad].
+        l : float or array_like
+            Feed [in].
+        start : (u, tau), optional
+            Rack profile parameter [in] and total thread turn [rad] to start from.
+
+        Returns
+        -------
+        state : dict
+            The reduced relations at the last iterate (``u`` [in], ``tau`` [rad], ``residual`` [in], ...).
+        converged : bool or numpy.ndarray
+            Whether |f_psi| < ``tol``.
+        iterations : int or numpy.ndarray
+            Newton iterations.
+        """
         one = type(psi) is float and type(l) is float
         u, tau = self._start(psi, l, one) if start is None else start
         it = 0 if one else np.zeros(np.shape(psi), int)

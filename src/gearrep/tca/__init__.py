@@ -90,20 +90,21 @@ spherical form of member 2 used by the reduced formulation); every solve here ac
 Pairs of generated flanks (seed 000 eq 5.1-5.11): two two-parameter envelopes
 (:class:`gearrep.surfaces.hob.GeneratedGear`) meet in a 9-unknown tangency system
 (:func:`envelope_tangency_system`, :func:`solve_envelope_points`, :func:`trace_envelope_path`,
-:func:`envelope_physical_contact`, :func:`robust_envelope_points`; private module ``_envelope``);
-the curvilinear-tooth pair cut by one ZA hob is :class:`HobbedPair` with its
-:class:`HobbedAssembly` errors, reached by continuation from the ideal pair
+:func:`envelope_physical_contact`, :func:`robust_envelope_points`; private modules ``_envelope``
+and ``_envelope_contact``); the curvilinear-tooth pair cut by one ZA hob is :class:`HobbedPair`
+with its :class:`HobbedAssembly` errors, reached by continuation from the ideal pair
 (:func:`hobbed_continue_to`), with its kinematic-error table (:func:`ke_table`), tip crossings and
 contact ellipses (private module ``_hobbed``). Their names here carry ``envelope`` or ``hobbed``
 where the module's own name is generic (``Pair``, ``trace_path``).
 
-Start strategies and solver variants (plain / damped / domain-kept / seeded / robust Newton for
-the conventional formulation, plain / damped / robust for the reduced one, random and
-line-of-action starts) are in this package too (private module ``_starts``). The library's start
-strategy for any start on the flank is :func:`robust_contact` (projection into member 2's explicit
-domain, reduced solve, conventional seeded from it, a grid fallback keeping the loaded tangency);
-:func:`reference_contacts` and :func:`start_robustness` (private module ``_robustness``) measure a
-strategy against the contact traced by continuation and verified.
+Start strategies (random and line-of-action starts, private module ``_starts``) and solver
+variants (plain / damped / domain-kept / seeded / robust Newton for the conventional formulation,
+plain / damped / robust for the reduced one, private module ``_variants``) are in this package
+too. The library's start strategy for any start on the flank is :func:`robust_contact`
+(projection into member 2's explicit domain, reduced solve, conventional seeded from it, a grid
+fallback keeping the loaded tangency); :func:`reference_contacts` and :func:`start_robustness`
+(private module ``_robustness``) measure a strategy against the contact traced by continuation
+and verified.
 
 All solves go through :func:`gearrep.solve.newton`. Per-row data (phi1, a fixed v1, the dropped
 component) are carried as extra unknowns frozen by identity rows with zero residual, because
@@ -121,7 +122,7 @@ numba took 1.5 s and the first compilation 15 s per process (load ~9 on 2 cores)
 cold-run goal of 45 s for the whole workflow: not adopted; numpy is the only path.
 """
 
-from . import _envelope, _hobbed
+from . import _envelope, _envelope_contact, _hobbed
 from ._bevel import BevelMisalignment, BevelPair
 from ._curvature import contact_curvatures, contact_ellipse, contact_hertz
 from ._envelope import hob_pitch_l
@@ -140,19 +141,21 @@ from ._path import trace_path
 from ._robustness import ROBUSTNESS_COLUMNS, classify_contacts, reference_contacts, start_robustness
 from ._rows import newton_rows
 from ._starts import (
-    CONVENTIONAL_VARIANTS,
     FALLBACK_GRID,
-    REDUCED_VARIANTS,
     draw_starts,
-    flank_boxes,
     flank_sense,
-    guard_reduced_starts,
     line_of_action_start,
     line_of_action_starts,
     meshing_sense,
     offset_start,
     project_starts,
     robust_contact,
+)
+from ._variants import (
+    CONVENTIONAL_VARIANTS,
+    REDUCED_VARIANTS,
+    flank_boxes,
+    guard_reduced_starts,
     robust_start,
     seed_from_reduced,
     solve_conventional,
@@ -161,7 +164,7 @@ from ._starts import (
     transverse_stage,
 )
 
-#: the envelope-pair TCA (private module ``_envelope``) under names that say so
+#: the envelope-pair TCA (private modules ``_envelope``, ``_envelope_contact``) under names that say so
 EnvelopeFlank = _envelope.Flank
 envelope_flank = _envelope.make_flank
 envelope_member_geometry = _envelope.member_geometry
@@ -172,12 +175,12 @@ solve_envelope_points = _envelope.solve_points
 predict_envelope_contact = _envelope.predict
 require_converged = _envelope.require
 trace_envelope_path = _envelope.trace_path
-envelope_physical_contact = _envelope.physical_contact
-envelope_pinion_outward = _envelope.pinion_outward
-envelope_tangency_near = _envelope.tangency_near
-envelope_turn_gap = _envelope.turn_gap
-robust_envelope_points = _envelope.robust_points
-classify_envelope_points = _envelope.classify_points
+envelope_physical_contact = _envelope_contact.physical_contact
+envelope_pinion_outward = _envelope_contact.pinion_outward
+envelope_tangency_near = _envelope_contact.tangency_near
+envelope_turn_gap = _envelope_contact.turn_gap
+robust_envelope_points = _envelope_contact.robust_points
+classify_envelope_points = _envelope_contact.classify_points
 #: the hob-cut curvilinear pair (private module ``_hobbed``)
 HobbedAssembly = _hobbed.Assembly
 HobbedPair = _hobbed.Pair

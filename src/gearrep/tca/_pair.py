@@ -255,6 +255,16 @@ class GearPair:
         )
 
     @cached_property
+    def _flank1_facing(self) -> float:
+        """The side flank 1 faces (:func:`gearrep.tca.flank_sense`): the sign of (r x n)_z of
+        member 1 at the middle of its box, the same at every phi1 (member 1 turns about z_f, which
+        leaves the z component of r x n unchanged)."""
+        mid = 0.5 * (self.lower1 + self.upper1)
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            r, n = self.member1(mid[:1], mid[1:], np.zeros(1))
+        return float(np.sign(r[0, 0] * n[0, 1] - r[0, 1] * n[0, 0]))
+
+    @cached_property
     def _flank2_limits(self) -> tuple:
         """(u_lo, u_hi, v_lo, v_hi) of member 2's flank with a relative slack of 1e-12 (a solved
         point beyond them is OFF_FLANK)."""

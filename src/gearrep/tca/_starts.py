@@ -1,15 +1,7 @@
-"""Start strategies and solver variants of both TCA formulations (see :mod:`gearrep.tca`).
-
-Conventional variants (five unknowns u1, v1, u2, v2, phi2 at a given phi1):
-``plain`` full Newton steps, iterates free; ``damped`` Armijo backtracking; ``domain`` damped with
-every iterate projected onto the flank boxes; ``seeded`` plain Newton from (u1, v1) and the u2, v2,
-phi2 that the reduced relations (eq 39-44) give for them (:func:`seed_from_reduced`); ``robust``
-plain Newton from :func:`robust_start`, seeded likewise.
-
-Reduced variants (two unknowns u1, v1): ``reduced`` plain Newton, ``reduced_damped``,
-``reduced_robust`` plain Newton from :func:`robust_start`: a start whose explicit u2 would fall
-below flank 2 is moved down the profile (:func:`guard_reduced_starts`), then onto the
-instantaneous contact line by a 1-D solve (:func:`transverse_stage`).
+"""Start strategies of the TCA (see :mod:`gearrep.tca`): first-order starts along the line of
+action, random starts over the flanks, a family's nominal starts moved by the offset of a solved
+contact, and the library's strategy for a start anywhere on the flank (:func:`robust_contact`).
+The solver variants the start-robustness study compares are in the private module ``_variants``.
 """
 
 from __future__ import annotations
@@ -18,30 +10,13 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..inputs import check_integer, check_positive, real_or_nan
-from ..solve import SolveResult, Status, newton
-from ..surface import cross
-from ._formulations import (
-    _angles,
-    _conventional_callables,
-    check_formulation,
-    newton_rows,
-    reduced_unknowns,
-    solve_contact,
-)
+from ..inputs import check_integer, check_positive
+from ..solve import Status
+from ._formulations import _angles, check_formulation, solve_contact
 from ._pair import GearPair
+from ._variants import _guard, _start_pairs, _transverse, seed_from_reduced
 
 __all__ = [
-    "CONVENTIONAL_VARIANTS",
-    "REDUCED_VARIANTS",
-    "flank_boxes",
-    "solve_conventional",
-    "seed_from_reduced",
-    "guard_reduced_starts",
-    "transverse_stage",
-    "robust_start",
-    "solve_reduced",
-    "solve_variant",
     "line_of_action_start",
     "line_of_action_starts",
     "draw_starts",
@@ -52,185 +27,6 @@ __all__ = [
     "meshing_sense",
     "flank_sense",
 ]
-
-CONVENTIONAL_VARIANTS = ("plain", "damped", "domain", "seeded", "robust")
-REDUCED_VARIANTS = ("reduced", "reduced_damped", "reduced_robust")
-
-
-def _one_angle(phi1) -> float:
-    """``phi1`` as one finite angle [rad] (a scalar or a length-1 array)."""
-    a = np.asarray(phi1, dtype=float)
-    if a.size != 1 or a.ndim > 1 or not np.isfinite(a).all():
-        raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
-    return float(a.reshape(()))
-
-
-def _start_pairs(phi1, u1, v1):
-    """(phi1 (n,), u1 (n,), v1 (n,)) of (u1, v1) starts: u1, v1 1-D of one length n >= 1, finite
-    phi1 one angle or one per start."""
-    u1 = np.asarray(u1, dtype=float)
-    v1 = np.asarray(v1, dtype=float)
-    if u1.ndim != 1 or u1.size == 0 or v1.shape != u1.shape:
-        raise ValueError(
-            f"u1 and v1 must be non-empty 1-D arrays of the same length (one per start), got shapes {u1.shape} "
-            f"and {v1.shape}"
-        )
-    ph = np.asarray(phi1, dtype=float)
-    if not (ph.ndim == 0 or (ph.ndim == 1 and len(ph) in (1, len(u1)))):
-        raise ValueError(f"phi1 must be one angle or one per start (length {len(u1)}), got shape {ph.shape}")
-    if not np.all(np.isfinite(ph)):
-        raise ValueError(f"phi1 must be finite, got {phi1!r}")
-    return np.broadcast_to(ph, u1.shape), u1, v1
-
-
-def _starts5(x0, name: str = "x0") -> np.ndarray:
-    """Conventional starts as an (n, 5) array, n >= 1."""
-    a = np.asarray(x0, dtype=float)
-    if a.ndim != 2 or a.shape[0] == 0 or a.shape[1] != 5:
-        raise ValueError(
-            f"{name} must be an (n, 5) array of starts (u1, v1, u2, v2, phi2), n >= 1, got shape {a.shape}"
-        )
-    return a
-
-
-def _check_margin(margin) -> None:
-    if not 0.0 <= real_or_nan(margin) < 0.5:
-        raise ValueError(f"margin must be in [0, 0.5) (fraction of the flank height), got {margin!r}")
-
-
-def flank_boxes(pair: GearPair, margin: float = 0.0):
-    """Lower and upper bounds of x = (u1, v1, u2, v2, phi2) on both flanks (phi2 free), u limits
-    moved ``margin`` x height inward (the involute cusp at u = r_b has an infinite second derivative)."""
-    _check_margin(margin)
-    lo = np.concatenate([pair.lower1, pair.lower2, [-np.inf]]).astype(float)
-    hi = np.concatenate([pair.upper1, pair.upper2, [np.inf]]).astype(float)
-    for j in (0, 2):
-        h = hi[j] - lo[j]
-        lo[j] += margin * h
-        hi[j] -= margin * h
-    return lo, hi
-
-
-def solve_conventional(
-    pair: GearPair,
-    phi1: float,
-    x0,
-    *,
-    variant: str = "plain",
-    equations: str = "five",
-    drop: int = 0,
-    tol: float = 1e-12,
-    maxiter: int = 50,
-    margin: float = 1e-6,
-) -> SolveResult:
-    """Conventional TCA at a fixed ``phi1`` from starts ``x0`` (n, 5) with solver ``variant``
-    (:data:`CONVENTIONAL_VARIANTS`; ``seeded`` and ``robust`` expect x0 already prepared by
-    :func:`seed_from_reduced`, and run plain Newton).
-
-    ``equations``: ``"five"`` drops normal component ``drop``, ``"six"`` keeps all three (least
-    squares), ``"drop_nz"`` drops the axial component z (singular for spur gears). The status is
-    the solver's; roots outside the flank boxes are OFF_FLANK.
-    """
-    if variant not in CONVENTIONAL_VARIANTS:
-        raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS}, got {variant!r}")
-    phi1 = _one_angle(phi1)
-    x0 = _starts5(x0)
-    check_positive("tol", tol)
-    check_integer("maxiter", maxiter)
-    _check_margin(margin)
-    if equations not in ("five", "six", "drop_nz"):
-        raise ValueError(f"equations must be 'five', 'six' or 'drop_nz', got {equations!r}")
-    if equations == "five" and drop not in (0, 1, 2):
-        raise ValueError(f"equations='five' needs drop in (0, 1, 2), got {drop!r}")
-    F, J, FJ = _conventional_callables(pair, phi1, {"five": drop, "six": None, "drop_nz": 2}[equations])
-    lo, hi = flank_boxes(pair, 0.0)
-    kw = dict(tol=tol, maxiter=maxiter, lower=lo, upper=hi)
-    if variant == "domain":
-        lo_m, hi_m = flank_boxes(pair, margin)
-        kw.update(damped=True, keep_inside=True, lower=lo_m, upper=hi_m)
-    else:
-        kw.update(damped=(variant == "damped"))
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return newton(F, np.asarray(x0, float), J, inverse_square=True, fun_jac=FJ, **kw)
-
-
-def seed_from_reduced(pair: GearPair, phi1, u1, v1) -> np.ndarray:
-    """Conventional starts (u1, v1, u2, v2, phi2) with u2, v2, phi2 from the reduced relations
-    (eq 39-44) for the given (u1, v1)."""
-    with np.errstate(invalid="ignore", divide="ignore"):
-        u2, v2, phi2 = reduced_unknowns(pair, u1, v1, np.full(np.shape(u1), phi1))
-    return np.column_stack([u1, v1, u2, v2, phi2])
-
-
-def guard_reduced_starts(pair: GearPair, phi1, u1, v1, n_bisect: int = 40):
-    """Move starts whose explicit u2 (eq 40) is below flank 2 (or undefined) down the profile of
-    flank 1 (bisection in u1 towards u1_min) onto the part of flank 1 that maps onto flank 2.
-    ``phi1`` scalar or one angle per start. Returns (u1, moved mask)."""
-    ph, u1, v1 = _start_pairs(phi1, u1, v1)
-    check_integer("n_bisect", n_bisect)
-    return _guard(pair, ph, u1.copy(), v1, n_bisect)
-
-
-def _guard(pair, ph, u1, v1, n_bisect):
-    lo_u2 = pair.lower2[0]
-
-    def ok(u):
-        with np.errstate(invalid="ignore", divide="ignore"):
-            u2, _, phi2 = reduced_unknowns(pair, u, v1, ph)
-        return np.isfinite(phi2) & (u2 >= lo_u2)
-
-    bad = ~ok(u1)
-    if np.any(bad):
-        a = np.full(u1.shape, pair.lower1[0] + 1e-9 * (pair.upper1[0] - pair.lower1[0]))
-        fixable = bad & ok(a)
-        b = u1.copy()
-        for _ in range(n_bisect):
-            mid = 0.5 * (a + b)
-            good = ok(mid)
-            a = np.where(fixable & good, mid, a)
-            b = np.where(fixable & ~good, mid, b)
-        u1 = np.where(fixable, a, u1)
-    return u1, bad
-
-
-def transverse_stage(pair: GearPair, phi1, u1, v1, tol: float = 1e-10, maxiter: int = 50):
-    """Move each start along the profile onto the instantaneous line of contact of the unmodified
-    pair: solve (n_f1 x n_f2) . z_f = 0 for u1 at the start's own v1 (reduced relations eq 39-44).
-
-    For involute spur and helical flanks this axial component is the transverse-plane mismatch of
-    the normals, which vanishes on the plane of action; the remaining (v1) direction is the nearly
-    flat valley along the contact line that crowning makes a point. ``phi1`` scalar or one angle
-    per start. Returns (u1, iterations); rows that fail keep their u1.
-    """
-    ph, u1, v1 = _start_pairs(phi1, u1, v1)
-    check_positive("tol", tol)
-    check_integer("maxiter", maxiter)
-    return _transverse(pair, ph, u1, v1, tol, maxiter)
-
-
-def _transverse(pair, ph, u1, v1, tol, maxiter):
-    def F(x, q):
-        uu, vv, pp = x[:, 0], q[:, 0], q[:, 1]
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            u2, v2, p2 = reduced_unknowns(pair, uu, vv, pp)
-            _, n1 = pair.member1(uu, vv, pp)
-            _, n2 = pair.member2(u2, v2, p2)
-        return cross(n1, n2)[:, 2:3]
-
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r = newton_rows(
-            F, None, u1[:, None], np.column_stack([v1, ph]), jacobian="numeric", tol=tol, maxiter=maxiter, damped=True
-        )
-    ok = r.status == Status.CONVERGED
-    return np.where(ok, r.x[:, 0], u1), r.iterations
-
-
-def robust_start(pair: GearPair, phi1, u1, v1):
-    """Guarded start (:func:`guard_reduced_starts`) moved onto the contact line
-    (:func:`transverse_stage`). Returns (u1, iterations of the 1-D stage)."""
-    ph, u1, v1 = _start_pairs(phi1, u1, v1)
-    u1g, _ = _guard(pair, ph, u1.copy(), v1, 40)
-    return _transverse(pair, ph, u1g, v1, 1e-10, 50)
 
 
 def offset_start(
@@ -266,7 +62,60 @@ def offset_start(
     changes slowly with the angle the moved starts lead to the roots the nominal ones reach
     (tested on the seed-002 pair). A stronger start strategy (a robust solve of the reference)
     plugs in here. Where no reference converges, or ``phi1`` has at most order + 1 angles (the
-    references would be the solves themselves), the nominal starts are returned unchanged."""
+    references would be the solves themselves), the nominal starts are returned unchanged.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (or a :class:`BevelPair`).
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+    nominal : callable
+        ``nominal(pair, phi1)`` -> the family's nominal starts, (n, 5) conventional or (n, 2)
+        reduced unknowns [flank units (mm for involute flanks), rad].
+    formulation : {"conventional", "reduced"}, optional
+        The unknowns of the starts and of the reference solves.
+    solve : callable, optional
+        ``solve(pair, phi_ref, start)`` -> :class:`ContactPoints`, the reference solve (see above).
+    tol : float, optional
+        Residual tolerance of the default reference solve [flank units].
+    maxiter : int, optional
+        Iteration limit of the default reference solve.
+    order : {0, 1, 2, 3}, optional
+        Degree of the offset's polynomial in the angle.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) or (n, 2) starts, the nominal ones moved [flank units, rad].
+
+    Raises
+    ------
+    ValueError
+        If ``formulation`` is unknown, ``order`` is not 0 to 3, or ``nominal`` returns starts of
+        another shape.
+
+    Examples
+    --------
+    A crossing error of 0.05 deg moves the contact of a crowned spur pair 4.1 mm along the face,
+    away from the aligned pair's mid-face starts:
+
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, Misalignment, default_start, offset_start, solve_contact
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> flanks = mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4))  # crown 1/mm
+    >>> pair = GearPair(*flanks, 23, 41, g1.r_p + g2.r_p, misalignment=Misalignment(d_gamma_out=math.radians(0.05)))
+    >>> phi1 = np.linspace(-0.1, 0.1, 5)  # rad
+    >>> def nominal(pair, phi1):
+    ...     return default_start(pair, phi1, "conventional")
+    >>> x0 = offset_start(pair, phi1, nominal)
+    >>> np.round(nominal(pair, phi1)[:, 1], 3).tolist(), np.round(x0[:, 1], 3).tolist()  # v1 [mm]
+    ([0.0, 0.0, 0.0, 0.0, 0.0], [4.1, 4.1, 4.1, 4.1, 4.1])
+    >>> solve_contact(pair, phi1, x0, formulation="conventional").status_name.tolist()
+    ['converged', 'converged', 'converged', 'converged', 'converged']
+    """
     check_formulation(formulation)
     if order not in (0, 1, 2, 3) or type(order) is bool:
         raise ValueError(f"order must be 0 (a constant offset) to 3 (a polynomial in phi1), got {order!r}")
@@ -307,69 +156,6 @@ def offset_start(
     return moved
 
 
-def solve_reduced(pair: GearPair, phi1: float, u1, v1, *, variant: str = "reduced", tol=1e-12, maxiter=50):
-    """Reduced TCA (:func:`solve_contact`) from (u1, v1) starts with solver ``variant``
-    (:data:`REDUCED_VARIANTS`). Returns (x (n, 5) = (u1, v1, u2, v2, phi2), status, iterations,
-    residual); the iterations of the transverse stage are included."""
-    if variant not in REDUCED_VARIANTS:
-        raise ValueError(f"variant must be one of {REDUCED_VARIANTS}, got {variant!r}")
-    u1 = np.asarray(u1, float)
-    v1 = np.asarray(v1, float)
-    extra = np.zeros(u1.shape, dtype=int)
-    if variant == "reduced_robust":
-        u1, extra = robust_start(pair, phi1, u1, v1)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = solve_contact(
-            pair,
-            phi1,
-            np.column_stack([u1, v1]),
-            formulation="reduced",
-            damped=(variant == "reduced_damped"),
-            tol=tol,
-            maxiter=maxiter,
-        )
-    return c.unknowns("conventional"), c.status, c.iterations + extra, c.residual
-
-
-def solve_variant(
-    pair: GearPair,
-    phi1: float,
-    starts,
-    variant: str,
-    *,
-    equations: str = "five",
-    drop: int = 0,
-    tol: float = 1e-12,
-    maxiter: int = 50,
-    margin: float = 1e-6,
-):
-    """Solve conventional starts ``starts`` (n, 5) with any variant of either formulation (the
-    reduced ones use only the (u1, v1) columns). Returns (x (n, 5), status, iterations); a seeded
-    or robust start whose seed is undefined (u2 inside the base circle of member 2) is DIVERGED."""
-    if variant not in CONVENTIONAL_VARIANTS + REDUCED_VARIANTS:
-        raise ValueError(f"variant must be one of {CONVENTIONAL_VARIANTS + REDUCED_VARIANTS}, got {variant!r}")
-    phi1 = _one_angle(phi1)
-    starts = _starts5(starts, "starts")
-    if variant in REDUCED_VARIANTS:
-        x, status, iters, _ = solve_reduced(
-            pair, phi1, starts[:, 0], starts[:, 1], variant=variant, tol=tol, maxiter=maxiter
-        )
-        return x, status, np.asarray(iters)
-    x0, extra = starts, 0
-    if variant == "seeded":
-        x0 = seed_from_reduced(pair, phi1, starts[:, 0], starts[:, 1])
-    elif variant == "robust":
-        u1r, extra = robust_start(pair, phi1, starts[:, 0], starts[:, 1])
-        x0 = seed_from_reduced(pair, phi1, u1r, starts[:, 1])
-    r = solve_conventional(
-        pair, phi1, x0, variant=variant, equations=equations, drop=drop, tol=tol, maxiter=maxiter, margin=margin
-    )
-    status = r.status
-    if variant in ("seeded", "robust"):
-        status = np.where(np.all(np.isfinite(x0), axis=1), status, int(Status.DIVERGED))
-    return r.x, status, np.asarray(r.iterations + extra)
-
-
 def _involute_gear(pair: GearPair):
     """Member 1's gear data for a line-of-action start (a cylindrical involute gear: base radius and
     transverse pressure angle); ValueError for any other flank family."""
@@ -389,7 +175,38 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
     tooth angle away, pi/(2 N1) for a standard tooth: see the package docstring) and moves it along
     the line of action by r_b1 phi1 (direction by trial solve: the one that converges in fewer
     iterations); the Newton solve absorbs that offset of a few tenths of a module. Falls back to
-    (r_p1, 0)."""
+    (r_p1, 0).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 1 a cylindrical involute flank.
+    phi1 : float
+        The angle of member 1 [rad], one finite angle.
+
+    Returns
+    -------
+    numpy.ndarray
+        (2,) start (u1, v1) [mm].
+
+    Raises
+    ------
+    ValueError
+        If ``phi1`` is not one finite angle or member 1 is not a cylindrical involute flank.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, line_of_action_start
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> np.round(line_of_action_start(pair, 0.0), 4).tolist()  # the pitch point, r_p1 = 34.5 mm
+    [34.5, 0.0]
+    >>> np.round(line_of_action_start(pair, 0.1), 4).tolist()  # rad -> mm
+    [35.7389, 0.0]
+    """
     a = np.asarray(phi1, dtype=float)
     if a.ndim != 0 or not np.isfinite(a):
         raise ValueError(f"phi1 must be one finite angle [rad], got {phi1!r}")
@@ -413,7 +230,36 @@ def line_of_action_start(pair: GearPair, phi1: float) -> np.ndarray:
 
 def line_of_action_starts(pair: GearPair, phi1) -> np.ndarray:
     """First-order (u1, v1 = 0) starts along the line of action for the angles ``phi1`` (array);
-    the direction in which the contact climbs member 1's flank is found by one trial solve."""
+    the direction in which the contact climbs member 1's flank is found by one trial solve.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair; member 1 a cylindrical involute flank.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad], finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 2) starts (u1, v1 = 0) [mm], u1 clipped onto flank 1.
+
+    Raises
+    ------
+    ValueError
+        If an angle is not finite or member 1 is not a cylindrical involute flank.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, line_of_action_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> np.round(line_of_action_starts(pair, [-0.1, 0.0, 0.1]), 4).tolist()  # rad -> (u1, v1) [mm]
+    [[33.5299, 0.0], [34.5, 0.0], [35.7389, 0.0]]
+    """
     phi1 = _angles(phi1)
     if not np.all(np.isfinite(phi1)):
         raise ValueError("phi1 must be finite")
@@ -435,7 +281,48 @@ def draw_starts(
 ) -> np.ndarray:
     """Random conventional starts (n, 5), drawn in a fixed order from ``rng``: u1, v1 uniform on
     flank 1, then u2, v2 uniform on flank 2 (``uv2="uniform"``) or its mid-point
-    (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``."""
+    (``"midpoint"``), then phi2 uniform on ``phi2_window`` = (low, high) or = ``phi2_fixed``.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair (flank boxes ``lower1``, ``upper1``, ``lower2``, ``upper2``).
+    n : int
+        Number of starts.
+    rng : numpy.random.Generator
+        The random source.
+    phi2_window : (float, float), optional
+        The interval of phi2 [rad] (exactly one of ``phi2_window`` and ``phi2_fixed``).
+    phi2_fixed : float, optional
+        One phi2 for every start [rad].
+    uv2 : {"uniform", "midpoint"}, optional
+        How (u2, v2) are chosen.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n, 5) starts (u1, v1, u2, v2, phi2) [flank units (mm for involute flanks), rad].
+
+    Raises
+    ------
+    ValueError
+        If both or neither of ``phi2_window`` and ``phi2_fixed`` are given, or ``uv2`` is unknown.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, draw_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> x0 = draw_starts(pair, 100, np.random.default_rng(1), phi2_window=(-0.1, 0.1))  # rad
+    >>> x0.shape, bool(np.all((x0[:, 0] >= pair.lower1[0]) & (x0[:, 0] <= pair.upper1[0])))
+    ((100, 5), True)
+    >>> x0 = draw_starts(pair, 2, np.random.default_rng(1), phi2_fixed=0.0, uv2="midpoint")
+    >>> np.round(x0[:, 2:], 3).tolist()  # u2, v2 [mm] at flank 2's mid-point, phi2 [rad]
+    [[61.146, 0.0, 0.0], [61.146, 0.0, 0.0]]
+    """
     if (phi2_window is None) == (phi2_fixed is None):
         raise ValueError("give exactly one of phi2_window and phi2_fixed")
     if uv2 not in ("uniform", "midpoint"):
@@ -471,7 +358,40 @@ def project_starts(pair: GearPair, phi1, u1, v1):
     """(u1, v1) starts projected into the domain where member 2's explicit surface is defined:
     clipped onto flank 1's box, then moved down flank 1's profile until the explicit u2 (eq 40)
     lies on flank 2 (:func:`guard_reduced_starts`; member 2 in explicit form only). ``phi1`` one
-    angle or one per start. Returns (u1, v1)."""
+    angle or one per start. Returns (u1, v1).
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad]: one, or one per start (finite).
+    u1, v1 : (n,) array_like
+        Starts on flank 1 [flank units, mm for involute flanks]; a NaN becomes the middle of the box.
+
+    Returns
+    -------
+    u1, v1 : numpy.ndarray
+        (n,) projected starts [flank units].
+
+    Raises
+    ------
+    ValueError
+        If the starts are not 1-D arrays of one length or ``phi1`` is not finite or matches neither
+        one angle nor one per start.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, project_starts
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> u1, v1 = project_starts(pair, 0.0, [30.0, 36.0, np.nan], [0.0, 20.0, 1.0])  # rad, mm, mm
+    >>> np.round(u1, 4).tolist(), np.round(v1, 4).tolist()  # onto the box (root 32.4194 mm, face +-12.5 mm)
+    ([32.4194, 36.0, 34.9597], [0.0, 12.5, 1.0])
+    """
     ph, u1, v1 = _start_pairs(phi1, u1, v1)
     lo, hi = pair.lower1, pair.upper1
     u1 = np.clip(np.where(np.isfinite(u1), u1, 0.5 * (lo[0] + hi[0])), lo[0], hi[0])
@@ -481,16 +401,20 @@ def project_starts(pair: GearPair, phi1, u1, v1):
     return u1, v1
 
 
-def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False):
+def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, transverse=False, keep_failed=False):
     """One pass of :func:`robust_contact` from (u1, v1) starts at angles ``ph`` (no fallback);
     ``transverse``: the projected starts moved onto the contact line first
-    (:func:`transverse_stage`, its iterations counted)."""
+    (:func:`transverse_stage`, its iterations counted); ``keep_failed``: the last iterates of the
+    rows that fail are kept (:func:`solve_contact`)."""
     u1, v1 = project_starts(pair, ph, u1, v1)
     it = 0
     if transverse:
         u1, it = _transverse(pair, ph, u1, v1, 1e-10, 50)
     if _explicit2(pair):
-        c = solve_contact(pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter)
+        keep = keep_failed and formulation == "reduced"
+        c = solve_contact(
+            pair, ph, np.column_stack([u1, v1]), formulation="reduced", tol=tol, maxiter=maxiter, keep_failed=keep
+        )
         c = replace(c, iterations=c.iterations + it)
         if formulation == "reduced":
             return c
@@ -502,8 +426,30 @@ def _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, trans
     else:
         x0 = np.array(nominal(pair, ph), dtype=float)
         x0[:, 0], x0[:, 1] = u1, v1
-    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter)
+    out = solve_contact(pair, ph, x0, formulation="conventional", tol=tol, maxiter=maxiter, keep_failed=keep_failed)
     return replace(out, iterations=out.iterations + it)
+
+
+def _settle_on_boundary(pair, ph, c, formulation, tol, maxiter):
+    """``c`` (its failed rows' last iterates kept) with each OFF_FLANK row settled by one more
+    Newton step from its root, then the status tested again; other failed rows NaN
+    (:meth:`ContactPoints.failed_as_nan`).
+
+    A root solved to ``tol`` is known only to about ||J^-1|| tol, more than the rounding slack of
+    the flank test: a contact on a flank boundary (the engagement limits, where the path leaves
+    a flank) can then be OFF_FLANK by a few 1e-11 mm that the solve does not resolve, although
+    the root lies on the boundary. One full Newton step from a converged root gives it to
+    rounding, and the unchanged flank test then decides on which side it lies; the rows it
+    brings inside are CONVERGED (a restart from other starts would reach the same root), the
+    others stay OFF_FLANK. The step's iteration counts."""
+    rows = np.flatnonzero(c.status == Status.OFF_FLANK)
+    if not len(rows):
+        return c.failed_as_nan()
+    x = c.unknowns(formulation)[rows]
+    kw = dict(formulation=formulation, maxiter=1, damped=False, keep_failed=True)
+    step = solve_contact(pair, ph[rows], x, tol=np.finfo(float).tiny, **kw)  # one step whatever the residual
+    new = solve_contact(pair, ph[rows], step.unknowns(formulation), formulation=formulation, tol=tol, maxiter=maxiter)
+    return _with_rows(c, rows, new, new.converged, step.iterations + new.iterations).failed_as_nan()
 
 
 def _transverse_applies(pair) -> bool:
@@ -512,20 +458,25 @@ def _transverse_applies(pair) -> bool:
     return not pair._INTERSECTING_AXES and bool(getattr(pair.flank2, "cylindrical", False))
 
 
+def _with_rows(c, rows, new, take, spent):
+    """``c`` with its rows ``rows`` (indices) replaced by the rows of ``new`` (one per index) where
+    ``take``; every row of ``rows`` adds the iterations ``spent`` (one per index)."""
+    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
+    for f in parts:
+        parts[f][rows[take]] = getattr(new, f)[take]
+    parts["iterations"][rows] = c.iterations[rows] + spent
+    cond = None
+    if c.condition is not None and new.condition is not None:
+        cond = np.array(c.condition, dtype=float)
+        cond[rows[take]] = new.condition[take]
+    return type(c)(formulation=c.formulation, condition=cond, **parts)
+
+
 def _retry(pair, c, new, bad):
     """``c`` with its rows ``bad`` replaced by the rows of ``new`` (one per row of ``bad``) that are
     CONVERGED and mesh; the iterations of every row of ``bad`` add those of ``new``."""
     new = _non_meshing_wrong(pair, new)
-    ok = new.converged
-    parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
-    for f in parts:
-        parts[f][bad[ok]] = getattr(new, f)[ok]
-    parts["iterations"][bad] = c.iterations[bad] + new.iterations
-    cond = None
-    if c.condition is not None and new.condition is not None:
-        cond = np.array(c.condition, dtype=float)
-        cond[bad[ok]] = new.condition[ok]
-    return type(c)(formulation=c.formulation, condition=cond, **parts)
+    return _with_rows(c, bad, new, new.converged, new.iterations)
 
 
 def _non_meshing_wrong(pair, c):
@@ -552,24 +503,75 @@ def meshing_sense(pair: GearPair, c):
     alike along the common normal); one with s1 != s2 touches from the side that turning separates
     at once (not a contact of the flank pair that transmits the motion). Where member 2 turning
     forward moves its flank away (s2 > 0) the load pushes it to the tangency of largest TE, else of
-    smallest: the loaded tangency maximises s2 TE."""
+    smallest: the loaded tangency maximises s2 TE.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    c : ContactPoints
+        Contact points of ``pair``.
+
+    Returns
+    -------
+    s1, s2 : numpy.ndarray
+        (n,) signs (+1, -1; 0 or NaN where undefined) of the two velocities along the normal.
+
+    Examples
+    --------
+    >>> import math
+    >>> import numpy as np
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, default_start, meshing_sense, solve_contact
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> c = solve_contact(pair, [0.0, 0.05], default_start(pair, [0.0, 0.05]))  # rad
+    >>> s1, s2 = meshing_sense(pair, c)
+    >>> s1.tolist(), s2.tolist()  # both contacts mesh
+    ([1.0, 1.0], [1.0, 1.0])
+    """
     r, n = c.position, c.normal
-    v1 = np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
-    v2 = np.cross(pair.w2, r - pair.O2)
-    with np.errstate(invalid="ignore"):
-        return np.sign(np.sum(v1 * n, axis=1)), np.sign(np.sum(v2 * n, axis=1))
+    x, y, z = r[:, 0], r[:, 1], r[:, 2]
+    nx, ny, nz = n[:, 0], n[:, 1], n[:, 2]
+    (wx, wy, wz), (ox, oy, oz) = pair._soa["w2"], pair._soa["O2"]
+    dx, dy, dz = x - ox, y - oy, z - oz
+    with np.errstate(invalid="ignore"):  # v1 = z_f x r, v2 = w2 x (r - O2), by components
+        s1 = np.sign(x * ny - y * nx)
+        s2 = np.sign((wy * dz - wz * dy) * nx + (wz * dx - wx * dz) * ny + (wx * dy - wy * dx) * nz)
+    return s1, s2
 
 
 def flank_sense(pair: GearPair, phi1) -> np.ndarray:
     """The side flank 1 faces at each angle ``phi1``: the sign of its point's velocity (member 1
     turning by phi1 > 0) along its outward normal at the middle of its box. A contact of the flank
     pair meshes with s1 = s2 = this sign (:func:`meshing_sense`); a root where flank 1 faces the
-    other way lies on a part of the parametric surface folded back over the tooth."""
+    other way lies on a part of the parametric surface folded back over the tooth. The side is the
+    same at every angle (member 1 turns about z_f), evaluated once per pair.
+
+    Parameters
+    ----------
+    pair : GearPair
+        The pair.
+    phi1 : float or (n,) array_like
+        Angles of member 1 [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        (n,) signs, +1 or -1.
+
+    Examples
+    --------
+    >>> import math
+    >>> from gearrep.surfaces.involute import InvoluteGearData, ParabolicCrowning, mating_flanks
+    >>> from gearrep.tca import GearPair, flank_sense
+    >>> g1, g2 = (InvoluteGearData(n, 3.0, math.radians(20), 25.0) for n in (23, 41))  # module mm, rad, face mm
+    >>> pair = GearPair(*mating_flanks(g1, g2, crowning1=ParabolicCrowning(1e-4)), 23, 41, g1.r_p + g2.r_p)
+    >>> flank_sense(pair, [0.0, 0.05]).tolist()  # rad
+    [1.0, 1.0]
+    """
     ph = np.atleast_1d(np.asarray(phi1, dtype=float))
-    mid = 0.5 * (pair.lower1 + pair.upper1)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r, n = pair.member1(np.full(len(ph), mid[0]), np.full(len(ph), mid[1]), ph)
-    return np.sign(r[:, 0] * n[:, 1] - r[:, 1] * n[:, 0])
+    return np.full(len(ph), pair._flank1_facing)
 
 
 def _meshes(pair, c) -> np.ndarray:
@@ -602,6 +604,9 @@ def robust_contact(
        seeded with the u2, v2, phi2 that the reduced relations give at the reduced result
        (:func:`seed_from_reduced`). Otherwise the conventional solve from the family's nominal
        start ``nominal(pair, phi1)`` -> (n, 5) with (u1, v1) replaced by the projected start.
+       A root that this solve leaves OFF_FLANK gets one more Newton step and its flank test again
+       (a root on a flank boundary, e.g. at an engagement limit, is known only to the solve's
+       tolerance; :func:`_settle_on_boundary`).
     3. A row whose solve is not CONVERGED (verified: opposite normals, inside both flanks) or
        whose root does not mesh in the sense flank 1 faces (:func:`meshing_sense`,
        :func:`flank_sense`; such a row is WRONG_ROOT) is restarted: on parallel axes with member 2
@@ -673,7 +678,8 @@ def robust_contact(
     check_positive("tol", tol)
     check_integer("maxiter", maxiter)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        c = _non_meshing_wrong(pair, _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal))
+        c = _solve_projected(pair, ph, u1, v1, formulation, tol, maxiter, nominal, keep_failed=True)
+        c = _non_meshing_wrong(pair, _settle_on_boundary(pair, ph, c, formulation, tol, maxiter))
         if not fallback:
             return c
         if _transverse_applies(pair) and not c.converged.all():
@@ -698,14 +704,4 @@ def robust_contact(
         pick = np.argmax(te, axis=1)
         found = ok.any(axis=1)
         spent = cg.iterations.reshape(len(bad), k).sum(axis=1)
-        chosen = cg.take(np.arange(len(bad)) * k + pick)
-        parts = {f: np.array(getattr(c, f), copy=True) for f in c.ARRAYS}
-        rows = bad[found]
-        for f in parts:
-            parts[f][rows] = getattr(chosen, f)[found]
-        parts["iterations"][bad] = c.iterations[bad] + spent
-        cond = None
-        if c.condition is not None and chosen.condition is not None:
-            cond = np.array(c.condition, dtype=float)
-            cond[rows] = chosen.condition[found]
-        return type(c)(formulation=c.formulation, condition=cond, **parts)
+        return _with_rows(c, bad, cg.take(np.arange(len(bad)) * k + pick), found, spent)

@@ -22,12 +22,7 @@ FAMILIES = [
     ("Novikov-Wildhaber", "conventional", None),
     ("worm-ground", "conventional", None),
     ("disk-ground", "conventional", None),
-    (
-        "hob-cut",
-        "envelope pair (9 unknowns)",
-        "1.3-1.5 x target per vectorised solve (190-230 elements across runs): two generic two-parameter "
-        "envelopes and 9 x 9 Newton steps on 200 angles (docs/performance.md)",
-    ),
+    ("hob-cut", "envelope pair (9 unknowns)", None),
 ]
 
 

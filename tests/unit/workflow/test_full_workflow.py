@@ -179,7 +179,7 @@ def test_real_report_in_headless_browser(run):
         pytest.skip("no Chromium-family browser installed")
     import matplotlib.image as mpimg
 
-    from gearrep import published, report
+    from gearrep import checks, published, report
 
     page = run / "results" / "report.html"
     img = mpimg.imread(shot.screenshot(page, run / "results" / "report.png", width=1200, height=900))[..., :3]
@@ -187,7 +187,10 @@ def test_real_report_in_headless_browser(run):
 
     seen = shot.probe(page)
     card = pd.read_csv(run / "results" / "scorecard.csv", dtype={"seed": str}, keep_default_na=False, na_values=[""])
+    # the validation studies' rows are no paper: no verdict, no parity plot, no design table
+    card = card[card["seed"] != checks.VALIDATION]
     seeds = sorted(card["seed"].unique())
+    assert seeds == sorted(report.paper_verdicts(card))
     verdicts = {v["id"]: v for v in seen["verdicts"]}
     assert sorted(verdicts) == [f"verdict-{s}" for s in seeds]
     for v in verdicts.values():
