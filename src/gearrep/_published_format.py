@@ -17,6 +17,7 @@ __all__ = [
     "ROUNDINGS",
     "CLAIM_KINDS",
     "PAPERS",
+    "PAPER_NAMES",
     "PublishedDataError",
     "printed_precision",
 ]
