@@ -17,6 +17,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+import pytest
 import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -168,6 +169,36 @@ def test_the_fuzz_saw_both_outcomes():
     if sum(COUNTS.values()) == 0:  # run alone
         return
     assert COUNTS["ok"] > 0 and COUNTS["refused"] > 0, COUNTS
+
+
+def _lower_ends(s) -> list[float]:
+    """The smallest values a number key admits: its inclusive bound, and the next floats above an
+    exclusive one (the subnormal 5e-324 and 1e-300 above a bound of 0, whose squares underflow)."""
+    if s.ge is not None:
+        return [float(s.ge)]
+    if s.gt is not None:
+        g = float(s.gt)
+        return [g + 5e-324, g + 1e-300] if g == 0 else [g * (1 + 1e-15) if g > 0 else g * (1 - 1e-15)]
+    return []
+
+
+@pytest.mark.parametrize("name", sorted(BASES))
+def test_every_number_key_at_its_lowest_allowed_value_passes_or_is_refused(name):
+    """Each number key of each example design set, one at a time, to the lowest value its
+    declaration admits: the design is accepted or refused in one line naming a key, never a crash
+    (a relief length of 1e-300 mm once divided by its underflowed square)."""
+    base = BASES[name]
+    bad = []
+    for path, s in PATHS[base["family"]]:
+        if s.kind != "number":
+            continue
+        for v in _lower_ends(s):
+            doc = copy.deepcopy(base)
+            _put(doc, path, v)
+            rc, err = _check_cli(doc)
+            if rc not in (0, 2) or (rc == 2 and not REFUSAL.match(err.strip())):
+                bad.append((".".join(path), v, rc, err.strip()[:160]))
+    assert not bad, bad
 
 
 def test_a_few_bad_designs_through_tca_as_a_subprocess(tmp_path):

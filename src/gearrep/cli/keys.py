@@ -129,7 +129,13 @@ CROWNING = st.group(
 RELIEF = st.group(
     "profile relief (parabolic, thesis eq 13)",
     amount_mm=st.number(0.0, "mm", "material removed at the tip (tip relief) or form circle (root relief)", ge=0, le=5),
-    length_mm=st.number(0.5, "mm", "radial length of the relief", gt=0, le=100),
+    length_mm=st.number(
+        0.5,
+        "mm",
+        "radial length of the relief (at least 1 um; shorter lengths drive the relief's curvature 2 c_m / L^2 towards overflow)",
+        ge=0.001,
+        le=100,
+    ),
 )
 
 

@@ -172,6 +172,17 @@ class LogarithmicCrowning:
         return d, d1, d2
 
 
+def _check_relief_curvature(length, amount) -> None:
+    """Refuse a relief length whose square underflows or whose curvature 2 c_m / L^2 overflows:
+    the relief's derivatives would divide by zero or be infinite."""
+    sq = float(length) ** 2
+    if not (sq >= np.finfo(float).tiny and np.isfinite(float(amount) / sq)):
+        raise ValueError(
+            f"length: got {length!r}; allowed: a length L with L**2 a normal float and amount / L**2 finite "
+            f"(amount {amount!r})"
+        )
+
+
 @dataclass(frozen=True)
 class TipRelief:
     """Tip relief, thesis eq (13): delta = H(u - u0) c_m ((u - u0)/L)^2 (u = radius).
@@ -209,6 +220,7 @@ class TipRelief:
         _check_finite("u0", self.u0, positive=True)
         _check_finite("length", self.length, positive=True)
         _check_finite("amount", self.amount, nonneg=True)
+        _check_relief_curvature(self.length, self.amount)
 
     def __call__(self, u):
         if type(u) is float:  # one point: the same operations on Python floats
@@ -257,6 +269,7 @@ class RootRelief:
         _check_finite("u0", self.u0, positive=True)
         _check_finite("length", self.length, positive=True)
         _check_finite("amount", self.amount, nonneg=True)
+        _check_relief_curvature(self.length, self.amount)
 
     def __call__(self, u):
         if type(u) is float:  # one point: the same operations on Python floats

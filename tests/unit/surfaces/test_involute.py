@@ -264,3 +264,15 @@ def test_mating_flanks_have_opposite_hands():
     assert (f1.hand, f2.hand) == (1, -1) and f1.side == f2.side == 1
     with np.errstate(invalid="ignore"):
         assert np.isnan(f1.position(f1.r_b * 0.9, 0.0)).any()  # inside the base circle: no involute
+
+
+@pytest.mark.parametrize("cls", [TipRelief, RootRelief])
+def test_a_relief_too_short_for_its_curvature_is_refused(cls):
+    """L**2 underflows (or amount / L**2 overflows): refused, naming the length, instead of a
+    division by zero at the first point."""
+    with pytest.raises(ValueError, match=r"^length: got 1e-300"):
+        cls(20.0, 1e-300, 0.5)
+    with pytest.raises(ValueError, match=r"^length: got 1e-160"):
+        cls(20.0, 1e-160, 0.5)
+    u = 20.0005 if cls is TipRelief else 19.9995  # inside a 1 um relief of 5 mm: a finite curvature
+    assert cls(20.0, 1e-3, 5.0)(u)[2] == pytest.approx(2 * 5.0 / 1e-3**2, rel=1e-12)

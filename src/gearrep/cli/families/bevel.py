@@ -35,7 +35,13 @@ __all__ = ["KEYS", "BevelFamily", "FAMILY", "cone_edges"]
 _RELIEF = st.group(
     "profile relief (parabolic in the polar angle, thesis eq 13)",
     amount_mm=st.number(0.0, "mm", "material removed at the tip (tip relief) or root cone (root relief)", ge=0, le=5),
-    length_mm=st.number(0.5, "mm", "length of the relief along the profile at the mean cone distance", gt=0, le=100),
+    length_mm=st.number(
+        0.5,
+        "mm",
+        "length of the relief along the profile at the mean cone distance (at least 1 um; shorter lengths drive the relief's curvature 2 c_m / L^2 towards overflow)",
+        ge=0.001,
+        le=100,
+    ),
 )
 
 
