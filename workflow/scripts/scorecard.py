@@ -38,6 +38,7 @@ def md_table(df: pd.DataFrame) -> str:
 is_result = card["status"].isin(checks.RESULT_STATUSES)
 by_paper = checks.summary(card, by=("seed",))
 by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS).fillna("validation of the library (not a paper)"))
+by_paper.insert(1, "name", by_paper["seed"].map(published.PAPER_NAMES).fillna("-"))
 by_source = checks.summary(card, by=("seed", "source"))
 rows = card[
     [
