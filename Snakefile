@@ -53,7 +53,10 @@ onsuccess:
         from gearrep.report import paper_verdicts
 
         card = pd.read_csv("results/scorecard.csv", dtype={"seed": str}, keep_default_na=False, na_values=[""])
-        documents = {study.seed: study.document for study in REGISTRY.values() if not study.validation}
+        documents = {
+            study.seed: (study.paper, study.document) for study in REGISTRY.values() if not study.validation
+        }
         print("\nReport: results/report.html  (scorecard: results/scorecard.md)")
         for seed, (verdict, why) in paper_verdicts(card).items():
-            print(f"  {seed} {documents[seed]}: {verdict.upper()} - {why}")
+            name, document = documents[seed]
+            print(f"  {name} (seed {seed}): {document}: {verdict.upper()} - {why}")

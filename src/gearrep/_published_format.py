@@ -17,6 +17,7 @@ __all__ = [
     "ROUNDINGS",
     "CLAIM_KINDS",
     "PAPERS",
+    "PAPER_NAMES",
     "PublishedDataError",
     "printed_precision",
 ]
@@ -70,6 +71,12 @@ PAPERS = {
     "003": "PhD thesis 2023: conventional vs reduced TCA",
     "004": "Ma et al. 2021: CATT cylindrical gears",
 }
+
+#: One name per seed document, the name its studies, results, notebooks and report section go by
+#: (a study key is the name, or ``<name>_<part>`` for one of two studies of the same document): the
+#: first author and year. Seed 000 prints neither (CITATION.cff), so its name says its subject, the
+#: hob-cut curvilinear gear (docs/architecture.md says why). The seed ids stay the data's ids.
+PAPER_NAMES = {"000": "hobcut", "002": "litvin2000", "003": "temirkhan2023", "004": "ma2021"}
 
 
 class PublishedDataError(ValueError):

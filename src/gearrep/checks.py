@@ -651,7 +651,7 @@ def scorecard(check_tables: dict[str, pd.DataFrame], values: pd.DataFrame, claim
     >>> claims = pd.DataFrame({"id": ["c1"], "seed": ["000"], "source": ["sec. 5.4"], "kind": ["qualitative"],
     ...                        "statement": ["the TE is small"]})
     >>> checked = checks.check_values(values.iloc[:1], pd.DataFrame({"id": ["v1"], "computed": [0.01232]}))
-    >>> card = checks.scorecard({"tseng_curvature": checked}, values, claims)
+    >>> card = checks.scorecard({"hobcut_curvature": checked}, values, claims)
     >>> card[["id", "status"]].values.tolist()
     [['v1', 'reproduced'], ['v2', 'not-computed'], ['c1', 'not-computed']]
     """
@@ -707,7 +707,7 @@ def summary(card: pd.DataFrame, by=("seed",)) -> pd.DataFrame:
     >>> claims = pd.DataFrame({"id": ["c1"], "seed": ["000"], "source": ["sec. 5.4"], "kind": ["qualitative"],
     ...                        "statement": ["the TE is small"]})
     >>> checked = checks.check_values(values.iloc[:1], pd.DataFrame({"id": ["v1"], "computed": [0.01232]}))
-    >>> card = checks.scorecard({"tseng_curvature": checked}, values, claims)
+    >>> card = checks.scorecard({"hobcut_curvature": checked}, values, claims)
     >>> row = checks.summary(card).iloc[0]
     >>> int(row["reproduced"]), int(row["not-computed"]), int(row["total"])
     (1, 2, 3)

@@ -24,6 +24,7 @@ import pandas as pd
 from ._published_format import (
     CLAIM_COLUMNS,
     CLAIM_KINDS,
+    PAPER_NAMES,
     PAPERS,
     PARAM_COLUMNS,
     PRECISION_KINDS,
@@ -52,6 +53,7 @@ __all__ = [
     "ROUNDINGS",
     "CLAIM_KINDS",
     "PAPERS",
+    "PAPER_NAMES",
     "PublishedDataError",
     "Published",
     "printed_precision",

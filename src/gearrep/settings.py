@@ -469,8 +469,8 @@ def closest(name: str, known) -> str:
     Examples
     --------
     >>> from gearrep.settings import closest
-    >>> closest("nasaa", ["nasa", "catt"]), closest("xyz", ["nasa"])
-    (" (did you mean 'nasa'?)", '')
+    >>> closest("litvin200", ["litvin2000", "ma2021"]), closest("xyz", ["litvin2000"])
+    (" (did you mean 'litvin2000'?)", '')
     """
     m = difflib.get_close_matches(str(name), [str(k) for k in known], n=1, cutoff=0.6)
     return f" (did you mean {m[0]!r}?)" if m else ""

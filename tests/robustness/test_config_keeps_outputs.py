@@ -9,7 +9,7 @@ import sys
 import yaml
 from conftest import copy_workflow, tool_env
 
-TARGET = "results/catt/equations.csv"
+TARGET = "results/ma2021/equations.csv"
 
 
 def _smk(cwd, *args):
@@ -38,12 +38,12 @@ def test_nan_setting_after_a_build_stops_before_any_job_and_keeps_outputs(tmp_pa
 
     f = wf / "config" / "config.yaml"
     cfg = yaml.safe_load(f.read_text()) or {}
-    cfg.setdefault("thesis", {})["tol"] = float("nan")
+    cfg.setdefault("temirkhan2023", {})["tol"] = float("nan")
     f.write_text(yaml.safe_dump(cfg))
     for args in ([TARGET, "--forceall"], []):  # the same target forced, and the default target
         out = _smk(wf, *args)
         text = out.stdout + out.stderr
         assert out.returncode != 0, text[-2000:]
-        assert "thesis.tol" in text, text[-2000:]
-        assert "Select jobs to execute" not in text and "rule catt_" not in text, text[-2000:]
+        assert "temirkhan2023.tol" in text, text[-2000:]
+        assert "Select jobs to execute" not in text and "rule ma2021_" not in text, text[-2000:]
         assert _snapshot(wf / "results") == before, "an output was deleted or changed"

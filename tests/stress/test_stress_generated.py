@@ -1,7 +1,7 @@
 """Numerical stress tests of the GENERATED gears: the curvilinear-tooth gear
 cut by the ZA hob (two-parameter envelope, :mod:`gearrep.surfaces.hob`), the CATT gear
 (:mod:`gearrep.surfaces.catt`) and the 9-unknown TCA of seed 000 ch. 5
-(:mod:`gearrep.replications.tseng_tca`).
+(:mod:`gearrep.replications.hobcut_tca`).
 
 Cases: tooth-trace radius R_c (hob) and cutter radius R_T (CATT) from 50 mm to 50 000 mm and the
 straight limit; near-singular Jacobians (the mid-face singularity of the (theta, psi)
@@ -21,10 +21,10 @@ from conftest import PUBLISHED_DIR, assert_honest
 from gearrep import published, tca
 from gearrep.curvature import principal_curvatures
 from gearrep.envelope import Envelope
-from gearrep.replications import catt as catt_rep
-from gearrep.replications import tseng_curvature as tc
-from gearrep.replications import tseng_tca as tca_rep
-from gearrep.replications.tseng_tca import studies as ts
+from gearrep.replications import hobcut_curvature as tc
+from gearrep.replications import hobcut_tca as tca_rep
+from gearrep.replications import ma2021 as catt_rep
+from gearrep.replications.hobcut_tca import studies as ts
 from gearrep.solve import Status
 from gearrep.surfaces import catt as catt_surf
 from gearrep.surfaces.catt import (
@@ -41,11 +41,11 @@ from gearrep.units import ARCSEC
 pytestmark = pytest.mark.stress
 
 KNOWN = {int(s) for s in Status}
-RC_SWEEP_MM = [float(r) for r in tc.SETTINGS["rc_sweep_mm"].value]  # 50 .. 50 000 mm (tseng_curvature setting)
+RC_SWEEP_MM = [float(r) for r in tc.SETTINGS["rc_sweep_mm"].value]  # 50 .. 50 000 mm (hobcut_curvature setting)
 L_END_MM = tc.params_from_published(published.load(PUBLISHED_DIR)).l1_end_mm  # last row of Tables 4.2-4.5
 TCA_GEARS = tca_rep.params_from_published(published.load(PUBLISHED_DIR)).gears  # the Table 5.1 pair and hob
 CATT_PRM = {"pressure_angle_deg": 20.0, "addendum": 1.0, "clearance": 0.25}
-CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA here (tighter than the workflow's catt.tol 1e-8)
+CATT_TCA_TOL = 1e-10  # Newton tolerance of the CATT TCA here (tighter than the workflow's ma2021.tol 1e-8)
 
 
 def _full(request) -> bool:
@@ -109,7 +109,7 @@ def l_rows():
 # ---------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("flank", ["R", "L"])
 def test_hob_trace_radius_sweep_mid_face(flank, l_rows, record_conditions):
-    """Mid-face rows at every R_c of the tseng_curvature sweep and R_c = inf (axial feed). The
+    """Mid-face rows at every R_c of the hobcut_curvature sweep and R_c = inf (axial feed). The
     mid-face transverse profile does not depend on the trace: every converged point equals the
     spur-limit point, and a re-solve from another start (spur solution + 0.02 rad in phi and theta)
     finds the same point; k_q equals the spur k_q, k_s is finite and R_c k_s settles as R_c grows
@@ -393,7 +393,7 @@ def test_envelope_mid_face_singular_parameterisation(record_conditions):
 @pytest.mark.parametrize("flank", ["R", "L"])
 def test_envelope_limiting_line_near_face_ends(flank, record_conditions):
     """At the face ends (Z_f ~ +-20 mm, R_c = 110 mm) Litvin's limiting line crosses the last rows
-    (tseng_curvature ``undercut``): across it the determinant of Litvin's matrix changes sign once,
+    (hobcut_curvature ``undercut``): across it the determinant of Litvin's matrix changes sign once,
     the singular measure is smallest next to the change, and the curvature is largest there (it
     passes through infinity on the line). The meshing solve stays regular: every point converges
     with finite values (points beyond the line are envelope points the hob removes)."""
@@ -475,7 +475,7 @@ def test_line_contact_110_110_roots_are_tangencies(line_contact_roots, record_co
     not a continuum: the contact is almost, not exactly, a line."""
     pair, sol, roots = line_contact_roots
     assert np.all(_assert_honest_ke(sol))
-    # the library returns the physical contact (tseng_tca.physical_contact), one of the symmetric
+    # the library returns the physical contact (hobcut_tca.physical_contact), one of the symmetric
     # pair Z_p = +-1.0967 mm, not the mid-face root a bare continuation lands on
     assert sol.n_tangencies[0] == 3 and abs(abs(sol.Z_p[0]) - 1.0967) < 1e-3
     ok = _assert_honest_ke(roots)

@@ -80,22 +80,22 @@ def novikov_case(rng, n, pinion="rack"):
     rack-generated pair the offset solved at one angle (the study's starts), for the ground pinions,
     whose aligned start drifts from the contact along the path, the offset quadratic in the angle
     through three solved ones (order=2), and with the study's solver settings."""
-    from gearrep.replications.nasa import geometry as ng
-    from gearrep.replications.nasa.bench import crowned_pair
+    from gearrep.replications.litvin2000 import geometry as ng
+    from gearrep.replications.litvin2000.bench import crowned_pair
     from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import offset_start
 
-    s, d = study("nasa")
-    mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
+    settings, design = study("litvin2000")
+    mis = Misalignment(d_gamma_out=settings["misalignment_arcmin"] * ARCMIN)
     if pinion == "worm":
-        pair = ng.make_worm_pair(d, s, misalignment=mis)
+        pair = ng.make_worm_pair(design, settings, misalignment=mis)
     elif pinion == "disk":
-        pair = ng.make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
+        pair = ng.make_disk_pair(design, settings, float(np.mean(settings["disk_E_d_bracket_in"])), misalignment=mis)
     else:
-        pair = crowned_pair(s, d, mis)
+        pair = crowned_pair(settings, design, mis)
     per = 2 * np.pi / pair.n1
     phi = rng.uniform(-0.5 * per, 0.5 * per, n)
-    kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
+    kw = {"tol": settings["tol"], "maxiter": settings["maxiter"]}
     nominal = {"worm": ng.worm_start, "disk": ng.disk_start, "rack": aligned_start}[pinion]
     order = 0 if pinion == "rack" else 2
     return pair, phi, lambda: offset_start(pair, phi, nominal, order=order, **kw), kw
@@ -103,14 +103,14 @@ def novikov_case(rng, n, pinion="rack"):
 
 def catt_case(rng, n):
     """Seed 004: the sec. 4 CATT pair, primary flanks, over its real path, the study's starts."""
-    from gearrep.replications.catt.assembly import PRIMARY
-    from gearrep.replications.catt.bench import BENCH_DESIGN
-    from gearrep.replications.catt.design import prm
+    from gearrep.replications.ma2021.assembly import PRIMARY
+    from gearrep.replications.ma2021.bench import BENCH_DESIGN
+    from gearrep.replications.ma2021.design import merged_params
     from gearrep.surfaces import catt as ca
 
-    s, d = study("catt")
-    q = prm(s, d)
-    mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
+    settings, design = study("ma2021")
+    q = merged_params(settings, design)
+    mesh = ca.assemble(design.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
     phi = rng.uniform(lim["phi1_lo"], lim["phi1_hi"], n)
     kw = {"tol": q["tol"], "maxiter": q["maxiter"]}
@@ -123,30 +123,32 @@ def bevel_case(rng, n, formulation="reduced", case="spiral_bevel_17_17"):
     they start on is in contact (spiral: from half an angular pitch before phi1 = -pi/(2 N1), the
     aligned pair's pitch-cone contact, to 0.05 of one after it, its contact ends about 0.09 after; straight: 0.4 of a pitch either
     side of it)."""
-    from gearrep.replications.thesis.bevel_convergence import convergence_pair
+    from gearrep.replications.temirkhan2023.bevel_convergence import convergence_pair
 
-    s, d = study("thesis")
-    pair = convergence_pair(s, d, case)
+    settings, design = study("temirkhan2023")
+    pair = convergence_pair(settings, design, case)
     p = 2 * np.pi / pair.n1
     if case.startswith("spiral"):
         phi = rng.uniform(-0.45 * p, 0.05 * p, n)
     else:
         phi = angles(pair, n, rng)
-    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": s["tol"]}
+    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": settings["tol"]}
 
 
 def helical_case(rng, n, formulation):
     """Seed 003 Table 9: the profile-crowned helical pair 25/77 under the study's in-plane
     misalignment, from the default starts, over 0.8 of an angular pitch around phi1 = -pi/(2 N1); the thesis's solver tolerance."""
-    from gearrep.replications.thesis.design import design_pair
+    from gearrep.replications.temirkhan2023.design import design_pair
 
-    s, d = study("thesis")
-    pair = design_pair(d, "helical_25_77", Misalignment(d_gamma_in=float(d.helical_misalignment_arcmin) * ARCMIN))
+    settings, design = study("temirkhan2023")
+    pair = design_pair(
+        design, "helical_25_77", Misalignment(d_gamma_in=float(design.helical_misalignment_arcmin) * ARCMIN)
+    )
     # the angles at which the tooth pair the default start is on meets inside both flanks
     grid = -np.pi / (2 * pair.n1) + np.linspace(-1.0, 1.0, 401) * 2 * np.pi / pair.n1
     ok = solve_contact(pair, grid, default_start(pair, grid, formulation), formulation=formulation).converged
     phi = rng.uniform(grid[ok].min(), grid[ok].max(), n)
-    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": s["tol"]}
+    return pair, phi, lambda: default_start(pair, phi, formulation), {"tol": settings["tol"]}
 
 
 def hobbed_case(rng, n):
@@ -154,17 +156,17 @@ def hobbed_case(rng, n):
     the 9-unknown envelope-pair TCA (gearrep.tca.solve_envelope_points) at angles over the
     study's phi1' grid, each from the first-order path predictor off the nearest point of the
     study's path on that grid (continuation and path not timed)."""
-    from gearrep.replications.tseng_tca import TABLE_EXAMPLE
-    from gearrep.replications.tseng_tca.studies import assembly_of, phi1_grid
+    from gearrep.replications.hobcut_tca import TABLE_EXAMPLE
+    from gearrep.replications.hobcut_tca.studies import assembly_of, phi1_grid
     from gearrep.tca import hobbed_continue_to, predict_envelope_contact, solve_envelope_points, trace_envelope_path
 
-    s, d = study("tseng_tca")
-    case = d.cases[TABLE_EXAMPLE["5.4"]]
-    tol = s["tol"]
+    settings, design = study("hobcut_tca")
+    case = design.cases[TABLE_EXAMPLE["5.4"]]
+    tol = settings["tol"]
     pair, s0 = hobbed_continue_to(
-        d.gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=s["continuation_steps"], tol=tol
+        design.gears, case["R_cp_mm"], case["R_cg_mm"], assembly_of(case), steps=settings["continuation_steps"], tol=tol
     )
-    grid = phi1_grid(s)
+    grid = phi1_grid(settings)
     path = trace_envelope_path(pair, s0, grid, tol=tol)
     phi = rng.uniform(grid.min(), grid.max(), n)
     j = np.abs(phi[:, None] - grid[None, :]).argmin(axis=1)  # the nearest grid point on the path
@@ -277,9 +279,14 @@ phi = angles(pair, 2000, np.random.default_rng(3))
 starts = {f: default_start(pair, phi, f) for f in ("reduced", "conventional")}
 
 
-def run(s):
+def run(setting):
     c = solve_contact(
-        pair, phi, starts[s["formulation"]], formulation=s["formulation"], tol=s["tol"], maxiter=s["maxiter"]
+        pair,
+        phi,
+        starts[setting["formulation"]],
+        formulation=setting["formulation"],
+        tol=setting["tol"],
+        maxiter=setting["maxiter"],
     )
     return c
 

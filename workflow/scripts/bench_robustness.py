@@ -43,13 +43,13 @@ def element_seconds() -> float:
 
 def cases():
     """Every family's robustness cases with the settings of its study."""
-    for name in ("thesis", "nasa", "catt", "tseng_tca"):
-        s, d = study(name)
-        for case in import_module(f"gearrep.replications.{name}.bench").robustness_cases(s, d):
-            yield s, case
+    for name in ("temirkhan2023", "litvin2000", "ma2021", "hobcut_tca"):
+        settings, design = study(name)
+        for case in import_module(f"gearrep.replications.{name}.bench").robustness_cases(settings, design):
+            yield settings, case
 
 
-def envelope_row(s, case, row, rng):
+def envelope_row(settings, case, row, rng):
     """The row of a pair of generated envelopes (9-unknown TCA): reference by continuation from the
     solved start and the physical tangency (gearrep.tca.hobbed_physical_contact), starts (l_p, psi_p)
     uniform over the case's pinion box solved by gearrep.tca.robust_envelope_points."""
@@ -71,14 +71,14 @@ def envelope_row(s, case, row, rng):
 
 
 rows = []
-for s, case in cases():
+for settings, case in cases():
     pair, phi, nominal = case["pair"], case["phi1"], case.get("nominal")
-    tol, maxiter = case.get("tol", s.get("tol")), case.get("maxiter", s.get("maxiter"))
-    rng = np.random.default_rng([int(s.get("seed", 0)), 31, len(rows)])
+    tol, maxiter = case.get("tol", settings.get("tol")), case.get("maxiter", settings.get("maxiter"))
+    rng = np.random.default_rng([int(settings.get("seed", 0)), 31, len(rows)])
     if "start" in case:  # generated envelopes: the 9-unknown TCA
         el_before = element_seconds()
         r = envelope_row(
-            s,
+            settings,
             case,
             dict(family=case["family"], formulation="envelope pair (9 unknowns)", misalignment=case["misalignment"]),
             rng,

@@ -81,48 +81,50 @@ def readme_cases(res):
 
 def thesis_cases(res):
     """Table 10's random starts over both flanks (divergent, singular and off-flank rows too)."""
-    from gearrep.replications.thesis import convergence as tc
+    from gearrep.replications.temirkhan2023 import convergence as tc
     from gearrep.tca import CONVENTIONAL_VARIANTS, REDUCED_VARIANTS, solve_variant
 
-    s, d = study("thesis")
-    tp, _, ref, st = tc.table10_starts(s, d)
+    settings, design = study("temirkhan2023")
+    tp, _, ref, st = tc.table10_starts(settings, design)
     st = st[:2000]
-    kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
+    kw = {"tol": settings["tol"], "maxiter": settings["maxiter"]}
     for form in ("reduced", "conventional"):
         w = 2 if form == "reduced" else 5
         cases(res, "t10-" + form, tp, np.full(len(st), ref.phi1), st[:, :w], form, kw, 200)
     for v in tuple(REDUCED_VARIANTS) + tuple(CONVENTIONAL_VARIANTS):
         with np.errstate(all="ignore"):
-            x, status, it = solve_variant(tp, ref.phi1, st[:1000], v, drop=ref.drop, margin=s["domain_margin"], **kw)[
-                :3
-            ]
+            x, status, it = solve_variant(
+                tp, ref.phi1, st[:1000], v, drop=ref.drop, margin=settings["domain_margin"], **kw
+            )[:3]
         res[f"t10-variant-{v}:x"], res[f"t10-variant-{v}:status"], res[f"t10-variant-{v}:iterations"] = x, status, it
 
 
 def novikov_catt_cases(res):
     """Seed 002's profile-crowned Novikov-Wildhaber pair and seed 004's CATT pair (as the bench)."""
-    from gearrep.replications.catt.assembly import PRIMARY
-    from gearrep.replications.catt.bench import BENCH_DESIGN
-    from gearrep.replications.catt.design import prm
-    from gearrep.replications.nasa import geometry as ng
+    from gearrep.replications.litvin2000 import geometry as ng
+    from gearrep.replications.ma2021.assembly import PRIMARY
+    from gearrep.replications.ma2021.bench import BENCH_DESIGN
+    from gearrep.replications.ma2021.design import merged_params
     from gearrep.surfaces import catt as ca
     from gearrep.surfaces.novikov import aligned_start
     from gearrep.tca import Misalignment
     from gearrep.units import ARCMIN
 
-    s, d = study("nasa")
-    mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
-    Pn, an, beta, lead = ng.basics(d)
-    rho_c, rho_t = d["rho_c_times_Pn"] / Pn, d["rho_t_times_Pn"] / Pn
-    pair = ng.make_pair(d, rho_c, rho_t, an, lead, beta, tol=s["tol"], hand=s["pinion_hand"], misalignment=mis)
+    settings, design = study("litvin2000")
+    mis = Misalignment(d_gamma_out=settings["misalignment_arcmin"] * ARCMIN)
+    Pn, an, beta, lead = ng.basics(design)
+    rho_c, rho_t = design["rho_c_times_Pn"] / Pn, design["rho_t_times_Pn"] / Pn
+    pair = ng.make_pair(
+        design, rho_c, rho_t, an, lead, beta, tol=settings["tol"], hand=settings["pinion_hand"], misalignment=mis
+    )
     per = 2 * np.pi / pair.n1
     rng = np.random.default_rng(3)
     phi = rng.uniform(-0.5 * per, 0.5 * per, 200)
-    kw = {"tol": s["tol"], "maxiter": s["maxiter"]}
+    kw = {"tol": settings["tol"], "maxiter": settings["maxiter"]}
     cases(res, "novikov", pair, phi, aligned_start(pair, phi), "conventional", kw, 20)
-    s, d = study("catt")
-    q = prm(s, d)
-    mesh = ca.assemble(d.by_name(BENCH_DESIGN), PRIMARY[0], q)
+    settings, design = study("ma2021")
+    q = merged_params(settings, design)
+    mesh = ca.assemble(design.by_name(BENCH_DESIGN), PRIMARY[0], q)
     lim = ca.path_limits(mesh)
     phi = rng.uniform(lim["phi1_lo"], lim["phi1_hi"], 1000)
     st = ca.starts(mesh, phi, q["start_offset_mm"])

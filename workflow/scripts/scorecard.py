@@ -17,7 +17,7 @@ tables = {
 }
 card = checks.scorecard(tables, pub.values, pub.claims)
 # the paper of each row; a validation study's rows carry the study's title
-titles = {s.key: s.document for s in REGISTRY.values() if s.validation}
+titles = {study.key: study.document for study in REGISTRY.values() if study.validation}
 card["paper"] = card["seed"].map(published.PAPERS).fillna(card["replication"].map(titles))
 # every published value and claim of the manifest has its row: nothing dropped silently
 expected = published.scored_rows_per_seed(published.verify_manifest(data_dir))
@@ -38,6 +38,7 @@ def md_table(df: pd.DataFrame) -> str:
 is_result = card["status"].isin(checks.RESULT_STATUSES)
 by_paper = checks.summary(card, by=("seed",))
 by_paper.insert(1, "paper", by_paper["seed"].map(published.PAPERS).fillna("validation of the library (not a paper)"))
+by_paper.insert(1, "name", by_paper["seed"].map(published.PAPER_NAMES).fillna("-"))
 by_source = checks.summary(card, by=("seed", "source"))
 rows = card[
     [

@@ -77,12 +77,12 @@ def _design(path, analysis_name=None, contact=True):
     """The checked design of the file ``path`` (:func:`gearrep.cli.design.check`), refused before
     its contact check if its family does not support ``analysis_name`` or it lacks a key that
     analysis requires."""
-    d = build(resolve(load_yaml(path)))
+    design = build(resolve(load_yaml(path)))
     if analysis_name is not None:
-        require_analysis(d, analysis_name)
+        require_analysis(design, analysis_name)
     if contact:
-        d.family.check_contact(d)
-    return d
+        design.family.check_contact(design)
+    return design
 
 
 def _out_dir(args):
@@ -91,11 +91,11 @@ def _out_dir(args):
 
 
 def _cmd_check(args) -> int:
-    d = _design(args.design)
-    v = d.values
+    design = _design(args.design)
+    v = design.values
     print(
-        f"ok: {args.design}: {v['name']!r} ({d.family.name}, {v['pinion']['teeth']}/{v['gear']['teeth']} teeth"
-        f"{', line contact' if d.line_contact else ''})"
+        f"ok: {args.design}: {v['name']!r} ({design.family.name}, {v['pinion']['teeth']}/{v['gear']['teeth']} teeth"
+        f"{', line contact' if design.line_contact else ''})"
     )
     return 0
 
@@ -107,23 +107,23 @@ def _yaml_text(values) -> str:
 def _cmd_tca(args) -> int:
     out = _out_dir(args)
     _parquet_ok(args)
-    d = _design(args.design, "tca")
+    design = _design(args.design, "tca")
     prog = _Progress(args.progress, "tca")
-    tables = analysis.tca_tables(d, progress=prog)
-    prov = provenance(d.values, "tca")
+    tables = analysis.tca_tables(design, progress=prog)
+    prov = provenance(design.values, "tca")
     with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, prov, parquet=args.parquet)
         for name, df in tables.items():
             w.table(name, df)
         prog("flank point clouds and STL", 0.8)
         for member, name in ((1, "pinion"), (2, "gear")):
-            pts, _, cloud = analysis.flank_cloud(d, member)
+            pts, _, cloud = analysis.flank_cloud(design, member)
             w.table(f"flank_{name}", cloud)
-            w.text(f"flank_{name}.stl", stl_text(pts, f"{d.name} {name} flank"))
+            w.text(f"flank_{name}.stl", stl_text(pts, f"{design.name} {name} flank"))
         prog("figures", 0.9)
-        figs = {k: w.figure(k, f) for k, f in figures.tca_figures(d, tables).items()}
-        w.text("design.yaml", _yaml_text(d.values))
-        w.text("summary.html", summary_html(d.name, _yaml_text(d.values), tables["summary"], figs, prov))
+        figs = {k: w.figure(k, f) for k, f in figures.tca_figures(design, tables).items()}
+        w.text("design.yaml", _yaml_text(design.values))
+        w.text("summary.html", summary_html(design.name, _yaml_text(design.values), tables["summary"], figs, prov))
     prog.done()
     print(f"wrote {out}/ ({len(w.files)} files, each with a .prov.json sidecar)")
     return 0
@@ -132,26 +132,32 @@ def _cmd_tca(args) -> int:
 def _cmd_ltca(args) -> int:
     out = _out_dir(args)
     _parquet_ok(args)
-    d = _design(args.design, "ltca")
+    design = _design(args.design, "ltca")
     prog = _Progress(args.progress, "ltca")
-    res = loaded.ltca_tables(d, progress=prog)
-    prov = provenance(d.values, "ltca")
+    res = loaded.ltca_tables(design, progress=prog)
+    prov = provenance(design.values, "ltca")
     with atomic_dir(out, overwrite=args.overwrite) as tmp:
         w = Writer(tmp, prov, parquet=args.parquet)
         for name, df in res.tables.items():
             w.table(name, df)
         prog("figures", 0.9)
-        figs = {k: w.figure(k, f) for k, f in figures.ltca_figures(d, res).items()}
-        w.text("design.yaml", _yaml_text(d.values))
+        figs = {k: w.figure(k, f) for k, f in figures.ltca_figures(design, res).items()}
+        w.text("design.yaml", _yaml_text(design.values))
         page = summary_html(
-            d.name, _yaml_text(d.values), res.tables["ltca_summary"], figs, prov, LTCA_SUMMARY_FIELDS, LTCA_TABLES
+            design.name,
+            _yaml_text(design.values),
+            res.tables["ltca_summary"],
+            figs,
+            prov,
+            LTCA_SUMMARY_FIELDS,
+            LTCA_TABLES,
         )
         w.text("summary.html", page)
     prog.done()
-    s = res.tables["ltca_summary"].iloc[0]
+    summary = res.tables["ltca_summary"].iloc[0]
     print(
-        f"wrote {out}/ ({len(w.files)} files, each with a .prov.json sidecar): {s['n_positions'] - s['n_failed']} of "
-        f"{s['n_positions']} positions converged"
+        f"wrote {out}/ ({len(w.files)} files, each with a .prov.json sidecar): {summary['n_positions'] - summary['n_failed']} of "
+        f"{summary['n_positions']} positions converged"
     )
     return 0
 
@@ -159,13 +165,13 @@ def _cmd_ltca(args) -> int:
 def _cmd_curvature(args) -> int:
     out = _out_dir(args)
     _parquet_ok(args)
-    d = _design(args.design, "curvature", contact=False)
-    table = analysis.curvature_table(d)
+    design = _design(args.design, "curvature", contact=False)
+    table = analysis.curvature_table(design)
     with atomic_dir(out, overwrite=args.overwrite) as tmp:
-        w = Writer(tmp, provenance(d.values, "curvature"), parquet=args.parquet)
+        w = Writer(tmp, provenance(design.values, "curvature"), parquet=args.parquet)
         w.table("curvatures", table)
-        w.figure("curvatures", figures.curvature_figure(d, table))
-        w.text("design.yaml", _yaml_text(d.values))
+        w.figure("curvatures", figures.curvature_figure(design, table))
+        w.text("design.yaml", _yaml_text(design.values))
     print(f"wrote {out}/curvatures.csv ({len(table)} points)")
     return 0
 

@@ -20,13 +20,13 @@ __all__ = ["tca_tables", "curvature_table", "flank_cloud", "sweep_point", "SOLVE
 SAMPLED_TRANSFER = "envelope of sampled pairs"
 
 
-def tca_tables(d, progress=None) -> dict:
-    """TCA of design ``d`` over its meshing cycle: tables ``contact_path`` (contact points, TE,
+def tca_tables(design, progress=None) -> dict:
+    """TCA of design ``design`` over its meshing cycle: tables ``contact_path`` (contact points, TE,
     ellipses), ``te_cycle`` (TE envelope over one cycle), ``summary`` (one row) and the family's
     further tables."""
     if progress:
         progress("meshing cycle", 0.1)
-    path, te, summary, extra = d.family.tca(d, progress)
+    path, te, summary, extra = design.family.tca(design, progress)
     if progress:
         progress("contact ellipses", 0.6)
     path = failed_rows_nan(path)
@@ -34,11 +34,11 @@ def tca_tables(d, progress=None) -> dict:
     summary = dict(summary)
     transfer = summary.pop("transfer_kind", SAMPLED_TRANSFER)
     summary = {
-        "design": d.name,
-        "family": d.family.name,
-        "line_contact": d.line_contact,
+        "design": design.name,
+        "family": design.family.name,
+        "line_contact": design.line_contact,
         **summary,
-        **d.family.iso_contact_ratios(d),
+        **design.family.iso_contact_ratios(design),
         "points_converged": int(ok.sum()),
         "points_total": len(path),
         "max_residual_mm": float(path.loc[ok, "residual"].max()) if ok.any() else float("nan"),
@@ -53,19 +53,19 @@ def tca_tables(d, progress=None) -> dict:
     return {"contact_path": path, "te_cycle": te, "summary": pd.DataFrame([summary]), **extra}
 
 
-def curvature_table(d) -> pd.DataFrame:
+def curvature_table(design) -> pd.DataFrame:
     """Principal curvatures [1/mm] and directions on a grid over both flanks (each in its own frame;
     curvature positive where the surface bends toward its outward normal)."""
-    return d.family.curvature_table(d)
+    return design.family.curvature_table(design)
 
 
-def flank_cloud(d, member: int):
+def flank_cloud(design, member: int):
     """Point cloud of member ``member``'s flank in its own frame: (points (n_u, n_v, 3) with NaN where
     the grid leaves the flank, outward unit normals, table)."""
-    return d.family.flank_cloud(d, member)
+    return design.family.flank_cloud(design, member)
 
 
-def sweep_point(d, n_phi: int) -> dict:
+def sweep_point(design, n_phi: int) -> dict:
     """The metrics of one sweep point: TE over the meshing cycle, contact ratio, largest
     contact-ellipse semi-axis, convergence (``n_phi`` contact positions)."""
-    return d.family.sweep_point(d, n_phi)
+    return design.family.sweep_point(design, n_phi)

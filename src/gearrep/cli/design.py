@@ -151,26 +151,26 @@ def check(raw, *, contact: bool = True) -> Design:
     """Resolve and build ``raw``; with ``contact``, also let its family check the contact where the
     analyses start (:meth:`gearrep.cli.family.Family.check_contact`: at phi1 = 0, inside the flanks
     under the misalignment). Raises SettingError naming the key."""
-    d = build(resolve(raw))
+    design = build(resolve(raw))
     if contact:
-        d.family.check_contact(d)
-    return d
+        design.family.check_contact(design)
+    return design
 
 
-def require_analysis(d: Design, analysis: str) -> None:
+def require_analysis(design: Design, analysis: str) -> None:
     """Refuse (SettingError naming ``design.family``) a design whose family does not support
     ``analysis`` (one of :data:`gearrep.cli.family.ANALYSES`), with the family's reason
     (:meth:`gearrep.cli.family.Family.why_not`), and one that lacks a key only that analysis
     requires (:data:`gearrep.cli.keys.ANALYSIS_REQUIRED`)."""
-    if analysis not in d.family.analyses:
+    if analysis not in design.family.analyses:
         others = [name for name, f in REGISTRY.items() if analysis in f.analyses]
-        why = d.family.why_not(d, analysis)
+        why = design.family.why_not(design, analysis)
         raise SettingError(
-            f"design.family: got {d.family.name!r}; allowed: for {analysis}, a family that supports it: {others}"
+            f"design.family: got {design.family.name!r}; allowed: for {analysis}, a family that supports it: {others}"
             + (f" ({why})" if why else "")
         )
     for key in ANALYSIS_REQUIRED.get(analysis, ()):
-        if lookup_value(d.values, key) is None:
+        if lookup_value(design.values, key) is None:
             raise SettingError(
-                f"design.{key}: missing; allowed: {lookup(d.family.keys, key).allowed()} (gearrep {analysis} needs it)"
+                f"design.{key}: missing; allowed: {lookup(design.family.keys, key).allowed()} (gearrep {analysis} needs it)"
             )

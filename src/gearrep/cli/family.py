@@ -101,17 +101,17 @@ class Family:
         the key, value and allowed range); no contact solve."""
         raise NotImplementedError
 
-    def check_contact(self, d: Design) -> None:
-        """Check that the flanks of the built design ``d`` meet where the analyses start (and set
-        what that finds on ``d``); SettingError naming the key otherwise."""
+    def check_contact(self, design: Design) -> None:
+        """Check that the flanks of the built ``design`` meet where the analyses start (and set
+        what that finds on it); SettingError naming the key otherwise."""
         raise NotImplementedError
 
-    def tca(self, d: Design, progress=None) -> tuple:
+    def tca(self, design: Design, progress=None) -> tuple:
         """(contact_path, te_cycle, summary entries, further tables) of ``gearrep tca`` over the
         meshing cycle, with ``d.analysis['n_points']`` positions."""
         raise NotImplementedError
 
-    def sweep_point(self, d: Design, n_phi: int) -> dict:
+    def sweep_point(self, design: Design, n_phi: int) -> dict:
         """The metrics of one sweep point (``gearrep sweep``) with ``n_phi`` contact positions."""
         raise NotImplementedError
 
@@ -119,63 +119,63 @@ class Family:
         """Contact solves of one sweep point with ``n_phi`` positions (the sweep's shard sizes)."""
         raise NotImplementedError
 
-    def curvature_table(self, d: Design) -> pd.DataFrame:
+    def curvature_table(self, design: Design) -> pd.DataFrame:
         """Principal curvatures [1/mm] and directions on the curvature grid over both flanks."""
         raise NotImplementedError
 
-    def flank_cloud(self, d: Design, member: int) -> tuple:
+    def flank_cloud(self, design: Design, member: int) -> tuple:
         """(points (n_u, n_v, 3) with NaN off the flank, outward unit normals, table) of member
         ``member``'s flank on the flank grid."""
         raise NotImplementedError
 
-    def iso_contact_ratios(self, d: Design) -> dict:
+    def iso_contact_ratios(self, design: Design) -> dict:
         """The ISO contact ratios of the nominal pair (:data:`ISO_RATIOS`); NaN by default."""
         return dict.fromkeys(ISO_RATIOS, float("nan"))
 
-    def why_not(self, d: Design, analysis: str) -> str:
+    def why_not(self, design: Design, analysis: str) -> str:
         """Why the family does not support ``analysis`` (shown in the refusal): for ``ltca`` the
         library's reason for refusing :meth:`pinion_surface` (:func:`gearrep.ltca.refusal`); ""
         otherwise."""
         if analysis != "ltca":
             return ""
-        why = refusal(self.pinion_surface(d))
+        why = refusal(self.pinion_surface(design))
         return f"gearrep.ltca refuses {self.name} flanks: {why}" if why else ""
 
-    def pinion_surface(self, d: Design):
+    def pinion_surface(self, design: Design):
         """The pinion's flank surface (by default ``d.pair.flank1``)."""
-        return d.pair.flank1
+        return design.pair.flank1
 
-    def iso_pitch_pressure_MPa(self, d: Design) -> float:
+    def iso_pitch_pressure_MPa(self, design: Design) -> float:
         """ISO 6336-2's nominal pitch-point contact stress of the nominal pair under the design's
         load and materials (``gearrep ltca``'s reference); NaN by default (no closed form)."""
         return float("nan")
 
-    def pitch_radius_mm(self, d: Design) -> float:
+    def pitch_radius_mm(self, design: Design) -> float:
         """Operating pitch radius [mm] of the pinion: r_w1 = a' N1 / (N1 + N2), a' the centre distance
         (N1 + N2) m_t / 2 of a cylindrical pair (from ``module_mm``, the teeth and
         ``helix_angle_deg``) moved by the misalignment's ``d_E_mm`` and ``d_H_mm`` (``gearrep
         ltca``'s pitch position: where the contact reaches it)."""
-        v = d.values
+        v = design.values
         n1, n2 = v["pinion"]["teeth"], v["gear"]["teeth"]
         m_t = v["module_mm"] / np.cos(np.radians(v.get("helix_angle_deg", 0.0)))
         mis = v.get("misalignment", {})
         a = float(np.hypot(0.5 * m_t * (n1 + n2) + mis.get("d_E_mm", 0.0), mis.get("d_H_mm", 0.0)))
         return a * n1 / (n1 + n2)
 
-    def te_radius_mm(self, d: Design) -> float:
+    def te_radius_mm(self, design: Design) -> float:
         """Radius [mm] that turns a TE of the driven gear in angle into a displacement along the
         line of action (figures): by default the base radius r_b2 = r_p2 cos(alpha_t) of a
         cylindrical gear from ``module_mm``, ``gear.teeth``, ``pressure_angle_deg`` and
         ``helix_angle_deg`` (0 where the family has none)."""
-        v = d.values
+        v = design.values
         beta = np.radians(v.get("helix_angle_deg", 0.0))
         alpha_t = np.arctan(np.tan(np.radians(v["pressure_angle_deg"])) / np.cos(beta))
         return float(0.5 * v["gear"]["teeth"] * v["module_mm"] / np.cos(beta) * np.cos(alpha_t))
 
-    def draw_face_edges(self, d: Design, ax) -> None:
+    def draw_face_edges(self, design: Design, ax) -> None:
         """Draw the pinion's face edges on the contact-path figure (axial position [mm] against
         radius [mm]): by default the planes at +-face_width_mm / 2 from mid-face."""
-        half = 0.5 * d.values["face_width_mm"]
+        half = 0.5 * design.values["face_width_mm"]
         ax.axvline(-half, c="0.5", lw=0.6)
         ax.axvline(half, c="0.5", lw=0.6)
 
@@ -200,36 +200,36 @@ class PairFamily(Family):
         :data:`gearrep.cli.keys.MISALIGNMENT`)."""
         return misalignment(values)
 
-    def remisaligned(self, d: Design, values: dict) -> Design:
-        """The design ``d`` under the misalignment of ``values`` (the rest of the design as ``d``)."""
-        return Design(values, self, d.pair.with_misalignment(self.misalignment(values)), mesh=d.mesh)
+    def remisaligned(self, design: Design, values: dict) -> Design:
+        """The ``design`` under the misalignment of ``values`` (the rest of the design unchanged)."""
+        return Design(values, self, design.pair.with_misalignment(self.misalignment(values)), mesh=design.mesh)
 
-    def mesh_check(self, d: Design) -> None:
+    def mesh_check(self, design: Design) -> None:
         """Checks of the meshing that need no contact solve, run before the contact check (none
         by default)."""
 
-    def line_section(self, d: Design):
+    def line_section(self, design: Design):
         """Face coordinate v1 of member 1 in which a line contact is traced (None: the family's
         flanks never touch along a line)."""
         return None
 
-    def nominal(self, d: Design, phi1):
+    def nominal(self, design: Design, phi1):
         """For a member 2 without explicit form: ``nominal(pair, phi)`` -> (n, 5) conventional
         starts at angles ``phi`` among ``phi1`` [rad] (:func:`gearrep.tca.robust_contact` completes
         its starts with them); None (the default) for an explicit member 2."""
         return None
 
-    def starts(self, d: Design, phi1, nominal=None) -> tuple:
+    def starts(self, design: Design, phi1, nominal=None) -> tuple:
         """(u1, v1) starts on flank 1 at the angles ``phi1`` [rad]: those of the ``nominal`` starts
         where the family has them, else the middle of flank 1's box."""
         phi1 = np.atleast_1d(np.asarray(phi1, float))
         if nominal is not None:
-            x = np.asarray(nominal(d.pair, phi1), float)
+            x = np.asarray(nominal(design.pair, phi1), float)
             return x[:, 0], x[:, 1]
-        mid = 0.5 * (d.pair.lower1 + d.pair.upper1)
+        mid = 0.5 * (design.pair.lower1 + design.pair.upper1)
         return np.full(len(phi1), mid[0]), np.full(len(phi1), mid[1])
 
-    def on_flanks(self, d: Design, c, face: bool = True):
+    def on_flanks(self, design: Design, c, face: bool = True):
         """``c`` with the contacts outside the true flanks (where the solve's box is wider) marked
         OFF_FLANK and NaN; ``face=False`` keeps contacts beyond the face width where a family
         extends its flanks along the face. By default ``c``."""
@@ -270,43 +270,45 @@ class PairFamily(Family):
                 u1, v1 = moved[:, 0], moved[:, 1]
             return robust_contact(d.pair, phi1, u1, v1, nominal=nominal, fallback=fallback, **kw)
 
-    def contact_at(self, d: Design, phi1, face: bool = True):
+    def contact_at(self, design: Design, phi1, face: bool = True):
         """Contact points (:class:`gearrep.tca.ContactPoints`) at pinion angles ``phi1`` [rad], one
         independent solve each: :meth:`robust_solve` (a line contact: the fixed section
         :meth:`line_section`), then :meth:`on_flanks`."""
-        if d.line_contact:
-            s = d.analysis
+        if design.line_contact:
+            analysis = design.analysis
             with np.errstate(all="ignore"):
-                c = solve_contact(d.pair, phi1, v1=self.line_section(d), tol=s["tol"], maxiter=s["maxiter"])
+                c = solve_contact(
+                    design.pair, phi1, v1=self.line_section(design), tol=analysis["tol"], maxiter=analysis["maxiter"]
+                )
         else:
-            c = self.robust_solve(d, phi1)
-        return self.on_flanks(d, c, face)
+            c = self.robust_solve(design, phi1)
+        return self.on_flanks(design, c, face)
 
-    def conjugate(self, d: Design) -> bool:
+    def conjugate(self, design: Design) -> bool:
         """Whether the design's flanks are conjugate by construction (unmodified lengthwise and
         aligned, so that they touch along a line; False by default)."""
         return False
 
-    def is_line_contact(self, d: Design) -> bool:
+    def is_line_contact(self, design: Design) -> bool:
         """Whether the flanks touch along a line: conjugate by construction (:meth:`conjugate`), or
         the contact system at phi1 = 0 solved from the projected start (the robust strategy's first
         step) is singular; False for a family without :meth:`line_section`."""
-        if self.line_section(d) is None:
+        if self.line_section(design) is None:
             return False
-        if self.conjugate(d):
+        if self.conjugate(design):
             return True
-        return bool(self.robust_solve(d, [0.0], fallback=False).status[0] == Status.SINGULAR)
+        return bool(self.robust_solve(design, [0.0], fallback=False).status[0] == Status.SINGULAR)
 
     # -- the contact check ------------------------------------------------------------------------
-    def check_contact(self, d: Design) -> None:
+    def check_contact(self, design: Design) -> None:
         """Solve the contact at phi1 = 0 and refuse a design whose flanks do not meet there inside
         their limits, naming the misalignment (and its approximate limit) when one is given."""
-        self.mesh_check(d)
-        d.line_contact = self.is_line_contact(d)
-        c = self.contact_at(d, [0.0], face=False)  # a family extending its flanks along the face: anywhere on it
+        self.mesh_check(design)
+        design.line_contact = self.is_line_contact(design)
+        c = self.contact_at(design, [0.0], face=False)  # a family extending its flanks along the face: anywhere on it
         if c.converged[0]:
             return
-        values = d.values
+        values = design.values
         mis = {k: x for k, x in values["misalignment"].items() if x != 0.0}
         if not mis:
             raise SettingError(
@@ -316,7 +318,7 @@ class PairFamily(Family):
             )
         if len(mis) == 1:
             name, x = next(iter(mis.items()))
-            limit = self.largest_with_contact(d, name, x)
+            limit = self.largest_with_contact(design, name, x)
             raise SettingError(
                 f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.2g} for this pair (larger "
                 f"values move the contact at the pitch position off the flanks: status {c.status_name[0]})"
@@ -326,73 +328,73 @@ class PairFamily(Family):
             f"position inside the flanks (solve status there: {c.status_name[0]})"
         )
 
-    def largest_with_contact(self, d: Design, name: str, x: float, steps: int = 6) -> float:
+    def largest_with_contact(self, design: Design, name: str, x: float, steps: int = 6) -> float:
         """Bisection on the magnitude of misalignment ``name`` (same sign as ``x``) between 0
         (contact) and ``x`` (none): the smallest magnitude found without contact at phi1 = 0, to
         2^-steps of |x| (an estimate of the limit, which the message calls approximate)."""
         lo, hi = 0.0, abs(x)
         for _ in range(steps):
             mid = 0.5 * (lo + hi)
-            dm = self.remisaligned(d, set_dotted(d.values, f"misalignment.{name}", math.copysign(mid, x)))
+            dm = self.remisaligned(design, set_dotted(design.values, f"misalignment.{name}", math.copysign(mid, x)))
             c = self.contact_at(dm, [0.0], face=False)
             lo, hi = (mid, hi) if c.converged[0] else (lo, mid)
         return hi
 
     # -- the meshing cycle ----------------------------------------------------------------------
-    def start_at_zero(self, d: Design) -> np.ndarray:
+    def start_at_zero(self, design: Design) -> np.ndarray:
         """(1, 2) reduced unknowns (u1, v1) of the contact at phi1 = 0 (the start of the walks
         along the path); ValueError when there is none."""
-        c = self.contact_at(d, [0.0])
+        c = self.contact_at(design, [0.0])
         if not c.converged[0]:
             raise ValueError(f"no contact inside the flanks at phi1 = 0 (status {c.status_name[0]})")
         return c.unknowns("reduced")
 
-    def engagement(self, d: Design) -> tuple:
+    def engagement(self, design: Design) -> tuple:
         """Engagement limits (phi_1B, phi_1E) [rad] of one tooth pair: the angles at which the
         contact reaches a flank boundary, solved exactly (:func:`gearrep.meshing.engagement_limits`
         from the contact at phi1 = 0, the same solve as :meth:`meshing_cycle_tables`)."""
-        start = self.start_at_zero(d)
-        v1 = self.line_section(d) if d.line_contact else None
+        start = self.start_at_zero(design)
+        v1 = self.line_section(design) if design.line_contact else None
         with np.errstate(all="ignore"):
-            b, e = engagement_limits(d.pair, 0.0, start, v1=v1, tol=d.analysis["tol"])
+            b, e = engagement_limits(design.pair, 0.0, start, v1=v1, tol=design.analysis["tol"])
         return b.phi1, e.phi1
 
-    def drive(self, d: Design) -> float:
+    def drive(self, design: Design) -> float:
         """+1 if member 1's flank moves along its outward normal as phi1 grows (it pushes member 2:
         the TE over the cycle is the most advanced tooth pair's), else -1
         (:func:`gearrep.tca.flank_sense`)."""
         with np.errstate(all="ignore"):
-            return 1.0 if float(flank_sense(d.pair, [0.0])[0]) >= 0 else -1.0
+            return 1.0 if float(flank_sense(design.pair, [0.0])[0]) >= 0 else -1.0
 
-    def sampled_cycle(self, d: Design, n_phi: int) -> tuple:
+    def sampled_cycle(self, design: Design, n_phi: int) -> tuple:
         """(path ContactPoints on the engagement interval, TE envelope table, summary entries) with
         ``n_phi`` positions from :meth:`engagement` (``gearrep sweep`` of every family, ``gearrep
         tca`` of the families without an exact cycle)."""
-        p1 = 2.0 * np.pi / d.pair.n1
-        b, e = self.engagement(d)
+        p1 = 2.0 * np.pi / design.pair.n1
+        b, e = self.engagement(design)
         phi = np.linspace(b, e, int(n_phi))
-        c = self.contact_at(d, phi)
+        c = self.contact_at(design, phi)
         te = np.where(c.converged & (phi >= b - 1e-12) & (phi <= e + 1e-12), c.te, np.nan)
-        drive = self.drive(d)
+        drive = self.drive(design)
         at, env, lead = te_envelope(phi, te, drive, p1, b, n_phi)
         table = pd.DataFrame({"phi1_rad": at, "te_arcsec": env / ARCSEC, "tooth_pair": lead})
         summary = {
-            "contact_ratio": float(contact_ratio(b, e, d.pair.n1)),
+            "contact_ratio": float(contact_ratio(b, e, design.pair.n1)),
             "contact_ratio_method": self.contact_ratio_method,
             **cycle_summary(b, e, env, drive),
             "solves": self.solves_per_point(int(n_phi)),
         }
         return c, table, summary
 
-    def meshing_cycle_tables(self, d: Design) -> tuple:
+    def meshing_cycle_tables(self, design: Design) -> tuple:
         """The :meth:`tca` tables from the library's meshing cycle
         (:func:`gearrep.meshing.meshing_cycle` from the contact at phi1 = 0: engagement limits
         solved exactly, the contact ratio, the TE envelope and the kind of transfer between pairs)."""
-        s = d.analysis
-        v1 = self.line_section(d) if d.line_contact else None
-        start = self.start_at_zero(d)
+        analysis = design.analysis
+        v1 = self.line_section(design) if design.line_contact else None
+        start = self.start_at_zero(design)
         with np.errstate(all="ignore"):
-            cyc = meshing_cycle(d.pair, 0.0, start, v1=v1, n_points=s["n_points"], tol=s["tol"])
+            cyc = meshing_cycle(design.pair, 0.0, start, v1=v1, n_points=analysis["n_points"], tol=analysis["tol"])
         te = pd.DataFrame({"phi1_rad": cyc.phi1, "te_arcsec": cyc.te / ARCSEC, "tooth_pair": cyc.pair_index})
         summary = {
             "contact_ratio": cyc.contact_ratio,
@@ -403,26 +405,26 @@ class PairFamily(Family):
             "drive_sense": "max",
             "transfer_kind": cyc.transfer_kind,
         }
-        return self.path_table(d, cyc.path), te, summary, {}
+        return self.path_table(design, cyc.path), te, summary, {}
 
-    def tca(self, d: Design, progress=None) -> tuple:
+    def tca(self, design: Design, progress=None) -> tuple:
         """The sampled cycle (:meth:`sampled_cycle`) with its contact path; families with an exact
         cycle return :meth:`meshing_cycle_tables` instead."""
-        c, te, summary = self.sampled_cycle(d, d.analysis["n_points"])
-        return self.path_table(d, c), te, summary, {}
+        c, te, summary = self.sampled_cycle(design, design.analysis["n_points"])
+        return self.path_table(design, c), te, summary, {}
 
-    def edges(self, d: Design, P) -> list:
+    def edges(self, design: Design, P) -> list:
         """Half-spaces of the flank edges at the contact points ``P`` (n, 3) [mm] that cut the
         contact ellipses (:func:`gearrep.cli.edges.cut_at_edges`): by default the face planes and
         tip cylinders of members on parallel or crossed axes (:func:`gearrep.cli.edges.axial_edges`)."""
-        return axial_edges(d.pair, d.values["face_width_mm"], P)
+        return axial_edges(design.pair, design.values["face_width_mm"], P)
 
-    def ellipses(self, d: Design, c):
+    def ellipses(self, design: Design, c):
         """The contact ellipses of the contacts ``c`` at the design's elastic approach, NaN where
         the contact is no ellipse (a line contact: relative curvature zero to rounding)."""
         with np.errstate(all="ignore"):
-            el = contact_ellipse(d.pair, c, d.analysis["elastic_approach_mm"])
-        ell = np.asarray(el.elliptic, bool) & (not d.line_contact)
+            el = contact_ellipse(design.pair, c, design.analysis["elastic_approach_mm"])
+        ell = np.asarray(el.elliptic, bool) & (not design.line_contact)
         return el._replace(
             a=np.where(ell, el.a, np.nan),
             b=np.where(ell, el.b, np.nan),
@@ -430,13 +432,13 @@ class PairFamily(Family):
             major_axis=np.where(ell[:, None], el.major_axis, np.nan),
         )
 
-    def path_table(self, d: Design, c) -> pd.DataFrame:
+    def path_table(self, design: Design, c) -> pd.DataFrame:
         """The contact-path table of the contacts ``c``: solve record, flank parameters, point,
         normal, the contact ellipse and its cut at the flank edges."""
         pu, pv = self.param_names
-        el = self.ellipses(d, c)
+        el = self.ellipses(design, c)
         r = np.hypot(c.position[:, 0], c.position[:, 1])
-        cut = cut_at_edges(lambda P: self.edges(d, P), c.position, c.normal, el.major_axis, el.a, el.b)
+        cut = cut_at_edges(lambda P: self.edges(design, P), c.position, c.normal, el.major_axis, el.a, el.b)
         return pd.DataFrame(
             {
                 "phi1_rad": c.phi1,
@@ -473,11 +475,11 @@ class PairFamily(Family):
         """The path's ``n_phi`` solves and the :attr:`engagement_solves` that find its limits."""
         return int(n_phi) + self.engagement_solves
 
-    def sweep_point(self, d: Design, n_phi: int) -> dict:
+    def sweep_point(self, design: Design, n_phi: int) -> dict:
         """TE over the meshing cycle (envelope of the sampled pairs), contact ratio, largest
         contact-ellipse semi-axis, convergence (:meth:`sampled_cycle` with ``n_phi`` positions)."""
-        c, _, summary = self.sampled_cycle(d, n_phi)
-        a = self.ellipses(d, c).a
+        c, _, summary = self.sampled_cycle(design, n_phi)
+        a = self.ellipses(design, c).a
         ok = c.converged
         return {
             "contact_ratio": summary["contact_ratio"],
@@ -489,32 +491,32 @@ class PairFamily(Family):
         }
 
     # -- flank grids: curvatures and point clouds, each member in its own frame ------------------
-    def member(self, d: Design, member: int) -> tuple:
+    def member(self, design: Design, member: int) -> tuple:
         """(flank, lower, upper, outward sign) of member ``member`` (1: pinion, 2: gear)."""
-        p = d.pair
+        p = design.pair
         return (p.flank1, p.lower1, p.upper1, p.sign1) if member == 1 else (p.flank2, p.lower2, p.upper2, p.sign2)
 
-    def flank_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def flank_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """(flank, u, v): the parameters of an n_u x n_v grid over member ``member``'s flank
         (ravelled, profile-major), kept where the flank exists; by default its box."""
-        flank, lo, hi, _ = self.member(d, member)
+        flank, lo, hi, _ = self.member(design, member)
         u, v = np.meshgrid(np.linspace(lo[0], hi[0], n_u), np.linspace(lo[1], hi[1], n_v), indexing="ij")
         return flank, u.ravel(), v.ravel()
 
-    def cloud_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def cloud_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """(u, v, keep) of the n_u x n_v point cloud (the full grid; ``keep`` False where it leaves
         the flank): by default :meth:`flank_grid`, all kept."""
-        _, u, v = self.flank_grid(d, member, n_u, n_v)
+        _, u, v = self.flank_grid(design, member, n_u, n_v)
         return u, v, np.ones(len(u), bool)
 
-    def curvature_table(self, d: Design) -> pd.DataFrame:
+    def curvature_table(self, design: Design) -> pd.DataFrame:
         """Principal curvatures [1/mm] and directions on :meth:`flank_grid` over both flanks (each
         in its own frame; curvature positive where the surface bends toward its outward normal)."""
-        n_u, n_v = d.analysis["curvature_grid"][:2]
+        n_u, n_v = design.analysis["curvature_grid"][:2]
         rows = []
         for member, name in ((1, "pinion"), (2, "gear")):
-            flank, u, v = self.flank_grid(d, member, n_u, n_v)
-            sign = self.member(d, member)[3]
+            flank, u, v = self.flank_grid(design, member, n_u, n_v)
+            sign = self.member(design, member)[3]
             with np.errstate(all="ignore"):
                 P = flank.evaluate(u, v)
                 pc = principal_curvatures(P)
@@ -523,11 +525,11 @@ class PairFamily(Family):
             rows.append(curvature_frame(name, self.param_names, u, v, P.r, pc))
         return pd.concat(rows, ignore_index=True)
 
-    def flank_cloud(self, d: Design, member: int) -> tuple:
+    def flank_cloud(self, design: Design, member: int) -> tuple:
         """Point cloud of member ``member``'s flank in its own frame on :meth:`cloud_grid`."""
-        n_u, n_v = d.analysis["flank_grid"][:2]
-        flank, _, _, sign = self.member(d, member)
-        u, v, keep = self.cloud_grid(d, member, n_u, n_v)
+        n_u, n_v = design.analysis["flank_grid"][:2]
+        flank, _, _, sign = self.member(design, member)
+        u, v, keep = self.cloud_grid(design, member, n_u, n_v)
         with np.errstate(all="ignore"):
             P = flank.evaluate(u, v)
             nrm = sign * P.normal

@@ -28,15 +28,15 @@ NUMERICALLY_ZERO_UM = 1e-3
 CYCLES_SHOWN = 3
 
 
-def te_scales(d) -> tuple[float, float]:
+def te_scales(design) -> tuple[float, float]:
     """(micro-radians of the driven gear per arcsec, micrometres along the line of action per arcsec):
     a TE of the driven gear in angle times the radius of its family's ``te_radius_mm`` (a
     cylindrical gear: its base radius r_b2 = r_p2 cos(alpha_t), the pitch radius N2 m_n / (2 cos
     beta)) is the displacement along the line of action."""
-    return ARCSEC * 1e6, ARCSEC * d.family.te_radius_mm(d) * 1e3
+    return ARCSEC * 1e6, ARCSEC * design.family.te_radius_mm(design) * 1e3
 
 
-def tca_figures(d, tables) -> dict:
+def tca_figures(design, tables) -> dict:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -46,7 +46,7 @@ def tca_figures(d, tables) -> dict:
     out = {}
 
     ok = path["status"] == "converged"
-    out["transmission_error"] = _te_figure(d, te, plt)
+    out["transmission_error"] = _te_figure(design, te, plt)
 
     # contact points carried back into the pinion frame: axial coordinate vs radius
     fig, ax = plt.subplots(figsize=(6, 3.6))
@@ -58,7 +58,7 @@ def tca_figures(d, tables) -> dict:
     if "edge_contact" in p:  # the contact ellipses cut at the tooth edges (gearrep.cli.edges)
         cols = lambda *names: np.column_stack([p[c].to_numpy() for c in names])  # noqa: E731
         cut = cut_at_edges(
-            lambda P: d.family.edges(d, P),
+            lambda P: design.family.edges(design, P),
             cols("x_mm", "y_mm", "z_mm"),
             cols("normal_x", "normal_y", "normal_z"),
             cols("ellipse_major_x", "ellipse_major_y", "ellipse_major_z"),
@@ -84,7 +84,7 @@ def tca_figures(d, tables) -> dict:
                     c="C3",
                     lw=0.8,
                 )
-    d.family.draw_face_edges(d, ax)
+    design.family.draw_face_edges(design, ax)
     ax.set_xlabel("axial position [mm]")
     ax.set_ylabel("radius on the pinion [mm]")
     ax.set_title(
@@ -98,10 +98,10 @@ def tca_figures(d, tables) -> dict:
     return out
 
 
-def _te_figure(d, te, plt):
+def _te_figure(design, te, plt):
     """TE over :data:`CYCLES_SHOWN` meshing cycles, mean removed, in micro-radians of the driven gear
     (left), micrometres along the line of action (right) and arcsec (top note)."""
-    urad, um = te_scales(d)
+    urad, um = te_scales(design)
     phi = te["phi1_rad"].to_numpy()
     t = te["te_arcsec"].to_numpy()
     ok = np.isfinite(t)
@@ -109,13 +109,13 @@ def _te_figure(d, te, plt):
     if ok.sum() < 2:
         ax.text(0.5, 0.5, "no TE: fewer than two converged positions", ha="center", transform=ax.transAxes)
         return fig
-    pitch = 2.0 * np.pi / d.values["pinion"]["teeth"]
+    pitch = 2.0 * np.pi / design.values["pinion"]["teeth"]
     x = np.concatenate([phi[ok] + k * pitch for k in range(CYCLES_SHOWN)])
     y = np.tile(t[ok] - np.mean(t[ok]), CYCLES_SHOWN) * urad
     ptp_um = float(np.ptp(t[ok])) * um
     ax.set_xlabel("pinion angle phi1 [rad]")
     ax.set_ylabel("TE, mean removed [urad of the driven gear]")
-    ax.set_title(f"{d.name}: TE over {CYCLES_SHOWN} meshing cycles", fontsize=10)
+    ax.set_title(f"{design.name}: TE over {CYCLES_SHOWN} meshing cycles", fontsize=10)
     if ptp_um < NUMERICALLY_ZERO_UM:
         ax.plot(x, np.zeros_like(x), "-", color="C0")
         ax.set_ylim(-1.0, 1.0)
@@ -154,29 +154,29 @@ def _pyplot():
     return plt
 
 
-def ltca_figures(d, loaded) -> dict:
+def ltca_figures(design, loaded) -> dict:
     """The figures of ``gearrep ltca`` from its :class:`gearrep.cli.loaded.Loaded` result: loaded
     and unloaded TE, load sharing (over :data:`CYCLES_SHOWN` meshing cycles) and the pressure
     pattern on the pinion flank over the cycle."""
     plt = _pyplot()
     res = loaded.cycle
     return {
-        "loaded_transmission_error": _loaded_te_figure(d, res, plt),
-        "load_sharing": _load_sharing_figure(d, res, plt),
-        "pressure_pattern": _pressure_pattern_figure(d, res, plt),
+        "loaded_transmission_error": _loaded_te_figure(design, res, plt),
+        "load_sharing": _load_sharing_figure(design, res, plt),
+        "pressure_pattern": _pressure_pattern_figure(design, res, plt),
     }
 
 
-def _cycles(d, phi):
+def _cycles(design, phi):
     """(angles over CYCLES_SHOWN cycles (CYCLES_SHOWN, n), the pinion's angular pitch [rad])."""
-    pitch = 2.0 * np.pi / d.values["pinion"]["teeth"]
+    pitch = 2.0 * np.pi / design.values["pinion"]["teeth"]
     return np.array([phi + c * pitch for c in range(CYCLES_SHOWN)]), pitch
 
 
-def _loaded_te_figure(d, res, plt):
+def _loaded_te_figure(design, res, plt):
     """Loaded and unloaded TE [urad of the gear, member 2; um along the line of action on the right]."""
-    x, pitch = _cycles(d, res.phi1_rad)
-    um_per_urad = 1e-3 * d.family.te_radius_mm(d)
+    x, pitch = _cycles(design, res.phi1_rad)
+    um_per_urad = 1e-3 * design.family.te_radius_mm(design)
     fig, ax = plt.subplots(figsize=(6.4, 3.8))
     loaded, rigid = res.lte_urad, res.te_unloaded_rad * 1e6
     ax.plot(x.ravel(), np.tile(rigid, CYCLES_SHOWN), "-", c="0.5", label="unloaded (rigid flanks)")
@@ -191,7 +191,7 @@ def _loaded_te_figure(d, res, plt):
         ax.axvline(res.phi1_rad[0] + k * pitch, c="0.85", lw=0.6)
     ax.set_xlabel("pinion angle phi1 [rad]")
     ax.set_ylabel("TE [urad of the gear]")
-    ax.set_title(f"{d.name}: loaded TE over {CYCLES_SHOWN} meshing cycles", fontsize=10)
+    ax.set_title(f"{design.name}: loaded TE over {CYCLES_SHOWN} meshing cycles", fontsize=10)
     sec = ax.secondary_yaxis("right", functions=(lambda v: v * um_per_urad, lambda v: v / um_per_urad))
     sec.set_ylabel("[um along the line of action]")
     ax.legend(fontsize=7, loc="center right")
@@ -199,10 +199,10 @@ def _loaded_te_figure(d, res, plt):
     return fig
 
 
-def _load_sharing_figure(d, res, plt):
+def _load_sharing_figure(design, res, plt):
     """Each tooth pair's load through its engagement and the total normal load: tooth pair k at
     phi1 + c pitch carries what pair k - c carries at phi1 (:func:`gearrep.ltca.initial_separations`)."""
-    x, pitch = _cycles(d, res.phi1_rad)
+    x, pitch = _cycles(design, res.phi1_rad)
     pairs = [int(k) for k in res.separations.pairs]
     col = {k: i for i, k in enumerate(pairs)}
     fig, ax = plt.subplots(figsize=(6.4, 3.8))
@@ -220,7 +220,7 @@ def _load_sharing_figure(d, res, plt):
         ax.axvline(res.phi1_rad[0] + k * pitch, c="0.85", lw=0.6)
     ax.set_xlabel("pinion angle phi1 [rad]")
     ax.set_ylabel("normal load [N]")
-    ax.set_title(f"{d.name}: load of each tooth pair through its engagement", fontsize=10)
+    ax.set_title(f"{design.name}: load of each tooth pair through its engagement", fontsize=10)
     ax.set_ylim(bottom=0)
     ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
@@ -248,7 +248,7 @@ def _pressure_quads(res, i: int, tips, n_across: int = 9):
     return quads, (0.5 * (p[:, :-1] + p[:, 1:])).ravel(), m.position_mm[loaded & tips[i]]
 
 
-def _pressure_pattern_figure(d, res, plt):
+def _pressure_pattern_figure(design, res, plt):
     """Hertz pressure over the cycle on the pinion flank (axial position against radius): every
     loaded node's strip at every converged position (a tooth pair k at phi1 is the reference
     tooth pair at phi1 - k pitch, so together they cover one tooth's engagement); loaded tip
@@ -273,15 +273,15 @@ def _pressure_pattern_figure(d, res, plt):
             ax.legend(fontsize=7, loc="upper right")
     else:
         ax.text(0.5, 0.5, "no loaded position", ha="center", transform=ax.transAxes)
-    d.family.draw_face_edges(d, ax)
+    design.family.draw_face_edges(design, ax)
     ax.set_xlabel("axial position [mm]")
     ax.set_ylabel("radius on the pinion [mm]")
-    ax.set_title(f"{d.name}: contact pressure on the pinion flank over the cycle", fontsize=10)
+    ax.set_title(f"{design.name}: contact pressure on the pinion flank over the cycle", fontsize=10)
     fig.tight_layout()
     return fig
 
 
-def curvature_figure(d, table):
+def curvature_figure(design, table):
     """Principal curvatures k1, k2 [1/mm] of both flanks against their first flank parameter
     (involute: the radius, over the active profile)."""
     import matplotlib
@@ -299,6 +299,6 @@ def curvature_figure(d, table):
         ax.set_ylabel("principal curvature [1/mm]")
         ax.set_title(f"{member}", fontsize=10)
         ax.legend(fontsize=8)
-    fig.suptitle(f"{d.name}: principal curvatures", fontsize=10)
+    fig.suptitle(f"{design.name}: principal curvatures", fontsize=10)
     fig.tight_layout()
     return fig

@@ -63,22 +63,22 @@ def tip_kinds() -> tuple:
     return tuple(k for k, name in KINDS.items() if name.startswith("tip"))
 
 
-def _ltca_options(d) -> dict:
-    load = d.values["load"]
-    return dict(driving=load["driving"], materials=materials(d.values), n_nodes=int(d.analysis["ltca_nodes"]))
+def _ltca_options(design) -> dict:
+    load = design.values["load"]
+    return dict(driving=load["driving"], materials=materials(design.values), n_nodes=int(design.analysis["ltca_nodes"]))
 
 
-def pitch_position(d) -> tuple[float, str]:
-    """(phi1 [rad], status) of the pitch position of design ``d`` (module docstring): status
+def pitch_position(design) -> tuple[float, str]:
+    """(phi1 [rad], status) of the pitch position of ``design`` (module docstring): status
     ``converged``, or why there is none (phi1 NaN)."""
     from scipy.optimize import brentq
 
-    r_w = d.family.pitch_radius_mm(d)
-    b, e = d.family.engagement(d)
+    r_w = design.family.pitch_radius_mm(design)
+    b, e = design.family.engagement(design)
     phi = np.linspace(b, e, PITCH_SCAN + 2)[1:-1]
 
     def radius(x):
-        c = d.family.contact_at(d, np.atleast_1d(x))
+        c = design.family.contact_at(design, np.atleast_1d(x))
         return np.where(c.converged, np.hypot(c.position[:, 0], c.position[:, 1]), np.nan)
 
     f = radius(phi) - r_w
@@ -111,11 +111,11 @@ def pair_column(k: int) -> str:
     return f"load_pair_{'0' if k == 0 else f'{k:+d}'}_N"
 
 
-def positions_table(d, res, pairs) -> pd.DataFrame:
+def positions_table(design, res, pairs) -> pd.DataFrame:
     """One row per position of the loaded cycle ``res``: solve record, unloaded and loaded TE (urad of
     the gear, member 2, and um along the line of action), the load of each tooth pair of ``pairs``
     (offsets), pressure, edge-contact loads and mesh stiffness (NaN where not converged)."""
-    to_um = 1e-3 * d.family.te_radius_mm(d)
+    to_um = 1e-3 * design.family.te_radius_mm(design)
     col = {int(k): i for i, k in enumerate(res.separations.pairs)}
     out = {
         "phi1_rad": res.phi1_rad,
@@ -181,9 +181,9 @@ def pressure_map_table(res, i: int | None, n_across: int = 21) -> pd.DataFrame:
     )
 
 
-def _pitch_summary(d, opts) -> dict:
+def _pitch_summary(design, opts) -> dict:
     """The pitch-position entries of the summary (module docstring)."""
-    phi, status = pitch_position(d)
+    phi, status = pitch_position(design)
     nan = float("nan")
     out = {
         "pitch_point_phi1_rad": phi,
@@ -193,13 +193,13 @@ def _pitch_summary(d, opts) -> dict:
         "pitch_point_load_share": nan,
         "pitch_point_pressure_single_pair_MPa": nan,
         "pitch_point_single_pair_stiffness_N_per_mm_um": nan,
-        "pitch_point_pressure_iso_MPa": d.family.iso_pitch_pressure_MPa(d),
+        "pitch_point_pressure_iso_MPa": design.family.iso_pitch_pressure_MPa(design),
     }
     if not np.isfinite(phi):
         return out
-    T = d.values["load"]["torque_Nm"]
-    every = loaded_contact(d.pair, T, [phi], **opts)
-    one = loaded_contact(d.pair, T, [phi], pairs=[0], **opts)
+    T = design.values["load"]["torque_Nm"]
+    every = loaded_contact(design.pair, T, [phi], **opts)
+    one = loaded_contact(design.pair, T, [phi], pairs=[0], **opts)
     if every.converged[0]:
         k0 = int(np.flatnonzero(every.separations.pairs == 0)[0])
         out["pitch_point_pressure_MPa"] = float(every.max_pressure_MPa[0])
@@ -226,17 +226,19 @@ SWEEP_COLUMNS = (
 )
 
 
-def _cycle(d):
-    T = d.values["load"]["torque_Nm"]
-    return loaded_contact(d.pair, T, cycle_positions(d.pair, int(d.analysis["n_points"])), **_ltca_options(d))
+def _cycle(design):
+    T = design.values["load"]["torque_Nm"]
+    return loaded_contact(
+        design.pair, T, cycle_positions(design.pair, int(design.analysis["n_points"])), **_ltca_options(design)
+    )
 
 
-def sweep_metrics(d) -> dict:
+def sweep_metrics(design) -> dict:
     """The loaded cycle's summary entries of one sweep point (:data:`SWEEP_COLUMNS`; no pitch
     position, no tables)."""
-    s = dataclasses.asdict(_cycle(d).summary())
-    s["ltca_positions_failed"] = s.pop("n_failed")
-    return {k: s[k] for k in SWEEP_COLUMNS}
+    summary = dataclasses.asdict(_cycle(design).summary())
+    summary["ltca_positions_failed"] = summary.pop("n_failed")
+    return {k: summary[k] for k in SWEEP_COLUMNS}
 
 
 #: tooth pairs the loaded analysis places nodes on (gearrep.ltca.loaded_contact's default -4 ... 4)
@@ -250,24 +252,24 @@ def solves_per_design(values: dict) -> int:
     return int(a["n_points"]) * _PAIRS * int(a["ltca_nodes"])
 
 
-def ltca_tables(d, progress=None) -> Loaded:
-    """The loaded analysis of the checked design ``d`` (module docstring): the cycle, its worst
+def ltca_tables(design, progress=None) -> Loaded:
+    """The loaded analysis of the checked ``design`` (module docstring): the cycle, its worst
     position and the tables ``ltca_positions`` (one row per position), ``ltca_summary`` (one row)
     and ``ltca_pressure_map`` (the worst position's pressure map)."""
-    opts = _ltca_options(d)
+    opts = _ltca_options(design)
     if progress:
         progress("loaded meshing cycle", 0.1)
-    res = _cycle(d)
+    res = _cycle(design)
     if progress:
         progress("pitch position", 0.6)
-    pitch = _pitch_summary(d, opts)
+    pitch = _pitch_summary(design, opts)
     ok = res.converged
     worst = int(np.nanargmax(np.where(ok, res.max_pressure_MPa, np.nan))) if ok.any() else None
     in_mesh = np.any(res.separations.in_contact, axis=(0, 2))
     pairs = [int(k) for k in res.separations.pairs[in_mesh]]
     summary = {
-        "design": d.name,
-        "family": d.family.name,
+        "design": design.name,
+        "family": design.family.name,
         "driving": res.driving,
         **dataclasses.asdict(res.summary()),
         "max_pressure_phi1_rad": float(res.phi1_rad[worst]) if worst is not None else float("nan"),
@@ -277,7 +279,7 @@ def ltca_tables(d, progress=None) -> Loaded:
         "max_torque_balance_residual": float(np.max(np.abs(res.moment_residual[ok]))) if ok.any() else float("nan"),
     }
     tables = {
-        "ltca_positions": positions_table(d, res, pairs),
+        "ltca_positions": positions_table(design, res, pairs),
         "ltca_summary": pd.DataFrame([summary]),
         "ltca_pressure_map": pressure_map_table(res, worst),
     }

@@ -1,7 +1,11 @@
-"""One package per replicated paper, every one with the same face (:mod:`._face`).
+"""One package per replicated paper, every one with the same face and the same files for the
+same roles (:mod:`._face`).
 
-:data:`REGISTRY` is the one list of studies: key -> seed -> document (the document titles per
-seed are the published data's :data:`gearrep.published.PAPERS`). The workflow's rules, the
+:data:`REGISTRY` is the one list of studies: key -> seed -> document (the document titles and
+names per seed are the published data's :data:`gearrep.published.PAPERS` and
+:data:`~gearrep.published.PAPER_NAMES`). A study's key is its document's name
+(``litvin2000``), or ``<name>_<part>`` when one document has two studies (``hobcut_curvature``,
+``hobcut_tca``); a validation study (no paper) is named by what it validates (``ltca``). The workflow's rules, the
 scorecard and the report read it (a test keeps the data README's seed table equal to it);
 :func:`load` imports a study's package.
 """
@@ -13,7 +17,7 @@ from dataclasses import dataclass
 from types import ModuleType
 
 from ..checks import VALIDATION
-from ..published import PAPERS
+from ..published import PAPER_NAMES, PAPERS
 
 __all__ = ["Study", "REGISTRY", "load"]
 
@@ -33,6 +37,12 @@ class Study:
         return self.seed == VALIDATION
 
     @property
+    def paper(self) -> str:
+        """The name of the replicated document (:data:`gearrep.published.PAPER_NAMES`), or a
+        validation study's key."""
+        return self.key if self.validation else PAPER_NAMES[self.seed]
+
+    @property
     def document(self) -> str:
         """Title of the replicated document (one per seed, :data:`gearrep.published.PAPERS`), or
         a validation study's own title."""
@@ -40,13 +50,13 @@ class Study:
 
 
 REGISTRY: dict[str, Study] = {
-    s.key: s
-    for s in (
-        Study("tseng_curvature", "000", "ch. 4: curvature tables 4.2-4.5 of the hob-generated gear"),
-        Study("tseng_tca", "000", "ch. 5: TCA and kinematic-error tables 5.2-5.9, contact ellipses"),
-        Study("nasa", "002", "curvatures, contact ellipses, TCA and TE under misalignment, worm-plunged pinion"),
-        Study("thesis", "003", "convergence of conventional vs reduced TCA, TE of crowned gears"),
-        Study("catt", "004", "contact-ellipse area along the path and every stated trend"),
+    study.key: study
+    for study in (
+        Study("hobcut_curvature", "000", "ch. 4: curvature tables 4.2-4.5 of the hob-generated gear"),
+        Study("hobcut_tca", "000", "ch. 5: TCA and kinematic-error tables 5.2-5.9, contact ellipses"),
+        Study("litvin2000", "002", "curvatures, contact ellipses, TCA and TE under misalignment, worm-plunged pinion"),
+        Study("temirkhan2023", "003", "convergence of conventional vs reduced TCA, TE of crowned gears"),
+        Study("ma2021", "004", "contact-ellipse area along the path and every stated trend"),
         Study(
             "ltca",
             VALIDATION,

@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from .. import checks as _checks
-from ..published import PAPERS
+from ..published import PAPER_NAMES, PAPERS
 from ._findings import findings, highlight
 from ._parity import parity_pngs, parity_rows
 from ._verdicts import (
@@ -222,7 +222,10 @@ def _head(card: pd.DataFrame, runtime_s: float | None, validation: bool = False)
         "computations. Each paper below has a verdict, its headline findings, the design data it prints, "
         "one row per table in the paper's order (linked to the notebook section that computes it) and a "
         "parity plot per table with computed numbers. Contents: "
-        + ", ".join(f"<a href='#paper-{s}'>seed {s}</a>" for s in sorted(card["seed"].unique()))
+        + ", ".join(
+            f"<a href='#paper-{s}'>{html.escape(PAPER_NAMES.get(s, f'seed {s}'))}</a>"
+            for s in sorted(card["seed"].unique())
+        )
         + ", <a href='#statuses'>statuses and verdicts</a>, <a href='#figures'>key figures</a>, "
         + ("<a href='#validation'>validation of the library</a>, " if validation else "")
         + "<a href='#errata'>errata</a>, <a href='#environment'>environment</a>.</p>",
@@ -234,14 +237,17 @@ def _head(card: pd.DataFrame, runtime_s: float | None, validation: bool = False)
 
 def _summary(papers: Mapping[str, pd.DataFrame], verdicts: Mapping[str, tuple[str, str]]) -> list[str]:
     res_st, apart_st = result_statuses(), apart_statuses()
-    head = ["seed", "paper", "verdict", "agree", "", *res_st, "total"] + ([f"{s} (not a result)" for s in apart_st])
+    head = ["seed", "name", "paper", "verdict", "agree", "", *res_st, "total"] + (
+        [f"{s} (not a result)" for s in apart_st]
+    )
     rows = []
     for seed, grp in papers.items():
         counts = _counts(grp)
         v = verdicts[seed][0]
         agree, scored = sum(counts[s] for s in AGREE if s in counts), sum(counts[s] for s in res_st)
         rows.append(
-            f"<tr><td>{html.escape(seed)}</td><td><a href='#paper-{seed}'>{html.escape(PAPERS.get(seed, ''))}</a></td>"
+            f"<tr><td>{html.escape(seed)}</td><td>{html.escape(PAPER_NAMES.get(seed, ''))}</td>"
+            f"<td><a href='#paper-{seed}'>{html.escape(PAPERS.get(seed, ''))}</a></td>"
             f"<td><span class='status' style='color:{_VERDICT_COLOURS.get(v, '#1f2328')}'>{v}</span></td>"
             f"<td class='num'>{agree} of {scored} ({100 * agree / max(scored, 1):.0f} %)</td>"
             f"<td>{_bar(counts)}</td>"
@@ -300,7 +306,8 @@ def _paper_head(seed, grp, verdict_, notebooks, errata, order, specs) -> list[st
     v, why = verdict_
     colour = _VERDICT_COLOURS.get(v, "#57606a")
     parts = [
-        f"<h2 id='paper-{seed}'>Seed {seed}: {html.escape(PAPERS.get(seed, ''))}</h2>",
+        f"<h2 id='paper-{seed}'>{html.escape(PAPER_NAMES.get(seed, ''))} (seed {seed}): "
+        f"{html.escape(PAPERS.get(seed, ''))}</h2>",
         f"<div class='verdict' id='verdict-{seed}' style='border-color:{colour}'>"
         f"Verdict: <b style='color:{colour}'>{v}</b>. {html.escape(why)}</div>",
     ]

@@ -72,7 +72,7 @@ Corrections to seed 004 (evidence in tests/unit/surfaces/test_catt.py)
 * Eq (20) (like-indexed differences) holds only when the principal directions of the two
   flanks are paired by direction (sigma = 0); with curvatures ordered algebraically the convex
   and concave flanks have their profile and axial curvatures in opposite slots (sigma = 90 deg).
-  Eq (23)-(24) with the true sigma are right in both cases (see gearrep.replications.catt).
+  Eq (23)-(24) with the true sigma are right in both cases (see gearrep.replications.ma2021).
 * Eq (28)-(29) are written in a frame turned over relative to eq (6): (x, y, z) -> (x, -y, -z).
   In it their upper sign describes eq (6)'s lower-sign (concave) flank: eq (28) upper at section
   offset b equals eq (6) lower at z = -b with y -> -y and u -> -u; eq (29) upper equals eq (6)

@@ -9,7 +9,7 @@ Sources
 * Generation (two-parameter enveloping, seed 000 eq 4.1-4.5 and sec. 4.5): seed 000 chapters 2-3
   (the machine kinematics) are NOT in the text; the set-up below is the reconstruction written up in
   docs/reading-notes.md (section 000-C), verified here against the surviving numbers of
-  Tables 4.3/4.4 (see :mod:`gearrep.replications.tseng_curvature`):
+  Tables 4.3/4.4 (see :mod:`gearrep.replications.hobcut_curvature`):
 
   - hob of Table 5.1: normal module m = 3 mm, alpha_n = 20 deg, pitch radius r_h = 30 mm,
     single start; lead angle sin(lambda) = m / (2 r_h) (Table 5.1 prints 2.866 deg);

@@ -109,14 +109,14 @@ CLI_REPLICATION_DEBT: dict[str, set[str]] = {}
 @pytest.mark.parametrize("path", CLI, ids=_name)
 def test_cli_uses_the_library_not_the_replications(path):
     """The user-facing command is a user of the library: it imports no replication package (the
-    hobbed_curvilinear family uses gearrep.tca and gearrep.surfaces.hob, not tseng_tca), except
+    hobbed_curvilinear family uses gearrep.tca and gearrep.surfaces.hob, not hobcut_tca), except
     the modules listed in CLI_REPLICATION_DEBT."""
     mod = _name(path)
     allowed = CLI_REPLICATION_DEBT.get(mod, set())
     rep = {m for m in _imports(path) if m.startswith("gearrep.replications")}
     extra = sorted(m for m in rep if not any(m == a or m.startswith(a + ".") for a in allowed))
     assert not extra, f"{mod} imports from the replications: {extra}"
-    assert not any(m.startswith(("gearrep.replications.tseng", "gearrep.replications._seed")) for m in rep)
+    assert not any(m.startswith(("gearrep.replications.hobcut", "gearrep.replications._hobcut")) for m in rep)
 
 
 def test_cli_replication_debt_is_current():

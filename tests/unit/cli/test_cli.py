@@ -371,7 +371,17 @@ def test_replicate_refuses_a_directory_without_the_workflow(tmp_path):
 @pytest.mark.slow  # parses the whole replication workflow (~5-15 s)
 def test_replicate_wraps_the_repository_workflow():
     r = subprocess.run(
-        [sys.executable, "-m", "gearrep", "replicate", "results/checks/catt.csv", "--directory", str(ROOT), "--", "-n"],
+        [
+            sys.executable,
+            "-m",
+            "gearrep",
+            "replicate",
+            "results/checks/ma2021.csv",
+            "--directory",
+            str(ROOT),
+            "--",
+            "-n",
+        ],
         env=ENV,
         capture_output=True,
         text=True,
@@ -436,7 +446,7 @@ def hob_run(tmp_path_factory):
 @pytest.fixture(scope="module")
 def seed000():
     from gearrep import published
-    from gearrep.replications import tseng_tca as T
+    from gearrep.replications import hobcut_tca as T
 
     pub = published.load(ROOT / "data" / "published")
     return pub, T.params_from_published(pub)
@@ -456,9 +466,9 @@ def test_hobbed_example_is_the_published_seed000_example_5_4(seed000):
 
 
 def test_hobbed_tca_ke_equals_the_replication_route_and_table_5_4(hob_run, seed000):
-    """The command's KE table is the tseng_tca route (continuation, path, physical contact, eq 5.12)
+    """The command's KE table is the hobcut_tca route (continuation, path, physical contact, eq 5.12)
     on the same pair, and it reproduces the printed Table 5.4 to its 3 decimals."""
-    from gearrep.replications import tseng_tca as T
+    from gearrep.replications import hobcut_tca as T
     from gearrep.tca import ke_table
 
     pub, design = seed000

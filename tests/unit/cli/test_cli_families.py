@@ -175,7 +175,7 @@ def test_every_family_has_an_example_design_that_passes_check():
 
 def _published_bevel():
     from gearrep import published
-    from gearrep.replications.thesis.design import params_from_published
+    from gearrep.replications.temirkhan2023.design import params_from_published
 
     pub = published.load(ROOT / "data" / "published", [str(ROOT / "data" / "published" / "params_003_*.csv")])
     return params_from_published(pub)
@@ -191,11 +191,11 @@ def _published_bevel():
 def test_the_bevel_examples_are_the_thesis_pairs_of_the_replication(tmp_path, example, case, crown_per_length, mis):
     """The examples' inputs are the published sec. 5.1-5.2 data (and the replication's readings:
     20 deg for the spiral pair, its convex flank driving), and the command's TCA is the library's
-    meshing cycle on the replication's own pair (gearrep.replications.thesis.bevel.bevel_pair):
+    meshing cycle on the replication's own pair (gearrep.replications.temirkhan2023.bevel.bevel_pair):
     the same engagement limits and TE to the solves' tolerance (1e-10 mm residuals against radii of
     about 10-60 mm: 1e-9 rad; TE in arcsec 1e-9 rad / 4.8e-6 ~ 2e-4 arcsec)."""
     from gearrep.meshing import meshing_cycle
-    from gearrep.replications.thesis.bevel import bevel_pair
+    from gearrep.replications.temirkhan2023.bevel import bevel_pair
     from gearrep.tca import BevelMisalignment
     from gearrep.units import ARCSEC
 

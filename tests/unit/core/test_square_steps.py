@@ -60,9 +60,9 @@ def test_larger_square_steps_match_the_svd_step_and_a_system_alone_gets_its_batc
 def hob_cut(published):
     """The hob-cut pair of the Table 5.4 example with its errors, and its contact traced at
     five angles (the robustness table's case)."""
-    from gearrep.replications.tseng_tca.bench import robustness_cases
+    from gearrep.replications.hobcut_tca.bench import robustness_cases
 
-    mod = load("tseng_tca")
+    mod = load("hobcut_tca")
     s = defaults(mod.SETTINGS)
     c = robustness_cases(s, mod.params_from_published(published))[1]
     return c["pair"], c["phi1"], c["nominal"](c["phi1"]), c["tol"]

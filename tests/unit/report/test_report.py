@@ -21,7 +21,7 @@ NAN = float("nan")
 def card():
     return pd.DataFrame(
         {
-            "replication": ["tseng_curvature", "tseng_curvature", ""],
+            "replication": ["hobcut_curvature", "hobcut_curvature", ""],
             "id": ["a", "b", "c"],
             "seed": ["000", "000", "004"],
             "source": ["Table 4.3", "Table 4.3", "Fig 12"],
@@ -102,7 +102,7 @@ def test_render_contains_every_paper_status_and_figure(card):
         {"curvature: k_s": png()},
         errata,
         {"python": "3.11"},
-        notebooks={"tseng_curvature": "notebooks/tseng_curvature.html"},
+        notebooks={"hobcut_curvature": "notebooks/hobcut_curvature.html"},
         runtime_s=12.5,
     )
     assert html.startswith("<!doctype html>") and html.rstrip().endswith("</html>")
@@ -115,7 +115,7 @@ def test_render_contains_every_paper_status_and_figure(card):
         "data:image/png;base64,",
         "eq (8)",
         "12.5 s",
-        "notebooks/tseng_curvature.html#Table-4.3",
+        "notebooks/hobcut_curvature.html#Table-4.3",
         "verdict-000",
         "partially reproduced",
         "not reproduced",

@@ -232,14 +232,14 @@ def test_worm_ground_contacts_by_the_reduction(published):
     envelope solve: the same statuses, iterations within one, values within the solver's bound."""
     from conftest import study_settings
 
-    from gearrep.replications import nasa
-    from gearrep.replications.nasa.geometry import make_worm_pair, worm_start
+    from gearrep.replications import litvin2000
+    from gearrep.replications.litvin2000.geometry import make_worm_pair, worm_start
     from gearrep.surfaces.novikov import NormalPartSurface
     from gearrep.tca import ContactPoints, GearPair, Misalignment, solve_contact
     from gearrep.units import ARCMIN
 
-    s = study_settings("nasa")
-    d = nasa.params_from_published(published)
+    s = study_settings("litvin2000")
+    d = litvin2000.params_from_published(published)
     pair = make_worm_pair(d, s, misalignment=Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN))
     before = GearPair(
         NormalPartSurface(pair.flank1.base),

@@ -1,6 +1,6 @@
 """The hob-cut pair of gearrep.tca (hobbed_*: the TCA of a pair cut by one ZA hob): bad input is
 refused at the public entry points with a ValueError naming the argument, before any solve; the
-pinion-angle grid and the pair's geometry. (Results: tests/replication/test_tseng_tca.py and the
+pinion-angle grid and the pair's geometry. (Results: tests/replication/test_hobcut_tca.py and the
 hobbed_curvilinear tests of tests/unit/cli/test_cli.py; the pair design: tests/unit/surfaces/test_hob.py.)"""
 
 from __future__ import annotations

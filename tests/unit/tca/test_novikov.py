@@ -97,13 +97,13 @@ def test_polynomial_offset_start_for_a_ground_pinion(published):
     to the same roots in fewer iterations."""
     from conftest import study_settings
 
-    from gearrep.replications import nasa
-    from gearrep.replications.nasa.geometry import disk_start, make_disk_pair
+    from gearrep.replications import litvin2000
+    from gearrep.replications.litvin2000.geometry import disk_start, make_disk_pair
     from gearrep.tca import Misalignment, offset_start, solve_contact
     from gearrep.units import ARCMIN
 
-    s = study_settings("nasa")
-    d = nasa.params_from_published(published)
+    s = study_settings("litvin2000")
+    d = litvin2000.params_from_published(published)
     mis = Misalignment(d_gamma_out=s["misalignment_arcmin"] * ARCMIN)
     pair = make_disk_pair(d, s, float(np.mean(s["disk_E_d_bracket_in"])), misalignment=mis)
     per = 2 * np.pi / pair.n1

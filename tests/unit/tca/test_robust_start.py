@@ -30,7 +30,7 @@ def cases(published):
     from importlib import import_module
 
     out = []
-    for name in ("thesis", "nasa", "catt"):
+    for name in ("temirkhan2023", "litvin2000", "ma2021"):
         mod = load(name)
         s = defaults(mod.SETTINGS)
         design = mod.params_from_published(published)
@@ -75,9 +75,9 @@ def test_all_starts_reach_the_reference(cases, i):
 @pytest.fixture(scope="module")
 def envelope_cases(published):
     """(settings, case) of the hob-cut pair's rows (9-unknown envelope TCA)."""
-    from gearrep.replications.tseng_tca.bench import robustness_cases
+    from gearrep.replications.hobcut_tca.bench import robustness_cases
 
-    mod = load("tseng_tca")
+    mod = load("hobcut_tca")
     s = defaults(mod.SETTINGS)
     return [(s, c) for c in robustness_cases(s, mod.params_from_published(published))]
 

@@ -53,7 +53,7 @@ def test_the_run_prints_a_short_log_ending_with_the_report_and_the_verdicts(run)
     """What `make reproduce` shows (the default profile's logger): Snakemake's plan and progress,
     not every job's files and command, and at the end where the report is and each paper's
     verdict."""
-    from gearrep import report
+    from gearrep import published, report
 
     lines = (run / "run.log").read_text().splitlines()
     # the plan has one line per rule: 105 lines with the papers' studies, the validation study's 6 rules
@@ -61,8 +61,8 @@ def test_the_run_prints_a_short_log_ending_with_the_report_and_the_verdicts(run)
     assert len(lines) <= 115, f"{len(lines)} lines"
     at = [i for i, ln in enumerate(lines) if ln.startswith("Report: results/report.html")]
     assert len(at) == 1, lines[-20:]
-    verdicts = [ln for ln in lines[at[0] + 1 :] if re.match(r"^  \d{3} ", ln)]
-    assert [ln.split()[0] for ln in verdicts] == ["000", "002", "003", "004"], lines[at[0] :][:8]
+    verdicts = [ln for ln in lines[at[0] + 1 :] if re.match(r"^  \w+ \(seed \d{3}\): ", ln)]
+    assert [ln.split()[0] for ln in verdicts] == list(published.PAPER_NAMES.values()), lines[at[0] :][:8]
     assert all(any(v.upper() in ln for v in report.VERDICTS) for ln in verdicts), verdicts
 
 

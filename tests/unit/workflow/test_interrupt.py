@@ -17,8 +17,8 @@ from pathlib import Path
 import pytest
 from conftest import copy_workflow, tool_env
 
-TARGET = "results/thesis/convergence.csv"  # one job computing for many seconds
-RULE = "thesis_convergence"
+TARGET = "results/temirkhan2023/convergence.csv"  # one job computing for many seconds
+RULE = "temirkhan2023_convergence"
 
 
 def _processes_of(wf: Path, session: int) -> list[str]:

@@ -291,15 +291,17 @@ def test_one_table_is_one_job_and_writes_only_that_table(tmp_path):
     """Asking for one KE table plans and runs that table's job alone."""
     (tmp_path / "wf").mkdir()
     d = copy_workflow(tmp_path / "wf")
-    target = "results/tseng/ke_table_5_4.csv"
+    target = "results/hobcut_tca/ke_table_5_4.csv"
     jobs = plan(d, target)
-    assert [j["rule"] for j in jobs] == ["tseng_tca_ke_table_5_4"]
+    assert [j["rule"] for j in jobs] == ["hobcut_tca_ke_table_5_4"]
     smk(d, "--cores", "1", target)
     tables = sorted(str(p.relative_to(d)) for p in (d / "results").rglob("*.csv"))
     assert tables == [target], tables
 
 
-@pytest.mark.parametrize("target", ["results/thesis/convergence.csv", "results/tseng/curvature_table_4_3.csv"])
+@pytest.mark.parametrize(
+    "target", ["results/temirkhan2023/convergence.csv", "results/hobcut_curvature/curvature_table_4_3.csv"]
+)
 def test_one_study_output_plans_its_job_alone(every_job, target):
     jobs = needed(every_job, target)
     assert len(jobs) == 1, [j["rule"] for j in jobs]

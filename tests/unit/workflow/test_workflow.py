@@ -33,13 +33,17 @@ def smk(cwd, *args, timeout=600):
 # fuzzing call it directly); these run the real Snakemake for an unknown section, an unknown key, a
 # wrong type, a value out of range and a NaN, given each of the three ways a user sets them.
 BAD_CONFIGS = [
-    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "config.yaml"),
-    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "--configfile"),
-    ({"nasaa": {"tol": 1e-9}}, "config.nasaa: unknown setting (did you mean 'nasa'?)", "--config"),
-    ({"catt": {"maxitr": 5}}, "config.catt.maxitr: unknown setting (did you mean 'maxiter'?)", "--config"),
-    ({"catt": {"maxiter": "ten"}}, "config.catt.maxiter: got 'ten'; allowed: an integer in [1, 1000]", "config.yaml"),
-    ({"catt": {"maxiter": 0}}, "config.catt.maxiter: got 0; allowed: an integer in [1, 1000]", "--configfile"),
-    ({"thesis": {"tol": float("nan")}}, "config.thesis.tol: got", "--config"),
+    ({"litvin200": {"tol": 1e-9}}, "config.litvin200: unknown setting (did you mean 'litvin2000'?)", "config.yaml"),
+    ({"litvin200": {"tol": 1e-9}}, "config.litvin200: unknown setting (did you mean 'litvin2000'?)", "--configfile"),
+    ({"litvin200": {"tol": 1e-9}}, "config.litvin200: unknown setting (did you mean 'litvin2000'?)", "--config"),
+    ({"ma2021": {"maxitr": 5}}, "config.ma2021.maxitr: unknown setting (did you mean 'maxiter'?)", "--config"),
+    (
+        {"ma2021": {"maxiter": "ten"}},
+        "config.ma2021.maxiter: got 'ten'; allowed: an integer in [1, 1000]",
+        "config.yaml",
+    ),
+    ({"ma2021": {"maxiter": 0}}, "config.ma2021.maxiter: got 0; allowed: an integer in [1, 1000]", "--configfile"),
+    ({"temirkhan2023": {"tol": float("nan")}}, "config.temirkhan2023.tol: got", "--config"),
 ]
 
 
@@ -99,7 +103,7 @@ def test_quick_run_with_the_test_configuration_plans_every_study(wf):
     [
         ("delete", "values_000_T5.4.csv"),
         ("header_only", "params_004_examples.csv"),
-        ("cross_field", "catt.section_check.design"),
+        ("cross_field", "ma2021.section_check.design"),
     ],
 )
 def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
@@ -112,7 +116,7 @@ def test_dry_run_stops_naming_the_file_or_key(wf, mutation, message):
         f = data / "params_004_examples.csv"
         f.write_text(f.read_text().splitlines()[0] + "\n")
     else:
-        (wf / "config" / "config.yaml").write_text("catt:\n  section_check:\n    design: no_such_design\n")
+        (wf / "config" / "config.yaml").write_text("ma2021:\n  section_check:\n    design: no_such_design\n")
     out = smk(wf, "-n")
     assert out.returncode != 0
     assert message in out.stdout + out.stderr, (out.stdout + out.stderr)[-2000:]

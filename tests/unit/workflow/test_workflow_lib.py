@@ -124,9 +124,9 @@ def test_every_study_is_declared_and_every_config_key_is_a_setting():
 @pytest.mark.parametrize(
     "config, message",
     [
-        ({"nasaa": {}}, r"config\.nasaa: unknown setting \(did you mean 'nasa'\?\)"),
-        ({"thesis": {"tol": float("nan")}}, r"config\.thesis\.tol: got nan"),
-        ({"bench": {"replications": ["thesis", "cat"]}}, r"config\.bench\.replications\[1\]: got 'cat'"),
+        ({"litvin200": {}}, r"config\.litvin200: unknown setting \(did you mean 'litvin2000'\?\)"),
+        ({"temirkhan2023": {"tol": float("nan")}}, r"config\.temirkhan2023\.tol: got nan"),
+        ({"bench": {"replications": ["temirkhan2023", "cat"]}}, r"config\.bench\.replications\[1\]: got 'cat'"),
         ({"published_dir": "no/such/dir"}, r"config\.published_dir: 'no/such/dir' is not a directory"),
     ],
 )
@@ -138,10 +138,10 @@ def test_bad_config_names_the_key(config, message):
 @pytest.mark.parametrize(
     "config, message",
     [
-        ({"thesis": {"tol": float("nan")}}, r"thesis\.tol: got nan"),
-        ({"catt": {"thickness": {"face_width": float("inf")}}}, r"catt\.thickness\.face_width: got inf"),
-        ({"tseng_tca": {"phi1_step_deg": 60.0}}, r"tseng_tca\.phi1_step_deg"),
-        ({"catt": {"section_check": {"design": "no_such_design"}}}, r"catt\.section_check\.design"),
+        ({"temirkhan2023": {"tol": float("nan")}}, r"temirkhan2023\.tol: got nan"),
+        ({"ma2021": {"thickness": {"face_width": float("inf")}}}, r"ma2021\.thickness\.face_width: got inf"),
+        ({"hobcut_tca": {"phi1_step_deg": 60.0}}, r"hobcut_tca\.phi1_step_deg"),
+        ({"ma2021": {"section_check": {"design": "no_such_design"}}}, r"ma2021\.section_check\.design"),
         ({"published_dir": "nowhere"}, r"published_dir: 'nowhere' is not a directory"),
     ],
 )

@@ -216,34 +216,34 @@ class BevelFamily(PairFamily):
         )
         return Design(v, self, pair)
 
-    def line_section(self, d: Design) -> float:
-        return d.pair.flank1.gear.mean_cone_distance
+    def line_section(self, design: Design) -> float:
+        return design.pair.flank1.gear.mean_cone_distance
 
-    def conjugate(self, d: Design) -> bool:
+    def conjugate(self, design: Design) -> bool:
         """No crown on either member and no assembly error: the spherical-involute flanks
         (straight, or spirals of opposite hands) touch along a line."""
-        return not crowned(d.values) and not any(x != 0.0 for x in d.values["misalignment"].values())
+        return not crowned(design.values) and not any(x != 0.0 for x in design.values["misalignment"].values())
 
-    def mesh_check(self, d: Design) -> None:
+    def mesh_check(self, design: Design) -> None:
         """A relieved profile in line contact is refused (:func:`refuse_relief`)."""
-        if self.conjugate(d):
-            refuse_relief(d.values)
+        if self.conjugate(design):
+            refuse_relief(design.values)
 
-    def tca(self, d: Design, progress=None) -> tuple:
-        return self.meshing_cycle_tables(d)
+    def tca(self, design: Design, progress=None) -> tuple:
+        return self.meshing_cycle_tables(design)
 
-    def edges(self, d: Design, P) -> list:
-        return cone_edges(d.pair, P)
+    def edges(self, design: Design, P) -> list:
+        return cone_edges(design.pair, P)
 
-    def te_radius_mm(self, d: Design) -> float:
+    def te_radius_mm(self, design: Design) -> float:
         """The gear's base-cone radius at the mean cone distance, R_m sin(a_b2)."""
-        g2 = d.pair.flank2.gear
+        g2 = design.pair.flank2.gear
         return float(g2.mean_cone_distance * np.sin(g2.base_cone_angle))
 
-    def draw_face_edges(self, d: Design, ax) -> None:
+    def draw_face_edges(self, design: Design, ax) -> None:
         """The pinion's face ends, arcs of cone distance R_e - b and R_e about its apex."""
-        g1 = d.pair.flank1.gear
-        u = np.linspace(d.pair.lower1[0], d.pair.upper1[0], 21)
+        g1 = design.pair.flank1.gear
+        u = np.linspace(design.pair.lower1[0], design.pair.upper1[0], 21)
         for rho in (g1.outer_cone_distance - g1.face_width, g1.outer_cone_distance):
             ax.plot(rho * np.cos(u), rho * np.sin(u), c="0.5", lw=0.6)
 

@@ -70,42 +70,42 @@ class CATTFamily(PairFamily):
             # the middle section is an involute cut by a straight rack of addendum h* (seed 004 eq 5)
             undercut_teeth(member, v[member]["teeth"], m, v["pressure_angle_deg"], B, v["addendum"], "")
         design = {"z1": v["pinion"]["teeth"], "z2": v["gear"]["teeth"], "module": m, "R_T": R_T, "face_width": B}
-        prm = {"pressure_angle_deg": v["pressure_angle_deg"], "addendum": v["addendum"], "clearance": v["clearance"]}
-        mesh = assemble(design, v["flank_pair"], prm)
+        params = {"pressure_angle_deg": v["pressure_angle_deg"], "addendum": v["addendum"], "clearance": v["clearance"]}
+        mesh = assemble(design, v["flank_pair"], params)
         mesh.gear_pair = mesh.gear_pair.with_misalignment(self.misalignment(v))
         return Design(v, self, mesh.gear_pair, mesh=mesh)
 
-    def nominal(self, d: Design, phi1):
+    def nominal(self, design: Design, phi1):
         """The study's starts: the middle-section estimate moved half a module off it."""
-        offset = 0.5 * d.values["module_mm"]
-        return lambda pair, ph: starts(d.mesh, ph, offset)
+        offset = 0.5 * design.values["module_mm"]
+        return lambda pair, ph: starts(design.mesh, ph, offset)
 
-    def on_flanks(self, d: Design, c, face: bool = True):
+    def on_flanks(self, design: Design, c, face: bool = True):
         """Contacts outside the true flank boundaries (the solve bounds are a box around them) get
         status OFF_FLANK."""
         ok = c.converged
         inside = np.zeros(len(c), bool)
         if ok.any():
-            inside[ok] = np.asarray(d.pair.flank1.contains(c.u1[ok], c.v1[ok]), bool) & np.asarray(
-                d.pair.flank2.contains(c.u2[ok], c.v2[ok]), bool
+            inside[ok] = np.asarray(design.pair.flank1.contains(c.u1[ok], c.v1[ok]), bool) & np.asarray(
+                design.pair.flank2.contains(c.u2[ok], c.v2[ok]), bool
             )
         st_ = c.status.copy()
         st_[ok & ~inside] = Status.OFF_FLANK
         return type(c)(**{**c.__dict__, "status": st_}).failed_as_nan()
 
-    def engagement(self, d: Design) -> tuple:
-        lim = path_limits(d.mesh)
+    def engagement(self, design: Design) -> tuple:
+        lim = path_limits(design.mesh)
         return lim["phi1_lo"], lim["phi1_hi"]
 
-    def flank_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def flank_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """The box grid kept where the flank exists (its true boundaries)."""
-        flank, u, v = super().flank_grid(d, member, n_u, n_v)
+        flank, u, v = super().flank_grid(design, member, n_u, n_v)
         keep = np.asarray(flank.contains(u, v), bool)
         return flank, u[keep], v[keep]
 
-    def cloud_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def cloud_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """The full box grid (the cloud keeps its shape), NaN outside the flank."""
-        flank, u, v = super().flank_grid(d, member, n_u, n_v)
+        flank, u, v = super().flank_grid(design, member, n_u, n_v)
         return u, v, np.asarray(flank.contains(u, v), bool)
 
 

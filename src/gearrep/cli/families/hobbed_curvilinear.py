@@ -239,14 +239,14 @@ def margin(values, pair, sol) -> float:
     )
 
 
-def _check_contact(d) -> None:
-    """Solve the contact at phi1 = 0 of the checked design ``d`` (sets ``d.pair`` and ``d.start``);
+def _check_contact(design) -> None:
+    """Solve the contact at phi1 = 0 of the checked ``design`` (sets ``design.pair`` and ``design.start``);
     refuse (SettingError naming the key) when it is not found or lies off the flanks."""
-    v, s = d.values, d.analysis
-    pair, sol = start(v, d.mesh, assembly(v), s["tol"], s["continuation_steps"])
+    v, analysis = design.values, design.analysis
+    pair, sol = start(v, design.mesh, assembly(v), analysis["tol"], analysis["continuation_steps"])
     ok = pair is not None and bool(sol.converged[0])
     if ok and margin(v, pair, sol) >= 0:
-        d.pair, d.start = pair, sol
+        design.pair, design.start = pair, sol
         return
     if ok:
         state = f"contact at Z_p = {sol.Z_p[0]:.4g} mm, radius {sol.radius_p[0]:.5g} mm on the pinion"
@@ -264,23 +264,23 @@ def _check_contact(d) -> None:
             f"flanks ({state})"
         )
     name, x = next(iter(mis.items()))
-    limit = _limit(d, name, x, pair, sol if ok else None)
+    limit = _limit(design, name, x, pair, sol if ok else None)
     raise SettingError(
         f"design.misalignment.{name}: got {x!r}; allowed: |{name}| below about {limit:.3g} for this pair (larger "
         f"values move the contact at phi1 = 0 off the flanks: {state})"
     )
 
 
-def _limit(d, name, x, pair, sol) -> float:
+def _limit(design, name, x, pair, sol) -> float:
     """Magnitude of misalignment ``name`` at which the contact at phi1 = 0 leaves the flanks: linear
     in the margin between the aligned pair and ``sol`` (the contact moves about linearly with the
     misalignment), or by bisection (4 halvings) where the contact under ``x`` was not found or the
     linear estimate is not inside (0, |x|)."""
-    v, s = d.values, d.analysis
+    v, analysis = design.values, design.analysis
 
     def contact(t):
         vv = set_dotted(v, f"misalignment.{name}", t * x)
-        return start(vv, d.mesh, assembly(vv), s["tol"], s["continuation_steps"])
+        return start(vv, design.mesh, assembly(vv), analysis["tol"], analysis["continuation_steps"])
 
     p0, s0 = contact(0.0)
     if p0 is None or not s0.converged[0]:
@@ -299,9 +299,9 @@ def _limit(d, name, x, pair, sol) -> float:
     return hi * abs(x)
 
 
-def _ke_grid(s) -> np.ndarray:
+def _ke_grid(analysis) -> np.ndarray:
     """Pinion angles [rad] of the KE table (:func:`gearrep.tca.hobbed_phi1_grid`)."""
-    g = s["ke_table"]
+    g = analysis["ke_table"]
     return hobbed_phi1_grid(g["start_deg"], g["end_deg"], g["step_deg"])
 
 
@@ -398,11 +398,11 @@ def path_solves(n_teeth: int, n_phi: int) -> int:
     return (1 + N_STARTS) * (window_points(n_teeth) + n_phi + 1)
 
 
-def tca(d, progress=None, n_points=None, with_ke=True):
+def tca(design, progress=None, n_points=None, with_ke=True):
     """(contact_path, te_cycle, summary dict, {"ke_table": ...}) of a checked hobbed design
     (``n_points`` path points, default the analysis setting; ``with_ke=False``: no KE table)."""
-    s, pair, s0 = d.analysis, d.pair, d.start
-    tol, n = s["tol"], int(s["n_points"] if n_points is None else n_points)
+    analysis, pair, s0 = design.analysis, design.pair, design.start
+    tol, n = analysis["tol"], int(analysis["n_points"] if n_points is None else n_points)
     b, e = _engagement(pair, s0, tol)
     if progress:
         progress("path of contact", 0.3)
@@ -427,7 +427,7 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     if progress:
         progress("contact ellipses and KE table", 0.6)
     with np.errstate(all="ignore"):
-        el, _, _ = hobbed_elastic_ellipses(pair, sol, s["elastic_approach_mm"])
+        el, _, _ = hobbed_elastic_ellipses(pair, sol, analysis["elastic_approach_mm"])
         normal = envelope_pinion_outward(pair, sol)
     ell = np.asarray(el.elliptic, bool) & ok
     pu, pv = PARAMS
@@ -473,15 +473,15 @@ def tca(d, progress=None, n_points=None, with_ke=True):
     }
     if not with_ke:
         return path, te, summary, {}
-    ke_sol = _path(pair, s0, _ke_grid(s), tol)
+    ke_sol = _path(pair, s0, _ke_grid(analysis), tol)
     return path, te, summary, {"ke_table": ke_table(ke_sol, pair.ratio)}
 
 
 # ----------------------------------------------------------------------------------------------
 # flank grids: curvatures and point clouds in each member's tooth frame
 # ----------------------------------------------------------------------------------------------
-def _member(d, member: int):
-    return (d.pair.pinion if member == 1 else d.pair.gear).gear
+def _member(design, member: int):
+    return (design.pair.pinion if member == 1 else design.pair.gear).gear
 
 
 def _outward_sign(g) -> float:
@@ -511,28 +511,28 @@ def _psi_at_z(g, l, z, iters: int = 12):
     return b
 
 
-def _lowest_contact_radius(d, member: int) -> float:
+def _lowest_contact_radius(design, member: int) -> float:
     """Radius [mm] on member ``member`` reached by the mating tip circle (r_p + m) in the middle
     section, taken as an involute pair at the standard centre distance:
     sqrt(r_b^2 + (a sin alpha - sqrt(r_a'^2 - r_b'^2))^2)."""
-    m, alpha = d.values["module_mm"], math.radians(d.values["pressure_angle_deg"])
-    r = [0.5 * m * d.values[k]["teeth"] for k in ("pinion", "gear")]
+    m, alpha = design.values["module_mm"], math.radians(design.values["pressure_angle_deg"])
+    r = [0.5 * m * design.values[k]["teeth"] for k in ("pinion", "gear")]
     own, other = (r[0], r[1]) if member == 1 else (r[1], r[0])
     rb, rb_o, ra_o = own * math.cos(alpha), other * math.cos(alpha), other + m
     return math.hypot(rb, (r[0] + r[1]) * math.sin(alpha) - math.sqrt(ra_o**2 - rb_o**2))
 
 
-def flank_params(d, member: int, n_u: int, n_v: int):
+def flank_params(design, member: int, n_u: int, n_v: int):
     """(l, psi) of an n_u x n_v grid (ravelled, profile-major) over member ``member``'s active
     flank: l from the tip circle r_p + m down to the lowest contact radius (the reach of the mating
     tip, :func:`_lowest_contact_radius`), both at mid-face; psi at each l from the face edge
     Z = -B/2 to Z = +B/2. Where a radius is not found, l at the hob pitch line -+ m / cos alpha_n."""
-    g = _member(d, member)
-    m, half = d.values["module_mm"], 0.5 * d.values["face_width_mm"]
+    g = _member(design, member)
+    m, half = design.values["module_mm"], 0.5 * design.values["face_width_mm"]
     lp = hob_pitch_l(g.hob)
     dl = m / math.cos(g.hob.pressure_angle_rad)
     with np.errstate(all="ignore"):
-        r = g.l_at_radius([g.pitch_radius_mm + m, _lowest_contact_radius(d, member)], l0_mm=lp)
+        r = g.l_at_radius([g.pitch_radius_mm + m, _lowest_contact_radius(design, member)], l0_mm=lp)
     ok = r.status == Status.CONVERGED
     l_lo = float(r.x[0, 0]) if ok[0] else lp - dl
     l_hi = float(r.x[1, 0]) if ok[1] else lp + dl
@@ -544,15 +544,15 @@ def flank_params(d, member: int, n_u: int, n_v: int):
     return np.repeat(ls, int(n_v)), psi.ravel()
 
 
-def _curvature_table(d) -> pd.DataFrame:
+def _curvature_table(design) -> pd.DataFrame:
     """Principal curvatures [1/mm] and directions of both flanks on the curvature grid (the
     two-parameter-envelope relations, :func:`gearrep.curvature_relations.generated_curvatures`),
     each in its tooth frame, positive where the flank bends toward its outward normal."""
-    n_u, n_v = d.analysis["curvature_grid"][:2]
+    n_u, n_v = design.analysis["curvature_grid"][:2]
     rows = []
     for member, name in ((1, "pinion"), (2, "gear")):
-        g = _member(d, member)
-        l, psi = flank_params(d, member, n_u, n_v)
+        g = _member(design, member)
+        l, psi = flank_params(design, member, n_u, n_v)
         with np.errstate(all="ignore"):
             fc = g.curvatures(l, psi)
         R = g.to_tooth_frame
@@ -566,21 +566,21 @@ def _curvature_table(d) -> pd.DataFrame:
     return pd.concat(rows, ignore_index=True)
 
 
-def _flank_cloud(d, member: int):
+def _flank_cloud(design, member: int):
     """Point cloud of member ``member``'s working flank in its tooth frame: (points (n_u, n_v, 3),
     outward unit normals, table); NaN where the envelope solve did not converge."""
-    n_u, n_v = d.analysis["flank_grid"][:2]
-    g = _member(d, member)
-    l, psi = flank_params(d, member, n_u, n_v)
+    n_u, n_v = design.analysis["flank_grid"][:2]
+    g = _member(design, member)
+    l, psi = flank_params(design, member, n_u, n_v)
     with np.errstate(all="ignore"):
         pts, nrm, rec = g.points(l, psi)
         nrm = _outward_sign(g) * nrm
     return cloud(PARAMS, l, psi, pts, nrm, np.asarray(rec.converged, bool), n_u, n_v)
 
 
-def sweep_point(d, n_phi: int) -> dict:
+def sweep_point(design, n_phi: int) -> dict:
     """The metrics of one sweep point: those of :func:`tca` with ``n_phi`` path points (no KE table)."""
-    path, _, summary, _ = tca(d, n_points=n_phi, with_ke=False)
+    path, _, summary, _ = tca(design, n_points=n_phi, with_ke=False)
     ok = path["status"] == "converged"
     a = path["ellipse_semi_major_mm"]
     return {
@@ -603,31 +603,31 @@ class HobbedCurvilinearFamily(Family):
     def build(self, values: dict) -> Design:
         return build(values)
 
-    def check_contact(self, d: Design) -> None:
+    def check_contact(self, design: Design) -> None:
         """Solve the contact at phi1 = 0 (sets ``d.pair`` and ``d.start``); refuse (SettingError
         naming the key) when it is not found or lies off the flanks."""
-        _check_contact(d)
+        _check_contact(design)
 
-    def tca(self, d: Design, progress=None) -> tuple:
-        return tca(d, progress)
+    def tca(self, design: Design, progress=None) -> tuple:
+        return tca(design, progress)
 
-    def sweep_point(self, d: Design, n_phi: int) -> dict:
-        return sweep_point(d, n_phi)
+    def sweep_point(self, design: Design, n_phi: int) -> dict:
+        return sweep_point(design, n_phi)
 
     def solves_per_point(self, n_phi: int) -> int:
         """An upper bound: the largest window (60 deg each side, 4 teeth or fewer) and the path
         (:func:`path_solves`)."""
         return path_solves(4, n_phi)
 
-    def curvature_table(self, d: Design) -> pd.DataFrame:
-        return _curvature_table(d)
+    def curvature_table(self, design: Design) -> pd.DataFrame:
+        return _curvature_table(design)
 
-    def flank_cloud(self, d: Design, member: int) -> tuple:
-        return _flank_cloud(d, member)
+    def flank_cloud(self, design: Design, member: int) -> tuple:
+        return _flank_cloud(design, member)
 
-    def pinion_surface(self, d: Design):
+    def pinion_surface(self, design: Design):
         """The pinion's generated surface (:class:`gearrep.surfaces.hob.GeneratedGear`)."""
-        return d.pair.pinion.gear
+        return design.pair.pinion.gear
 
 
 FAMILY = HobbedCurvilinearFamily()

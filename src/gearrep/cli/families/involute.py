@@ -230,26 +230,26 @@ class InvoluteFamily(PairFamily):
         pair = GearPair(flanks[0], flanks[1], gears[0].n_teeth, gears[1].n_teeth, a, misalignment=self.misalignment(v))
         return Design(v, self, pair)
 
-    def line_section(self, d: Design) -> float:
+    def line_section(self, design: Design) -> float:
         return 0.0  # mid-face
 
-    def conjugate(self, d: Design) -> bool:
+    def conjugate(self, design: Design) -> bool:
         """No crown on either member and no angular misalignment: the involute helicoids touch
         along a line (a centre-distance change, offset or axial shift keeps it)."""
-        m = d.values["misalignment"]
-        return not crowned(d.values) and m["d_gamma_in_deg"] == 0.0 and m["d_gamma_out_deg"] == 0.0
+        m = design.values["misalignment"]
+        return not crowned(design.values) and m["d_gamma_in_deg"] == 0.0 and m["d_gamma_out_deg"] == 0.0
 
-    def tca(self, d: Design, progress=None) -> tuple:
-        return self.meshing_cycle_tables(d)
+    def tca(self, design: Design, progress=None) -> tuple:
+        return self.meshing_cycle_tables(design)
 
-    def mesh_check(self, d: Design) -> None:
+    def mesh_check(self, design: Design) -> None:
         """Refuse a design whose operating centre distance (the nominal one changed by the
         misalignment d_E and d_H) leaves the range of :func:`gearrep.meshing.centre_distance_limits`:
         below it a tip meets the other member below its involute (tip interference: no engagement
         limit on the flanks), above it the total contact ratio is below 1 (a gap in the meshing);
         and a relieved profile in line contact (:func:`refuse_relief`)."""
-        pair, v = d.pair, d.values
-        if self.conjugate(d):
+        pair, v = design.pair, design.values
+        if self.conjugate(design):
             refuse_relief(v)
         g1, g2 = pair.flank1.gear, pair.flank2.gear
         eps_b = float(g1.face_width * abs(np.sin(g1.helix_angle)) / (np.pi * g1.module))
@@ -294,23 +294,25 @@ class InvoluteFamily(PairFamily):
             f"{a0:.6g} mm ({why})"
         )
 
-    def iso_contact_ratios(self, d: Design) -> dict:
+    def iso_contact_ratios(self, design: Design) -> dict:
         """The ISO-style contact ratios of the nominal pair (ISO 21771 / ISO 6336-1 definitions, no
         modification or misalignment): transverse eps_alpha = (length of the path of contact in the
         transverse section) / (transverse base pitch), overlap eps_beta = b sin(beta) / (pi m_n)
         and total eps_gamma = eps_alpha + eps_beta."""
-        g1, g2 = d.pair.flank1.gear, d.pair.flank2.gear
-        eps_a = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, d.pair.centre_distance, g1.base_pitch))
+        g1, g2 = design.pair.flank1.gear, design.pair.flank2.gear
+        eps_a = float(
+            contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, design.pair.centre_distance, g1.base_pitch)
+        )
         eps_b = float(g1.face_width * abs(np.sin(g1.helix_angle)) / (np.pi * g1.module))
         return dict(zip(ISO_RATIOS, (eps_a, eps_b, eps_a + eps_b)))
 
-    def iso_pitch_pressure_MPa(self, d: Design) -> float:
+    def iso_pitch_pressure_MPa(self, design: Design) -> float:
         """ISO 6336-2's nominal contact stress at the pitch point, Z_H Z_E sqrt(F_t / (d_1 b) (u + 1) /
         u) with Z_eps = Z_beta = 1 (one tooth pair carrying the load evenly along its line), of the
         nominal pair at its operating centre distance (alpha_wt from the misalignment's d_E_mm and
         d_H_mm), F_t = 2000 T / d of the driving member, Z_E of the two materials
         (:mod:`gearrep.ltca.iso`)."""
-        v, pair = d.values, d.pair
+        v, pair = design.values, design.pair
         g1, g2 = pair.flank1.gear, pair.flank2.gear
         m = v["misalignment"]
         a0 = g1.r_p + g2.r_p
@@ -322,12 +324,12 @@ class InvoluteFamily(PairFamily):
         Z_H = iso.zone_factor(g1.alpha_t, alpha_wt, g1.beta_b)
         return iso.pitch_point_stress_MPa(F_t, 2.0 * g1.r_p, g1.face_width, g2.n_teeth / g1.n_teeth, Z_H, Z_E)
 
-    def active_profile_start(self, d: Design) -> tuple[float, float]:
+    def active_profile_start(self, design: Design) -> tuple[float, float]:
         """Radii [mm] at which the active profiles begin (pinion, gear): where the mating member's
         tip circle cuts the line of action, sqrt(r_b^2 + (sqrt(a^2 - (r_b1 + r_b2)^2) -
         sqrt(r_a'^2 - r_b'^2))^2) (a: the operating centre distance), and not below the start of
         the involute flank."""
-        pair, m = d.pair, d.values["misalignment"]
+        pair, m = design.pair, design.values["misalignment"]
         g1, g2 = pair.flank1.gear, pair.flank2.gear
         a = float(np.hypot(g1.r_p + g2.r_p + m["d_E_mm"], m["d_H_mm"]))
         loa = np.sqrt(max(a**2 - (g1.r_b + g2.r_b) ** 2, 0.0))
@@ -337,11 +339,11 @@ class InvoluteFamily(PairFamily):
             out.append(max(float(np.hypot(g.r_b, t)), float(lo)))
         return out[0], out[1]
 
-    def flank_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def flank_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """The grid over the active profile: from where the mating tip reaches (not the base-circle
         cusp) to the tip, across the face."""
-        flank, lo, hi, _ = self.member(d, member)
-        u0 = self.active_profile_start(d)[member - 1]
+        flank, lo, hi, _ = self.member(design, member)
+        u0 = self.active_profile_start(design)[member - 1]
         u, v = np.meshgrid(np.linspace(u0, hi[0], n_u), np.linspace(lo[1], hi[1], n_v), indexing="ij")
         return flank, u.ravel(), v.ravel()
 

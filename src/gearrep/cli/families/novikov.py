@@ -83,45 +83,45 @@ class NovikovFamily(PairFamily):
         pair = GearPair(flanks[0], flanks[1], n1, n2, a, misalignment=self.misalignment(v), phase2=0.0)
         return Design(v, self, pair)
 
-    def nominal(self, d: Design, phi1):
+    def nominal(self, design: Design, phi1):
         """The aligned contact moved by the offset of the contact solved at the middle of ``phi1``
         (:func:`gearrep.tca.offset_start`; one angle: the aligned contact itself)."""
-        s = d.analysis
+        analysis = design.analysis
         phi1 = np.atleast_1d(np.asarray(phi1, float))
         with np.errstate(all="ignore"):
-            moved = offset_start(d.pair, phi1, aligned_start, tol=s["tol"], maxiter=s["maxiter"])
-        offset = moved[0] - aligned_start(d.pair, phi1[:1])[0]
+            moved = offset_start(design.pair, phi1, aligned_start, tol=analysis["tol"], maxiter=analysis["maxiter"])
+        offset = moved[0] - aligned_start(design.pair, phi1[:1])[0]
         return lambda pair, ph: aligned_start(pair, ph) + offset
 
-    def on_flanks(self, d: Design, c, face: bool = True):
+    def on_flanks(self, design: Design, c, face: bool = True):
         """Contacts beyond the face width get status OFF_FLANK (1e-9 relative: the engagement
         limits themselves are on the face edges); ``face=False``: kept (the helical tooth surface
         extended along its helices)."""
         if not face:
             return c
-        half = 0.5 * d.values["face_width_mm"] * (1 + 1e-9)
+        half = 0.5 * design.values["face_width_mm"] * (1 + 1e-9)
         z = np.where(c.converged, c.position[:, 2], np.nan)
         st_ = c.status.copy()
         st_[c.converged & ~(np.abs(z) <= half)] = Status.OFF_FLANK
         return type(c)(**{**c.__dict__, "status": st_}).failed_as_nan()
 
-    def engagement(self, d: Design) -> tuple:
+    def engagement(self, design: Design) -> tuple:
         """The contact runs along the helix, z(phi1) linear; probed near phi1 = 0 on the extended
         surface, the engagement is where z crosses the face edges."""
-        p1 = 2.0 * np.pi / d.pair.n1
+        p1 = 2.0 * np.pi / design.pair.n1
         probe = np.array([-0.25, 0.0, 0.25]) * p1
-        c = self.contact_at(d, probe, face=False)
+        c = self.contact_at(design, probe, face=False)
         ok = c.converged
         if ok.sum() < 2:
             raise ValueError("fewer than two contact points near phi1 = 0: no path of contact to follow")
         k, z0 = np.polyfit(c.phi1[ok], c.position[ok, 2], 1)
-        half = 0.5 * d.values["face_width_mm"]
+        half = 0.5 * design.values["face_width_mm"]
         return tuple(sorted(((-half - z0) / k, (half - z0) / k)))
 
-    def flank_grid(self, d: Design, member: int, n_u: int, n_v: int) -> tuple:
+    def flank_grid(self, design: Design, member: int, n_u: int, n_v: int) -> tuple:
         """The box grid scaled to the active height (0.95 of a module each side of Q) and the face
         width."""
-        flank, u, v = super().flank_grid(d, member, n_u, n_v)
+        flank, u, v = super().flank_grid(design, member, n_u, n_v)
         return flank, u * (1.0 / _BOX_PROFILE) * 0.95, v * (1.0 / _BOX_HELIX)
 
 

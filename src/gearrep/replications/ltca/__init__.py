@@ -15,11 +15,11 @@ from __future__ import annotations
 
 from ... import settings as _s
 from ...checks import VALIDATION
-from .._face import FACE, Job, run_jobs
-from . import studies as _studies
+from .._face import FACE, run_jobs
 from .bench import bench_cases  # noqa: F401  (face: in __all__ through *FACE)
-from .checks import checks  # noqa: F401
+from .checks import checks  # noqa: F401  (face: in __all__ through *FACE)
 from .design import Design, params_from_published, validate  # noqa: F401
+from .studies import JOBS
 
 __all__ = [*FACE, "Design"]
 
@@ -56,16 +56,6 @@ SETTINGS = _s.declare(
 DESIGN_DATA = ["params_003_spur_52_72.csv", "params_004_examples.csv"]
 CHECK_DATA = []
 
-
-def _job(fn, *names, priority=0):
-    return Job(fn, {n: f"ltca/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()), priority)
-
-
-JOBS = {
-    "iso": _job(_studies.iso, "iso_pressure", "iso_stiffness", "stiffness_terms", priority=5),
-    "properties": _job(_studies.properties, "balance", "limits", "convergence", priority=5),
-    "cycle": _job(_studies.cycle, "cycle", "pressure_map", priority=3),
-}
 
 CHECK_OUTPUTS = {"checks": "checks/ltca.csv"}
 

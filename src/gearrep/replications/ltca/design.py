@@ -132,8 +132,8 @@ def catt_pair(design: Design, flank_pair: str = "B") -> GearPair:
     pinion concave; :data:`gearrep.surfaces.catt.PAIRS`)."""
     c = design.catt
     keys = ("z1", "z2", "module", "R_T", "face_width")
-    prm = dict(pressure_angle_deg=c["pressure_angle_deg"], addendum=c["addendum"], clearance=c["clearance"])
-    return assemble({k: c[k] for k in keys}, flank_pair, prm).gear_pair
+    params = dict(pressure_angle_deg=c["pressure_angle_deg"], addendum=c["addendum"], clearance=c["clearance"])
+    return assemble({k: c[k] for k in keys}, flank_pair, params).gear_pair
 
 
 def pitch_torque_Nm(pair: GearPair, load_N_per_mm: float) -> float:

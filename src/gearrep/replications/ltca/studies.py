@@ -16,6 +16,7 @@ from ... import ltca
 from ...ltca import iso as iso6336
 from ...meshing import contact_ratio_closed_form
 from ...tca import contact_hertz, solve_contact
+from .._face import Job
 from .design import (
     ISO_DESIGNS,
     Design,
@@ -27,7 +28,7 @@ from .design import (
     symmetric_pair,
 )
 
-__all__ = ["iso", "iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
+__all__ = ["JOBS", "iso", "iso_pressure", "iso_stiffness", "properties", "convergence", "cycle", "LOAD_N_PER_MM"]
 
 #: nominal tangential load per face width of the ISO comparisons [N/mm] (ISO 6336-1 states c' for
 #: F_t K_A / b >= 100 N/mm)
@@ -36,8 +37,8 @@ LOAD_N_PER_MM = 300.0
 README_TORQUE_NM = 50.0
 
 
-def _kw(s: dict) -> dict:
-    return dict(n_nodes=int(s["n_nodes"]), tol=float(s["tol"]))
+def _kw(settings: dict) -> dict:
+    return dict(n_nodes=int(settings["n_nodes"]), tol=float(settings["tol"]))
 
 
 def _design_row(z1, z2, m, g1, T) -> dict:
@@ -50,13 +51,13 @@ def _pitch(pair) -> np.ndarray:
     return ltca.cycle_positions(pair, 3)[[1]]
 
 
-def iso(s: dict, design: Design) -> dict:
+def iso(settings: dict, design: Design) -> dict:
     """Job ``iso``: the comparisons with ISO 6336's closed forms (:func:`iso_pressure`,
     :func:`iso_stiffness`)."""
-    return iso_pressure(s, design) | iso_stiffness(s, design)
+    return iso_pressure(settings, design) | iso_stiffness(settings, design)
 
 
-def iso_pressure(s: dict, design: Design) -> dict:
+def iso_pressure(settings: dict, design: Design) -> dict:
     """Pitch-point Hertz pressure of unmodified spur pairs with one tooth pair carrying the load,
     against ISO 6336-2's sigma_H0 (Z_eps = Z_beta = 1); beside it the pressure with every tooth
     pair free to take load (the neighbours' tip edges close under load)."""
@@ -65,8 +66,8 @@ def iso_pressure(s: dict, design: Design) -> dict:
         pair = iso_pair(z1, z2, m)
         g1 = pair.flank1.gear
         T = pitch_torque_Nm(pair, LOAD_N_PER_MM)
-        one = ltca.loaded_contact(pair, T, _pitch(pair), pairs=[0], **_kw(s))
-        every = ltca.loaded_contact(pair, T, _pitch(pair), **_kw(s))
+        one = ltca.loaded_contact(pair, T, _pitch(pair), pairs=[0], **_kw(settings))
+        every = ltca.loaded_contact(pair, T, _pitch(pair), **_kw(settings))
         Ft = 1000.0 * T / g1.r_p
         ref = iso6336.pitch_point_stress_MPa(
             Ft,
@@ -87,23 +88,23 @@ def iso_pressure(s: dict, design: Design) -> dict:
                 p_every_pair_MPa=float(every.max_pressure_MPa[0]),
                 pairs_loaded_every_pair=int(every.pairs_loaded[0]),
                 tip_edge_load_share=float(every.tip_edge_load_N[0] / every.normal_load_N[0]),
-                n_nodes=int(s["n_nodes"]),
+                n_nodes=int(settings["n_nodes"]),
             )
         )
     return {"iso_pressure": pd.DataFrame(rows)}
 
 
-def _single_stiffness(pair, T, s, bore=(None, None), n=21):
+def _single_stiffness(pair, T, settings, bore=(None, None), n=21):
     """Largest single-pair stiffness over one tooth pair's engagement (pair 0 alone, positions one
     pitch either side of the pitch point) and the stiffness at the pitch point."""
     p1 = 2.0 * np.pi / pair.n1
     phi = _pitch(pair)[0] + np.linspace(-p1, p1, n)
-    r = ltca.loaded_contact(pair, T, phi, pairs=[0], bore_radius_mm=bore, **_kw(s))
+    r = ltca.loaded_contact(pair, T, phi, pairs=[0], bore_radius_mm=bore, **_kw(settings))
     k = np.where(r.converged, r.mesh_stiffness_N_per_mm_um, np.nan)
     return float(np.nanmax(k)), float(k[n // 2])
 
 
-def iso_stiffness(s: dict, design: Design) -> dict:
+def iso_stiffness(settings: dict, design: Design) -> dict:
     """Single-pair stiffness c' (largest over one pair's engagement) and mean mesh stiffness
     c_gamma (over a meshing cycle, every tooth pair) of the ISO designs at F_t/b = LOAD_N_PER_MM,
     against ISO 6336-1's theoretical value for the pair's basic rack, c'_th C_B, and
@@ -116,10 +117,10 @@ def iso_stiffness(s: dict, design: Design) -> dict:
         pair = iso_pair(z1, z2, m)
         g1, g2 = pair.flank1.gear, pair.flank2.gear
         T = pitch_torque_Nm(pair, LOAD_N_PER_MM)
-        c_single, c_pitch = _single_stiffness(pair, T, s, n=int(s["single_positions"]))
-        thin = _single_stiffness(pair, T, s, (g1.r_f / 1.4, g2.r_f / 1.4), n=3)[1]
-        small = _single_stiffness(pair, T, s, (g1.r_f / 3.0, g2.r_f / 3.0), n=3)[1]
-        cyc = ltca.loaded_contact(pair, T, ltca.cycle_positions(pair, int(s["n_positions"])), **_kw(s))
+        c_single, c_pitch = _single_stiffness(pair, T, settings, n=int(settings["single_positions"]))
+        thin = _single_stiffness(pair, T, settings, (g1.r_f / 1.4, g2.r_f / 1.4), n=3)[1]
+        small = _single_stiffness(pair, T, settings, (g1.r_f / 3.0, g2.r_f / 3.0), n=3)[1]
+        cyc = ltca.loaded_contact(pair, T, ltca.cycle_positions(pair, int(settings["n_positions"])), **_kw(settings))
         summ = cyc.summary()
         eps = float(contact_ratio_closed_form(g1.r_a, g1.r_b, g2.r_a, g2.r_b, pair.centre_distance, g1.base_pitch))
         c_B = 0.5 * sum(iso6336.basic_rack_factor(g.h_f, np.degrees(g.pressure_angle)) for g in (g1, g2))
@@ -145,13 +146,13 @@ def iso_stiffness(s: dict, design: Design) -> dict:
                 n_failed=summ.n_failed,
             )
         )
-        shares.append(_compliance_shares(pair, T, s) | {"design": rows[-1]["design"]})
+        shares.append(_compliance_shares(pair, T, settings) | {"design": rows[-1]["design"]})
     return {"iso_stiffness": pd.DataFrame(rows), "stiffness_terms": pd.DataFrame(shares)}
 
 
-def _compliance_shares(pair, T, s) -> dict:
+def _compliance_shares(pair, T, settings) -> dict:
     """Shares of the pitch-point compliance (single pair, uniform load along the face)."""
-    r = ltca.loaded_contact(pair, T, _pitch(pair), pairs=[0], **_kw(s))
+    r = ltca.loaded_contact(pair, T, _pitch(pair), pairs=[0], **_kw(settings))
     c = r.separations.contacts
     j = int(np.flatnonzero(r.separations.in_contact.ravel())[len(r.separations.z_mm[0, 0]) // 2])
     out = {}
@@ -179,12 +180,12 @@ def _balance(name, r, normal_N=None) -> dict:
     )
 
 
-def properties(s: dict, design: Design) -> dict:
+def properties(settings: dict, design: Design) -> dict:
     """Job ``properties``: load balance of every converged position (spur, crowned and misaligned,
     helical, CATT), symmetry of an equal pair, the unloaded limit, the rigid-tooth (Hertz) limit and
     the grid convergence (:func:`convergence`)."""
-    kw = _kw(s)
-    n = int(s["n_positions"])
+    kw = _kw(settings)
+    n = int(settings["n_positions"])
     rows = []
     spur = readme_pair(design, misaligned=False, crowned=False)
     rb = spur.flank1.gear.r_b
@@ -213,7 +214,7 @@ def properties(s: dict, design: Design) -> dict:
     rows.append(_balance("catt_sec4_B", r))
     out = {"balance": pd.DataFrame(rows)}
     out["limits"] = pd.DataFrame([_symmetry(kw), *_unloaded(crowned, kw), _hertz_limit(design, kw)])
-    return out | convergence(s, design)
+    return out | convergence(settings, design)
 
 
 def _symmetry(kw) -> dict:
@@ -290,16 +291,16 @@ def _hertz_limit(design: Design, kw) -> dict:
     )
 
 
-def convergence(s: dict, design: Design) -> dict:
+def convergence(settings: dict, design: Design) -> dict:
     """The README pair at 9 positions of a cycle with the node counts of ``convergence_nodes``
     (each halving the spacing): largest flank pressure, loaded TE peak to peak, mean mesh
     stiffness and run time per position."""
     pair = readme_pair(design)
     phi = ltca.cycle_positions(pair, 9)
     rows = []
-    for n in s["convergence_nodes"]:
+    for n in settings["convergence_nodes"]:
         t0 = time.perf_counter()
-        r = ltca.loaded_contact(pair, README_TORQUE_NM, phi, n_nodes=int(n), tol=float(s["tol"]))
+        r = ltca.loaded_contact(pair, README_TORQUE_NM, phi, n_nodes=int(n), tol=float(settings["tol"]))
         dt = time.perf_counter() - t0
         summ = r.summary()
         rows.append(
@@ -315,17 +316,17 @@ def convergence(s: dict, design: Design) -> dict:
     return {"convergence": pd.DataFrame(rows)}
 
 
-def cycle(s: dict, design: Design) -> dict:
+def cycle(settings: dict, design: Design) -> dict:
     """Loaded cycles of the README pair and of the same pair unmodified and aligned over three
     meshing cycles (one row per position and tooth pair), and the pressure map of the README pair's
     position of largest pressure."""
     rows, maps = [], []
-    n = int(s["n_positions"])
+    n = int(settings["n_positions"])
     for name, pair in (("readme_pair", readme_pair(design)), ("unmodified", readme_pair(design, False, False))):
         phi = ltca.cycle_positions(pair, n)
         p1 = 2.0 * np.pi / pair.n1
         phi = np.concatenate([phi[:-1] - p1, phi[:-1], phi + p1])
-        r = ltca.loaded_contact(pair, README_TORQUE_NM, phi, **_kw(s))
+        r = ltca.loaded_contact(pair, README_TORQUE_NM, phi, **_kw(settings))
         for i in range(phi.size):
             for k, pk in enumerate(r.separations.pairs):
                 if not np.any(r.separations.in_contact[i, k]):
@@ -366,3 +367,14 @@ def cycle(s: dict, design: Design) -> dict:
                             )
                         )
     return {"cycle": pd.DataFrame(rows), "pressure_map": pd.DataFrame(maps)}
+
+
+def _job(fn, *names, priority=0):
+    return Job(fn, {n: f"ltca/{n}.csv" for n in names}, " ".join(fn.__doc__.split("\n\n")[0].split()), priority)
+
+
+JOBS = {
+    "iso": _job(iso, "iso_pressure", "iso_stiffness", "stiffness_terms", priority=5),
+    "properties": _job(properties, "balance", "limits", "convergence", priority=5),
+    "cycle": _job(cycle, "cycle", "pressure_map", priority=3),
+}
