@@ -509,8 +509,8 @@ class DiskGroundPinion(Surface):
         r(u, psi) = Rz(phi_s) [Rz(-psi) (r_L(u) - dE(psi) e_x) + l(psi) e_z].
 
     Without plunging this is the helicoid again (tested). The line L is solved once on a grid of
-    u (``u_range``, 1801 points, Newton to 1e-14) and interpolated by a cubic spline (error far
-    below 1e-12 in). The derivatives are analytic: those of the spline's cubic pieces carried by
+    u (``u_range``, 1801 points, Newton to 1e-12 rad, traced by continuation from u = 0) and
+    interpolated by a cubic spline (error far below 1e-12 in). The derivatives are analytic: those of the spline's cubic pieces carried by
     the screw motion and the plunge (:meth:`evaluate_components`); :meth:`fd_evaluate` is the
     same surface differentiated by finite differences (the reference they are tested against).
     The report's simplified normal (eq B9-B11) is not used: the normal is the swept surface's own.
@@ -618,18 +618,56 @@ class DiskGroundPinion(Surface):
         return self._rn(u, self._line_theta(u, th0))[0]
 
     def _line_theta(self, u, th0):
-        """theta(u) of the grinding line on the helicoid (Newton from ``th0``)."""
+        """theta(u) of the grinding line on the helicoid, traced by continuation: Newton at the point
+        of ``u`` nearest 0 from ``th0``, then outwards block by block, each block started from the
+        last solved points extrapolated linearly and kept only if no root strays more than
+        ``_BRANCH_RAD`` from its start (else the block is halved). Newton from one start over the
+        whole range lands on other roots, thousands of radians away, where the line has turned far
+        from ``th0``."""
         u = np.asarray(u, float)
-        th = np.full(u.shape, float(th0))
+        order = np.argsort(u, kind="stable")
+        us = u[order]
+        th = np.empty_like(us)
+        i0 = int(np.argmin(np.abs(us)))
+        th[i0] = self._newton_theta(us[i0 : i0 + 1], np.array([float(th0)]))[0]
+        for ahead in (1, -1):
+            last, before, block = i0, None, 64
+            while 0 <= last + ahead < len(us):
+                nxt = np.arange(last + ahead, last + ahead * (block + 1), ahead)
+                nxt = nxt[(nxt >= 0) & (nxt < len(us))]
+                slope = 0.0 if before is None else (th[last] - th[before]) / (us[last] - us[before])
+                start = th[last] + slope * (us[nxt] - us[last])
+                try:
+                    root = self._newton_theta(us[nxt], start)
+                    kept = bool(np.all(np.abs(root - start) < self._BRANCH_RAD))
+                except RuntimeError:
+                    kept = False
+                if not kept:
+                    if block == 1:
+                        raise RuntimeError(f"disk contact line: no continuation of the line at u = {us[nxt[0]]:.6g} in")
+                    block //= 2
+                    continue
+                th[nxt] = root
+                before, last = (int(nxt[-2]) if len(nxt) > 1 else last), int(nxt[-1])
+        out = np.empty_like(th)
+        out[order] = th
+        return out
+
+    #: the most a root of one continuation block may stray from its extrapolated start [rad]
+    _BRANCH_RAD = 0.5
+
+    def _newton_theta(self, u, th):
+        """Newton on det[r - A, n, d](theta) = 0 at each ``u`` from ``th`` (central-difference
+        slope); converged when every step is below 1e-12 rad."""
+        th = np.array(th, float)
         for _ in range(50):
             h = 1e-6
             step = self._meet(u, th) / ((self._meet(u, th + h) - self._meet(u, th - h)) / (2 * h))
             th = th - step
             if np.all(np.abs(step) < 1e-12):
-                break
-        else:
-            raise RuntimeError("disk contact line: Newton did not converge")
-        return th
+                return th
+        bad = u[~(np.abs(step) < 1e-12)]
+        raise RuntimeError(f"disk contact line: Newton did not converge at u = {bad[0]:.6g} in ({len(bad)} points)")
 
     def line(self, u) -> np.ndarray:
         """Points of the grinding line L (frame turned by -phi_s), interpolated.
