@@ -171,28 +171,27 @@ def test_the_fuzz_saw_both_outcomes():
     assert COUNTS["ok"] > 0 and COUNTS["refused"] > 0, COUNTS
 
 
-def _lower_ends(s) -> list[float]:
-    """The smallest values a number key admits: its inclusive bound, and the next floats above an
-    exclusive one (the subnormal 5e-324 and 1e-300 above a bound of 0, whose squares underflow)."""
-    if s.ge is not None:
-        return [float(s.ge)]
-    if s.gt is not None:
-        g = float(s.gt)
-        return [g + 5e-324, g + 1e-300] if g == 0 else [g * (1 + 1e-15) if g > 0 else g * (1 - 1e-15)]
-    return []
+def _just_above(s) -> list[float]:
+    """The smallest values a number key with an exclusive lower bound admits: the next floats above
+    it (above 0, the subnormal 5e-324 and 1e-300, whose squares underflow). An inclusive bound is
+    one value the property test above draws often."""
+    if s.ge is not None or s.gt is None:
+        return []
+    g = float(s.gt)
+    return [g + 5e-324, g + 1e-300] if g == 0 else [g * (1 + 1e-15) if g > 0 else g * (1 - 1e-15)]
 
 
 @pytest.mark.parametrize("name", sorted(BASES))
-def test_every_number_key_at_its_lowest_allowed_value_passes_or_is_refused(name):
-    """Each number key of each example design set, one at a time, to the lowest value its
-    declaration admits: the design is accepted or refused in one line naming a key, never a crash
-    (a relief length of 1e-300 mm once divided by its underflowed square)."""
+def test_every_number_key_just_above_its_exclusive_bound_passes_or_is_refused(name):
+    """Each number key of each example design with an exclusive lower bound set, one at a time, to
+    the smallest values it admits: the design is accepted or refused in one line naming a key,
+    never a crash (a relief length of 1e-300 mm once divided by its underflowed square)."""
     base = BASES[name]
     bad = []
     for path, s in PATHS[base["family"]]:
         if s.kind != "number":
             continue
-        for v in _lower_ends(s):
+        for v in _just_above(s):
             doc = copy.deepcopy(base)
             _put(doc, path, v)
             rc, err = _check_cli(doc)
