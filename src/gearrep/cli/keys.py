@@ -28,6 +28,7 @@ __all__ = [
     "MISALIGNMENT",
     "CROWNING",
     "RELIEF",
+    "relief",
     "LOAD",
     "MATERIAL",
     "LOADED_ANALYSIS",
@@ -126,16 +127,29 @@ CROWNING = st.group(
     log_shape=st.number(0.9, "1", "logarithmic crowning shape a2 (a1 follows from crown_mm)", ge=0.01, lt=1),
 )
 
-RELIEF = st.group(
+
+def relief(reason: str, amount_reason: str, length_reason: str):
+    """The keys of a profile relief, ``amount_mm`` and ``length_mm``; each family words where
+    they are measured. The length is at least 1 um: shorter lengths drive the relief's curvature
+    2 c_m / L^2 towards overflow."""
+    return st.group(
+        reason,
+        amount_mm=st.number(0.0, "mm", amount_reason, ge=0, le=5),
+        length_mm=st.number(
+            0.5,
+            "mm",
+            f"{length_reason} (at least 1 um; shorter lengths drive the relief's "
+            "curvature 2 c_m / L^2 towards overflow)",
+            ge=0.001,
+            le=100,
+        ),
+    )
+
+
+RELIEF = relief(
     "profile relief (parabolic, thesis eq 13)",
-    amount_mm=st.number(0.0, "mm", "material removed at the tip (tip relief) or form circle (root relief)", ge=0, le=5),
-    length_mm=st.number(
-        0.5,
-        "mm",
-        "radial length of the relief (at least 1 um; shorter lengths drive the relief's curvature 2 c_m / L^2 towards overflow)",
-        ge=0.001,
-        le=100,
-    ),
+    "material removed at the tip (tip relief) or form circle (root relief)",
+    "radial length of the relief",
 )
 
 

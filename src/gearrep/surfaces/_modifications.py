@@ -6,6 +6,7 @@ too); this module is their home."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
@@ -184,7 +185,37 @@ def _check_relief_curvature(length, amount) -> None:
 
 
 @dataclass(frozen=True)
-class TipRelief:
+class _ParabolicRelief:
+    """A parabolic profile relief, thesis eq (13): c_m (w/L)^2 over the distance w = u - u0 past
+    its start toward the tip (``_toward_tip``) or w = u0 - u toward the root; zero before it."""
+
+    u0: float
+    length: float
+    amount: float
+    _toward_tip: ClassVar[bool]
+
+    def __post_init__(self):
+        _check_finite("u0", self.u0, positive=True)
+        _check_finite("length", self.length, positive=True)
+        _check_finite("amount", self.amount, nonneg=True)
+        _check_relief_curvature(self.length, self.amount)
+
+    def __call__(self, u):
+        if type(u) is float:  # one point: the same operations on Python floats
+            w = u - float(self.u0) if self._toward_tip else float(self.u0) - u
+            k = float(self.amount) / float(self.length) ** 2
+            dw = 2 * k * w if self._toward_tip else -2 * k * w
+            return (k * w * w, dw, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
+        u = np.asarray(u, dtype=float)
+        w = u - self.u0 if self._toward_tip else self.u0 - u
+        on = w > 0
+        k = self.amount / self.length**2
+        dw = 2 * k * w if self._toward_tip else -2 * k * w
+        return np.where(on, k * w * w, 0.0), np.where(on, dw, 0.0), np.where(on, 2 * k, 0.0)
+
+
+@dataclass(frozen=True)
+class TipRelief(_ParabolicRelief):
     """Tip relief, thesis eq (13): delta = H(u - u0) c_m ((u - u0)/L)^2 (u = radius).
 
     C1 at u0; the second derivative (curvature) jumps there. Called with the radius ``u``
@@ -212,29 +243,11 @@ class TipRelief:
     [0.0, 0.0025, 0.01]
     """
 
-    u0: float
-    length: float
-    amount: float
-
-    def __post_init__(self):
-        _check_finite("u0", self.u0, positive=True)
-        _check_finite("length", self.length, positive=True)
-        _check_finite("amount", self.amount, nonneg=True)
-        _check_relief_curvature(self.length, self.amount)
-
-    def __call__(self, u):
-        if type(u) is float:  # one point: the same operations on Python floats
-            w = u - float(self.u0)
-            k = float(self.amount) / float(self.length) ** 2
-            return (k * w * w, 2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
-        w = np.asarray(u, dtype=float) - self.u0
-        on = w > 0
-        k = self.amount / self.length**2
-        return np.where(on, k * w * w, 0.0), np.where(on, 2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
+    _toward_tip = True
 
 
 @dataclass(frozen=True)
-class RootRelief:
+class RootRelief(_ParabolicRelief):
     """Root relief, eq (13) mirrored: delta = H(u0 - u) c_m ((u0 - u)/L)^2 (u = radius).
 
     Called with the radius ``u`` [length] it returns ``(delta, d delta/du, d2 delta/du2)``.
@@ -261,22 +274,4 @@ class RootRelief:
     [0.01, 0.0025, 0.0]
     """
 
-    u0: float
-    length: float
-    amount: float
-
-    def __post_init__(self):
-        _check_finite("u0", self.u0, positive=True)
-        _check_finite("length", self.length, positive=True)
-        _check_finite("amount", self.amount, nonneg=True)
-        _check_relief_curvature(self.length, self.amount)
-
-    def __call__(self, u):
-        if type(u) is float:  # one point: the same operations on Python floats
-            w = float(self.u0) - u
-            k = float(self.amount) / float(self.length) ** 2
-            return (k * w * w, -2 * k * w, 2 * k) if w > 0 else (0.0, 0.0, 0.0)
-        w = self.u0 - np.asarray(u, dtype=float)
-        on = w > 0
-        k = self.amount / self.length**2
-        return np.where(on, k * w * w, 0.0), np.where(on, -2 * k * w, 0.0), np.where(on, 2 * k, 0.0)
+    _toward_tip = False

@@ -27,21 +27,15 @@ from ...settings import SettingError
 from ...surfaces.bevel import BevelGearData, mating_bevel_flanks, relief_from_length, spherical_involute_azimuth
 from ...tca import BevelMisalignment, BevelPair
 from ..family import Design, PairFamily
-from ..keys import ANALYSIS, CROWNING, crowning, head
+from ..keys import ANALYSIS, CROWNING, crowning, head, relief
 from .involute import check_crowning, crowned, refuse_relief
 
 __all__ = ["KEYS", "BevelFamily", "FAMILY", "cone_edges"]
 
-_RELIEF = st.group(
+_RELIEF = relief(
     "profile relief (parabolic in the polar angle, thesis eq 13)",
-    amount_mm=st.number(0.0, "mm", "material removed at the tip (tip relief) or root cone (root relief)", ge=0, le=5),
-    length_mm=st.number(
-        0.5,
-        "mm",
-        "length of the relief along the profile at the mean cone distance (at least 1 um; shorter lengths drive the relief's curvature 2 c_m / L^2 towards overflow)",
-        ge=0.001,
-        le=100,
-    ),
+    "material removed at the tip (tip relief) or root cone (root relief)",
+    "length of the relief along the profile at the mean cone distance",
 )
 
 
